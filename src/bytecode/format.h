@@ -1,0 +1,65 @@
+// The binary image layout (little-endian, versioned): a header, a section table, and sections
+// of fixed-size records. Every field is a 32-bit word but for the header's creation time.
+#pragma once
+#include <cstdint>
+
+namespace uprog::bytecode {
+
+constexpr uint8_t kMagic[4] = {'U', 'P', 'R', 'G'};
+constexpr uint16_t kFormatVersion = 1;
+constexpr uint32_t kHeaderSize = 32;
+constexpr uint32_t kCrcStart = 16;  // the CRC covers every byte from here to total_size
+constexpr uint32_t kSectionEntrySize = 16;
+
+// Header: magic[4], u16 version, u16 header_size, u32 total_size, u32 crc32,
+//         u64 created_unix_s, u32 source_name (string), u32 section_count.
+// Section entry: u32 kind, u32 offset, u32 size (bytes), u32 count (records).
+enum class Section : uint32_t {
+  Strings = 1,    // NUL-terminated strings; other records refer to them by byte offset
+  Code = 2,       // u32 instruction words
+  Constants = 3,  // ConstantRecord
+  Globals = 4,    // GlobalRecord
+  Routines = 5,   // RoutineRecord
+  Locals = 6,     // LocalRecord: the names and types of every routine's locals
+  Events = 7,     // EventRecord
+  Info = 8,       // u32 string offsets: information strings ("key=value")
+  Lines = 9,      // LineRecord, sorted by code offset
+};
+constexpr uint32_t kSectionKinds = 9;
+
+enum class RoutineKind : uint32_t { Function = 0, Label = 1, AutoRoutine = 2, Task = 3 };
+constexpr uint32_t kRoutineKinds = 4;
+
+struct ConstantRecord {
+  uint32_t bits;
+  uint32_t type;  // ValueType: 0 int, 1 float
+};
+struct GlobalRecord {
+  uint32_t name;
+  uint32_t type;
+  uint32_t length;  // elements; 1 for a scalar
+};
+struct RoutineRecord {
+  uint32_t name;
+  uint32_t kind;
+  uint32_t inputs;   // locals [0, inputs) are the inputs
+  uint32_t outputs;  // locals [inputs, inputs + outputs) are the outputs
+  uint32_t locals;   // all locals, inputs and outputs included
+  uint32_t entry;    // code word index
+  uint32_t first_local;  // index of its first LocalRecord
+};
+struct LocalRecord {
+  uint32_t name;
+  uint32_t type;
+};
+struct EventRecord {
+  uint32_t event;    // a dialect-defined event number (Gold: an auto-routine)
+  uint32_t routine;
+};
+struct LineRecord {
+  uint32_t code;  // first code word of the line
+  uint32_t file;  // string
+  uint32_t line;
+};
+
+}  // namespace uprog::bytecode

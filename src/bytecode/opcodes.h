@@ -1,0 +1,58 @@
+// The opcode enum, names, operand kinds, stack effects and control flow, all generated from
+// opcodes.def. An instruction is one 32-bit word (opcode in bits 0..7, operand A in bits 8..31)
+// followed by one more word when the opcode has a B operand.
+#pragma once
+#include <cstdint>
+
+namespace uprog::bytecode {
+
+enum class Operand : uint8_t { None, Imm, Const, Local, Global, Routine, Target, Count, Command, Unit };
+enum class Flow : uint8_t { Next, Jump, Branch, Call, Stop };
+
+constexpr int kVar = -1;  // a stack effect that the operands decide
+
+enum class Op : uint8_t {
+#define OP(name, a, b, pop, push, flow, meaning) name,
+#include "bytecode/opcodes.def"
+#undef OP
+};
+
+struct OpInfo {
+  const char* name;
+  Operand a;
+  Operand b;
+  int8_t pop;
+  int8_t push;
+  Flow flow;
+  const char* meaning;
+};
+
+inline constexpr OpInfo kOpInfo[] = {
+#define OP(name, a, b, pop, push, flow, meaning) \
+  {#name, Operand::a, Operand::b, pop, push, Flow::flow, meaning},
+#include "bytecode/opcodes.def"
+#undef OP
+};
+
+inline constexpr uint32_t kOpCount = sizeof(kOpInfo) / sizeof(kOpInfo[0]);
+static_assert(kOpCount <= 256, "an opcode is one byte");
+
+constexpr const OpInfo& op_info(Op op) { return kOpInfo[static_cast<uint8_t>(op)]; }
+constexpr uint32_t op_length(Op op) { return op_info(op).b == Operand::None ? 1u : 2u; }
+
+// The A field: 24 bits, sign-extended for immediates.
+constexpr int32_t kImmMin = -(1 << 23);
+constexpr int32_t kImmMax = (1 << 23) - 1;
+constexpr uint32_t kOperandMax = (1u << 24) - 1;
+
+constexpr Op word_op(uint32_t word) { return static_cast<Op>(word & 0xFFu); }
+constexpr uint32_t word_a(uint32_t word) { return word >> 8; }
+constexpr int32_t word_imm(uint32_t word) { return static_cast<int32_t>(word) >> 8; }
+constexpr uint32_t make_word(Op op, uint32_t a) {
+  return static_cast<uint32_t>(op) | ((a & kOperandMax) << 8);
+}
+
+// Looks an opcode up by name (case-sensitive); false when there is none.
+bool op_from_name(const char* name, uint32_t length, Op& out);
+
+}  // namespace uprog::bytecode

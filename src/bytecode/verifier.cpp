@@ -1,0 +1,210 @@
+// Abstract interpretation of the code over stack depths: a worklist walks every path from every
+// routine entry (and every catch block), checking operands against the routine that reaches
+// them. An instruction reached by several routines is rechecked with the smallest local count.
+#include "bytecode/verifier.h"
+
+#include "bytecode/opcodes.h"
+
+namespace uprog::bytecode {
+namespace {
+
+constexpr int32_t kNotStart = -2;  // the word is an operand, not an instruction
+constexpr int32_t kUnseen = -1;
+
+struct Scratch {
+  int32_t* depth;       // per code word: kNotStart, kUnseen, or the depth on entry
+  uint32_t* local_cap;  // per code word: the fewest locals of any routine reaching it
+  uint32_t* work;       // worklist of pcs
+  uint32_t work_size = 0;
+};
+
+class Verifier {
+ public:
+  Verifier(const ImageView& image, const VerifyLimits& limits, Scratch s)
+      : image_(image), limits_(limits), s_(s), size_(image.code.size()) {}
+
+  VerifyResult run() {
+    if (size_ == 0) return fail(VerifyError::EmptyCode, 0);
+    if (VerifyResult r = decode(); !r.ok()) return r;
+    for (uint32_t i = 0; i < image_.routines.size(); ++i) {
+      const RoutineRecord r = image_.routines[i];
+      if (s_.depth[r.entry] == kNotStart) return fail(VerifyError::BadEntry, r.entry);
+      if (VerifyResult res = reach(r.entry, 0, r.locals, r.entry); !res.ok()) return res;
+      while (s_.work_size > 0) {
+        if (VerifyResult res = step(s_.work[--s_.work_size]); !res.ok()) return res;
+      }
+    }
+    VerifyResult ok;
+    ok.max_depth = max_depth_;
+    return ok;
+  }
+
+ private:
+  VerifyResult fail(VerifyError e, uint32_t pc) const {
+    VerifyResult r;
+    r.error = e;
+    r.pc = pc;
+    return r;
+  }
+
+  // Marks instruction starts; checks opcodes and the operands that need no context.
+  VerifyResult decode() {
+    for (uint32_t pc = 0; pc < size_; ++pc) s_.depth[pc] = kNotStart;
+    uint32_t pc = 0;
+    while (pc < size_) {
+      const uint32_t word = image_.code[pc];
+      if ((word & 0xFFu) >= kOpCount) return fail(VerifyError::BadOpcode, pc);
+      const Op op = word_op(word);
+      if (op == Op::BREAK) return fail(VerifyError::BreakInImage, pc);
+      const uint32_t length = op_length(op);
+      if (length > size_ - pc) return fail(VerifyError::Truncated, pc);
+      s_.depth[pc] = kUnseen;
+      s_.local_cap[pc] = UINT32_MAX;
+      pc += length;
+    }
+    for (pc = 0; pc < size_; pc += op_length(word_op(image_.code[pc]))) {
+      const uint32_t word = image_.code[pc];
+      const OpInfo& info = op_info(word_op(word));
+      const uint32_t a = word_a(word);
+      switch (info.a) {
+        case Operand::Const:
+          if (a >= image_.constants.size()) return fail(VerifyError::BadConstant, pc);
+          break;
+        case Operand::Global:
+          if (a >= image_.globals.size()) return fail(VerifyError::BadGlobal, pc);
+          break;
+        case Operand::Routine:
+          if (a >= image_.routines.size()) return fail(VerifyError::BadRoutine, pc);
+          break;
+        case Operand::Target:
+          if (a >= size_ || s_.depth[a] == kNotStart) return fail(VerifyError::BadTarget, pc);
+          break;
+        case Operand::Unit:
+          if (a == 0) return fail(VerifyError::BadOperand, pc);
+          break;
+        default: break;
+      }
+      if (word_op(word) == Op::CMPD && a > 5) return fail(VerifyError::BadOperand, pc);
+      if (word_op(word) == Op::CALL) {
+        const RoutineRecord callee = image_.routines[a];
+        if (image_.code[pc + 1] > callee.outputs) return fail(VerifyError::BadOperand, pc);
+      }
+      if (word_op(word) == Op::CMDRUN && image_.code[pc + 1] > limits_.max_stack)
+        return fail(VerifyError::BadOperand, pc);
+    }
+    return {};
+  }
+
+  // Records that `pc` is reached with `depth` by a routine with `locals` locals.
+  VerifyResult reach(uint32_t pc, int32_t depth, uint32_t locals, uint32_t from) {
+    if (pc >= size_) return fail(VerifyError::FallsOffEnd, from);
+    int32_t& seen = s_.depth[pc];
+    if (seen == kNotStart) return fail(VerifyError::BadTarget, from);
+    if (seen == kUnseen) {
+      seen = depth;
+    } else if (seen != depth) {
+      return fail(VerifyError::StackMismatch, pc);
+    } else if (locals >= s_.local_cap[pc]) {
+      return {};  // already checked under a tighter local count
+    }
+    s_.local_cap[pc] = locals;
+    if (s_.work_size >= size_) return fail(VerifyError::NoScratch, pc);
+    s_.work[s_.work_size++] = pc;
+    return {};
+  }
+
+  VerifyResult step(uint32_t pc) {
+    const uint32_t word = image_.code[pc];
+    const Op op = word_op(word);
+    const OpInfo& info = op_info(op);
+    const uint32_t a = word_a(word);
+    const uint32_t locals = s_.local_cap[pc];
+    const int32_t depth = s_.depth[pc];
+
+    if (info.a == Operand::Local && a >= locals) return fail(VerifyError::BadLocal, pc);
+
+    int32_t pop = info.pop;
+    int32_t push = info.push;
+    if (op == Op::CALL) {
+      pop = static_cast<int32_t>(image_.routines[a].inputs);
+      push = static_cast<int32_t>(image_.code[pc + 1]);
+    } else if (op == Op::CMDRUN) {
+      pop = static_cast<int32_t>(image_.code[pc + 1]);
+    }
+    if (depth < pop) return fail(VerifyError::StackUnderflow, pc);
+    const int32_t after = depth - pop + push;
+    const int32_t peak = depth > after ? depth : after;
+    if (peak > static_cast<int32_t>(limits_.max_stack)) return fail(VerifyError::StackOverflow, pc);
+    if (static_cast<uint32_t>(peak) > max_depth_) max_depth_ = static_cast<uint32_t>(peak);
+
+    const uint32_t next = pc + op_length(op);
+    switch (info.flow) {
+      case Flow::Next:
+      case Flow::Call:
+        if (op == Op::TRY) {
+          if (VerifyResult r = reach(a, after, locals, pc); !r.ok()) return r;
+        }
+        return reach(next, after, locals, pc);
+      case Flow::Jump: return reach(a, after, locals, pc);
+      case Flow::Branch: {
+        if (VerifyResult r = reach(a, after, locals, pc); !r.ok()) return r;
+        return reach(next, after, locals, pc);
+      }
+      case Flow::Stop:
+        if (op == Op::RET && depth != 0) return fail(VerifyError::ReturnWithValues, pc);
+        return {};
+    }
+    return {};
+  }
+
+  const ImageView& image_;
+  VerifyLimits limits_;
+  Scratch s_;
+  uint32_t size_;
+  uint32_t max_depth_ = 0;
+};
+
+}  // namespace
+
+const char* verify_error_text(VerifyError e) {
+  switch (e) {
+    case VerifyError::Ok: return "ok";
+    case VerifyError::EmptyCode: return "the image has no code";
+    case VerifyError::BadOpcode: return "unknown opcode";
+    case VerifyError::Truncated: return "an instruction runs past the end of the code";
+    case VerifyError::BreakInImage: return "a breakpoint instruction in an image";
+    case VerifyError::BadConstant: return "constant index out of range";
+    case VerifyError::BadGlobal: return "global index out of range";
+    case VerifyError::BadLocal: return "local index out of range for the routine";
+    case VerifyError::BadRoutine: return "routine index out of range";
+    case VerifyError::BadTarget: return "jump target is not an instruction";
+    case VerifyError::BadOperand: return "operand out of range";
+    case VerifyError::BadEntry: return "routine entry is not an instruction";
+    case VerifyError::StackUnderflow: return "expression stack underflow";
+    case VerifyError::StackOverflow: return "expression stack deeper than the limit";
+    case VerifyError::StackMismatch: return "paths join with different stack depths";
+    case VerifyError::FallsOffEnd: return "a path falls off the end of the code";
+    case VerifyError::ReturnWithValues: return "return with values left on the stack";
+    case VerifyError::NoScratch: return "verifier scratch memory too small";
+  }
+  return "unknown verifier error";
+}
+
+size_t verify_scratch_size(const ImageView& image) {
+  return static_cast<size_t>(image.code.size()) * (sizeof(int32_t) + 2 * sizeof(uint32_t));
+}
+
+VerifyResult verify(const ImageView& image, const VerifyLimits& limits, void* scratch,
+                    size_t scratch_size) {
+  const size_t n = image.code.size();
+  if (scratch == nullptr || scratch_size < verify_scratch_size(image)) {
+    VerifyResult r;
+    r.error = n == 0 ? VerifyError::EmptyCode : VerifyError::NoScratch;
+    return r;
+  }
+  auto* words = static_cast<uint32_t*>(scratch);
+  Scratch s{reinterpret_cast<int32_t*>(words), words + n, words + 2 * n};
+  return Verifier(image, limits, s).run();
+}
+
+}  // namespace uprog::bytecode

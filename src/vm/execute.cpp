@@ -1,0 +1,566 @@
+// The execute loop: computed-goto dispatch over the verified code.
+//
+// Invariants:
+// - ip, sp and locals live in registers while instructions run; the thread's pc and sp are
+//   written back (SAVE) before anything that may look at the thread: a host call that fails,
+//   a call or return, an error, the end of the slice.
+// - The verifier has proven every operand index, jump target and stack depth of the code, and
+//   enter() has checked that the new frame's stack fits, so no instruction checks them again.
+//   Only values can be wrong at run time: array indices, divisors, host refusals.
+// - A slice stops only between instructions: at a budget check (before an instruction), after
+//   EOL, YIELD or WAIT, or at an end of the program, a breakpoint or an uncaught error.
+#include <cmath>
+
+// Computed goto (labels as values) is a GNU extension that g++ and clang both support.
+#pragma GCC diagnostic ignored "-Wpedantic"
+
+#include "bytecode/opcodes.h"
+#include "support/arith.h"
+#include "vm/machine.h"
+
+namespace uprog::vm {
+
+using bytecode::Op;
+namespace arith = uprog::arith;
+
+namespace {
+
+TypedValue read_pair(const Value* at) {
+  return {at[0], at[1].i == 0 ? ValueType::Int : ValueType::Float};
+}
+void write_pair(Value* at, TypedValue v) {
+  at[0] = v.value;
+  at[1] = Value::of_int(v.is_float() ? 1 : 0);
+}
+bool compare(int32_t how, float a, float b) {
+  switch (how) {
+    case 0: return a == b;
+    case 1: return a != b;
+    case 2: return a < b;
+    case 3: return a <= b;
+    case 4: return a > b;
+    default: return a >= b;
+  }
+}
+bool compare(int32_t how, int32_t a, int32_t b) {
+  switch (how) {
+    case 0: return a == b;
+    case 1: return a != b;
+    case 2: return a < b;
+    case 3: return a <= b;
+    case 4: return a > b;
+    default: return a >= b;
+  }
+}
+
+}  // namespace
+
+SliceResult Machine::run_slice(uint32_t thread, Budget budget) {
+  if (!loaded_ || thread >= thread_count_) return {SliceEnd::NotRunning, 0};
+  Thread& t = threads_[thread];
+  switch (t.status) {
+    case ThreadStatus::Idle: return {SliceEnd::NotRunning, 0};
+    case ThreadStatus::Error: return {SliceEnd::Error, 0};
+    case ThreadStatus::Halted: return {SliceEnd::Halted, 0};
+    case ThreadStatus::AtBreakpoint: return {SliceEnd::Breakpoint, 0};
+    case ThreadStatus::Waiting:
+      if (static_cast<int32_t>(host_->now_us() - t.wake_us) < 0) return {SliceEnd::Waiting, 0};
+      t.status = ThreadStatus::Running;
+      break;
+    case ThreadStatus::Running: break;
+  }
+  if (!t.step_over) return execute(t, budget);
+
+  // Resumed at a breakpoint: run the original instruction once, then re-arm the trap.
+  t.step_over = false;
+  const Breakpoint* b = find_breakpoint(t.pc);
+  if (b == nullptr) return execute(t, budget);
+  const uint32_t at = t.pc;
+  const uint32_t trap = code_[at];
+  code_[at] = b->original;
+  const SliceResult first = execute(t, Budget{1, budget.lines});
+  code_[at] = trap;
+  if (first.end != SliceEnd::BudgetSpent || budget.instructions == 1) return first;
+  Budget rest = budget;
+  if (rest.instructions != 0) rest.instructions -= 1;
+  SliceResult more = execute(t, rest);
+  more.executed += first.executed;
+  return more;
+}
+
+SliceResult Machine::execute(Thread& t, Budget budget) {
+  static const void* const kDispatch[] = {
+#define OP(name, a, b, pop, push, flow, meaning) &&op_##name,
+#include "bytecode/opcodes.def"
+#undef OP
+  };
+
+  const uint32_t* const code = code_;
+  const uint32_t* ip = code + t.pc;
+  Value* sp = t.sp;
+  Value* locals = t.frames[t.frame_count - 1].locals;
+  const uint64_t initial = budget.instructions != 0 ? budget.instructions : UINT64_MAX;
+  uint64_t steps = initial;
+  uint64_t lines = budget.lines != 0 ? budget.lines : UINT64_MAX;
+  uint32_t word = 0;
+  RunError error = RunError::None;
+  int32_t detail = 0;
+  SliceEnd end = SliceEnd::BudgetSpent;
+
+#define SAVE() (t.pc = static_cast<uint32_t>(ip - code), t.sp = sp)
+#define LOAD() (ip = code + t.pc, sp = t.sp, locals = t.frames[t.frame_count - 1].locals)
+#define DISPATCH()                           \
+  do {                                       \
+    if (steps-- == 0) goto out_of_budget;    \
+    word = *ip;                              \
+    goto* kDispatch[word & 0xFFu];           \
+  } while (0)
+#define A() (word >> 8)
+#define IMM() (static_cast<int32_t>(word) >> 8)
+#define B() (ip[1])
+#define FAIL(e) \
+  do {          \
+    error = (e); \
+    goto raise_error; \
+  } while (0)
+#define INT_BINARY(expr)           \
+  {                                \
+    const int32_t a = sp[-2].i;    \
+    const int32_t b = sp[-1].i;    \
+    sp[-2].i = (expr);             \
+    --sp;                          \
+    ++ip;                          \
+    DISPATCH();                    \
+  }
+#define FLOAT_BINARY(expr)         \
+  {                                \
+    const float a = sp[-2].f;      \
+    const float b = sp[-1].f;      \
+    sp[-2].f = (expr);             \
+    --sp;                          \
+    ++ip;                          \
+    DISPATCH();                    \
+  }
+#define COMPARE(type, field, op)   \
+  {                                \
+    const type a = sp[-2].field;   \
+    const type b = sp[-1].field;   \
+    sp[-2].i = a op b ? 1 : 0;     \
+    --sp;                          \
+    ++ip;                          \
+    DISPATCH();                    \
+  }
+#define UNARY(expr)                \
+  {                                \
+    const Value a = sp[-1];        \
+    sp[-1] = (expr);               \
+    ++ip;                          \
+    DISPATCH();                    \
+  }
+
+  DISPATCH();
+
+op_NOP:
+  ++ip;
+  DISPATCH();
+op_PUSHI:
+  (sp++)->i = IMM();
+  ++ip;
+  DISPATCH();
+op_PUSHK:
+  *sp++ = constants_[A()];
+  ++ip;
+  DISPATCH();
+op_POP:
+  --sp;
+  ++ip;
+  DISPATCH();
+op_DUP:
+  sp[0] = sp[-1];
+  ++sp;
+  ++ip;
+  DISPATCH();
+op_SWAP: {
+  const Value top = sp[-1];
+  sp[-1] = sp[-2];
+  sp[-2] = top;
+  ++ip;
+  DISPATCH();
+}
+
+op_LDL:
+  *sp++ = locals[A()];
+  ++ip;
+  DISPATCH();
+op_STL:
+  locals[A()] = *--sp;
+  ++ip;
+  DISPATCH();
+op_LDG:
+  *sp++ = globals_[A()].data[0];
+  ++ip;
+  DISPATCH();
+op_STG:
+  globals_[A()].data[0] = *--sp;
+  ++ip;
+  DISPATCH();
+op_LDGX: {
+  const GlobalSlot& g = globals_[A()];
+  const auto index = static_cast<uint32_t>(sp[-1].i);
+  if (index >= g.length) FAIL(RunError::IndexOutOfRange);
+  sp[-1] = g.data[index];
+  ++ip;
+  DISPATCH();
+}
+op_STGX: {
+  const GlobalSlot& g = globals_[A()];
+  const auto index = static_cast<uint32_t>(sp[-2].i);
+  if (index >= g.length) FAIL(RunError::IndexOutOfRange);
+  g.data[index] = sp[-1];
+  sp -= 2;
+  ++ip;
+  DISPATCH();
+}
+op_INCL:
+  locals[A()].i = arith::wrap_add(locals[A()].i, static_cast<int32_t>(B()));
+  ip += 2;
+  DISPATCH();
+
+op_ADDI: INT_BINARY(arith::wrap_add(a, b))
+op_SUBI: INT_BINARY(arith::wrap_sub(a, b))
+op_MULI: INT_BINARY(arith::wrap_mul(a, b))
+op_DIVI:
+  if (sp[-1].i == 0) FAIL(RunError::DivisionByZero);
+  INT_BINARY(arith::int_div(a, b))
+op_REMI:
+  if (sp[-1].i == 0) FAIL(RunError::DivisionByZero);
+  INT_BINARY(arith::int_rem(a, b))
+op_NEGI: UNARY(Value::of_int(arith::saturating_neg(a.i)))
+op_ANDI: INT_BINARY(a & b)
+op_ORI: INT_BINARY(a | b)
+op_XORI: INT_BINARY(a ^ b)
+op_NOTI: UNARY(Value::of_int(~a.i))
+op_SHLI: INT_BINARY(arith::shift_left(a, b))
+op_SHRI: INT_BINARY(arith::shift_right(a, b))
+op_ABSI: UNARY(Value::of_int(arith::saturating_abs(a.i)))
+op_SIGNI: UNARY(Value::of_int(arith::sign_of(a.i)))
+
+op_ADDF: FLOAT_BINARY(a + b)
+op_SUBF: FLOAT_BINARY(a - b)
+op_MULF: FLOAT_BINARY(a * b)
+op_DIVF:
+  if (sp[-1].f == 0.0f) FAIL(RunError::DivisionByZero);
+  FLOAT_BINARY(a / b)
+op_NEGF: UNARY(Value::of_float(-a.f))
+op_ABSF: UNARY(Value::of_float(std::fabs(a.f)))
+op_SIGNF: UNARY(Value::of_int(arith::sign_of(a.f)))
+op_SINF: UNARY(Value::of_float(std::sin(a.f)))
+op_COSF: UNARY(Value::of_float(std::cos(a.f)))
+op_SQRTF: UNARY(Value::of_float(a.f > 0.0f ? std::sqrt(a.f) : 0.0f))
+
+op_EQI: COMPARE(int32_t, i, ==)
+op_NEI: COMPARE(int32_t, i, !=)
+op_LTI: COMPARE(int32_t, i, <)
+op_LEI: COMPARE(int32_t, i, <=)
+op_GTI: COMPARE(int32_t, i, >)
+op_GEI: COMPARE(int32_t, i, >=)
+op_EQF: COMPARE(float, f, ==)
+op_NEF: COMPARE(float, f, !=)
+op_LTF: COMPARE(float, f, <)
+op_LEF: COMPARE(float, f, <=)
+op_GTF: COMPARE(float, f, >)
+op_GEF: COMPARE(float, f, >=)
+op_LNOT: UNARY(Value::of_int(a.i == 0 ? 1 : 0))
+op_TRUTHF: UNARY(Value::of_int(a.f != 0.0f ? 1 : 0))
+
+op_I2F: UNARY(Value::of_float(static_cast<float>(a.i)))
+op_I2F2:
+  sp[-2] = Value::of_float(static_cast<float>(sp[-2].i));
+  ++ip;
+  DISPATCH();
+op_F2IR: UNARY(Value::of_int(arith::round_to_int(a.f)))
+op_F2IT: UNARY(Value::of_int(arith::trunc_to_int(a.f)))
+
+op_MULID: {
+  const arith::PromotedProduct p = arith::promoting_mul(sp[-2].i, sp[-1].i);
+  write_pair(sp - 2, p.is_float ? TypedValue::of_float(p.f) : TypedValue::of_int(p.i));
+  ++ip;
+  DISPATCH();
+}
+op_I2D:
+  (sp++)->i = 0;
+  ++ip;
+  DISPATCH();
+op_F2D:
+  (sp++)->i = 1;
+  ++ip;
+  DISPATCH();
+op_D2F:
+  --sp;
+  if (sp[0].i == 0) sp[-1] = Value::of_float(static_cast<float>(sp[-1].i));
+  ++ip;
+  DISPATCH();
+op_D2IR:
+  --sp;
+  if (sp[0].i != 0) sp[-1] = Value::of_int(arith::round_to_int(sp[-1].f));
+  ++ip;
+  DISPATCH();
+op_D2IT:
+  --sp;
+  if (sp[0].i != 0) sp[-1] = Value::of_int(arith::trunc_to_int(sp[-1].f));
+  ++ip;
+  DISPATCH();
+op_ADDD:
+op_SUBD:
+op_MULD:
+op_DIVD: {
+  const TypedValue a = read_pair(sp - 4);
+  const TypedValue b = read_pair(sp - 2);
+  const Op op = bytecode::word_op(word);
+  TypedValue r;
+  if (!a.is_float() && !b.is_float()) {
+    const int32_t x = a.value.i, y = b.value.i;
+    if (op == Op::ADDD) {
+      r = TypedValue::of_int(arith::wrap_add(x, y));
+    } else if (op == Op::SUBD) {
+      r = TypedValue::of_int(arith::wrap_sub(x, y));
+    } else if (op == Op::MULD) {
+      const arith::PromotedProduct p = arith::promoting_mul(x, y);
+      r = p.is_float ? TypedValue::of_float(p.f) : TypedValue::of_int(p.i);
+    } else {
+      if (y == 0) FAIL(RunError::DivisionByZero);
+      r = TypedValue::of_int(arith::int_div(x, y));
+    }
+  } else {
+    const float x = a.as_float(), y = b.as_float();
+    if (op == Op::ADDD) {
+      r = TypedValue::of_float(x + y);
+    } else if (op == Op::SUBD) {
+      r = TypedValue::of_float(x - y);
+    } else if (op == Op::MULD) {
+      r = TypedValue::of_float(x * y);
+    } else {
+      if (y == 0.0f) FAIL(RunError::DivisionByZero);
+      r = TypedValue::of_float(x / y);
+    }
+  }
+  sp -= 2;
+  write_pair(sp - 2, r);
+  ++ip;
+  DISPATCH();
+}
+op_NEGD: {
+  const TypedValue a = read_pair(sp - 2);
+  write_pair(sp - 2, a.is_float() ? TypedValue::of_float(-a.value.f)
+                                  : TypedValue::of_int(arith::saturating_neg(a.value.i)));
+  ++ip;
+  DISPATCH();
+}
+op_ABSD: {
+  const TypedValue a = read_pair(sp - 2);
+  write_pair(sp - 2, a.is_float() ? TypedValue::of_float(std::fabs(a.value.f))
+                                  : TypedValue::of_int(arith::saturating_abs(a.value.i)));
+  ++ip;
+  DISPATCH();
+}
+op_CMPD: {
+  const TypedValue a = read_pair(sp - 4);
+  const TypedValue b = read_pair(sp - 2);
+  const auto how = static_cast<int32_t>(A());
+  const bool r = !a.is_float() && !b.is_float() ? compare(how, a.value.i, b.value.i)
+                                                : compare(how, a.as_float(), b.as_float());
+  sp -= 3;
+  sp[-1] = Value::of_int(r ? 1 : 0);
+  ++ip;
+  DISPATCH();
+}
+
+op_JMP:
+  ip = code + A();
+  DISPATCH();
+op_JZ:
+  ip = (--sp)->i == 0 ? code + A() : ip + 1;
+  DISPATCH();
+op_JNZ:
+  ip = (--sp)->i != 0 ? code + A() : ip + 1;
+  DISPATCH();
+op_CALL:
+  SAVE();
+  t.sp = sp;
+  if (!enter(t, A(), t.pc + 2, static_cast<uint8_t>(B()), FrameKind::Call, error)) goto raise_error;
+  LOAD();
+  DISPATCH();
+op_RET: {
+  const Frame& f = t.frames[t.frame_count - 1];
+  t.frame_count--;
+  t.locals_top = f.locals;
+  while (t.handler_count > 0 && t.handlers[t.handler_count - 1].frame_count > t.frame_count)
+    t.handler_count--;
+  if (f.kind == FrameKind::Event) {
+    sp = f.stack_base;
+    ip = code + f.return_pc;
+    locals = t.frames[t.frame_count - 1].locals;
+    t.status = f.saved_status;
+    t.wake_us = f.saved_wake_us;
+    if (t.status == ThreadStatus::Waiting) {
+      end = SliceEnd::Waiting;
+      goto stop;
+    }
+    if (t.status == ThreadStatus::Halted) {
+      end = SliceEnd::Halted;
+      goto stop;
+    }
+    DISPATCH();
+  }
+  const Value* outputs = f.locals + routines_[f.routine].inputs;
+  Value* base = f.stack_base;
+  for (uint32_t i = 0; i < f.nargout; ++i) base[i] = outputs[i];
+  sp = base + f.nargout;
+  if (t.frame_count == 0) goto finished;
+  ip = code + f.return_pc;
+  locals = t.frames[t.frame_count - 1].locals;
+  DISPATCH();
+}
+op_NARGOUT:
+  (sp++)->i = t.frames[t.frame_count - 1].nargout;
+  ++ip;
+  DISPATCH();
+op_EXIT:
+  goto finished;
+op_RESET:
+  t.frame_count = 0;
+  t.handler_count = 0;
+  t.sp = t.stack;
+  t.locals_top = t.locals;
+  if (!enter(t, A(), 0, 0, FrameKind::Call, error)) {
+    ip = code + t.pc;
+    sp = t.sp;
+    goto raise_error;
+  }
+  LOAD();
+  DISPATCH();
+op_EOL:
+  ++ip;
+  if (--lines == 0) {
+    end = SliceEnd::LineEnd;
+    goto stop;
+  }
+  DISPATCH();
+op_RAISE:
+  if (!run_error_from_code(A(), error) || error == RunError::None) error = RunError::Raised;
+  goto raise_error;
+op_YIELD:
+  ++ip;
+  end = SliceEnd::Yielded;
+  goto stop;
+op_WAIT: {
+  int64_t duration_us = static_cast<int64_t>((--sp)->i) * static_cast<int64_t>(A());
+  if (duration_us < 0) duration_us = 0;
+  if (duration_us > INT32_MAX) duration_us = INT32_MAX;  // the clock's signed horizon
+  t.wake_us = host_->now_us() + static_cast<uint32_t>(duration_us);
+  t.status = ThreadStatus::Waiting;
+  ++ip;
+  end = SliceEnd::Waiting;
+  goto stop;
+}
+op_TRY: {
+  if (t.handler_count >= config_.handlers) FAIL(RunError::TryDepth);
+  t.handlers[t.handler_count++] = {A(), t.frame_count, sp, t.locals_top};
+  ++ip;
+  DISPATCH();
+}
+op_ENDTRY:
+  if (t.handler_count == 0) FAIL(RunError::TryMismatch);
+  t.handler_count--;
+  ++ip;
+  DISPATCH();
+op_ERRCODE:
+  (sp++)->i = static_cast<int32_t>(t.last_error);
+  ++ip;
+  DISPATCH();
+op_CLOCK:
+  (sp++)->i = static_cast<int32_t>(host_->now_us());
+  ++ip;
+  DISPATCH();
+
+op_CMDGET: {
+  Value v;
+  detail = host_->read(A(), static_cast<int32_t>(B()), v);
+  if (detail != kCommandOk) FAIL(RunError::CommandRefused);
+  *sp++ = v;
+  ip += 2;
+  DISPATCH();
+}
+op_CMDGETX: {
+  Value v;
+  detail = host_->read(A(), sp[-1].i, v);
+  if (detail != kCommandOk) FAIL(RunError::CommandRefused);
+  sp[-1] = v;
+  ++ip;
+  DISPATCH();
+}
+op_CMDSET:
+  detail = host_->write(A(), static_cast<int32_t>(B()), sp[-1]);
+  if (detail != kCommandOk) FAIL(RunError::CommandRefused);
+  --sp;
+  ip += 2;
+  DISPATCH();
+op_CMDSETX:
+  detail = host_->write(A(), sp[-2].i, sp[-1]);
+  if (detail != kCommandOk) FAIL(RunError::CommandRefused);
+  sp -= 2;
+  ++ip;
+  DISPATCH();
+op_CMDRUN: {
+  const uint32_t count = B();
+  detail = host_->execute(A(), 0, sp - count, count);
+  if (detail != kCommandOk) FAIL(RunError::CommandRefused);
+  sp -= count;
+  ip += 2;
+  DISPATCH();
+}
+
+op_BREAK:
+  t.status = ThreadStatus::AtBreakpoint;
+  end = SliceEnd::Breakpoint;
+  goto stop;
+
+out_of_budget:
+  steps = 0;
+  end = SliceEnd::BudgetSpent;
+  goto stop;
+
+finished:
+  SAVE();
+  reset_thread(t);
+  t.last_error = RunError::None;
+  return {SliceEnd::Finished, initial - steps};
+
+raise_error:
+  SAVE();
+  if (raise(t, error, detail)) {
+    error = RunError::None;
+    detail = 0;
+    LOAD();
+    DISPATCH();
+  }
+  return {SliceEnd::Error, initial - steps};
+
+stop:
+  SAVE();
+  return {end, initial - steps};
+
+#undef SAVE
+#undef LOAD
+#undef DISPATCH
+#undef A
+#undef IMM
+#undef B
+#undef FAIL
+#undef INT_BINARY
+#undef FLOAT_BINARY
+#undef COMPARE
+#undef UNARY
+}
+
+}  // namespace uprog::vm

@@ -1,0 +1,197 @@
+// The uprog virtual machine: threads running a verified image in slices, with event entry,
+// try/catch, waits, breakpoints and drive commands through the Host. Freestanding: all memory
+// comes from one block the caller gives to load(); nothing is allocated afterwards.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include "bytecode/image_view.h"
+#include "bytecode/verifier.h"
+#include "support/value.h"
+#include "vm/host.h"
+#include "vm/run_error.h"
+
+namespace uprog::vm {
+
+enum class ThreadStatus : uint8_t { Idle, Running, Waiting, Halted, AtBreakpoint, Error };
+const char* thread_status_name(ThreadStatus s);
+
+struct MachineConfig {
+  uint32_t threads = 4;
+  uint32_t stack = 50;        // expression stack entries per thread
+  uint32_t frames = 30;       // call stack frames per thread (event entries count too)
+  uint32_t locals = 1024;     // local variable slots per thread, all frames together
+  uint32_t handlers = 8;      // nested try blocks per thread
+  uint32_t breakpoints = 16;
+};
+
+// How much a slice may run: it stops when either count is spent (0 = no limit for that count).
+struct Budget {
+  uint64_t instructions = 0;
+  uint64_t lines = 0;
+  static Budget unlimited() { return {}; }
+  static Budget of_instructions(uint64_t n) { return {n, 0}; }
+  static Budget of_lines(uint64_t n) { return {0, n}; }
+};
+
+enum class SliceEnd : uint8_t {
+  BudgetSpent,  // the instruction budget ran out
+  LineEnd,      // the line budget ran out at an end-of-line
+  Yielded,      // the program asked to end the slice (a condition wait)
+  Waiting,      // a timed wait has not elapsed
+  Finished,     // the program ended (return from its outermost routine, or exit)
+  Halted,       // halted by the host; resume() continues it
+  Breakpoint,   // stopped at a breakpoint
+  Error,        // stopped by a run-time error that no try block caught
+  NotRunning,   // the thread was idle
+};
+
+struct SliceResult {
+  SliceEnd end;
+  uint64_t executed;  // instructions run in this slice
+};
+
+struct LoadStatus {
+  bytecode::LoadError load = bytecode::LoadError::Ok;
+  bytecode::VerifyError verify = bytecode::VerifyError::Ok;
+  uint32_t pc = 0;  // where the verifier objected
+  bool no_memory = false;
+  bool ok() const {
+    return load == bytecode::LoadError::Ok && verify == bytecode::VerifyError::Ok && !no_memory;
+  }
+};
+
+struct FrameInfo {
+  uint32_t routine;
+  uint32_t pc;      // where this frame is now (the innermost) or will resume (callers)
+  bool is_event;    // entered by interrupt(), not by a call
+};
+
+class Machine {
+ public:
+  Machine() = default;
+  Machine(const Machine&) = delete;
+  Machine& operator=(const Machine&) = delete;
+
+  // The memory load() needs for this image and configuration, in bytes.
+  static size_t memory_needed(const bytecode::ImageView& image, const MachineConfig& config);
+
+  // Checks, verifies and takes the image; `image` and `memory` must outlive the machine.
+  // `memory` must be aligned for 8-byte values. On failure the machine is left unloaded.
+  LoadStatus load(const uint8_t* image, size_t image_size, const MachineConfig& config,
+                  void* memory, size_t memory_size, Host& host);
+  bool loaded() const { return loaded_; }
+  const bytecode::ImageView& image() const { return image_; }
+
+  // Starts routine `routine` on `thread` afresh, with `arg_count` inputs.
+  RunError start(uint32_t thread, uint32_t routine, const Value* args = nullptr,
+                 uint32_t arg_count = 0);
+  // Enters routine `routine` (no inputs) on top of what the thread is doing; when it returns,
+  // the thread continues where it was, as it was (running, waiting or halted). An idle or
+  // failed thread simply starts the routine.
+  RunError interrupt(uint32_t thread, uint32_t routine);
+  SliceResult run_slice(uint32_t thread, Budget budget);
+
+  void halt(uint32_t thread);    // a running or waiting thread stops where it is
+  void resume(uint32_t thread);  // a halted thread, or one at a breakpoint, runs again
+  void kill(uint32_t thread);    // drops the thread's frames; it becomes idle
+
+  ThreadStatus status(uint32_t thread) const;
+  RunError last_error(uint32_t thread) const;
+  int32_t error_detail(uint32_t thread) const;  // the drive's code for CommandRefused
+  uint32_t pc(uint32_t thread) const;
+  uint32_t frame_count(uint32_t thread) const;
+  FrameInfo frame(uint32_t thread, uint32_t depth) const;  // depth 0 is the innermost
+  // The outputs of the routine started by start(), readable after it finished.
+  uint32_t thread_count() const { return thread_count_; }
+
+  // Globals, checked: false when the index or element is out of range.
+  bool read_global(uint32_t global, uint32_t element, Value& out) const;
+  bool write_global(uint32_t global, uint32_t element, Value value);
+  // Locals of a frame, for the debugger.
+  bool read_local(uint32_t thread, uint32_t depth, uint32_t local, Value& out) const;
+
+  // False when pc is not an instruction or the table is full.
+  bool set_breakpoint(uint32_t pc);
+  bool clear_breakpoint(uint32_t pc);
+
+ private:
+  struct RoutineInfo {
+    uint32_t entry;
+    uint32_t inputs;
+    uint32_t outputs;
+    uint32_t locals;
+  };
+  struct GlobalSlot {
+    Value* data;
+    uint32_t length;
+  };
+  enum class FrameKind : uint8_t { Call, Event };
+  struct Frame {
+    uint32_t return_pc;
+    uint32_t routine;
+    Value* locals;      // this frame's locals
+    Value* stack_base;  // the caller's stack top once the inputs are consumed
+    uint32_t saved_wake_us;
+    uint8_t nargout;
+    FrameKind kind;
+    ThreadStatus saved_status;
+  };
+  struct Handler {
+    uint32_t catch_pc;
+    uint32_t frame_count;
+    Value* sp;
+    Value* locals_top;
+  };
+  struct Breakpoint {
+    uint32_t pc;
+    uint32_t original;
+  };
+  struct Thread {
+    ThreadStatus status;
+    RunError last_error;
+    int32_t error_detail;
+    uint32_t pc;
+    uint32_t wake_us;
+    Value* sp;
+    Value* stack;
+    Value* locals;
+    Value* locals_top;
+    Value* locals_end;
+    Frame* frames;
+    uint32_t frame_count;
+    Handler* handlers;
+    uint32_t handler_count;
+    bool step_over;  // resumed at a breakpoint: run the original instruction first
+  };
+
+  SliceResult execute(Thread& t, Budget budget);
+  // Enters routine r: pushes a frame, moves the inputs into its locals. False on an error,
+  // which is then set in `error`.
+  bool enter(Thread& t, uint32_t routine, uint32_t return_pc, uint8_t nargout, FrameKind kind,
+             RunError& error);
+  // Delivers a run-time error: true when a try block caught it and the thread continues.
+  bool raise(Thread& t, RunError error, int32_t detail);
+  void reset_thread(Thread& t);
+  bool is_instruction_start(uint32_t pc) const;
+  const Breakpoint* find_breakpoint(uint32_t pc) const;
+
+  bool loaded_ = false;
+  bytecode::ImageView image_;
+  Host* host_ = nullptr;
+  MachineConfig config_;
+  uint32_t* code_ = nullptr;
+  uint32_t code_size_ = 0;
+  Value* constants_ = nullptr;
+  RoutineInfo* routines_ = nullptr;
+  uint32_t routine_count_ = 0;
+  GlobalSlot* globals_ = nullptr;
+  uint32_t global_count_ = 0;
+  Thread* threads_ = nullptr;
+  uint32_t thread_count_ = 0;
+  uint32_t max_depth_ = 0;  // the deepest any frame's expression stack goes (from the verifier)
+  Breakpoint* breakpoints_ = nullptr;
+  uint32_t breakpoint_count_ = 0;
+};
+
+}  // namespace uprog::vm

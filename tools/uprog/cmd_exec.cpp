@@ -1,0 +1,126 @@
+// `uprog exec FILE`: runs an image (binary, or assembly assembled on the fly) on the bare VM,
+// with no drive, in virtual time, and prints how it ended and the values of its globals.
+#include <fmt/core.h>
+
+#include <cstring>
+#include <memory>
+#include <vector>
+
+#include "bytecode/assembly.h"
+#include "bytecode/image.h"
+#include "commands.h"
+#include "support/files.h"
+#include "vm/machine.h"
+
+namespace uprog::cli {
+namespace {
+
+// A host without a drive: commands are refused, time advances only by waits.
+class BareHost final : public vm::Host {
+ public:
+  vm::CommandStatus read(uint32_t, int32_t, Value&) override { return kNoDrive; }
+  vm::CommandStatus write(uint32_t, int32_t, Value) override { return kNoDrive; }
+  vm::CommandStatus execute(uint32_t, int32_t, const Value*, uint32_t) override { return kNoDrive; }
+  uint32_t now_us() override { return now_us_; }
+  void advance_to(uint32_t t) { now_us_ = t; }
+
+ private:
+  static constexpr vm::CommandStatus kNoDrive = 1;
+  uint32_t now_us_ = 0;
+};
+
+std::string format_value(const bytecode::Global& g, Value v) {
+  return g.type == ValueType::Float ? fmt::format("{:g}", v.f) : fmt::format("{}", v.i);
+}
+
+int run(const std::string& path, const std::string& entry) {
+  std::string error;
+  auto bytes = read_binary_file(path, &error);
+  if (!bytes) {
+    fmt::print(stderr, "uprog exec: {}\n", error);
+    return 1;
+  }
+  bytecode::Image image;
+  const bool is_binary = bytes->size() >= 4 && std::memcmp(bytes->data(), "UPRG", 4) == 0;
+  if (is_binary) {
+    if (!bytecode::decode(bytes->data(), bytes->size(), image, error)) {
+      fmt::print(stderr, "uprog exec: {}: {}\n", path, error);
+      return 1;
+    }
+  } else {
+    std::vector<Diagnostic> errors;
+    if (!bytecode::assemble(std::string(bytes->begin(), bytes->end()), path, image, errors)) {
+      fmt::print(stderr, "{}", format_text(errors));
+      return 1;
+    }
+    *bytes = bytecode::encode(image);
+  }
+  const int routine = image.find_routine(entry);
+  if (routine < 0) {
+    fmt::print(stderr, "uprog exec: {}: no routine named '{}'\n", path, entry);
+    return 1;
+  }
+
+  BareHost host;
+  vm::Machine machine;
+  vm::MachineConfig config;
+  bytecode::ImageView view;
+  bytecode::load_image(bytes->data(), bytes->size(), view);
+  std::vector<uint64_t> memory((vm::Machine::memory_needed(view, config) + 7) / 8);
+  const vm::LoadStatus loaded =
+      machine.load(bytes->data(), bytes->size(), config, memory.data(), memory.size() * 8, host);
+  if (!loaded.ok()) {
+    fmt::print(stderr, "uprog exec: {}: {} at code word {}\n", path,
+               loaded.load != bytecode::LoadError::Ok ? bytecode::load_error_text(loaded.load)
+               : loaded.no_memory                   ? "not enough memory"
+                                                    : bytecode::verify_error_text(loaded.verify),
+               loaded.pc);
+    return 1;
+  }
+  machine.start(0, static_cast<uint32_t>(routine));
+  uint64_t executed = 0;
+  vm::SliceResult r{};
+  for (;;) {
+    r = machine.run_slice(0, vm::Budget::unlimited());
+    executed += r.executed;
+    if (r.end == vm::SliceEnd::Waiting) {
+      host.advance_to(host.now_us() + 1000);  // waits advance virtual time in 1 ms steps
+      continue;
+    }
+    if (r.end != vm::SliceEnd::Yielded) break;
+  }
+  const bool failed = r.end == vm::SliceEnd::Error;
+  if (failed) {
+    fmt::print("{}: stopped by run-time error {} ({}) at code word {}\n", entry,
+               static_cast<int>(machine.last_error(0)), vm::run_error_text(machine.last_error(0)),
+               machine.pc(0));
+  } else {
+    fmt::print("{}: finished after {} instructions, {} µs of virtual time\n", entry, executed,
+               host.now_us());
+  }
+  for (uint32_t g = 0; g < image.globals.size(); ++g) {
+    const auto& global = image.globals[g];
+    std::string values;
+    for (uint32_t k = 0; k < global.length && k < 16; ++k) {
+      Value v;
+      machine.read_global(g, k, v);
+      values += (k ? " " : "") + format_value(global, v);
+    }
+    if (global.length > 16) values += " ...";
+    fmt::print("  {} = {}\n", global.name, values);
+  }
+  return failed ? 1 : 0;
+}
+
+}  // namespace
+
+void add_exec(CLI::App& app, Action& action) {
+  auto* cmd = app.add_subcommand("exec", "Run an image or assembly file on the bare VM");
+  auto input = std::make_shared<std::string>();
+  auto entry = std::make_shared<std::string>("main");
+  cmd->add_option("FILE", *input, "image (.upi) or assembly (.s)")->required();
+  cmd->add_option("--entry", *entry, "routine to start")->capture_default_str();
+  cmd->callback([&action, input, entry] { action = [input, entry] { return run(*input, *entry); }; });
+}
+
+}  // namespace uprog::cli
