@@ -1,0 +1,42 @@
+// Appends the preprocessor's output and records, as it goes, where each stretch came from:
+// a Segment where the origin stops advancing one column per character, an Expansion per macro use.
+#pragma once
+#include <string>
+#include <string_view>
+
+#include "preproc/preprocess.h"
+
+namespace uprog::preproc {
+
+class OutputBuilder {
+ public:
+  explicit OutputBuilder(std::string file) : file_(std::move(file)) {}
+
+  // Output that follows comes from `line`, starting at `column` (1-based).
+  void mark(int line, int column) {
+    auto& segs = result_.map.segments;
+    const size_t at = result_.text.size();
+    if (!segs.empty() && segs.back().out_begin == at) segs.pop_back();  // nothing written since
+    if (!segs.empty()) {
+      // Continuing the previous segment needs no new entry.
+      const auto& last = segs.back();
+      if (last.origin.line == line &&
+          static_cast<size_t>(last.origin.column) + (at - last.out_begin) == static_cast<size_t>(column))
+        return;
+    }
+    segs.push_back({at, Location{file_, line, column}});
+  }
+  void append(std::string_view s) { result_.text.append(s); }
+  void append(char c) { result_.text.push_back(c); }
+  size_t size() const { return result_.text.size(); }
+
+  void add_expansion(Expansion e) { result_.map.expansions.push_back(std::move(e)); }
+  const std::string& file() const { return file_; }
+  Preprocessed take() { return std::move(result_); }
+
+ private:
+  std::string file_;
+  Preprocessed result_;
+};
+
+}  // namespace uprog::preproc

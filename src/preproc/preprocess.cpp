@@ -1,0 +1,412 @@
+// The preprocessor's driver: reads the source line by line, runs directives, keeps the stack of
+// open #if blocks, and expands macros in the lines that stay. Every line of input gives exactly
+// one line of output, so line numbers survive; the OutputBuilder records where columns moved.
+#include "preproc/preprocess.h"
+
+#include <algorithm>
+#include <string_view>
+#include <vector>
+
+#include "preproc/const_expr.h"
+#include "preproc/line_scanner.h"
+#include "preproc/macro_table.h"
+#include "preproc/output_builder.h"
+
+namespace uprog::preproc {
+namespace {
+
+enum class Directive {
+  Define, Undef, If, Ifdef, Ifndef, Elseif, Else, Endif,
+  // Extension points: recognised so they can be rejected (or, later, handled) by name.
+  Include, Elifdef, Elifndef, Definevar, Information,
+};
+
+struct DirectiveName {
+  std::string_view name;
+  Directive directive;
+};
+
+constexpr DirectiveName kDirectives[] = {
+    {"define", Directive::Define},       {"undef", Directive::Undef},
+    {"if", Directive::If},               {"ifdef", Directive::Ifdef},
+    {"ifndef", Directive::Ifndef},       {"elseif", Directive::Elseif},
+    {"else", Directive::Else},           {"endif", Directive::Endif},
+    {"include", Directive::Include},     {"elifdef", Directive::Elifdef},
+    {"elifndef", Directive::Elifndef},   {"definevar", Directive::Definevar},
+    {"information", Directive::Information},
+};
+
+// Caps the sum of all expansions in one file, so a line of a million uses of a large macro
+// cannot make the output explode.
+constexpr size_t kMaxTotalExpansionChars = size_t{1} << 24;
+
+// One open #if/#ifdef/#ifndef block.
+struct Conditional {
+  Location at;         // the directive that opened it
+  bool parent_active;  // the lines around the block are kept
+  bool active;         // the lines of the current branch are kept
+  bool taken;          // some branch was already kept (or the parent is skipped)
+  bool seen_else;
+  int elseifs;
+};
+
+size_t skip_blanks(std::string_view s, size_t i) {
+  while (i < s.size() && is_blank(s[i])) ++i;
+  return i;
+}
+std::string_view trim(std::string_view s) {
+  size_t b = skip_blanks(s, 0), e = s.size();
+  while (e > b && is_blank(s[e - 1])) --e;
+  return s.substr(b, e - b);
+}
+
+class Preprocessor {
+ public:
+  Preprocessor(const SourceFile& source, const PreprocOptions& options, DiagnosticList& diagnostics)
+      : source_(source), options_(options), diagnostics_(diagnostics), out_(source.name) {}
+
+  Preprocessed run() {
+    const std::string_view text = source_.text;
+    size_t pos = 0;
+    for (line_ = 1;; ++line_) {
+      const size_t newline = text.find('\n', pos);
+      const size_t end = newline == std::string_view::npos ? text.size() : newline;
+      process_line(text.substr(pos, end - pos));
+      if (newline == std::string_view::npos) break;
+      out_.append('\n');
+      pos = newline + 1;
+    }
+    for (const Conditional& c : stack_)
+      report(PreprocError::UnterminatedIf, c.at,
+             {{c.at, "this #if has no #endif before the end of the file"}});
+    return out_.take();
+  }
+
+ private:
+  bool active() const { return stack_.empty() || stack_.back().active; }
+  Location here(size_t offset) const {
+    return Location{source_.name, line_, static_cast<int>(std::min<size_t>(offset, 1u << 30)) + 1};
+  }
+
+  void report(PreprocError e, Location where, std::vector<DiagnosticNote> notes = {}) {
+    Diagnostic d;
+    d.severity = Severity::Error;
+    d.scheme = options_.scheme;
+    d.code = (options_.code_of ? options_.code_of : gold_code_of)(e);
+    d.message = (options_.text_of ? options_.text_of : gold_text_of)(e);
+    d.where = std::move(where);
+    d.notes = std::move(notes);
+    diagnostics_.add(std::move(d));
+  }
+
+  void process_line(std::string_view line) {
+    out_.mark(line_, 1);
+    if (!in_block_comment_) {
+      const size_t hash = skip_blanks(line, 0);
+      if (hash < line.size() && line[hash] == '#') {
+        const size_t word_begin = skip_blanks(line, hash + 1);
+        size_t word_end = word_begin;
+        while (word_end < line.size() && is_ident_char(line[word_end])) ++word_end;
+        const std::string_view word = line.substr(word_begin, word_end - word_begin);
+        for (const auto& d : kDirectives) {
+          if (d.name == word) return run_directive(d.directive, line, hash, word_end);
+        }
+        if (!word.empty() && !options_.unknown_hash_lines_pass_through) {
+          track_comments(line);
+          if (active()) report(PreprocError::UnknownDirective, here(hash));
+          return;
+        }
+      }
+    }
+    if (active()) {
+      expand_line(line);
+    } else {
+      track_comments(line);
+    }
+  }
+
+  void track_comments(std::string_view line) {
+    spans_.clear();
+    scan_line(line, options_, in_block_comment_, spans_);
+  }
+
+  // --- directives ---------------------------------------------------------------------------
+
+  void run_directive(Directive d, std::string_view line, size_t hash, size_t args_at) {
+    // Comments become blanks, so the arguments keep their columns for diagnostics.
+    std::string clean(line);
+    spans_.clear();
+    scan_line(line, options_, in_block_comment_, spans_);
+    for (const Span& s : spans_) {
+      if (s.kind == SpanKind::Comment) std::fill(clean.begin() + s.begin, clean.begin() + s.end, ' ');
+    }
+    const std::string_view args(clean);
+    const Location at = here(hash);
+    switch (d) {
+      case Directive::Define: if (active()) run_define(args, args_at, at); break;
+      case Directive::Undef: if (active()) run_undef(args, args_at, at); break;
+      case Directive::If: open_block(at, [&] { return condition(args, args_at, at); }); break;
+      case Directive::Ifdef: open_block(at, [&] { return is_defined(args, args_at, at, true); }); break;
+      case Directive::Ifndef: open_block(at, [&] { return is_defined(args, args_at, at, false); }); break;
+      case Directive::Elseif: run_elseif(args, args_at, at); break;
+      case Directive::Else: run_else(at); break;
+      case Directive::Endif: run_endif(at); break;
+      case Directive::Include: extension(options_.allow_include, at); break;
+      case Directive::Elifdef:
+      case Directive::Elifndef: extension(options_.allow_elifdef, at); break;
+      case Directive::Definevar: extension(options_.allow_definevar, at); break;
+      case Directive::Information: extension(options_.allow_information, at); break;
+    }
+    // A /* comment opened on the directive line goes on below it: keep its opening, or the
+    // dialect's lexer would meet its body and its */ without the start.
+    if (in_block_comment_ && active() && !spans_.empty() && spans_.back().kind == SpanKind::Comment) {
+      out_.mark(line_, static_cast<int>(spans_.back().begin) + 1);
+      out_.append(line.substr(spans_.back().begin));
+    }
+  }
+
+  void extension(bool allowed, const Location& at) {
+    if (!active()) return;
+    report(PreprocError::UnknownDirective, at,
+           {{at, allowed ? "this directive is not implemented yet"
+                         : "this directive is not part of this dialect"}});
+  }
+
+  // The first blank-delimited word after the directive: the identifier, valid or not.
+  struct Word {
+    std::string_view text;
+    size_t at;
+  };
+  static Word word_at(std::string_view args, size_t from) {
+    const size_t b = skip_blanks(args, from);
+    size_t e = b;
+    while (e < args.size() && !is_blank(args[e])) ++e;
+    return {args.substr(b, e - b), b};
+  }
+  bool valid_name(std::string_view name) const {
+    if (name.empty() || name.size() > options_.max_name_length) return false;
+    if (!is_ident_start(name[0]) || name[0] == '_') return false;  // "a name must start with a letter"
+    return std::all_of(name.begin(), name.end(), is_ident_char);
+  }
+  // Reports a missing or invalid name; returns whether the name can be used.
+  bool check_name(const Word& w, const Location& directive_at) {
+    if (w.text.empty()) {
+      report(PreprocError::IdentifierMissing, directive_at);
+      return false;
+    }
+    if (!valid_name(w.text)) {
+      report(PreprocError::InvalidIdentifier, here(w.at));
+      return false;
+    }
+    return true;
+  }
+
+  void run_define(std::string_view args, size_t from, const Location& at) {
+    const Word name = word_at(args, from);
+    if (!check_name(name, at)) return;
+    if (const Macro* old = macros_.find(name.text)) {
+      report(PreprocError::AlreadyDefined, here(name.at),
+             {{old->defined_at, "'" + std::string(name.text) + "' was defined here"}});
+      return;
+    }
+    if (define_count_ >= options_.max_defines) {
+      report(PreprocError::TooManyDefines, here(name.at));
+      return;
+    }
+    ++define_count_;
+    Macro m;
+    m.body = std::string(trim(args.substr(name.at + name.text.size())));
+    m.defined_at = at;
+    if (!m.body.empty()) {
+      // Manual 2.9.1: a string that evaluates is replaced by its value, any other by itself.
+      const EvalResult r = evaluate_constant(m.body, [this](std::string_view n) { return value_of(n); });
+      if (r.status == EvalStatus::Ok) m.value = r.value;
+    }
+    macros_.define(std::string(name.text), std::move(m));
+    too_complex_.clear();
+  }
+
+  void run_undef(std::string_view args, size_t from, const Location& at) {
+    const Word name = word_at(args, from);
+    if (!check_name(name, at)) return;
+    if (!macros_.undefine(name.text)) return report(PreprocError::NotDefined, here(name.at));
+    too_complex_.clear();
+  }
+
+  std::optional<TypedValue> value_of(std::string_view name) const {
+    const Macro* m = macros_.find(name);
+    if (m) return m->value;
+    return std::nullopt;
+  }
+
+  // #if's and #elseif's condition; false after an error, so the branch is skipped.
+  bool condition(std::string_view args, size_t from, const Location& at) {
+    const std::string_view expr = args.substr(std::min(from, args.size()));
+    const EvalResult r = evaluate_constant(expr, [this](std::string_view n) -> std::optional<TypedValue> {
+      if (const Macro* m = macros_.find(n); m && m->value) return m->value;
+      if (options_.undefined_identifier_is_zero && !macros_.find(n)) return TypedValue::of_int(0);
+      return std::nullopt;
+    });
+    const Location where = here(from + r.error_at);
+    switch (r.status) {
+      case EvalStatus::Ok: return is_true(r.value);
+      case EvalStatus::Empty: report(PreprocError::ConditionMissing, at); break;
+      case EvalStatus::DivisionByZero: report(PreprocError::DivisionByZero, where); break;
+      default: report(PreprocError::MismatchedType, where, {{where, r.detail}}); break;
+    }
+    return false;
+  }
+
+  bool is_defined(std::string_view args, size_t from, const Location& at, bool want_defined) {
+    const Word name = word_at(args, from);
+    if (!check_name(name, at)) return false;
+    const Word extra = word_at(args, name.at + name.text.size());
+    if (!extra.text.empty()) {
+      report(PreprocError::InvalidIdentifier, here(extra.at),
+             {{here(extra.at), "only one identifier may follow #ifdef or #ifndef"}});
+      return false;
+    }
+    return (macros_.find(name.text) != nullptr) == want_defined;
+  }
+
+  template <class Condition>
+  void open_block(const Location& at, Condition cond) {
+    if (!active()) {
+      // A skipped block's nested directives only keep the nesting; nothing is evaluated.
+      stack_.push_back({at, false, false, true, false, 0});
+      return;
+    }
+    const bool keep = cond();
+    stack_.push_back({at, true, keep, keep, false, 0});
+  }
+
+  void run_elseif(std::string_view args, size_t from, const Location& at) {
+    if (stack_.empty()) return report(PreprocError::MisplacedElse, at);
+    Conditional& c = stack_.back();
+    if (c.seen_else) {
+      c.active = false;
+      return report(PreprocError::MisplacedElse, at,
+                    {{c.at, "#else must be the last directive before #endif"}});
+    }
+    if (++c.elseifs > options_.max_elseifs) {
+      c.active = false;
+      return report(PreprocError::TooManyElseifs, at,
+                    {{at, "more than " + std::to_string(options_.max_elseifs) +
+                              " #elseif directives in one #if block"}});
+    }
+    if (!c.parent_active || c.taken) {
+      c.active = false;
+      return;
+    }
+    c.active = condition(args, from, at);
+    c.taken = c.active;
+  }
+
+  void run_else(const Location& at) {
+    if (stack_.empty()) return report(PreprocError::MisplacedElse, at);
+    Conditional& c = stack_.back();
+    if (c.seen_else) {
+      c.active = false;
+      return report(PreprocError::MisplacedElse, at, {{c.at, "this #if already has an #else"}});
+    }
+    c.seen_else = true;
+    c.active = c.parent_active && !c.taken;
+    c.taken = true;
+  }
+
+  void run_endif(const Location& at) {
+    if (stack_.empty()) return report(PreprocError::MisplacedEndif, at);
+    stack_.pop_back();
+  }
+
+  // --- expansion ----------------------------------------------------------------------------
+
+  static bool expands(const Macro* m) { return m && (m->value || !m->body.empty()); }
+
+  void expand_line(std::string_view line) {
+    std::vector<Span> spans;
+    scan_line(line, options_, in_block_comment_, spans);
+    for (const Span& s : spans) {
+      const std::string_view piece = line.substr(s.begin, s.end - s.begin);
+      const Macro* m = s.kind == SpanKind::Identifier ? macros_.find(piece) : nullptr;
+      if (!expands(m)) {
+        out_.append(piece);
+        continue;
+      }
+      expand_use(piece, *m, here(s.begin));
+      out_.mark(line_, static_cast<int>(s.end) + 1);
+    }
+  }
+
+  void expand_use(std::string_view name, const Macro& m, const Location& used_at) {
+    std::string text;
+    bool ok = total_expanded_ < kMaxTotalExpansionChars &&
+              std::find(too_complex_.begin(), too_complex_.end(), name) == too_complex_.end();
+    if (ok && m.value) {
+      text = format_constant(*m.value);
+    } else if (ok) {
+      std::vector<std::string_view> painted{name};  // C's rule: a macro is not expanded inside itself
+      ok = expand_body(m.body, painted, 1, text);
+    }
+    if (!ok) {
+      // Until the table changes this name fails the same way; remembering it keeps a file of
+      // many such uses linear.
+      if (std::find(too_complex_.begin(), too_complex_.end(), name) == too_complex_.end())
+        too_complex_.emplace_back(name);
+      report(PreprocError::ExpansionTooComplex, used_at,
+             {{m.defined_at, "expanding '" + std::string(name) + "' goes too deep or too long"}});
+      out_.append(name);
+      return;
+    }
+    total_expanded_ += text.size();
+    const size_t begin = out_.size();
+    out_.append(text);
+    out_.add_expansion({begin, out_.size(), std::string(name), used_at, m.defined_at});
+  }
+
+  // A string body is rescanned, as in C, so it may use other #define names.
+  bool expand_body(std::string_view body, std::vector<std::string_view>& painted, int depth,
+                   std::string& text) {
+    if (depth > options_.max_expansion_depth) return false;
+    bool in_comment = false;
+    std::vector<Span> spans;
+    scan_line(body, options_, in_comment, spans);
+    for (const Span& s : spans) {
+      const std::string_view piece = body.substr(s.begin, s.end - s.begin);
+      const Macro* m = s.kind == SpanKind::Identifier ? macros_.find(piece) : nullptr;
+      if (!expands(m) || std::find(painted.begin(), painted.end(), piece) != painted.end()) {
+        text.append(piece);
+      } else if (m->value) {
+        text.append(format_constant(*m->value));
+      } else {
+        painted.push_back(piece);
+        if (!expand_body(m->body, painted, depth + 1, text)) return false;
+        painted.pop_back();
+      }
+      if (text.size() > options_.max_expansion_chars) return false;
+    }
+    return true;
+  }
+
+  const SourceFile& source_;
+  const PreprocOptions& options_;
+  DiagnosticList& diagnostics_;
+  OutputBuilder out_;
+  MacroTable macros_;
+  std::vector<Conditional> stack_;
+  std::vector<Span> spans_;
+  int line_ = 1;
+  int define_count_ = 0;
+  bool in_block_comment_ = false;
+  size_t total_expanded_ = 0;
+  std::vector<std::string> too_complex_;  // names whose expansion failed since the last change
+};
+
+}  // namespace
+
+Preprocessed preprocess(const SourceFile& source, const PreprocOptions& options,
+                        DiagnosticList& diagnostics) {
+  return Preprocessor(source, options, diagnostics).run();
+}
+
+}  // namespace uprog::preproc
