@@ -1,0 +1,429 @@
+// The servo cycle: inputs, enable delay, profile and smoothing, limits, loops, motor, faults.
+#include "drive/axis.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "drive/faults.h"
+#include "drive/inputs.h"
+
+namespace uprog::drive {
+namespace {
+
+double floor_mod(double a, double m) { return a - m * std::floor(a / m); }
+
+}  // namespace
+
+Axis::Axis(const MotorModel& motor) : motor_(motor) {
+  smooth_position_.reset(1, 0.0);
+  smooth_velocity_.reset(1, 0.0);
+  smooth_accel_.reset(1, 0.0);
+}
+
+// ---------------------------------------------------------------- parameters
+
+Status Axis::load_parameters(const Parameters& params) {
+  if (motor_on_) return Status::kMotorOn;
+  params_ = params;
+  for (int n = 1; n <= kInputCount; ++n) input_was_active_[n - 1] = input_active(n);
+  return Status::kOk;
+}
+
+Status Axis::set_unit_mode(int32_t mode) {
+  if (mode != 1 && mode != 2 && mode != 5) return Status::kOutOfRange;
+  if (motor_on_) return Status::kMotorOn;
+  params_.unit_mode = mode;
+  return Status::kOk;
+}
+
+Status Axis::set_input_logic(int n, int32_t logic) {
+  if (n < 1 || n > kInputCount || !valid_input_logic(logic)) return Status::kOutOfRange;
+  params_.input_logic[n - 1] = logic;
+  // A change of function is not an edge: remember the new logical state as the old one.
+  input_was_active_[n - 1] = input_active(n);
+  return Status::kOk;
+}
+
+Status Axis::set_period_us(int32_t period_us) {
+  if (period_us < 25 || period_us > 2000) return Status::kOutOfRange;
+  params_.servo_period_us = period_us;
+  return Status::kOk;
+}
+
+// ---------------------------------------------------------------- enable
+
+Status Axis::set_motor_on(bool on) {
+  if (!on) {
+    motor_off();
+    return Status::kOk;
+  }
+  if (fault_causes_ != 0) return Status::kFaultLatched;
+  for (int n = 1; n <= kInputCount; ++n)
+    if (input_function(params_.input_logic[n - 1]) == InputFunction::kInhibit && input_active(n))
+      return Status::kInhibitActive;
+  if (motor_on_) return Status::kOk;
+  fault_bits_ = 0;
+  motor_on_ = true;
+  servo_ready_ = false;
+  enable_elapsed_us_ = 0;
+  return Status::kOk;
+}
+
+void Axis::motor_off() {
+  motor_on_ = false;
+  servo_ready_ = false;
+  moving_ = false;
+  current_command_a_ = 0.0;
+  velocity_command_counts_per_s_ = 0.0;
+}
+
+void Axis::latch_fault(uint32_t bits) {
+  if (fault_bits_ == 0) pending_events_ |= kEventFault;
+  fault_bits_ |= bits;
+  motor_off();
+}
+
+bool Axis::inject_fault(std::string_view name, bool persistent) {
+  const uint32_t bits = fault_bits(name);
+  if (bits == 0) return false;
+  if (persistent) fault_causes_ |= bits;
+  latch_fault(bits);
+  return true;
+}
+
+void Axis::clear_fault_cause(std::string_view name) { fault_causes_ &= ~fault_bits(name); }
+
+// ---------------------------------------------------------------- motion commands
+
+bool Axis::modulo_active() const { return params_.modulo_high_counts > params_.modulo_low_counts; }
+
+double Axis::user_to_internal(int64_t user) const {
+  return static_cast<double>(user) - offset_counts_;
+}
+
+int32_t Axis::internal_to_user(double internal) const {
+  const double user = std::round(internal + offset_counts_);
+  if (modulo_active()) {
+    const double low = params_.modulo_low_counts;
+    const double range = static_cast<double>(params_.modulo_high_counts) - low;
+    return static_cast<int32_t>(low + floor_mod(user - low, range));
+  }
+  // A 32-bit position counter wraps, as a real drive's does.
+  return static_cast<int32_t>(static_cast<uint32_t>(static_cast<int64_t>(floor_mod(user, 4294967296.0))));
+}
+
+void Axis::set_absolute_target(int32_t target_counts) {
+  pa_counts_ = target_counts;
+  pending_ = Pending::kMove;
+  if (modulo_active()) {
+    // Go the shortest way round to the equivalent of the target.
+    const double range =
+        static_cast<double>(params_.modulo_high_counts) - params_.modulo_low_counts;
+    const double here_user = raw_.position_counts + offset_counts_;
+    const double delta = floor_mod(target_counts - here_user + range / 2.0, range) - range / 2.0;
+    target_internal_ = raw_.position_counts + delta;
+    return;
+  }
+  target_internal_ = user_to_internal(target_counts);
+}
+
+void Axis::set_relative_move(int32_t distance_counts) {
+  pr_counts_ = distance_counts;
+  pending_ = Pending::kMove;
+  target_internal_ += distance_counts;
+}
+
+void Axis::set_jog_velocity(int32_t velocity_counts_per_s) {
+  params_.jog_velocity_counts_per_s = velocity_counts_per_s;
+  pending_ = Pending::kJog;
+}
+
+void Axis::start_profile(const Profile& profile, bool stopping) {
+  profile_ = profile;
+  stopping_ = stopping;
+  profile_start_cycle_ = cycles_;
+  if (!moving_) {
+    // A new motion from rest takes the current SF; while moving the window stays as it is.
+    const double window_us = params_.smoothing_ms * 1000.0;
+    const auto length =
+        std::max<uint32_t>(1u, static_cast<uint32_t>(std::lround(window_us / params_.servo_period_us)));
+    smooth_position_.reset(length, raw_.position_counts);
+    smooth_velocity_.reset(length, raw_.velocity_counts_per_s);
+    smooth_accel_.reset(length, 0.0);
+  }
+  moving_ = true;
+}
+
+Status Axis::begin() {
+  if (!motor_on_) return Status::kMotorOff;
+  if (params_.unit_mode == 1) return Status::kModeNotSupported;
+  const MotionLimits limits{static_cast<double>(params_.speed_counts_per_s),
+                            static_cast<double>(params_.accel_counts_per_s2),
+                            static_cast<double>(params_.decel_counts_per_s2)};
+  const double vh = std::max(1.0, static_cast<double>(params_.velocity_high_counts_per_s));
+  const double vl = std::min(-1.0, static_cast<double>(params_.velocity_low_counts_per_s));
+  if (params_.unit_mode == 2 || pending_ == Pending::kJog) {
+    const double jog = std::clamp(static_cast<double>(params_.jog_velocity_counts_per_s), vl, vh);
+    if (params_.unit_mode == 5 && !modulo_active() && jog != 0.0) {
+      // A position-mode jog ends at the software limit in its direction.
+      MotionLimits to_limit = limits;
+      to_limit.speed_counts_per_s = std::abs(jog);
+      const double limit = jog > 0 ? user_to_internal(params_.position_high_counts)
+                                   : user_to_internal(params_.position_low_counts);
+      start_profile(plan_move(raw_.position_counts, raw_.velocity_counts_per_s, limit, to_limit), false);
+    } else {
+      start_profile(plan_jog(raw_.position_counts, raw_.velocity_counts_per_s, jog, limits), false);
+    }
+    return Status::kOk;
+  }
+  double target = target_internal_;
+  if (!modulo_active()) {
+    target = std::clamp(target, user_to_internal(params_.position_low_counts),
+                        user_to_internal(params_.position_high_counts));
+  }
+  MotionLimits move = limits;
+  move.speed_counts_per_s = std::min(move.speed_counts_per_s, target >= raw_.position_counts ? vh : -vl);
+  start_profile(plan_move(raw_.position_counts, raw_.velocity_counts_per_s, target, move), false);
+  return Status::kOk;
+}
+
+void Axis::stop_with(double decel_counts_per_s2) {
+  if (!moving_) return;
+  start_profile(plan_stop(raw_.position_counts, raw_.velocity_counts_per_s, decel_counts_per_s2), true);
+}
+
+void Axis::stop() { stop_with(params_.decel_counts_per_s2); }
+
+// ---------------------------------------------------------------- feedback
+
+int32_t Axis::position() const { return internal_to_user(motor_state_.position_counts); }
+
+void Axis::set_position(int32_t position_counts) {
+  offset_counts_ = position_counts - std::round(motor_state_.position_counts);
+}
+
+int32_t Axis::velocity() const {
+  return static_cast<int32_t>(std::lround(motor_state_.velocity_counts_per_s));
+}
+
+int32_t Axis::position_error() const {
+  return static_cast<int32_t>(std::lround(ref_.position_counts - motor_state_.position_counts));
+}
+
+int32_t Axis::reference_velocity() const {
+  return static_cast<int32_t>(std::lround(ref_.velocity_counts_per_s));
+}
+
+int32_t Axis::reference_position() const { return internal_to_user(ref_.position_counts); }
+
+int32_t Axis::motion_status() const {
+  if (!servo_ready_ || fault_bits_ != 0) return 3;
+  if (moving_) return 2;
+  if (params_.unit_mode == 5 &&
+      std::abs(ref_.position_counts - motor_state_.position_counts) > kInPositionWindow_counts)
+    return 1;
+  return 0;
+}
+
+uint32_t Axis::status_register() const {
+  uint32_t sr = 0;
+  if (fault_bits_ != 0) sr |= kSrFault;
+  if (motor_on_) sr |= kSrMotorOn;
+  if (moving_) sr |= kSrMoving;
+  sr |= (static_cast<uint32_t>(params_.unit_mode) & 7u) << kSrUnitModeShift;
+  return sr;
+}
+
+// ---------------------------------------------------------------- I/O
+
+void Axis::set_input_level(int n, bool high) {
+  if (n >= 1 && n <= kInputCount) input_levels_[n - 1] = high;
+}
+
+bool Axis::input_active(int n) const {
+  if (n < 1 || n > kInputCount) return false;
+  return drive::input_active(params_.input_logic[n - 1], input_levels_[n - 1]);
+}
+
+uint32_t Axis::input_port() const {
+  uint32_t bits = 0;
+  for (int n = 1; n <= kInputCount; ++n)
+    if (input_active(n)) bits |= 1u << (n - 1);
+  return bits;
+}
+
+void Axis::set_output(int n, bool on) {
+  if (n < 1 || n > kOutputCount) return;
+  const uint32_t bit = 1u << (n - 1);
+  outputs_ = on ? (outputs_ | bit) : (outputs_ & ~bit);
+}
+
+// ---------------------------------------------------------------- the servo cycle
+
+uint32_t Axis::scan_inputs() {
+  uint32_t events = 0;
+  for (int n = 1; n <= kInputCount; ++n) {
+    const int32_t logic = params_.input_logic[n - 1];
+    const bool active = input_active(n);
+    const bool rose = active && !input_was_active_[n - 1];
+    const bool fell = !active && input_was_active_[n - 1];
+    input_was_active_[n - 1] = active;
+    switch (input_function(logic)) {
+      case InputFunction::kInhibit:
+        if (active && motor_on_) motor_off();
+        if (fell) events |= kEventInhibitReleased;
+        break;
+      case InputFunction::kGeneralPurpose:
+        if (rose) events |= general_input_event(n);
+        break;
+      case InputFunction::kReverseLimit:
+        if (rose) events |= kEventReverseLimit;
+        break;
+      case InputFunction::kForwardLimit:
+        if (rose) events |= kEventForwardLimit;
+        break;
+      case InputFunction::kBegin:
+        if (rose) {
+          events |= kEventBegin;
+          (void)begin();  // the event is reported even when the BG itself is refused
+        }
+        break;
+      case InputFunction::kHome:
+        if (rose) events |= kEventHome;
+        break;
+      case InputFunction::kHardStop:
+        if (rose) events |= kEventHardStop;
+        break;
+    }
+  }
+  return events;
+}
+
+// Limit switches stop motion toward them and hard stop stops all motion, with SD.
+void Axis::enforce_limits() {
+  if (!moving_) return;
+  bool block_forward = false, block_reverse = false, hard_stop = false;
+  for (int n = 1; n <= kInputCount; ++n) {
+    if (!input_active(n)) continue;
+    switch (input_function(params_.input_logic[n - 1])) {
+      case InputFunction::kForwardLimit: block_forward = true; break;
+      case InputFunction::kReverseLimit: block_reverse = true; break;
+      case InputFunction::kHardStop: hard_stop = true; break;
+      default: break;
+    }
+  }
+  if (stopping_) return;
+  const ProfileSample end = profile_.final_state();
+  double heading = raw_.velocity_counts_per_s;
+  if (heading == 0.0) heading = end.velocity_counts_per_s + (end.position_counts - raw_.position_counts);
+  if (hard_stop || (block_forward && heading > 0.0) || (block_reverse && heading < 0.0))
+    stop_with(params_.stop_decel_counts_per_s2);
+}
+
+void Axis::advance_profile() {
+  if (!moving_) return;
+  const double t_s = static_cast<double>(cycles_ - profile_start_cycle_) * dt_s();
+  raw_ = sample(profile_, t_s);
+  const bool profile_done = t_s >= profile_.duration_s() && raw_.velocity_counts_per_s == 0.0;
+  if (profile_done) raw_ = profile_.final_state();
+  ref_.position_counts = smooth_position_.push(raw_.position_counts);
+  ref_.velocity_counts_per_s = smooth_velocity_.push(raw_.velocity_counts_per_s);
+  ref_.accel_counts_per_s2 = smooth_accel_.push(raw_.accel_counts_per_s2);
+  if (profile_done && smooth_position_.settled() && smooth_velocity_.settled() &&
+      smooth_accel_.settled()) {
+    moving_ = false;
+    ref_ = raw_;
+  }
+}
+
+double Axis::current_limit_a() {
+  const double peak = params_.peak_current_a;
+  const double continuous = std::min(static_cast<double>(params_.continuous_current_a), peak);
+  if (std::abs(current_command_a_) > continuous) above_continuous_s_ += dt_s();
+  else above_continuous_s_ = 0.0;
+  return above_continuous_s_ > kPeakCurrentTime_s ? continuous : peak;
+}
+
+void Axis::close_loop() {
+  const double dt = dt_s();
+  const double limit_a = current_limit_a();
+  const LoopInputs in{ref_.position_counts, ref_.velocity_counts_per_s, ref_.accel_counts_per_s2,
+                      motor_state_.position_counts, motor_state_.velocity_counts_per_s,
+                      motor_.accel_per_amp_counts_per_s2()};
+  switch (params_.unit_mode) {
+    case 1:
+      current_command_a_ = std::clamp(static_cast<double>(torque_command_a_), -limit_a, limit_a);
+      break;
+    case 2:
+      velocity_command_counts_per_s_ = ref_.velocity_counts_per_s;
+      current_command_a_ = velocity_loop(params_.gains, loop_, velocity_command_counts_per_s_, in, limit_a, dt);
+      break;
+    default:
+      velocity_command_counts_per_s_ = position_loop(params_.gains, loop_, in, dt);
+      current_command_a_ = velocity_loop(params_.gains, loop_, velocity_command_counts_per_s_, in, limit_a, dt);
+      break;
+  }
+  const double voltage = current_loop(params_.gains, loop_, current_command_a_,
+                                      motor_state_.current_a, motor_.bus_voltage_v, dt);
+  step_motor(motor_, motor_state_, voltage, dt);
+}
+
+uint32_t Axis::step() {
+  uint32_t events = pending_events_;
+  pending_events_ = 0;
+  ++cycles_;
+  time_us_ += period_us();
+  events |= scan_inputs();
+
+  if (motor_on_ && !servo_ready_) {
+    enable_elapsed_us_ += period_us();
+    if (enable_elapsed_us_ >= kEnableDelay_us) {
+      servo_ready_ = true;
+      loop_ = LoopState{};
+      raw_ = {motor_state_.position_counts, 0.0, 0.0};
+      ref_ = raw_;
+      smooth_position_.reset(1, raw_.position_counts);
+      smooth_velocity_.reset(1, 0.0);
+      smooth_accel_.reset(1, 0.0);
+      target_internal_ = raw_.position_counts;
+      pa_counts_ = internal_to_user(target_internal_);
+    }
+  }
+
+  if (servo_ready_) {
+    enforce_limits();
+    advance_profile();
+    close_loop();
+  } else {
+    // The bridge is open: no current flows and the load coasts; the reference follows the
+    // feedback so that PE stays 0 and enabling does not jump.
+    motor_state_.current_a = 0.0;
+    const double back_emf_v = motor_.torque_constant_nm_per_a *
+                              motor_state_.velocity_counts_per_s / motor_.counts_per_rad();
+    step_motor(motor_, motor_state_, back_emf_v, dt_s());
+    motor_state_.current_a = 0.0;
+    raw_ = {motor_state_.position_counts, 0.0, 0.0};
+    ref_ = raw_;
+  }
+
+  if (servo_ready_) {
+    const double position_error = ref_.position_counts - motor_state_.position_counts;
+    const double velocity_error = velocity_command_counts_per_s_ - motor_state_.velocity_counts_per_s;
+    const double v = motor_state_.velocity_counts_per_s;
+    if (params_.unit_mode == 5 && std::abs(position_error) > params_.max_position_error_counts)
+      latch_fault(kFaultFollowingError);
+    else if (params_.unit_mode != 1 && std::abs(velocity_error) > params_.max_velocity_error_counts_per_s)
+      latch_fault(kFaultVelocityError);
+    else if (v > kSpeedLimitMargin * std::max(1, params_.velocity_high_counts_per_s) ||
+             v < kSpeedLimitMargin * std::min(-1, params_.velocity_low_counts_per_s))
+      latch_fault(kFaultSpeedLimit);
+    else if (std::abs(motor_state_.current_a) > 1.5 * params_.peak_current_a + 0.1)
+      latch_fault(kFaultOvercurrent);
+  }
+  events |= pending_events_;
+  pending_events_ = 0;
+  last_events_ = events;
+  return events;
+}
+
+}  // namespace uprog::drive

@@ -1,0 +1,60 @@
+// Motion profiles as pure functions of their inputs (in the manner of Ruckig): a plan is a start
+// state and a short list of constant-acceleration segments; sampling it at a time is exact.
+#pragma once
+#include <array>
+#include <cstdint>
+
+namespace uprog::drive {
+
+struct MotionLimits {
+  double speed_counts_per_s;         // SP, > 0
+  double accel_counts_per_s2;        // AC, > 0 (used to speed up)
+  double decel_counts_per_s2;        // DC, > 0 (used to slow down)
+};
+
+struct Segment {
+  double duration_s;
+  double accel_counts_per_s2;
+};
+
+// Reference state at one instant.
+struct ProfileSample {
+  double position_counts;
+  double velocity_counts_per_s;
+  double accel_counts_per_s2;
+};
+
+// After its last segment a profile continues with constant velocity: zero for a move or a stop,
+// the jog velocity for a jog.
+struct Profile {
+  static constexpr int kMaxSegments = 6;
+  double start_position_counts = 0.0;
+  double start_velocity_counts_per_s = 0.0;
+  std::array<Segment, kMaxSegments> segments{};
+  int segment_count = 0;
+  double end_velocity_counts_per_s = 0.0;  // exact, so a move ends at rest without rounding
+  bool has_target = false;                 // a move: from its end on, the position is exactly
+  double target_counts = 0.0;              // the target, free of the segments' rounding
+
+  double duration_s() const;
+  // The state the profile reaches at its end (and keeps, moving on at the final velocity).
+  ProfileSample final_state() const;
+};
+
+// A point-to-point move from (position, velocity) to rest at target. If the start velocity
+// would carry the axis past the target, the plan brakes with DC first and comes back.
+Profile plan_move(double start_position_counts, double start_velocity_counts_per_s,
+                  double target_counts, const MotionLimits& limits);
+
+// An endless jog: ramp from the start velocity to jog velocity (AC to speed up, DC to slow down).
+Profile plan_jog(double start_position_counts, double start_velocity_counts_per_s,
+                 double jog_velocity_counts_per_s, const MotionLimits& limits);
+
+// Decelerate to standstill with the given deceleration.
+Profile plan_stop(double start_position_counts, double start_velocity_counts_per_s,
+                  double decel_counts_per_s2);
+
+// The reference at t_s seconds after the profile's start (t_s < 0 gives the start state).
+ProfileSample sample(const Profile& profile, double t_s);
+
+}  // namespace uprog::drive
