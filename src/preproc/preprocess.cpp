@@ -203,6 +203,10 @@ class Preprocessor {
 
   void run_define(std::string_view args, size_t from, const Location& at) {
     const Word name = word_at(args, from);
+    if (options_.allow_function_macros && name.text.find('(') != std::string_view::npos) {
+      return report(PreprocError::UnknownDirective, at,
+                    {{at, "function-like macros are not implemented yet"}});
+    }
     if (!check_name(name, at)) return;
     if (const Macro* old = macros_.find(name.text)) {
       report(PreprocError::AlreadyDefined, here(name.at),

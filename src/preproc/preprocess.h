@@ -70,7 +70,8 @@ struct PreprocOptions {
   bool allow_information = false;      // #information text (Akribis PUP)
 };
 
-// One stretch of output text that came from a macro expansion.
+// One stretch of output text that came from a macro expansion. A string macro's replacement is
+// rescanned; names it expands are part of the outermost use's stretch, not expansions of their own.
 struct Expansion {
   size_t begin = 0, end = 0;  // output offsets [begin, end)
   std::string macro;
@@ -81,6 +82,7 @@ struct Expansion {
 class SourceMap {
  public:
   // The original place of output offset `offset` (inside an expansion: where it was used).
+  // Two binary searches; columns count bytes from 1. Past the end: the end of the last line.
   Location locate(size_t offset) const;
   // The expansion that produced `offset`, or nullptr.
   const Expansion* expansion_at(size_t offset) const;

@@ -61,6 +61,7 @@ PreprocOptions options_for(const std::string& spec) {
     if (word == "undefined_identifier_is_zero") o.undefined_identifier_is_zero = true;
     else if (word == "no_unknown_hash_lines") o.unknown_hash_lines_pass_through = false;
     else if (word == "allow_include") o.allow_include = true;
+    else if (word == "allow_function_macros") o.allow_function_macros = true;
     else ADD_FAILURE() << "unknown option in case: " << word;
   }
   return o;
@@ -104,7 +105,7 @@ TEST_P(PreprocCase, GivesExpectedOutputAndDiagnostics) {
   EXPECT_EQ(got, want);
 }
 
-INSTANTIATE_TEST_SUITE_P(Cases, PreprocCase, ::testing::ValuesIn(case_files()),
+INSTANTIATE_TEST_SUITE_P(preproc, PreprocCase, ::testing::ValuesIn(case_files()),
                          [](const ::testing::TestParamInfo<fs::path>& param_info) {
                            std::string name = param_info.param.stem().string();
                            for (char& ch : name) {
@@ -114,7 +115,7 @@ INSTANTIATE_TEST_SUITE_P(Cases, PreprocCase, ::testing::ValuesIn(case_files()),
                          });
 
 // Every preprocessor code of Gold's table has a case that produces it.
-TEST(PreprocCases, EveryGoldCodeHasACase) {
+TEST(preproc_cases, EveryGoldCodeHasACase) {
   std::set<int> seen;
   for (const fs::path& f : case_files()) {
     const Case c = read_case(f);

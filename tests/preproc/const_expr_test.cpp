@@ -14,7 +14,7 @@ std::optional<TypedValue> no_names(std::string_view) { return std::nullopt; }
 
 EvalResult eval(const std::string& s) { return evaluate_constant(s, no_names); }
 
-TEST(PreprocConstExpr, ResultTypesFollowManual210) {
+TEST(preproc_const_expr, ResultTypesFollowManual210) {
   EXPECT_FALSE(eval("1+2").value.is_float());
   EXPECT_TRUE(eval("1+2.0").value.is_float());
   EXPECT_FALSE(eval("1.5 < 2.5").value.is_float());
@@ -26,7 +26,7 @@ TEST(PreprocConstExpr, ResultTypesFollowManual210) {
   EXPECT_FALSE(eval("46340*46340").value.is_float());   // still fits
 }
 
-TEST(PreprocConstExpr, NumberForms) {
+TEST(preproc_const_expr, NumberForms) {
   EXPECT_EQ(eval("0x10").value.value.i, 16);             // manual 1.3.1
   EXPECT_EQ(eval("0X7fffffff").value.value.i, INT32_MAX);
   EXPECT_EQ(eval("0x80000000").value.value.i, INT32_MIN);  // manual 1.3 note
@@ -39,7 +39,7 @@ TEST(PreprocConstExpr, NumberForms) {
   EXPECT_EQ(eval("-2147483647-1").value.value.i, INT32_MIN);
 }
 
-TEST(PreprocConstExpr, Errors) {
+TEST(preproc_const_expr, Errors) {
   EXPECT_EQ(eval("").status, EvalStatus::Empty);
   EXPECT_EQ(eval("  \t ").status, EvalStatus::Empty);
   EXPECT_EQ(eval("1 2").status, EvalStatus::Syntax);
@@ -60,12 +60,12 @@ TEST(PreprocConstExpr, Errors) {
   EXPECT_EQ(eval(std::string(100, '(') + "1" + std::string(100, ')')).status, EvalStatus::Ok);
 }
 
-TEST(PreprocConstExpr, ErrorOffsetPointsAtTheToken) {
+TEST(preproc_const_expr, ErrorOffsetPointsAtTheToken) {
   EXPECT_EQ(eval(" 1 + X").error_at, 5u);
   EXPECT_EQ(eval("4 / 0").error_at, 2u);
 }
 
-TEST(PreprocConstExpr, IdentifiersUseTheLookup) {
+TEST(preproc_const_expr, IdentifiersUseTheLookup) {
   const IdentifierLookup lookup = [](std::string_view n) -> std::optional<TypedValue> {
     if (n == "TEN") return TypedValue::of_int(10);
     if (n == "HALF") return TypedValue::of_float(0.5f);
@@ -76,7 +76,7 @@ TEST(PreprocConstExpr, IdentifiersUseTheLookup) {
   EXPECT_EQ(evaluate_constant("TEN_", lookup).status, EvalStatus::UnknownIdentifier);
 }
 
-TEST(PreprocConstExpr, ArithmeticEdges) {
+TEST(preproc_const_expr, ArithmeticEdges) {
   EXPECT_EQ(eval("-0x80000000").value.value.i, INT32_MAX);  // manual 1.5
   EXPECT_EQ(eval("0x80000000/-1").value.value.i, INT32_MAX);
   EXPECT_EQ(eval("-7/2").value.value.i, -3);  // truncates toward zero
@@ -85,7 +85,7 @@ TEST(PreprocConstExpr, ArithmeticEdges) {
   EXPECT_EQ(eval("~3.2").value.value.i, -4);
 }
 
-TEST(PreprocConstExpr, FormatReadsBack) {
+TEST(preproc_const_expr, FormatReadsBack) {
   EXPECT_EQ(format_constant(TypedValue::of_int(42)), "42");
   EXPECT_EQ(format_constant(TypedValue::of_int(-42)), "(-42)");
   EXPECT_EQ(format_constant(TypedValue::of_int(INT32_MIN)), "0x80000000");

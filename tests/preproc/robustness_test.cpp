@@ -17,7 +17,7 @@ Preprocessed run(const std::string& text, DiagnosticList& d) {
 
 size_t lines(const std::string& s) { return static_cast<size_t>(std::count(s.begin(), s.end(), '\n')); }
 
-TEST(PreprocRobustness, RandomBytesAndRandomDirectives) {
+TEST(preproc_robustness, RandomBytesAndRandomDirectives) {
   std::mt19937 rng(12345);
   const std::string pieces[] = {"#define ", "#if ", "#elseif ", "#else", "#endif", "#undef ", "#ifdef ",
                                 "A", "B ", "1", "/*", "*/", "//", "**", "\"", "\n", "(", ")", "-", "0x",
@@ -40,7 +40,7 @@ TEST(PreprocRobustness, RandomBytesAndRandomDirectives) {
   }
 }
 
-TEST(PreprocRobustness, HugeLine) {
+TEST(preproc_robustness, HugeLine) {
   std::string src = "#define X 1\n" + std::string(1 << 22, 'a') + " X " + std::string(1 << 20, '(') + "\n";
   DiagnosticList d;
   const Preprocessed p = run(src, d);
@@ -48,7 +48,7 @@ TEST(PreprocRobustness, HugeLine) {
   EXPECT_EQ(p.map.locate(p.text.size() - 2).column, static_cast<int>((1 << 22) + 3 + (1 << 20)));
 }
 
-TEST(PreprocRobustness, DeepNesting) {
+TEST(preproc_robustness, DeepNesting) {
   std::string src;
   for (int i = 0; i < 100000; ++i) src += "#if 1\n";
   src += "x\n";
@@ -59,14 +59,14 @@ TEST(PreprocRobustness, DeepNesting) {
   EXPECT_NE(p.text.find('x'), std::string::npos);
 }
 
-TEST(PreprocRobustness, DeepConditionIsAnErrorNotACrash) {
+TEST(preproc_robustness, DeepConditionIsAnErrorNotACrash) {
   DiagnosticList d;
   run("#if " + std::string(200000, '(') + "1\n#endif\n", d);
   ASSERT_EQ(d.items().size(), 1u);
   EXPECT_EQ(d.items()[0].code, 94);
 }
 
-TEST(PreprocRobustness, LongChainOfDefinesHitsTheDepthBound) {
+TEST(preproc_robustness, LongChainOfDefinesHitsTheDepthBound) {
   // M0 -> M1 -> ... -> M79: each a string, so the expansion nests 80 deep (limit 64).
   std::string src;
   for (int i = 0; i < 80; ++i) src += "#define M" + std::to_string(i) + " x+M" + std::to_string(i + 1) + "\n";
@@ -80,7 +80,7 @@ TEST(PreprocRobustness, LongChainOfDefinesHitsTheDepthBound) {
   EXPECT_NE(p.text.find("y = x+x+"), std::string::npos);  // M60 is 20 deep: expanded
 }
 
-TEST(PreprocRobustness, ExponentialDefinesAreBounded) {
+TEST(preproc_robustness, ExponentialDefinesAreBounded) {
   // Each name doubles the previous one: 2^60 characters if nothing stopped it.
   std::string src = "#define E0 ab\n";
   for (int i = 1; i <= 60; ++i)
@@ -94,14 +94,14 @@ TEST(PreprocRobustness, ExponentialDefinesAreBounded) {
   EXPECT_EQ(lines(p.text), lines(src));
 }
 
-TEST(PreprocRobustness, MutualRecursionEnds) {
+TEST(preproc_robustness, MutualRecursionEnds) {
   DiagnosticList d;
   const Preprocessed p = run("#define A B\n#define B A\nA B\n", d);
   EXPECT_EQ(p.text, "\n\nA B\n");
   EXPECT_FALSE(d.has_errors());
 }
 
-TEST(PreprocRobustness, NoFinalNewlineAndOnlyNewlines) {
+TEST(preproc_robustness, NoFinalNewlineAndOnlyNewlines) {
   DiagnosticList d;
   EXPECT_EQ(run("#define A 1\nA", d).text, "\n1");
   EXPECT_EQ(run("\n\n\n", d).text, "\n\n\n");

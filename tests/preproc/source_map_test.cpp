@@ -13,7 +13,7 @@ Preprocessed run(const std::string& text, DiagnosticList& d) {
   return preprocess({"m.prg", text}, PreprocOptions{}, d);
 }
 
-TEST(PreprocSourceMap, PlainTextMapsOneToOne) {
+TEST(preproc_source_map, PlainTextMapsOneToOne) {
   DiagnosticList d;
   const std::string src = "ab\ncd\n\nef";
   const Preprocessed p = run(src, d);
@@ -27,7 +27,7 @@ TEST(PreprocSourceMap, PlainTextMapsOneToOne) {
   EXPECT_EQ(p.map.locate(8).column, 2);
 }
 
-TEST(PreprocSourceMap, ColumnsAfterAnExpansionAreTheOriginalOnes) {
+TEST(preproc_source_map, ColumnsAfterAnExpansionAreTheOriginalOnes) {
   DiagnosticList d;
   //                       line 2: "x = LONG_NAME + y"
   const Preprocessed p = run("#define LONG_NAME 7\nx = LONG_NAME + y\n", d);
@@ -54,7 +54,7 @@ TEST(PreprocSourceMap, ColumnsAfterAnExpansionAreTheOriginalOnes) {
   EXPECT_EQ(p.map.expansion_at(y), nullptr);
 }
 
-TEST(PreprocSourceMap, EveryCharacterOfAStringExpansionMapsToTheUse) {
+TEST(preproc_source_map, EveryCharacterOfAStringExpansionMapsToTheUse) {
   DiagnosticList d;
   const Preprocessed p = run("#define SPEED 10\n#define GO  JV=SPEED;BG\n  GO;GO\n", d);
   ASSERT_EQ(p.text, "\n\n  JV=10;BG;JV=10;BG\n");
@@ -70,7 +70,7 @@ TEST(PreprocSourceMap, EveryCharacterOfAStringExpansionMapsToTheUse) {
   EXPECT_EQ(p.map.locate(semicolon).column, 5);
 }
 
-TEST(PreprocSourceMap, LinesAfterDirectivesAndSkippedBlocksKeepTheirNumbers) {
+TEST(preproc_source_map, LinesAfterDirectivesAndSkippedBlocksKeepTheirNumbers) {
   DiagnosticList d;
   const Preprocessed p = run("#if 0\nskipped\n#endif\n  keep\n", d);
   ASSERT_EQ(p.text, "\n\n\n  keep\n");
@@ -79,7 +79,7 @@ TEST(PreprocSourceMap, LinesAfterDirectivesAndSkippedBlocksKeepTheirNumbers) {
   EXPECT_EQ(l.column, 3);
 }
 
-TEST(PreprocSourceMap, CrlfLinesAndEndOfText) {
+TEST(preproc_source_map, CrlfLinesAndEndOfText) {
   DiagnosticList d;
   const Preprocessed p = run("#define A 1\r\nx=A\r\n", d);
   EXPECT_EQ(p.text, "\nx=1\r\n");
@@ -90,7 +90,7 @@ TEST(PreprocSourceMap, CrlfLinesAndEndOfText) {
   EXPECT_EQ(empty.map.locate(100).line, 1);
 }
 
-TEST(PreprocSourceMap, DiagnosticsNamePlacesInTheSource) {
+TEST(preproc_source_map, DiagnosticsNamePlacesInTheSource) {
   DiagnosticList d;
   run("x\n  #define NUM 3\n  #define NUM 4\n", d);
   ASSERT_EQ(d.items().size(), 1u);
@@ -103,7 +103,7 @@ TEST(PreprocSourceMap, DiagnosticsNamePlacesInTheSource) {
   EXPECT_EQ(e.notes[0].where.line, 2);  // the first definition
 }
 
-TEST(PreprocSourceMap, LocateOnAManyLineFileMatchesALinearScan) {
+TEST(preproc_source_map, LocateOnAManyLineFileMatchesALinearScan) {
   std::string src;
   for (int i = 0; i < 2000; ++i) src += (i % 7 == 0 ? "#define M" + std::to_string(i) + " " + std::to_string(i) + "\n" : "a M" + std::to_string(i - i % 7) + " b\n");
   DiagnosticList d;
@@ -119,7 +119,7 @@ TEST(PreprocSourceMap, LocateOnAManyLineFileMatchesALinearScan) {
 }
 
 // Gold's codes are the default; a dialect maps the same errors to its own codes and texts.
-TEST(PreprocSourceMap, DialectCodesAndTexts) {
+TEST(preproc_source_map, DialectCodesAndTexts) {
   PreprocOptions o;
   o.scheme = "pdl";
   o.code_of = [](PreprocError e) { return e == PreprocError::NotDefined ? 1234 : 1; };
