@@ -1,0 +1,126 @@
+// The Gold syntax tree. The parser builds it; the checker fills in what each name means and
+// each expression's type; the code generator reads it. Offsets point into the lexer's text.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dialects/gold/token.h"
+
+namespace uprog::gold {
+
+struct CommandInfo;
+
+// The static kind of a value. Dynamic is Gold's int product, known to be an int or a float only
+// at run time (manual 1.5): it travels as a [value, tag] pair.
+enum class Kind : uint8_t { Int, Float, Dynamic, None };
+
+enum class VarType : uint8_t { Int, Float };
+
+struct Expr;
+using ExprPtr = std::unique_ptr<Expr>;
+
+// What a name turned out to be, filled in by the checker.
+enum class RefKind : uint8_t { Unresolved, Local, Global, Function, Builtin, Command, Nargout };
+
+enum class Builtin : uint8_t { Sin, Cos, Abs, Sqrt, Fix, Rnd, Sign, Real, Tdif, Prgerr, Tick, Tock, Utick, Utock };
+
+enum class ExprKind : uint8_t { IntLit, FloatLit, Ref, Unary, Binary, Nargout };
+
+struct Expr {
+  ExprKind kind;
+  uint32_t offset = 0;
+  Tok op = Tok::Eof;  // Unary / Binary
+  int32_t int_value = 0;
+  float float_value = 0.0f;
+  ExprPtr lhs, rhs;   // Unary uses lhs
+  // Ref: a name, maybe with [index] or (arguments).
+  std::string name;
+  bool has_index = false;   // name[...]
+  bool has_parens = false;  // name(...)
+  std::vector<ExprPtr> args;  // the index (one) or the call's arguments
+  // Filled by the checker.
+  Kind type = Kind::None;
+  RefKind ref = RefKind::Unresolved;
+  int32_t slot = -1;  // local or global index, function index, builtin
+  const CommandInfo* command = nullptr;
+  Builtin builtin = Builtin::Sin;
+};
+
+struct Stmt;
+using StmtPtr = std::unique_ptr<Stmt>;
+using Block = std::vector<StmtPtr>;
+
+enum class StmtKind : uint8_t {
+  Expr,      // a call, a drive action (BG), or a value (shown on the command line)
+  Assign,    // targets = value; several targets for [a,b] = f(x)
+  IncDec,    // i++ / i--
+  If, While, For, Until, Wait, Switch, Try,
+  Break, Continue, Return, Exit,
+  Goto, Reset, Label,
+};
+
+struct IfArm {
+  ExprPtr cond;  // null for else
+  Block body;
+};
+
+struct SwitchCase {
+  ExprPtr value;  // null for otherwise
+  Block body;
+  uint32_t offset = 0;
+};
+
+struct Stmt {
+  StmtKind kind;
+  uint32_t offset = 0;
+  bool ends_line = false;    // the last statement on its source line: an EOL follows it
+  ExprPtr value;             // Expr, Assign, While, Until, Wait, Switch (subject), For (start)
+  std::vector<ExprPtr> targets;  // Assign, IncDec, For (the iteration variable)
+  ExprPtr step, end;         // For
+  int delta = 0;             // IncDec
+  std::vector<IfArm> arms;   // If
+  std::vector<SwitchCase> cases;  // Switch
+  Block body, handler;       // While/For body; Try body and catch
+  std::string name;          // Goto/Reset/Label target
+  bool auto_label = false;   // #@ rather than ##
+  bool bracketed = false;    // Assign: [a, b] = ...
+  uint32_t end_offset = 0;   // the line of the block's `end`
+};
+
+struct VarDecl {
+  std::string name;
+  VarType type = VarType::Int;
+  int32_t length = 0;  // 0 for a scalar, else the array's dimension
+  uint32_t offset = 0;
+  bool is_global_redecl = false;  // `global int x` inside a function
+};
+
+struct Param {
+  std::string name;
+  VarType type = VarType::Int;
+  uint32_t offset = 0;
+};
+
+struct FunctionDef {
+  std::string name;
+  uint32_t offset = 0;
+  std::vector<Param> inputs, outputs;
+  bool has_body = false;
+  bool is_auto = false;  // named like an auto-routine (function AUTOEXEC())
+  std::vector<VarDecl> locals;  // declared locals and global re-declarations, in order
+  Block body;
+  uint32_t end_offset = 0;  // the closing return
+};
+
+// Top-level code: labels, auto-routines and their statements, in source order. A Label
+// statement opens a routine; a top-level Return closes it.
+struct Program {
+  std::vector<VarDecl> globals;
+  std::vector<FunctionDef> functions;  // definitions and prototypes, in source order
+  Block top;
+  bool empty = true;  // nothing but blanks and comments
+};
+
+}  // namespace uprog::gold

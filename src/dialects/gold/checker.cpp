@@ -1,0 +1,589 @@
+// Name resolution, kinds and semantic errors for Gold programs and command lines.
+#include "dialects/gold/checker.h"
+
+#include <unordered_map>
+#include <unordered_set>
+
+#include "dialects/gold/builtins.h"
+#include "dialects/gold/commands.h"
+
+namespace uprog::gold {
+
+Kind binary_kind(Tok op, Kind a, Kind b) {
+  switch (op) {
+    case Tok::Plus:
+    case Tok::Minus:
+    case Tok::Slash:
+      if (a == Kind::Float || b == Kind::Float) return Kind::Float;
+      if (a == Kind::Dynamic || b == Kind::Dynamic) return Kind::Dynamic;
+      return Kind::Int;
+    case Tok::Star:
+      // int * int is exact when it fits and a float when it does not (manual 1.5).
+      if (a == Kind::Float || b == Kind::Float) return Kind::Float;
+      return Kind::Dynamic;
+    default: return Kind::Int;  // %, bitwise, shifts, comparisons, logic
+  }
+}
+
+Kind unary_kind(Tok op, Kind a) { return op == Tok::Minus ? a : Kind::Int; }
+
+namespace {
+
+// The manual's limits (2.17): 92 locals, 2040 words of globals.
+constexpr size_t kMaxLocals = 92;
+constexpr int64_t kMaxGlobalWords = 2040;
+
+Kind kind_of(VarType t) { return t == VarType::Int ? Kind::Int : Kind::Float; }
+Kind kind_of(ValueType t) { return t == ValueType::Int ? Kind::Int : Kind::Float; }
+
+bool const_index(const Expr& e, int32_t& out) {
+  if (e.kind == ExprKind::IntLit) { out = e.int_value; return true; }
+  return false;
+}
+
+class Checker {
+ public:
+  explicit Checker(Reporter& r) : r_(r) {}
+
+  Symbols program(Program& p) {
+    declare_globals(p.globals);
+    declare_functions(p);
+    declare_top_labels(p.top);
+    // Function bodies, then the top level.
+    for (size_t i = 0; i < p.functions.size(); ++i) {
+      FunctionDef& f = p.functions[i];
+      if (!f.has_body) continue;
+      const int index = function_index_[f.name];
+      if (syms_.functions[static_cast<size_t>(index)].def != &f) continue;  // a second body
+      function_body(f, index);
+    }
+    current_ = -1;
+    locals_.clear();
+    block(p.top);
+    return std::move(syms_);
+  }
+
+  void line(Block& b, const std::vector<KnownGlobal>& known) {
+    for (const KnownGlobal& g : known) {
+      global_index_[g.name] = static_cast<int>(syms_.globals.size());
+      syms_.globals.push_back({g.name, g.type, g.length, 0});
+    }
+    current_ = -1;
+    block(b);
+  }
+
+ private:
+  void error(Error e, uint32_t offset) { r_.error(e, offset); }
+
+  bool clashes_with_system(const std::string& name) {
+    return find_command(name) != nullptr || find_builtin(name) != nullptr;
+  }
+
+  void declare_globals(const std::vector<VarDecl>& globals) {
+    int64_t words = 0;
+    for (const VarDecl& d : globals) {
+      if (global_index_.count(d.name) || clashes_with_system(d.name)) {
+        error(Error::NameIsNotDistinct, d.offset);
+        continue;
+      }
+      words += d.length == 0 ? 1 : d.length;
+      if (words > kMaxGlobalWords) {
+        error(Error::OutOfDataMemory, d.offset);
+        continue;
+      }
+      global_index_[d.name] = static_cast<int>(syms_.globals.size());
+      syms_.globals.push_back({d.name, d.type, d.length, d.offset});
+    }
+  }
+
+  static bool same_signature(const FunctionDef& a, const FunctionDef& b) {
+    auto same = [](const std::vector<Param>& x, const std::vector<Param>& y) {
+      if (x.size() != y.size()) return false;
+      for (size_t i = 0; i < x.size(); ++i)
+        if (x[i].type != y[i].type) return false;
+      return true;
+    };
+    return same(a.inputs, b.inputs) && same(a.outputs, b.outputs);
+  }
+
+  void declare_functions(Program& p) {
+    for (FunctionDef& f : p.functions) {
+      auto it = function_index_.find(f.name);
+      if (it == function_index_.end()) {
+        if (global_index_.count(f.name) || clashes_with_system(f.name)) {
+          error(Error::NameIsNotDistinct, f.offset);  // "int func / function func(int a)"
+          continue;
+        }
+        function_index_[f.name] = static_cast<int>(syms_.functions.size());
+        FunctionSym s;
+        s.name = f.name;
+        s.def = &f;
+        s.has_body = f.has_body;
+        s.is_auto = f.is_auto;
+        s.inputs = f.inputs.size();
+        s.outputs = f.outputs.size();
+        syms_.functions.push_back(std::move(s));
+        continue;
+      }
+      FunctionSym& s = syms_.functions[static_cast<size_t>(it->second)];
+      if (!same_signature(*s.def, f)) {
+        error(Error::BadFunctionFormat, f.offset);  // the definition differs from its prototype
+        continue;
+      }
+      if (f.has_body && s.has_body) {
+        error(Error::FunctionAlreadyHasBody, f.offset);
+        continue;
+      }
+      if (f.has_body) {
+        s.def = &f;
+        s.has_body = true;
+      }
+    }
+  }
+
+  void declare_top_labels(const Block& top) {
+    for (const StmtPtr& s : top) {
+      if (s->kind != StmtKind::Label) continue;
+      if (top_labels_.count(s->name) || (!s->auto_label && function_index_.count(s->name))) {
+        error(Error::NameIsNotDistinct, s->offset);
+        continue;
+      }
+      if (s->auto_label) {
+        auto it = function_index_.find(s->name);
+        if (it != function_index_.end()) {
+          error(Error::NameIsNotDistinct, s->offset);  // both #@AUTO_I1 and function AUTO_I1()
+          continue;
+        }
+      }
+      top_labels_[s->name] = static_cast<int>(syms_.labels.size());
+      syms_.labels.push_back({s->name, s->auto_label, -1, s->offset});
+    }
+  }
+
+  void collect_local_labels(const Block& b, int function) {
+    for (const StmtPtr& s : b) {
+      if (s->kind != StmtKind::Label) continue;
+      if (local_labels_.count(s->name)) {
+        error(Error::NameIsNotDistinct, s->offset);
+        continue;
+      }
+      local_labels_[s->name] = static_cast<int>(syms_.labels.size());
+      syms_.labels.push_back({s->name, false, function, s->offset});
+    }
+  }
+
+  void function_body(FunctionDef& f, int index) {
+    current_ = index;
+    current_def_ = &f;
+    locals_.clear();
+    local_labels_.clear();
+    redeclared_.clear();
+    FunctionSym& s = syms_.functions[static_cast<size_t>(index)];
+    s.locals.clear();
+    auto add_local = [&](const std::string& name, VarType type, uint32_t offset) {
+      if (locals_.count(name) || redeclared_.count(name)) {
+        error(Error::NameIsNotDistinct, offset);  // "function func(int a) / int a"
+        return;
+      }
+      if (clashes_with_system(name) || function_index_.count(name)) {
+        error(Error::NameIsNotDistinct, offset);
+        return;
+      }
+      if (s.locals.size() == kMaxLocals) {
+        error(Error::TooManyVariables, offset);
+        return;
+      }
+      locals_[name] = static_cast<int>(s.locals.size());
+      s.locals.push_back({name, type});
+    };
+    for (const Param& p : f.inputs) add_local(p.name, p.type, p.offset);
+    for (const Param& p : f.outputs) add_local(p.name, p.type, p.offset);
+    // Inputs and outputs keep their slots even after an error, so calls still line up.
+    while (s.locals.size() < f.inputs.size() + f.outputs.size()) s.locals.push_back({"", VarType::Int});
+    for (const VarDecl& d : f.locals) {
+      if (d.is_global_redecl) {
+        auto it = global_index_.find(d.name);
+        const GlobalSym* g = it == global_index_.end() ? nullptr : &syms_.globals[static_cast<size_t>(it->second)];
+        if (g == nullptr || g->offset > f.offset || g->type != d.type || g->length != d.length) {
+          error(Error::IllegalGlobal, d.offset);  // not defined before, or another type
+          continue;
+        }
+        if (locals_.count(d.name)) {
+          error(Error::NameIsNotDistinct, d.offset);
+          continue;
+        }
+        redeclared_.insert(d.name);
+        continue;
+      }
+      add_local(d.name, d.type, d.offset);
+    }
+    collect_local_labels(f.body, index);
+    block(f.body);
+    current_def_ = nullptr;
+  }
+
+  // ---- statements
+
+  void block(Block& b) {
+    for (StmtPtr& s : b) statement(*s);
+  }
+
+  void statement(Stmt& s) {
+    switch (s.kind) {
+      case StmtKind::Expr: expression_statement(s); break;
+      case StmtKind::Assign: assignment(s); break;
+      case StmtKind::IncDec:
+        lvalue(*s.targets[0]);
+        break;
+      case StmtKind::If:
+        for (IfArm& a : s.arms) {
+          if (a.cond) value(*a.cond);
+          block(a.body);
+        }
+        break;
+      case StmtKind::While:
+        if (s.value) value(*s.value);
+        block(s.body);
+        break;
+      case StmtKind::For: for_loop(s); break;
+      case StmtKind::Until:
+      case StmtKind::Wait:
+        value(*s.value);
+        break;
+      case StmtKind::Switch:
+        if (s.value) value(*s.value);
+        for (SwitchCase& c : s.cases) {
+          if (c.value) value(*c.value);
+          block(c.body);
+        }
+        break;
+      case StmtKind::Try:
+        block(s.body);
+        block(s.handler);
+        break;
+      case StmtKind::Goto: jump(s); break;
+      case StmtKind::Reset: reset(s); break;
+      case StmtKind::Break:
+      case StmtKind::Continue:
+      case StmtKind::Return:
+      case StmtKind::Exit:
+      case StmtKind::Label: break;
+    }
+  }
+
+  void expression_statement(Stmt& s) {
+    Expr& e = *s.value;
+    if (e.kind == ExprKind::Ref) {
+      resolve(e);
+      if (e.ref == RefKind::Function) {
+        call(e, 0);
+        return;
+      }
+      if (e.ref == RefKind::Command && e.command && (e.command->flags & kAction)) {
+        command_use(e, false);
+        return;
+      }
+    }
+    value(e);
+  }
+
+  void assignment(Stmt& s) {
+    Expr& rhs = *s.value;
+    if (s.bracketed) {
+      // [a, b] = f(x): the right side must be one call of a function with enough outputs.
+      const size_t n = s.targets.size();
+      if (rhs.kind == ExprKind::Ref) {
+        resolve(rhs);
+        if (rhs.ref == RefKind::Function) call(rhs, n);
+        else if (n > 1 && rhs.ref != RefKind::Unresolved) error(Error::SidesMismatch, rhs.offset);
+        else value(rhs);
+      } else {
+        const Expr* left = &rhs;
+        while (left->kind == ExprKind::Binary) left = left->lhs.get();
+        const bool call_first = left->kind == ExprKind::Ref && left->has_parens &&
+                                function_index_.count(left->name) > 0;
+        if (call_first) error(Error::BadFunctionCall, rhs.offset);  // "[a,b] = f(x) + 5"
+        else if (n > 1) error(Error::SidesMismatch, rhs.offset);    // "[a,b] = 12 + c"
+        else value(rhs);
+      }
+    } else {
+      value(rhs);
+    }
+    for (ExprPtr& t : s.targets) lvalue(*t);
+  }
+
+  void for_loop(Stmt& s) {
+    if (!s.targets.empty()) {
+      Expr& v = *s.targets[0];
+      resolve(v, /*quiet=*/true);
+      if (v.ref != RefKind::Local && v.ref != RefKind::Global) {
+        error(Error::VariableIsUndefined, v.offset);
+        poisoned_.insert(v.name);  // one error for the loop, not one per use
+        v.ref = RefKind::Unresolved;
+      } else if (v.has_index || v.has_parens || (v.ref == RefKind::Global && global(v).length > 0)) {
+        error(Error::VariableIsArray, v.offset);  // "for k[10]=1:10"
+        v.ref = RefKind::Unresolved;
+      } else {
+        v.type = variable_kind(v);
+      }
+    }
+    if (s.value) value(*s.value);
+    if (s.step) value(*s.step);
+    if (s.end) value(*s.end);
+    block(s.body);
+  }
+
+  // goto: ##name to a label of the same scope, #@name to an auto-routine (top level only).
+  void jump(Stmt& s) {
+    const bool in_function = current_ >= 0;
+    if (in_function && !s.auto_label && local_labels_.count(s.name)) return;
+    if (!in_function && top_labels_.count(s.name) &&
+        syms_.labels[static_cast<size_t>(top_labels_[s.name])].is_auto == s.auto_label)
+      return;
+    if (!in_function && s.auto_label && function_index_.count(s.name) &&
+        syms_.functions[static_cast<size_t>(function_index_[s.name])].is_auto)
+      return;
+    const bool known = top_labels_.count(s.name) || function_index_.count(s.name) || any_local_label(s.name);
+    error(known ? Error::BadJumpToLabel : Error::NoSuchFunction, s.offset);
+  }
+
+  bool any_local_label(const std::string& name) const {
+    for (const LabelSym& l : syms_.labels)
+      if (l.function >= 0 && l.name == name) return true;
+    return false;
+  }
+
+  // reset: an auto-routine, a global label or a function without inputs.
+  void reset(Stmt& s) {
+    if (top_labels_.count(s.name)) return;
+    auto it = function_index_.find(s.name);
+    if (it != function_index_.end()) {
+      if (syms_.functions[static_cast<size_t>(it->second)].inputs > 0) error(Error::BadFunctionAfterReset, s.offset);
+      return;
+    }
+    error(any_local_label(s.name) || local_labels_.count(s.name) ? Error::BadJumpToLabel : Error::NoSuchFunction, s.offset);
+  }
+
+  // ---- names
+
+  const GlobalSym& global(const Expr& e) const { return syms_.globals[static_cast<size_t>(e.slot)]; }
+
+  Kind variable_kind(const Expr& e) const {
+    if (e.ref == RefKind::Local)
+      return kind_of(syms_.functions[static_cast<size_t>(current_)].locals[static_cast<size_t>(e.slot)].type);
+    return kind_of(global(e).type);
+  }
+
+  // Decides what a name is; reports 12 when it is nothing (unless `quiet`).
+  void resolve(Expr& e, bool quiet = false) {
+    if (e.ref != RefKind::Unresolved) return;
+    if (current_ >= 0) {
+      auto it = locals_.find(e.name);
+      if (it != locals_.end()) {
+        e.ref = RefKind::Local;
+        e.slot = it->second;
+        return;
+      }
+    }
+    auto g = global_index_.find(e.name);
+    if (g != global_index_.end()) {
+      const GlobalSym& sym = syms_.globals[static_cast<size_t>(g->second)];
+      // A global is seen after its declaration (manual 2.6.2); inside a function also without
+      // a `global` line, as the manual's own example in 1.11 does.
+      if (sym.offset < e.offset || redeclared_.count(e.name)) {
+        e.ref = RefKind::Global;
+        e.slot = g->second;
+        return;
+      }
+    }
+    auto f = function_index_.find(e.name);
+    if (f != function_index_.end()) {
+      e.ref = RefKind::Function;
+      e.slot = f->second;
+      return;
+    }
+    if (const BuiltinInfo* b = find_builtin(e.name)) {
+      e.ref = RefKind::Builtin;
+      e.builtin = b->id;
+      return;
+    }
+    if (const CommandInfo* c = find_command(e.name)) {
+      e.ref = RefKind::Command;
+      e.command = c;
+      return;
+    }
+    if (!quiet && !poisoned_.count(e.name)) error(Error::NoSuchVariable, e.offset);
+  }
+
+  // A variable's [index] or (index): one value; a scalar takes only index 0.
+  void variable_index(Expr& e, bool is_array) {
+    if (e.has_parens && e.args.size() != 1) {
+      error(Error::BadIndexExpression, e.offset);
+      return;
+    }
+    if (!e.has_index && !e.has_parens) {
+      if (is_array) error(Error::VariableIsArray, e.offset);  // "arr = 0"
+      return;
+    }
+    Expr& index = *e.args[0];
+    value(index);
+    if (!is_array) {
+      int32_t k = 0;
+      const bool constant = const_index(index, k);
+      // Manual 1.11: a scalar global indexed [0] is the scalar; other constant indices are
+      // error 58 (as in the table's example); a computed index is checked when it runs.
+      if ((constant && k != 0) || (!constant && e.ref == RefKind::Local)) error(Error::VariableIsNotArray, e.offset);
+    }
+  }
+
+  void command_use(Expr& e, bool assigned) {
+    const CommandInfo& c = *e.command;
+    if (c.flags & kNotProgram) {
+      error(Error::CommandNotProgram, e.offset);
+      return;
+    }
+    if (assigned && (c.flags & (kNotAssignable | kReadOnly | kAction))) {
+      error(Error::CommandNotAssign, e.offset);  // "BG=10"
+      return;
+    }
+    if (e.has_parens) {
+      error(Error::BadIndexExpression, e.offset);
+      return;
+    }
+    if (c.flags & kIndexed) {
+      if (!e.has_index) error(Error::BadIndexExpression, e.offset);
+      else value(*e.args[0]);
+    } else if (e.has_index) {
+      error(Error::VariableIsNotArray, e.offset);
+    }
+    e.type = kind_of(c.type);
+  }
+
+  // A call of a user function used for `wanted` outputs.
+  void call(Expr& e, size_t wanted) {
+    FunctionSym& f = syms_.functions[static_cast<size_t>(e.slot)];
+    for (ExprPtr& a : e.args) value(*a);
+    if (e.has_index) {
+      error(Error::BadIndexExpression, e.offset);
+      return;
+    }
+    if (e.args.size() != f.inputs) error(Error::BadNumberOfInputs, e.offset);
+    if (wanted > f.outputs) error(Error::TooManyOutputs, e.offset);
+    if (!f.has_body) error(Error::FunctionWithoutBody, e.offset);
+    e.type = f.outputs > 0 ? kind_of(f.def->outputs[0].type) : Kind::None;
+    e.int_value = static_cast<int32_t>(wanted);  // nargout of this call
+  }
+
+  void lvalue(Expr& e) {
+    if (e.kind != ExprKind::Ref) {
+      error(Error::BadFormat, e.offset);
+      return;
+    }
+    resolve(e);
+    switch (e.ref) {
+      case RefKind::Local:
+        variable_index(e, false);
+        e.type = variable_kind(e);
+        break;
+      case RefKind::Global:
+        variable_index(e, global(e).length > 0);
+        e.type = variable_kind(e);
+        break;
+      case RefKind::Command: command_use(e, true); break;
+      case RefKind::Function:
+      case RefKind::Builtin: error(Error::NoSuchVariable, e.offset); break;
+      default: break;
+    }
+  }
+
+  // An expression used for its value.
+  void value(Expr& e) {
+    switch (e.kind) {
+      case ExprKind::IntLit: e.type = Kind::Int; return;
+      case ExprKind::FloatLit: e.type = Kind::Float; return;
+      case ExprKind::Nargout:
+        if (current_ < 0) error(Error::IllegalNargout, e.offset);
+        e.type = Kind::Int;
+        return;
+      case ExprKind::Unary: {
+        value(*e.lhs);
+        const Expr& x = *e.lhs;
+        if (e.op == Tok::Minus && x.kind == ExprKind::Ref && x.ref == RefKind::Function &&
+            syms_.functions[static_cast<size_t>(x.slot)].outputs > 1)
+          error(Error::IllegalMinus, e.offset);  // "[ab] = -func(c)"
+        e.type = unary_kind(e.op, x.type == Kind::None ? Kind::Int : x.type);
+        return;
+      }
+      case ExprKind::Binary: {
+        value(*e.lhs);
+        value(*e.rhs);
+        if ((e.op == Tok::Slash || e.op == Tok::Percent) &&
+            ((e.rhs->kind == ExprKind::IntLit && e.rhs->int_value == 0) ||
+             (e.rhs->kind == ExprKind::FloatLit && e.rhs->float_value == 0.0f)))
+          error(Error::DivisionByZero, e.rhs->offset);
+        const Kind a = e.lhs->type == Kind::None ? Kind::Int : e.lhs->type;
+        const Kind b = e.rhs->type == Kind::None ? Kind::Int : e.rhs->type;
+        e.type = binary_kind(e.op, a, b);
+        return;
+      }
+      case ExprKind::Ref: break;
+    }
+    resolve(e);
+    e.type = Kind::Int;
+    switch (e.ref) {
+      case RefKind::Local:
+        variable_index(e, false);
+        e.type = variable_kind(e);
+        return;
+      case RefKind::Global:
+        variable_index(e, global(e).length > 0);
+        e.type = variable_kind(e);
+        return;
+      case RefKind::Function:
+        call(e, 1);
+        if (e.type == Kind::None) e.type = Kind::Int;
+        return;
+      case RefKind::Builtin: {
+        const BuiltinInfo& b = *builtin_info(e.builtin);
+        for (ExprPtr& a : e.args) value(*a);
+        if (!e.has_parens || e.args.size() != 1) {
+          error(e.has_index ? Error::BadIndexExpression : Error::BadNumberOfInputs, e.offset);
+          return;
+        }
+        e.type = b.result == BuiltinResult::SameAsInput ? e.args[0]->type : b.kind;
+        if (e.type == Kind::None) e.type = Kind::Int;
+        return;
+      }
+      case RefKind::Command:
+        if (e.command->flags & kAction) {
+          if (e.command->flags & kNotProgram) error(Error::CommandNotProgram, e.offset);
+          else error(Error::ValueIsExpected, e.offset);  // an action has no value
+          return;
+        }
+        command_use(e, false);
+        return;
+      default: return;
+    }
+  }
+
+  Reporter& r_;
+  Symbols syms_;
+  std::unordered_map<std::string, int> global_index_, function_index_, top_labels_, local_labels_, locals_;
+  std::unordered_set<std::string> redeclared_, poisoned_;
+  int current_ = -1;
+  const FunctionDef* current_def_ = nullptr;
+};
+
+}  // namespace
+
+Symbols check_program(Program& program, Reporter& reporter) {
+  Checker c(reporter);
+  return c.program(program);
+}
+
+void check_line(Block& block, const std::vector<KnownGlobal>& known, Reporter& reporter) {
+  Checker c(reporter);
+  c.line(block, known);
+}
+
+}  // namespace uprog::gold

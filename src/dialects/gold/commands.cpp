@@ -1,0 +1,113 @@
+// The Gold drive's command table (shared/spec/gold-drive.md), one row per command.
+// Ids are stable: they are stored in compiled images, so a row's id never changes or is reused;
+// new commands take the next free number.
+//
+// Access: a command whose spec "access" column does not include "program" (SV, LD, RS, HP, XC,
+// KL, CC, LS, DB) is kNotProgram, so a program using it fails with compile error 79.
+#include "dialects/gold/commands.h"
+
+#include <array>
+#include <cstdint>
+
+namespace uprog::gold {
+namespace {
+
+constexpr double kIntMin = -2147483648.0;
+constexpr double kIntMax = 2147483647.0;
+constexpr double kFloatMax = 1e37;  // manual 1.3: floats lie strictly inside ±1e37
+
+constexpr uint32_t kR = kReadOnly;
+constexpr uint32_t kIx = kIndexed;
+constexpr uint32_t kAct = kAction | kNotAssignable;
+constexpr uint32_t kHostAct = kAction | kNotAssignable | kNotProgram;
+constexpr ValueType kI = ValueType::Int;
+constexpr ValueType kF = ValueType::Float;
+
+constexpr std::array kCommands{
+    // Motion
+    CommandInfo{"MO", 1, kI, 0, 0, 0, 0, 1, "motor enable: 1 on, 0 off"},
+    CommandInfo{"SO", 2, kI, kR, 0, 0, 0, 1, "servo on: 1 once the loop is closed after MO=1"},
+    CommandInfo{"UM", 3, kI, kMotorOffOnly, 0, 0, 1, 5, "unit mode: 1 current, 2 velocity, 5 position"},
+    CommandInfo{"PA", 4, kI, 0, 0, 0, kIntMin, kIntMax, "absolute target of the next move, counts"},
+    CommandInfo{"PR", 5, kI, 0, 0, 0, kIntMin, kIntMax, "relative move: next target = previous target + PR"},
+    CommandInfo{"SP", 6, kI, 0, 0, 0, 1, kIntMax, "speed of point-to-point moves, counts/s"},
+    CommandInfo{"AC", 7, kI, 0, 0, 0, 1, kIntMax, "acceleration, counts/s^2"},
+    CommandInfo{"DC", 8, kI, 0, 0, 0, 1, kIntMax, "deceleration, counts/s^2"},
+    CommandInfo{"SD", 9, kI, 0, 0, 0, 1, kIntMax, "stop deceleration (limits, hard stop), counts/s^2"},
+    CommandInfo{"SF", 10, kI, 0, 0, 0, 0, 500, "smoothing (jerk limit) time, ms; 0 = trapezoid"},
+    CommandInfo{"JV", 11, kI, 0, 0, 0, kIntMin, kIntMax, "jog velocity, counts/s"},
+    CommandInfo{"BG", 12, kI, kAct, 0, 0, 0, 0, "begin the motion defined by PA, PR or JV"},
+    CommandInfo{"ST", 13, kI, kAct, 0, 0, 0, 0, "stop: decelerate with DC"},
+    CommandInfo{"TC", 14, kF, 0, 0, 0, -1000, 1000, "torque (current) command in UM=1, A"},
+    CommandInfo{"PX", 15, kI, 0, 0, 0, kIntMin, kIntMax, "main position feedback, counts"},
+    CommandInfo{"VX", 16, kI, kR, 0, 0, kIntMin, kIntMax, "main velocity feedback, counts/s"},
+    CommandInfo{"PE", 17, kI, kR, 0, 0, kIntMin, kIntMax, "position error (reference - feedback), counts"},
+    CommandInfo{"DV", 18, kI, kR | kIx, 2, 3, kIntMin, kIntMax, "desired values: [2] velocity, [3] position"},
+    CommandInfo{"MS", 19, kI, kR, 0, 0, 0, 3, "motion status: 0 in position, 1 settling, 2 moving, 3 off"},
+    CommandInfo{"ER", 20, kI, kIx, 2, 3, 1, kIntMax, "maximum error: [2] velocity, [3] position"},
+    CommandInfo{"VH", 21, kI, kIx, 2, 3, kIntMin, kIntMax, "high limits: [2] velocity, [3] position"},
+    CommandInfo{"VL", 22, kI, kIx, 2, 3, kIntMin, kIntMax, "low limits: [2] velocity, [3] position"},
+    CommandInfo{"XM", 23, kI, kIx, 1, 2, kIntMin, kIntMax, "position modulo range [1]..[2]; equal = none"},
+    CommandInfo{"KP", 24, kF, kIx, 1, 3, 0, 1e6, "proportional gains: [1] current, [2] velocity, [3] position"},
+    CommandInfo{"KI", 25, kF, kIx, 1, 3, 0, 1e6, "integral gains, 1/s: [1] current, [2] velocity, [3] position"},
+    CommandInfo{"KV", 26, kF, kIx, 1, 2, 0, 10, "feedforward: [1] velocity, [2] acceleration"},
+    CommandInfo{"CL", 27, kF, kIx, 1, 1, 0, 100, "continuous current limit, A"},
+    CommandInfo{"PL", 28, kF, kIx, 1, 1, 0, 100, "peak current limit, A"},
+    // Inputs, outputs, status
+    CommandInfo{"IL", 29, kI, kIx, 1, 6, 0, 21, "input logic: function and polarity of input n"},
+    CommandInfo{"IP", 30, kI, kR, 0, 0, 0, 63, "input port: bit n-1 = logical state of input n"},
+    CommandInfo{"IB", 31, kI, kR | kIx, 1, 6, 0, 1, "logical state of input n"},
+    CommandInfo{"OP", 32, kI, 0, 0, 0, 0, 15, "output port: bit n-1 drives output n"},
+    CommandInfo{"OB", 33, kI, kIx, 1, 4, 0, 1, "output bit n"},
+    CommandInfo{"MF", 34, kI, kR, 0, 0, kIntMin, kIntMax, "motor fault bits; 0 = no fault"},
+    CommandInfo{"SR", 35, kI, kR, 0, 0, kIntMin, kIntMax, "status register"},
+    // Time, storage, program control
+    CommandInfo{"TM", 36, kI, 0, 0, 0, kIntMin, kIntMax, "32-bit system time, us, wraps"},
+    CommandInfo{"TS", 37, kI, 0, 0, 0, 25, 2000, "servo sampling time, us"},
+    CommandInfo{"UI", 38, kI, kIx, 1, 24, kIntMin, kIntMax, "user integer n, saved by SV"},
+    CommandInfo{"UF", 39, kF, kIx, 1, 24, -kFloatMax, kFloatMax, "user float n, saved by SV"},
+    CommandInfo{"SV", 40, kI, kHostAct, 0, 0, 0, 0, "save parameters to non-volatile storage"},
+    CommandInfo{"LD", 41, kI, kHostAct, 0, 0, 0, 0, "load parameters from non-volatile storage"},
+    CommandInfo{"RS", 42, kI, kHostAct, 0, 0, 0, 0, "reset the drive; the stored program survives"},
+    CommandInfo{"MI", 43, kI, 0, 0, 0, 0, 65535, "auto-routine mask"},
+    CommandInfo{"XQ", 44, kI, kAct, 0, 0, 0, 0, "start the program at a function, label or auto-routine"},
+    CommandInfo{"HP", 45, kI, kHostAct, 0, 0, 0, 0, "halt the program"},
+    CommandInfo{"XC", 46, kI, kHostAct, 0, 0, 0, 0, "continue a halted program"},
+    CommandInfo{"KL", 47, kI, kHostAct, 0, 0, 0, 0, "kill: halt and reset the program's stacks"},
+    CommandInfo{"PS", 48, kI, kR, 0, 0, -2, 1, "program status: -2 none, -1 never run, 0 halted, 1 running"},
+    CommandInfo{"CC", 49, kI, kHostAct, 0, 0, 0, 0, "load the stored program into RAM"},
+    CommandInfo{"LS", 50, kI, kHostAct, 0, 0, 0, 0, "list the program (host only)"},
+    CommandInfo{"EC", 51, kI, kR, 0, 0, 0, kIntMax, "code of the interpreter's last error"},
+    CommandInfo{"DB", 52, kI, kHostAct, 0, 0, 0, 0, "DB##RV[n]=name: map a user variable to a recorder signal"},
+    CommandInfo{"RV", 53, kI, kIx, 1, 8, 0, 1023, "recorder signal n"},
+    CommandInfo{"RL", 54, kI, 0, 0, 0, 1, 65536, "recorder length, samples"},
+    CommandInfo{"RG", 55, kI, 0, 0, 0, 1, 65535, "recorder gap, servo cycles"},
+    CommandInfo{"RR", 56, kI, 0, 0, 0, 0, 1, "recorder: 1 starts a recording"},
+};
+
+char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+
+bool equal_ignoring_case(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (upper(a[i]) != upper(b[i])) return false;
+  return true;
+}
+
+}  // namespace
+
+const CommandInfo* find_command(std::string_view name) {
+  for (const CommandInfo& c : kCommands)
+    if (equal_ignoring_case(c.name, name)) return &c;
+  return nullptr;
+}
+
+const CommandInfo* find_command(uint16_t id) {
+  for (const CommandInfo& c : kCommands)
+    if (c.id == id) return &c;
+  return nullptr;
+}
+
+std::span<const CommandInfo> all_commands() { return kCommands; }
+
+}  // namespace uprog::gold

@@ -1,0 +1,123 @@
+// The compiler driver: preprocess, check line lengths, lex, parse, check, generate.
+#include "dialects/gold/compile.h"
+
+#include "dialects/gold/lexer.h"
+#include "dialects/gold/parser.h"
+#include "preproc/preprocess.h"
+#include "support/files.h"
+
+namespace uprog::gold {
+
+namespace {
+
+// Manual 2.7.2, error 51: a program line holds at most 128 characters.
+constexpr size_t kMaxLineLength = 128;
+// Manual 1.1: an interpreter expression holds at most 511 characters.
+constexpr size_t kMaxCommandLine = 511;
+
+void check_line_lengths(const SourceFile& source, Reporter& reporter) {
+  int line = 1;
+  size_t start = 0;
+  const std::string& t = source.text;
+  for (size_t i = 0; i <= t.size(); ++i) {
+    if (i < t.size() && t[i] != '\n') continue;
+    size_t end = i;
+    if (end > start && t[end - 1] == '\r') --end;
+    if (end - start > kMaxLineLength) {
+      Location where{source.name, line, static_cast<int>(kMaxLineLength) + 1};
+      reporter.add(make_error(Error::LineIsTooLong, where));
+    }
+    ++line;
+    start = i + 1;
+  }
+}
+
+}  // namespace
+
+bool CompileResult::ok() const {
+  for (const Diagnostic& d : diagnostics)
+    if (d.severity == Severity::Error) return false;
+  return true;
+}
+
+bool CompiledLine::ok() const {
+  for (const Diagnostic& d : diagnostics)
+    if (d.severity == Severity::Error) return false;
+  return true;
+}
+
+CompileResult compile(const SourceFile& source, const CompileOptions& options) {
+  CompileResult result;
+  preproc::Preprocessed pre;
+  DiagnosticList pre_diags;
+  if (options.preprocess) {
+    preproc::PreprocOptions po;
+    po.scheme = "gold";
+    // The preprocessor's own defaults map its errors onto Gold's codes (87-96).
+    pre = preproc::preprocess(source, po, pre_diags);
+  } else {
+    pre.text = source.text;
+  }
+  Locator locator(source.name, pre.text, options.preprocess ? &pre.map : nullptr);
+  Reporter reporter(locator);
+  for (const Diagnostic& d : pre_diags.items()) reporter.add(d);
+  check_line_lengths(source, reporter);
+
+  const std::vector<Token> tokens = lex(pre.text, reporter);
+  Program program = parse_program(tokens, reporter);
+  if (program.empty && !reporter.has_errors()) reporter.error(Error::EmptyProgram, 0);
+  Symbols symbols = check_program(program, reporter);
+  if (!reporter.has_errors()) {
+    result.image = generate_program(program, symbols, locator, reporter);
+    result.image.source_name = source.name;
+    result.image.created_unix_s = options.created_unix_s;
+  }
+  result.diagnostics = reporter.finish(options.max_errors);
+  if (!result.ok()) result.image = bytecode::Image{};
+  return result;
+}
+
+CompileResult compile_file(const std::string& path, const CompileOptions& options) {
+  std::string why;
+  std::optional<std::string> text = read_text_file(path, &why);
+  if (!text) {
+    CompileResult r;
+    Diagnostic d = make_error(Error::OpenFileFailure, Location{path, 0, 0}, why);
+    r.diagnostics.push_back(std::move(d));
+    return r;
+  }
+  return compile(SourceFile{path, std::move(*text)}, options);
+}
+
+std::vector<KnownGlobal> known_globals(const bytecode::Image& program) {
+  std::vector<KnownGlobal> out;
+  for (const bytecode::Global& g : program.globals) {
+    // Only what a program declared; a scalar has length 1 in the image.
+    KnownGlobal k;
+    k.name = g.name;
+    k.type = g.type == ValueType::Int ? VarType::Int : VarType::Float;
+    k.length = g.length == 1 ? 0 : static_cast<int32_t>(g.length);
+    out.push_back(std::move(k));
+  }
+  return out;
+}
+
+CompiledLine compile_line(std::string_view line, const std::vector<KnownGlobal>& known) {
+  CompiledLine result;
+  const std::string text(line);
+  Locator locator("<command line>", text, nullptr);
+  Reporter reporter(locator);
+  if (text.size() > kMaxCommandLine) reporter.error(Error::ClauseIsTooLong, 0);
+  const std::vector<Token> tokens = lex(text, reporter);
+  Block block = parse_line(tokens, reporter);
+  check_line(block, known, reporter);
+  if (!reporter.has_errors()) result.image = generate_line(block, known, locator, reporter, result.values);
+  result.diagnostics = reporter.finish(CompileOptions{}.max_errors);
+  if (!result.ok()) {
+    result.image = bytecode::Image{};
+    result.values.clear();
+  }
+  return result;
+}
+
+}  // namespace uprog::gold

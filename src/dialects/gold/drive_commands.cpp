@@ -1,0 +1,178 @@
+// One switch per direction (read, write, execute) from a Gold command id to the axis.
+#include "dialects/gold/drive_commands.h"
+
+#include <cmath>
+
+#include "drive/parameters.h"
+
+namespace uprog::gold {
+namespace {
+
+// Ids of commands.cpp; drive_commands_test checks that each matches its name.
+enum Id : uint16_t {
+  MO = 1, SO, UM, PA, PR, SP, AC, DC, SD, SF, JV, BG, ST, TC, PX, VX, PE, DV, MS, ER, VH, VL, XM,
+  KP, KI, KV, CL, PL, IL, IP, IB, OP, OB, MF, SR, TM, TS, UI, UF, SV, LD, RS, MI, XQ, HP, XC, KL,
+  PS, CC, LS, EC, DB, RV, RL, RG, RR,
+};
+
+// Common checks of read and write: the command exists, is the drive's, and the index fits.
+int32_t check(uint16_t id, int32_t index, const CommandInfo*& info) {
+  info = find_command(id);
+  if (info == nullptr) return kErrorBadCommand;
+  if (!handled_by_drive(id)) return kErrorNotHandledHere;
+  if (info->flags & kIndexed) {
+    if (index < info->min_index || index > info->max_index) return kErrorBadIndex;
+  } else if (index != 0) {
+    return kErrorBadIndex;
+  }
+  return kDriveOk;
+}
+
+bool in_range(const CommandInfo& info, Value value) {
+  if (info.type == ValueType::Float) {
+    const double f = value.f;
+    return !std::isnan(f) && f >= info.min_value && f <= info.max_value;
+  }
+  const double i = value.i;
+  return i >= info.min_value && i <= info.max_value;
+}
+
+size_t slot(int32_t index) { return static_cast<size_t>(index - 1); }
+
+}  // namespace
+
+bool handled_by_drive(uint16_t id) {
+  switch (id) {
+    case SV: case LD: case RS: case MI: case XQ: case HP: case XC: case KL: case PS: case CC:
+    case LS: case EC: case DB:
+      return false;
+    default:
+      return find_command(id) != nullptr;
+  }
+}
+
+int32_t error_for(drive::Status status) {
+  switch (status) {
+    case drive::Status::kOk: return kDriveOk;
+    case drive::Status::kOutOfRange: return kErrorOutOfRange;
+    case drive::Status::kMotorOn: return kErrorMotorMustBeOff;
+    case drive::Status::kMotorOff: return kErrorMotorMustBeOn;
+    case drive::Status::kFaultLatched: return kErrorFaultPresent;
+    case drive::Status::kInhibitActive: return kErrorInhibitActive;
+    case drive::Status::kModeNotSupported: return kErrorModeNotSupported;
+  }
+  return kErrorBadCommand;
+}
+
+int32_t DriveCommands::read(uint16_t id, int32_t index, Value& out) {
+  const CommandInfo* info = nullptr;
+  if (const int32_t e = check(id, index, info)) return e;
+  if (info->flags & kAction) return kErrorNoValue;
+  const drive::Parameters& p = axis_.parameters();
+  auto i = [&](int32_t v) { out = Value::of_int(v); return kDriveOk; };
+  auto f = [&](float v) { out = Value::of_float(v); return kDriveOk; };
+  switch (id) {
+    case MO: return i(axis_.motor_on() ? 1 : 0);
+    case SO: return i(axis_.servo_ready() ? 1 : 0);
+    case UM: return i(p.unit_mode);
+    case PA: return i(axis_.absolute_target());
+    case PR: return i(axis_.relative_move());
+    case SP: return i(p.speed_counts_per_s);
+    case AC: return i(p.accel_counts_per_s2);
+    case DC: return i(p.decel_counts_per_s2);
+    case SD: return i(p.stop_decel_counts_per_s2);
+    case SF: return i(p.smoothing_ms);
+    case JV: return i(p.jog_velocity_counts_per_s);
+    case TC: return f(axis_.torque_command());
+    case PX: return i(axis_.position());
+    case VX: return i(axis_.velocity());
+    case PE: return i(axis_.position_error());
+    case DV: return i(index == 2 ? axis_.reference_velocity() : axis_.reference_position());
+    case MS: return i(axis_.motion_status());
+    case ER: return i(index == 2 ? p.max_velocity_error_counts_per_s : p.max_position_error_counts);
+    case VH: return i(index == 2 ? p.velocity_high_counts_per_s : p.position_high_counts);
+    case VL: return i(index == 2 ? p.velocity_low_counts_per_s : p.position_low_counts);
+    case XM: return i(index == 1 ? p.modulo_low_counts : p.modulo_high_counts);
+    case KP: return f(p.gains.kp[index]);
+    case KI: return f(p.gains.ki[index]);
+    case KV: return f(p.gains.kv[index]);
+    case CL: return f(p.continuous_current_a);
+    case PL: return f(p.peak_current_a);
+    case IL: return i(p.input_logic[slot(index)]);
+    case IP: return i(static_cast<int32_t>(axis_.input_port()));
+    case IB: return i(axis_.input_active(index) ? 1 : 0);
+    case OP: return i(static_cast<int32_t>(axis_.output_port()));
+    case OB: return i(axis_.output(index) ? 1 : 0);
+    case MF: return i(static_cast<int32_t>(axis_.motor_fault()));
+    case SR: return i(static_cast<int32_t>(axis_.status_register()));
+    case TM: return i(static_cast<int32_t>(axis_.time_us()));
+    case TS: return i(p.servo_period_us);
+    case UI: return i(p.user_ints[slot(index)]);
+    case UF: return f(p.user_floats[slot(index)]);
+    case RV: return i(recorder_.signals[slot(index)]);
+    case RL: return i(recorder_.length);
+    case RG: return i(recorder_.gap_cycles);
+    case RR: return i(recorder_.start);
+    default: return kErrorBadCommand;
+  }
+}
+
+int32_t DriveCommands::write(uint16_t id, int32_t index, Value value) {
+  const CommandInfo* info = nullptr;
+  if (const int32_t e = check(id, index, info)) return e;
+  if (info->flags & kAction) return kErrorNotAssignable;
+  if (info->flags & kReadOnly) return kErrorReadOnly;
+  if (!in_range(*info, value)) return kErrorOutOfRange;
+  if ((info->flags & kMotorOffOnly) && axis_.motor_on()) return kErrorMotorMustBeOff;
+  drive::Parameters& p = axis_.parameters();
+  const int32_t v = value.i;
+  switch (id) {
+    case MO: return error_for(axis_.set_motor_on(v == 1));
+    case UM: return error_for(axis_.set_unit_mode(v));
+    case PA: axis_.set_absolute_target(v); break;
+    case PR: axis_.set_relative_move(v); break;
+    case SP: p.speed_counts_per_s = v; break;
+    case AC: p.accel_counts_per_s2 = v; break;
+    case DC: p.decel_counts_per_s2 = v; break;
+    case SD: p.stop_decel_counts_per_s2 = v; break;
+    case SF: p.smoothing_ms = v; break;
+    case JV: axis_.set_jog_velocity(v); break;
+    case TC: axis_.set_torque_command(value.f); break;
+    case PX: axis_.set_position(v); break;
+    case ER: (index == 2 ? p.max_velocity_error_counts_per_s : p.max_position_error_counts) = v; break;
+    case VH: (index == 2 ? p.velocity_high_counts_per_s : p.position_high_counts) = v; break;
+    case VL: (index == 2 ? p.velocity_low_counts_per_s : p.position_low_counts) = v; break;
+    case XM: (index == 1 ? p.modulo_low_counts : p.modulo_high_counts) = v; break;
+    case KP: p.gains.kp[index] = value.f; break;
+    case KI: p.gains.ki[index] = value.f; break;
+    case KV: p.gains.kv[index] = value.f; break;
+    case CL: p.continuous_current_a = value.f; break;
+    case PL: p.peak_current_a = value.f; break;
+    case IL: return error_for(axis_.set_input_logic(index, v));
+    case OP: axis_.set_output_port(static_cast<uint32_t>(v)); break;
+    case OB: axis_.set_output(index, v == 1); break;
+    case TM: axis_.set_time_us(static_cast<uint32_t>(v)); break;
+    case TS: return error_for(axis_.set_period_us(v));
+    case UI: p.user_ints[slot(index)] = v; break;
+    case UF: p.user_floats[slot(index)] = value.f; break;
+    case RV: recorder_.signals[slot(index)] = v; break;
+    case RL: recorder_.length = v; break;
+    case RG: recorder_.gap_cycles = v; break;
+    case RR: recorder_.start = v; break;
+    default: return kErrorBadCommand;
+  }
+  return kDriveOk;
+}
+
+int32_t DriveCommands::execute(uint16_t id, int32_t index) {
+  const CommandInfo* info = nullptr;
+  if (const int32_t e = check(id, index, info)) return e;
+  if (!(info->flags & kAction)) return kErrorNoValue;
+  switch (id) {
+    case BG: return error_for(axis_.begin());
+    case ST: axis_.stop(); return kDriveOk;
+    default: return kErrorBadCommand;
+  }
+}
+
+}  // namespace uprog::gold

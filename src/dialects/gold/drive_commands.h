@@ -1,0 +1,64 @@
+// Maps the Gold drive commands (commands.h) onto a drive::Axis: reads, writes and actions by
+// command id and index, each refused with a Gold-style error code (docs/dialects/gold-drive-errors.md).
+// Program-control commands belong to the controller and come back as kErrorNotHandledHere.
+#pragma once
+#include <array>
+#include <cstdint>
+
+#include "dialects/gold/commands.h"
+#include "drive/axis.h"
+#include "support/value.h"
+
+namespace uprog::gold {
+
+// The interpreter's error codes for drive commands (EC). Numbers follow the Elmo EC table
+// where it has a matching entry.
+enum DriveError : int32_t {
+  kDriveOk = 0,
+  kErrorBadCommand = 2,          // no command with that id
+  kErrorBadIndex = 3,            // index outside the command's range, or an index it does not take
+  kErrorNoValue = 5,             // an action read as a value, or a non-action executed
+  kErrorOutOfRange = 21,         // the value is outside the command's range
+  kErrorNotAssignable = 23,      // an action given a value (BG=1)
+  kErrorModeNotSupported = 26,   // BG in unit mode 1
+  kErrorReadOnly = 43,           // a status assigned (VX=0)
+  kErrorMotorMustBeOn = 57,      // BG while MO=0
+  kErrorMotorMustBeOff = 60,     // UM while MO=1
+  kErrorFaultPresent = 64,       // MO=1 while a fault's cause is present
+  kErrorInhibitActive = 65,      // MO=1 while an inhibit input is active
+  kErrorNotHandledHere = 1000,   // a controller command (XQ, MI, PS, SV, ...): the caller handles it
+};
+
+// True for the commands this class serves; the others (program control, MI, PS, EC, SV, LD,
+// RS, DB) are the controller's.
+bool handled_by_drive(uint16_t id);
+
+// Recorder settings (RV, RL, RG, RR) are kept here until a recorder takes them over.
+struct RecorderSettings {
+  std::array<int32_t, 8> signals{};
+  int32_t length = 1024;
+  int32_t gap_cycles = 1;
+  int32_t start = 0;
+};
+
+class DriveCommands {
+ public:
+  explicit DriveCommands(drive::Axis& axis) : axis_(axis) {}
+
+  // `index` is the manual's index (UI[1] -> 1); non-indexed commands take 0.
+  int32_t read(uint16_t id, int32_t index, Value& out);
+  // `value` is already converted to the command's type (commands.h).
+  int32_t write(uint16_t id, int32_t index, Value value);
+  int32_t execute(uint16_t id, int32_t index);
+
+  const RecorderSettings& recorder() const { return recorder_; }
+
+ private:
+  drive::Axis& axis_;
+  RecorderSettings recorder_;
+};
+
+// The Gold code for a refusal of the axis.
+int32_t error_for(drive::Status status);
+
+}  // namespace uprog::gold

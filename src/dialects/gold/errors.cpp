@@ -1,0 +1,48 @@
+// The registered Gold error list, expanded from gold_errors.def.
+#include "dialects/gold/errors.h"
+
+namespace uprog::gold {
+
+namespace {
+constexpr ErrorInfo kErrors[] = {
+#define GOLD_ERROR(code, name, text, illustrated) {code, #name, text, illustrated != 0},
+#include "dialects/gold/gold_errors.def"
+#undef GOLD_ERROR
+};
+constexpr size_t kErrorCount = sizeof(kErrors) / sizeof(kErrors[0]);
+
+const ErrorInfo* find(Error e) {
+  for (const ErrorInfo& info : kErrors)
+    if (info.code == static_cast<int>(e)) return &info;
+  return nullptr;
+}
+}  // namespace
+
+const ErrorInfo* all_errors(size_t& count) {
+  count = kErrorCount;
+  return kErrors;
+}
+
+const char* error_text(Error e) {
+  const ErrorInfo* info = find(e);
+  return info ? info->text : "Unknown error";
+}
+
+const char* error_name(Error e) {
+  const ErrorInfo* info = find(e);
+  return info ? info->name : "UnknownError";
+}
+
+Diagnostic make_error(Error e, Location where, std::string detail) {
+  Diagnostic d;
+  d.severity = Severity::Error;
+  d.scheme = "gold";
+  d.code = static_cast<int>(e);
+  d.message = error_text(e);
+  d.where = std::move(where);
+  // The message stays the manual's text; what is specific to this place goes into a note.
+  if (!detail.empty()) d.notes.push_back({d.where, std::move(detail)});
+  return d;
+}
+
+}  // namespace uprog::gold

@@ -1,0 +1,104 @@
+// The parser's state, shared by its statement half (parser.cpp) and expression half
+// (parse_expr.cpp). Internal to the Gold front end.
+#pragma once
+#include <vector>
+
+#include "dialects/gold/ast.h"
+#include "dialects/gold/keywords.h"
+#include "dialects/gold/reporter.h"
+#include "dialects/gold/token.h"
+
+namespace uprog::gold::detail {
+
+// Manual 1.9 and 2.7.2 (error 39): 16 levels of parentheses, 100 nested blocks.
+constexpr int kMaxParenDepth = 16;
+constexpr int kMaxBlockDepth = 100;
+constexpr int kMaxUnaryChain = 64;
+// Manual 2.7.2 errors 15 and 17: at most 16 inputs and 16 outputs.
+constexpr size_t kMaxArguments = 16;
+// Manual 2.7.2 error 11: names longer than 12 characters.
+constexpr size_t kMaxNameLength = 12;
+
+// What encloses the statement being parsed, innermost last.
+enum class Nest : char { If = 'I', While = 'W', For = 'F', Switch = 'S', Try = 'T', Catch = 'C' };
+
+enum Stop : unsigned {
+  kStopEnd = 1, kStopElse = 2, kStopCase = 4, kStopCatch = 8, kStopReturn = 16, kStopFunction = 32,
+};
+
+class Parser {
+ public:
+  Parser(const std::vector<Token>& tokens, Reporter& reporter) : t_(tokens), r_(reporter) {}
+
+  Program program();
+  Block line();
+
+  // Expressions (parse_expr.cpp). A null result means an error was reported.
+  ExprPtr expr();
+  ExprPtr unary(bool under_minus);
+  ExprPtr binary(int level);
+  ExprPtr primary(bool under_minus);
+  ExprPtr ref_after_name(const Token& name);
+  bool const_int(const Expr& e, int32_t& out) const;
+
+ private:
+  // Statements (parser.cpp).
+  Block block(unsigned stops, Keyword& stopped_by);
+  StmtPtr statement();
+  StmtPtr simple_statement();
+  StmtPtr if_statement();
+  StmtPtr while_statement();
+  StmtPtr for_statement();
+  StmtPtr switch_statement();
+  StmtPtr try_statement();
+  StmtPtr goto_or_reset(bool is_goto);
+  void function_definition(Program& p);
+  bool param_list(std::vector<Param>& out, Tok close);
+  bool type_keyword(VarType& type);
+  void declaration(VarType type, std::vector<VarDecl>& out, bool global_redecl, bool local);
+  bool check_name(const Token& t);
+  ExprPtr condition();
+  void statement_end();
+  void alone_on_line(Error e);
+  void finish(Stmt& s);
+
+ public:
+  // Tokens.
+  const Token& peek(size_t k = 0) const {
+    const size_t i = pos_ + k;
+    return i < t_.size() ? t_[i] : t_.back();
+  }
+  const Token& next() {
+    const Token& t = peek();
+    if (pos_ < t_.size() - 1) ++pos_;
+    return t;
+  }
+  bool at(Tok k) const { return peek().kind == k; }
+  Keyword kw(size_t k = 0) const {
+    const Token& t = peek(k);
+    return t.kind == Tok::Ident ? keyword_of(t.text) : Keyword::None;
+  }
+  bool at_kw(Keyword k) const { return kw() == k; }
+  bool at_statement_end() const {
+    const Tok k = peek().kind;
+    return k == Tok::Newline || k == Tok::Semicolon || k == Tok::Comma || k == Tok::Eof;
+  }
+  bool at_line_end() const { return at(Tok::Newline) || at(Tok::Eof); }
+  void skip_line() {
+    while (!at_line_end()) next();
+  }
+  void skip_separators() {
+    while (at(Tok::Newline) || at(Tok::Semicolon) || at(Tok::Comma)) next();
+  }
+  void error(Error e, uint32_t offset) { r_.error(e, offset); }
+
+  const std::vector<Token>& t_;
+  Reporter& r_;
+  size_t pos_ = 0;
+  std::vector<Nest> nest_;
+  bool in_function_ = false;
+  int paren_depth_ = 0;
+  int unary_chain_ = 0;
+};
+
+}  // namespace uprog::gold::detail

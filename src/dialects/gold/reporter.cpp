@@ -1,0 +1,53 @@
+// Locating and ordering the compiler's errors.
+#include "dialects/gold/reporter.h"
+
+#include <algorithm>
+
+namespace uprog::gold {
+
+Locator::Locator(std::string file, const std::string& text, const preproc::SourceMap* map)
+    : file_(std::move(file)), map_(map) {
+  line_starts_.push_back(0);
+  for (size_t i = 0; i < text.size(); ++i)
+    if (text[i] == '\n') line_starts_.push_back(static_cast<uint32_t>(i + 1));
+}
+
+int Locator::text_line(uint32_t offset) const {
+  auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
+  return static_cast<int>(it - line_starts_.begin());
+}
+
+Location Locator::locate(uint32_t offset) const {
+  if (map_ != nullptr && !map_->segments.empty()) return map_->locate(offset);
+  const int line = text_line(offset);
+  Location loc;
+  loc.file = file_;
+  loc.line = line;
+  loc.column = static_cast<int>(offset - line_starts_[static_cast<size_t>(line - 1)]) + 1;
+  return loc;
+}
+
+void Reporter::error(Error e, uint32_t offset, std::string detail) {
+  // One error per place is enough: recovery may meet the same bad token twice.
+  for (const Pending& p : pending_)
+    if (p.offset == offset && p.code == e) return;
+  pending_.push_back({e, offset, std::move(detail)});
+}
+
+std::vector<Diagnostic> Reporter::finish(size_t limit) {
+  std::vector<Diagnostic> all = std::move(located_);
+  for (Pending& p : pending_) all.push_back(make_error(p.code, locator_.locate(p.offset), std::move(p.detail)));
+  std::stable_sort(all.begin(), all.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    if (a.where.file != b.where.file) return a.where.file < b.where.file;
+    if (a.where.line != b.where.line) return a.where.line < b.where.line;
+    return a.where.column < b.where.column;
+  });
+  if (all.size() > limit) {
+    Location at = all[limit].where;
+    all.resize(limit);
+    all.push_back(make_error(Error::TooManyErrors, at));
+  }
+  return all;
+}
+
+}  // namespace uprog::gold
