@@ -1,6 +1,6 @@
-// The preprocessor's driver: reads the source line by line, runs directives, keeps the stack of
-// open #if blocks, and expands macros in the lines that stay. Every line of input gives exactly
-// one line of output, so line numbers survive; the OutputBuilder records where columns moved.
+// The preprocessor's driver: runs directives line by line, keeps the stack of open #if blocks and
+// puts the Expander's replacements into the lines that stay. One output line per input line, so
+// line numbers survive; the OutputBuilder records where columns moved.
 #include "preproc/preprocess.h"
 
 #include <algorithm>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "preproc/const_expr.h"
+#include "preproc/expander.h"
 #include "preproc/line_scanner.h"
 #include "preproc/macro_table.h"
 #include "preproc/output_builder.h"
@@ -35,10 +36,6 @@ constexpr DirectiveName kDirectives[] = {
     {"elifndef", Directive::Elifndef},   {"definevar", Directive::Definevar},
     {"information", Directive::Information},
 };
-
-// Caps the sum of all expansions in one file, so a line of a million uses of a large macro
-// cannot make the output explode.
-constexpr size_t kMaxTotalExpansionChars = size_t{1} << 24;
 
 // One open #if/#ifdef/#ifndef block.
 struct Conditional {
@@ -227,14 +224,14 @@ class Preprocessor {
       if (r.status == EvalStatus::Ok) m.value = r.value;
     }
     macros_.define(std::string(name.text), std::move(m));
-    too_complex_.clear();
+    expander_.forget_failures();
   }
 
   void run_undef(std::string_view args, size_t from, const Location& at) {
     const Word name = word_at(args, from);
     if (!check_name(name, at)) return;
     if (!macros_.undefine(name.text)) return report(PreprocError::NotDefined, here(name.at));
-    too_complex_.clear();
+    expander_.forget_failures();
   }
 
   std::optional<TypedValue> value_of(std::string_view name) const {
@@ -325,15 +322,13 @@ class Preprocessor {
 
   // --- expansion ----------------------------------------------------------------------------
 
-  static bool expands(const Macro* m) { return m && (m->value || !m->body.empty()); }
-
   void expand_line(std::string_view line) {
     std::vector<Span> spans;
     scan_line(line, options_, in_block_comment_, spans);
     for (const Span& s : spans) {
       const std::string_view piece = line.substr(s.begin, s.end - s.begin);
       const Macro* m = s.kind == SpanKind::Identifier ? macros_.find(piece) : nullptr;
-      if (!expands(m)) {
+      if (!Expander::expands(m)) {
         out_.append(piece);
         continue;
       }
@@ -343,53 +338,16 @@ class Preprocessor {
   }
 
   void expand_use(std::string_view name, const Macro& m, const Location& used_at) {
-    std::string text;
-    bool ok = total_expanded_ < kMaxTotalExpansionChars &&
-              std::find(too_complex_.begin(), too_complex_.end(), name) == too_complex_.end();
-    if (ok && m.value) {
-      text = format_constant(*m.value);
-    } else if (ok) {
-      std::vector<std::string_view> painted{name};  // C's rule: a macro is not expanded inside itself
-      ok = expand_body(m.body, painted, 1, text);
-    }
-    if (!ok) {
-      // Until the table changes this name fails the same way; remembering it keeps a file of
-      // many such uses linear.
-      if (std::find(too_complex_.begin(), too_complex_.end(), name) == too_complex_.end())
-        too_complex_.emplace_back(name);
+    const std::optional<std::string> text = expander_.expand(name, m);
+    if (!text) {
       report(PreprocError::ExpansionTooComplex, used_at,
              {{m.defined_at, "expanding '" + std::string(name) + "' goes too deep or too long"}});
       out_.append(name);
       return;
     }
-    total_expanded_ += text.size();
     const size_t begin = out_.size();
-    out_.append(text);
+    out_.append(*text);
     out_.add_expansion({begin, out_.size(), std::string(name), used_at, m.defined_at});
-  }
-
-  // A string body is rescanned, as in C, so it may use other #define names.
-  bool expand_body(std::string_view body, std::vector<std::string_view>& painted, int depth,
-                   std::string& text) {
-    if (depth > options_.max_expansion_depth) return false;
-    bool in_comment = false;
-    std::vector<Span> spans;
-    scan_line(body, options_, in_comment, spans);
-    for (const Span& s : spans) {
-      const std::string_view piece = body.substr(s.begin, s.end - s.begin);
-      const Macro* m = s.kind == SpanKind::Identifier ? macros_.find(piece) : nullptr;
-      if (!expands(m) || std::find(painted.begin(), painted.end(), piece) != painted.end()) {
-        text.append(piece);
-      } else if (m->value) {
-        text.append(format_constant(*m->value));
-      } else {
-        painted.push_back(piece);
-        if (!expand_body(m->body, painted, depth + 1, text)) return false;
-        painted.pop_back();
-      }
-      if (text.size() > options_.max_expansion_chars) return false;
-    }
-    return true;
   }
 
   const SourceFile& source_;
@@ -402,8 +360,7 @@ class Preprocessor {
   int line_ = 1;
   int define_count_ = 0;
   bool in_block_comment_ = false;
-  size_t total_expanded_ = 0;
-  std::vector<std::string> too_complex_;  // names whose expansion failed since the last change
+  Expander expander_{macros_, options_};
 };
 
 }  // namespace
