@@ -10,6 +10,8 @@
 
 namespace uprog::cli {
 
+namespace {
+
 void add_asm(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand("asm", "Assemble uprog assembly into a binary image");
   auto input = std::make_shared<std::string>();
@@ -60,4 +62,8 @@ void add_disasm(CLI::App& app, Action& action) {
   });
 }
 
+const Subcommand kAsm(add_asm);
+const Subcommand kDisasm(add_disasm);
+
+}  // namespace
 }  // namespace uprog::cli

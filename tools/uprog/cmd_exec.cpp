@@ -112,8 +112,6 @@ int run(const std::string& path, const std::string& entry) {
   return failed ? 1 : 0;
 }
 
-}  // namespace
-
 void add_exec(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand("exec", "Run an image or assembly file on the bare VM");
   auto input = std::make_shared<std::string>();
@@ -123,4 +121,7 @@ void add_exec(CLI::App& app, Action& action) {
   cmd->callback([&action, input, entry] { action = [input, entry] { return run(*input, *entry); }; });
 }
 
+const Subcommand kExec(add_exec);
+
+}  // namespace
 }  // namespace uprog::cli

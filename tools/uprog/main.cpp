@@ -3,13 +3,20 @@
 
 #include "commands.h"
 
+namespace uprog::cli {
+
+std::vector<AddSubcommand>& subcommands() {
+  static std::vector<AddSubcommand> list;
+  return list;
+}
+
+}  // namespace uprog::cli
+
 int main(int argc, char** argv) {
   CLI::App app{"uprog: servo-drive user programs — compilers, VM and simulated drive"};
   app.require_subcommand(1);
   uprog::cli::Action action;
-  uprog::cli::add_asm(app, action);
-  uprog::cli::add_disasm(app, action);
-  uprog::cli::add_exec(app, action);
+  for (auto add : uprog::cli::subcommands()) add(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

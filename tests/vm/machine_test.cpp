@@ -1,0 +1,239 @@
+// Machine behaviour that a case file cannot express: slices and budgets, events, halting,
+// breakpoints and single-step, several threads, loader and verifier refusals.
+#include <gtest/gtest.h>
+
+#include "bytecode/opcodes.h"
+#include "vm_fixture.h"
+
+namespace uprog::test {
+namespace {
+
+using vm::Budget;
+using vm::SliceEnd;
+using vm::ThreadStatus;
+
+// A main that counts lines forever, and an event routine that marks that it ran.
+const char* kCounter = R"(
+.global int "lines" 1
+.global int "events" 1
+.routine function "main" in=0 out=0 entry=main
+.routine auto "on_event" in=0 out=0 entry=on_event
+main:
+  LDG lines
+  PUSHI 1
+  ADDI
+  STG lines
+  EOL
+  JMP main
+on_event:
+  LDG events
+  PUSHI 1
+  ADDI
+  STG events
+  EOL
+  RET
+)";
+
+TEST(Machine, InstructionBudgetCountsExactly) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(kCounter));
+  ASSERT_EQ(p.machine.start(0, 0), vm::RunError::None);
+  const auto r = p.machine.run_slice(0, Budget::of_instructions(13));
+  EXPECT_EQ(r.end, SliceEnd::BudgetSpent);
+  EXPECT_EQ(r.executed, 13u);
+  // 6 instructions a loop (LDG PUSHI ADDI STG EOL JMP): 13 run two loops and one LDG.
+  EXPECT_EQ(p.global("lines").i, 2);
+  EXPECT_EQ(p.machine.pc(0), 1u);
+}
+
+TEST(Machine, LineBudgetStopsAfterEndOfLine) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(kCounter));
+  p.machine.start(0, 0);
+  const auto r = p.machine.run_slice(0, Budget::of_lines(4));
+  EXPECT_EQ(r.end, SliceEnd::LineEnd);
+  EXPECT_EQ(p.global("lines").i, 4);
+  EXPECT_EQ(p.machine.pc(0), 5u);  // just after EOL, at the JMP
+}
+
+TEST(Machine, EventInterruptsAndReturnsWhereItWas) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(kCounter));
+  p.machine.start(0, 0);
+  p.machine.run_slice(0, Budget::of_lines(2));
+  const uint32_t pc_before = p.machine.pc(0);
+  ASSERT_EQ(p.machine.interrupt(0, 1), vm::RunError::None);
+  EXPECT_EQ(p.machine.frame_count(0), 2u);
+  EXPECT_TRUE(p.machine.frame(0, 0).is_event);
+  p.machine.run_slice(0, Budget::of_lines(1));  // the event routine's one line
+  EXPECT_EQ(p.global("events").i, 1);
+  EXPECT_EQ(p.machine.frame_count(0), 2u);
+  p.machine.run_slice(0, Budget::of_instructions(1));  // RET back
+  EXPECT_EQ(p.machine.frame_count(0), 1u);
+  EXPECT_EQ(p.machine.pc(0), pc_before);
+  EXPECT_EQ(p.global("lines").i, 2);
+  p.machine.run_slice(0, Budget::of_lines(1));
+  EXPECT_EQ(p.global("lines").i, 3);
+}
+
+TEST(Machine, EventOnIdleThreadStartsIt) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(kCounter));
+  ASSERT_EQ(p.machine.interrupt(0, 1), vm::RunError::None);
+  EXPECT_EQ(p.run_to_end().end, SliceEnd::Finished);
+  EXPECT_EQ(p.global("events").i, 1);
+  EXPECT_EQ(p.machine.status(0), ThreadStatus::Idle);
+}
+
+TEST(Machine, HaltResumeAndKill) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(kCounter));
+  p.machine.start(0, 0);
+  p.machine.run_slice(0, Budget::of_lines(1));
+  p.machine.halt(0);
+  EXPECT_EQ(p.machine.status(0), ThreadStatus::Halted);
+  EXPECT_EQ(p.machine.run_slice(0, Budget::of_lines(5)).end, SliceEnd::Halted);
+  EXPECT_EQ(p.global("lines").i, 1);
+  p.machine.resume(0);
+  p.machine.run_slice(0, Budget::of_lines(1));
+  EXPECT_EQ(p.global("lines").i, 2);
+  p.machine.kill(0);
+  EXPECT_EQ(p.machine.status(0), ThreadStatus::Idle);
+  EXPECT_EQ(p.machine.run_slice(0, Budget::of_lines(1)).end, SliceEnd::NotRunning);
+}
+
+TEST(Machine, BreakpointStopsAndContinues) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(kCounter));
+  ASSERT_TRUE(p.machine.set_breakpoint(3));  // the STG
+  EXPECT_FALSE(p.machine.set_breakpoint(1000));
+  p.machine.start(0, 0);
+  auto r = p.machine.run_slice(0, Budget::unlimited());
+  EXPECT_EQ(r.end, SliceEnd::Breakpoint);
+  EXPECT_EQ(p.machine.pc(0), 3u);
+  EXPECT_EQ(p.global("lines").i, 0);  // stopped before the store
+  p.machine.resume(0);
+  r = p.machine.run_slice(0, Budget::unlimited());
+  EXPECT_EQ(r.end, SliceEnd::Breakpoint);  // around the loop once
+  EXPECT_EQ(p.global("lines").i, 1);
+  ASSERT_TRUE(p.machine.clear_breakpoint(3));
+  p.machine.resume(0);
+  p.machine.run_slice(0, Budget::of_lines(2));
+  EXPECT_EQ(p.global("lines").i, 3);
+}
+
+TEST(Machine, SingleStepIsABudgetOfOne) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(kCounter));
+  p.machine.start(0, 0);
+  for (uint32_t i = 1; i <= 4; ++i) {
+    EXPECT_EQ(p.machine.run_slice(0, Budget::of_instructions(1)).executed, 1u);
+    EXPECT_EQ(p.machine.pc(0), i);
+  }
+}
+
+TEST(Machine, ThreadsRunIndependently) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(kCounter));
+  p.machine.start(0, 0);
+  p.machine.start(1, 0);
+  p.machine.run_slice(0, Budget::of_lines(3));
+  p.machine.run_slice(1, Budget::of_lines(2));
+  EXPECT_EQ(p.global("lines").i, 5);
+  EXPECT_EQ(p.machine.start(7, 0), vm::RunError::NoSuchThread);
+  EXPECT_EQ(p.machine.start(0, 9), vm::RunError::NoSuchRoutine);
+}
+
+TEST(Machine, StartChecksArguments) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.global int "out" 1
+.routine function "twice" in=1 out=0 entry=twice
+.local int "x"
+twice:
+  LDL 0
+  LDL 0
+  ADDI
+  STG out
+  RET
+)"));
+  EXPECT_EQ(p.machine.start(0, 0), vm::RunError::BadArguments);
+  const Value arg = Value::of_int(21);
+  ASSERT_EQ(p.machine.start(0, 0, &arg, 1), vm::RunError::None);
+  EXPECT_EQ(p.run_to_end().end, SliceEnd::Finished);
+  EXPECT_EQ(p.global("out").i, 42);
+}
+
+TEST(Machine, ErrorInEventIsNotCaughtByInterruptedTry) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.global int "caught" 1
+.routine function "main" in=0 out=0 entry=main
+.routine auto "bad" in=0 out=0 entry=bad
+main:
+  TRY handler
+spin:
+  YIELD
+  JMP spin
+handler:
+  PUSHI 1
+  STG caught
+  RET
+bad:
+  PUSHI 1
+  PUSHI 0
+  DIVI
+  POP
+  RET
+)"));
+  p.machine.start(0, 0);
+  p.machine.run_slice(0, Budget::unlimited());
+  p.machine.interrupt(0, 1);
+  EXPECT_EQ(p.machine.run_slice(0, Budget::unlimited()).end, SliceEnd::Error);
+  EXPECT_EQ(p.machine.last_error(0), vm::RunError::DivisionByZero);
+  EXPECT_EQ(p.global("caught").i, 0);
+}
+
+TEST(Machine, DebuggerReadsLocalsAndFrames) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.routine function "main" in=0 out=0 entry=main
+.local int "a"
+.routine function "inner" in=1 out=0 entry=inner
+.local int "x"
+main:
+  PUSHI 5
+  STL 0
+  PUSHI 9
+  CALL inner 0
+  RET
+inner:
+  YIELD
+  RET
+)"));
+  p.machine.start(0, 0);
+  EXPECT_EQ(p.machine.run_slice(0, Budget::unlimited()).end, SliceEnd::Yielded);
+  ASSERT_EQ(p.machine.frame_count(0), 2u);
+  EXPECT_EQ(p.machine.frame(0, 0).routine, 1u);
+  EXPECT_EQ(p.machine.frame(0, 1).routine, 0u);
+  EXPECT_EQ(p.machine.frame(0, 1).pc, 5u);  // after the CALL
+  Value v;
+  ASSERT_TRUE(p.machine.read_local(0, 0, 0, v));
+  EXPECT_EQ(v.i, 9);
+  ASSERT_TRUE(p.machine.read_local(0, 1, 0, v));
+  EXPECT_EQ(v.i, 5);
+  EXPECT_FALSE(p.machine.read_local(0, 0, 1, v));
+}
+
+TEST(Machine, GlobalsAreCheckedFromOutside) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(kCounter));
+  Value v;
+  EXPECT_TRUE(p.machine.write_global(0, 0, Value::of_int(5)));
+  EXPECT_FALSE(p.machine.write_global(0, 1, Value::of_int(5)));
+  EXPECT_FALSE(p.machine.read_global(2, 0, v));
+  EXPECT_EQ(p.global("lines").i, 5);
+}
+
+}  // namespace
+}  // namespace uprog::test
