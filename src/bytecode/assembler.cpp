@@ -15,6 +15,16 @@
 namespace uprog::bytecode {
 namespace {
 
+bool op_from_name(const std::string& name, Op& out) {
+  for (uint32_t i = 0; i < kOpCount; ++i) {
+    if (name == kOpNames[i]) {
+      out = static_cast<Op>(i);
+      return true;
+    }
+  }
+  return false;
+}
+
 struct Token {
   std::string text;
   bool quoted = false;
@@ -40,6 +50,9 @@ class Assembler {
       start = end + 1;
     }
     resolve();
+    std::stable_sort(errors_.begin(), errors_.end(), [](const Diagnostic& a, const Diagnostic& b) {
+      return a.where.line < b.where.line;
+    });
     std::stable_sort(image_.lines.begin(), image_.lines.end(),
                      [](const LineEntry& a, const LineEntry& b) { return a.code < b.code; });
     return errors_.empty();
@@ -285,12 +298,12 @@ class Assembler {
 
   void instruction(const std::vector<Token>& ts) {
     Op op;
-    if (ts[0].quoted || !op_from_name(ts[0].text.c_str(), static_cast<uint32_t>(ts[0].text.size()), op))
+    if (ts[0].quoted || !op_from_name(ts[0].text, op))
       return error(ts[0].column, fmt::format("unknown opcode '{}'", ts[0].text));
     const OpInfo& info = op_info(op);
     const size_t operands = (info.a != Operand::None) + (info.b != Operand::None);
     if (ts.size() != operands + 1)
-      return error(ts[0].column, fmt::format("{} takes {} operand(s)", info.name, operands));
+      return error(ts[0].column, fmt::format("{} takes {} operand(s)", op_name(op), operands));
     const size_t pc = image_.code.size();
     image_.code.push_back(static_cast<uint32_t>(op));
     if (info.a != Operand::None) operand_a(ts[1], info.a, pc);

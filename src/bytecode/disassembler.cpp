@@ -124,7 +124,7 @@ std::string disassemble(const Image& image) {
     const uint32_t word = image.code[pc];
     const Op op = word_op(word);
     const OpInfo& info = op_info(op);
-    std::string text = fmt::format("  {}", info.name);
+    std::string text = fmt::format("  {}", op_name(op));
     std::string comment;
     switch (info.a) {
       case Operand::None: break;

@@ -18,18 +18,26 @@ enum class Op : uint8_t {
 };
 
 struct OpInfo {
-  const char* name;
   Operand a;
   Operand b;
   int8_t pop;
   int8_t push;
   Flow flow;
-  const char* meaning;
 };
 
+// What the verifier and the VM need; names and meanings are apart so firmware need not carry them.
 inline constexpr OpInfo kOpInfo[] = {
-#define OP(name, a, b, pop, push, flow, meaning) \
-  {#name, Operand::a, Operand::b, pop, push, Flow::flow, meaning},
+#define OP(name, a, b, pop, push, flow, meaning) {Operand::a, Operand::b, pop, push, Flow::flow},
+#include "bytecode/opcodes.def"
+#undef OP
+};
+inline constexpr const char* kOpNames[] = {
+#define OP(name, a, b, pop, push, flow, meaning) #name,
+#include "bytecode/opcodes.def"
+#undef OP
+};
+inline constexpr const char* kOpMeanings[] = {
+#define OP(name, a, b, pop, push, flow, meaning) meaning,
 #include "bytecode/opcodes.def"
 #undef OP
 };
@@ -38,6 +46,7 @@ inline constexpr uint32_t kOpCount = sizeof(kOpInfo) / sizeof(kOpInfo[0]);
 static_assert(kOpCount <= 256, "an opcode is one byte");
 
 constexpr const OpInfo& op_info(Op op) { return kOpInfo[static_cast<uint8_t>(op)]; }
+constexpr const char* op_name(Op op) { return kOpNames[static_cast<uint8_t>(op)]; }
 constexpr uint32_t op_length(Op op) { return op_info(op).b == Operand::None ? 1u : 2u; }
 
 // The A field: 24 bits, sign-extended for immediates.
@@ -51,8 +60,5 @@ constexpr int32_t word_imm(uint32_t word) { return static_cast<int32_t>(word) >>
 constexpr uint32_t make_word(Op op, uint32_t a) {
   return static_cast<uint32_t>(op) | ((a & kOperandMax) << 8);
 }
-
-// Looks an opcode up by name (case-sensitive); false when there is none.
-bool op_from_name(const char* name, uint32_t length, Op& out);
 
 }  // namespace uprog::bytecode

@@ -1,0 +1,3 @@
+; an image without code
+
+; expect verify: EmptyCode
