@@ -36,6 +36,13 @@ constexpr int64_t kMaxGlobalWords = 2040;
 Kind kind_of(VarType t) { return t == VarType::Int ? Kind::Int : Kind::Float; }
 Kind kind_of(ValueType t) { return t == ValueType::Int ? Kind::Int : Kind::Float; }
 
+// Where an expression begins (a binary expression's own offset is its operator's).
+uint32_t start_of(const Expr& e) {
+  const Expr* x = &e;
+  while (x->kind == ExprKind::Binary) x = x->lhs.get();
+  return x->offset;
+}
+
 bool const_index(const Expr& e, int32_t& out) {
   if (e.kind == ExprKind::IntLit) { out = e.int_value; return true; }
   return false;
@@ -53,7 +60,9 @@ class Checker {
     for (size_t i = 0; i < p.functions.size(); ++i) {
       FunctionDef& f = p.functions[i];
       if (!f.has_body) continue;
-      const int index = function_index_[f.name];
+      auto it = function_index_.find(f.name);
+      if (it == function_index_.end()) continue;  // refused when declared
+      const int index = it->second;
       if (syms_.functions[static_cast<size_t>(index)].def != &f) continue;  // a second body
       function_body(f, index);
     }
@@ -302,8 +311,8 @@ class Checker {
         while (left->kind == ExprKind::Binary) left = left->lhs.get();
         const bool call_first = left->kind == ExprKind::Ref && left->has_parens &&
                                 function_index_.count(left->name) > 0;
-        if (call_first) error(Error::BadFunctionCall, rhs.offset);  // "[a,b] = f(x) + 5"
-        else if (n > 1) error(Error::SidesMismatch, rhs.offset);    // "[a,b] = 12 + c"
+        if (call_first) error(Error::BadFunctionCall, start_of(rhs));  // "[a,b] = f(x) + 5"
+        else if (n > 1) error(Error::SidesMismatch, start_of(rhs));    // "[a,b] = 12 + c"
         else value(rhs);
       }
     } else {
@@ -390,7 +399,7 @@ class Checker {
       const GlobalSym& sym = syms_.globals[static_cast<size_t>(g->second)];
       // A global is seen after its declaration (manual 2.6.2); inside a function also without
       // a `global` line, as the manual's own example in 1.11 does.
-      if (sym.offset < e.offset || redeclared_.count(e.name)) {
+      if (sym.offset <= e.offset || redeclared_.count(e.name)) {
         e.ref = RefKind::Global;
         e.slot = g->second;
         return;

@@ -747,9 +747,9 @@ void Parser::function_definition(Program& p) {
   if (ok) statement_end();
   if (f.is_auto && (!f.inputs.empty() || !f.outputs.empty())) error(Error::AutoRoutineHasArgument, f.offset);
 
-  // A header followed by another function, a label or the end of the file is a prototype.
+  // A header followed by another function or the end of the file is a prototype.
   skip_separators();
-  if (at_kw(Keyword::Function) || at(Tok::Eof) || at(Tok::Label) || at(Tok::AutoLabel)) {
+  if (at_kw(Keyword::Function) || at(Tok::Eof)) {
     if (ok) p.functions.push_back(std::move(f));
     return;
   }
