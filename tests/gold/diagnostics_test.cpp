@@ -37,7 +37,7 @@ int case_code(const fs::path& p) { return std::stoi(p.filename().string().substr
 
 }  // namespace
 
-TEST(GoldDiagnostics, EveryCasePrintsItsExpectedOutput) {
+TEST(gold_diagnostics, EveryCasePrintsItsExpectedOutput) {
   const auto all = cases();
   ASSERT_GT(all.size(), 60u);
   for (const fs::path& src : all) {
@@ -51,7 +51,7 @@ TEST(GoldDiagnostics, EveryCasePrintsItsExpectedOutput) {
   }
 }
 
-TEST(GoldDiagnostics, EachCaseProducesTheCodeInItsName) {
+TEST(gold_diagnostics, EachCaseProducesTheCodeInItsName) {
   for (const fs::path& src : cases()) {
     SCOPED_TRACE(src.filename().string());
     const int code = case_code(src);
@@ -62,7 +62,7 @@ TEST(GoldDiagnostics, EachCaseProducesTheCodeInItsName) {
   }
 }
 
-TEST(GoldDiagnostics, EveryIllustratedCodeHasACase) {
+TEST(gold_diagnostics, EveryIllustratedCodeHasACase) {
   std::set<int> covered;
   for (const fs::path& src : cases()) covered.insert(case_code(src));
   size_t count = 0;
@@ -76,13 +76,13 @@ TEST(GoldDiagnostics, EveryIllustratedCodeHasACase) {
   }
 }
 
-TEST(GoldDiagnostics, JsonFormIsAvailable) {
+TEST(gold_diagnostics, JsonFormIsAvailable) {
   const gold::CompileResult r = gold::compile(SourceFile{"x.gold", "##START\nBG=10\n"});
   const std::string json = format_json(r.diagnostics);
   EXPECT_NE(json.find("\"code\": 82"), std::string::npos) << json;
 }
 
-TEST(GoldDiagnostics, MissingFileIsOpenFileFailure) {
+TEST(gold_diagnostics, MissingFileIsOpenFileFailure) {
   const gold::CompileResult r = gold::compile_file("/nonexistent/dir/prog.ehl");
   ASSERT_EQ(r.diagnostics.size(), 1u);
   EXPECT_EQ(r.diagnostics[0].code, 54);

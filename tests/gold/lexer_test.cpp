@@ -11,19 +11,19 @@ namespace {
 
 gold::CompileResult compile(const std::string& text) { return gold::compile(SourceFile{"t.ehl", text}); }
 
-TEST(GoldLexer, CommentsAndContinuation) {
+TEST(gold_lexer, CommentsAndContinuation) {
   const auto r = compile(
       "/* a block\n   comment */\nint a // line comment\n** interpreter comment\n##S\n"
       "a = 1 + ...   continued\n  2;\n");
   EXPECT_TRUE(r.ok()) << format_text(r.diagnostics);
 }
 
-TEST(GoldLexer, SemicolonsAnywhere) {
+TEST(gold_lexer, SemicolonsAnywhere) {
   const auto r = compile("int MS_\n##S;\nBG;\nuntil (MS != 2);\nwait(1);\nreturn;\n");
   EXPECT_TRUE(r.ok()) << format_text(r.diagnostics);
 }
 
-TEST(GoldLexer, KeywordsIgnoreCaseVariablesDoNot) {
+TEST(gold_lexer, KeywordsIgnoreCaseVariablesDoNot) {
   auto r = compile("function main()\nint A\nIF A\nA = 1\nEnd\nReturn\n");
   EXPECT_TRUE(r.ok()) << format_text(r.diagnostics);
   r = compile("function main()\nint A\na = 1\nreturn\n");
@@ -31,7 +31,7 @@ TEST(GoldLexer, KeywordsIgnoreCaseVariablesDoNot) {
   EXPECT_EQ(r.diagnostics[0].code, 12);
 }
 
-TEST(GoldLexer, DeepNestingIsBounded) {
+TEST(gold_lexer, DeepNestingIsBounded) {
   std::string deep = "##S\nPA = " + std::string(5000, '(') + "1" + std::string(5000, ')') + "\n";
   auto r = compile(deep);
   ASSERT_FALSE(r.ok());
@@ -47,7 +47,7 @@ TEST(GoldLexer, DeepNestingIsBounded) {
   EXPECT_FALSE(r.ok());
 }
 
-TEST(GoldLexer, RandomInputNeverCrashes) {
+TEST(gold_lexer, RandomInputNeverCrashes) {
   std::mt19937 rng(12345);
   const std::string alphabet = "ab01.x#@[](),;:=+-*/%<>!&|~^ \n\tfunction if end while for return case switch try catch ...";
   for (int n = 0; n < 300; ++n) {

@@ -35,7 +35,7 @@ std::vector<Shown> run_line(const std::string& line, GoldRun& p, const std::vect
   return out;
 }
 
-TEST(GoldLine, ManualExamples) {
+TEST(gold_line, ManualExamples) {
   GoldRun p;
   auto r = run_line("3+4", p);
   ASSERT_EQ(r.size(), 1u);
@@ -54,7 +54,7 @@ TEST(GoldLine, ManualExamples) {
   EXPECT_FLOAT_EQ(r[0].f, 3.6f);
 }
 
-TEST(GoldLine, ProductKeepsItsRunTimeType) {
+TEST(gold_line, ProductKeepsItsRunTimeType) {
   GoldRun p;
   auto r = run_line("100000*100000; 5*4; 2147483648", p);
   ASSERT_EQ(r.size(), 3u);
@@ -65,7 +65,7 @@ TEST(GoldLine, ProductKeepsItsRunTimeType) {
   EXPECT_TRUE(r[2].is_float);  // beyond the int range: a float (1.3)
 }
 
-TEST(GoldLine, KnownGlobalsOfALoadedProgram) {
+TEST(gold_line, KnownGlobalsOfALoadedProgram) {
   const gold::CompileResult prog = gold::compile(SourceFile{"p.ehl", "int myvar, arr[3]\nfloat temp\n##A\nmyvar = 1\n"});
   ASSERT_TRUE(prog.ok()) << format_text(prog.diagnostics);
   const auto known = gold::known_globals(prog.image);
@@ -79,7 +79,7 @@ TEST(GoldLine, KnownGlobalsOfALoadedProgram) {
   EXPECT_EQ(p.i("myvar"), 5);
 }
 
-TEST(GoldLine, ErrorsAreReported) {
+TEST(gold_line, ErrorsAreReported) {
   EXPECT_FALSE(gold::compile_line("nosuch + 1").ok());
   EXPECT_FALSE(gold::compile_line("BG=10").ok());
   EXPECT_FALSE(gold::compile_line("3 +").ok());

@@ -7,7 +7,7 @@
 namespace uprog::gold_test {
 namespace {
 
-TEST(GoldRun, IntegerAndFloatArithmetic) {
+TEST(gold_run, IntegerAndFloatArithmetic) {
   GoldRun p;
   ASSERT_TRUE(p.compile(R"(
 int a, b, c, d, e, g, h, w
@@ -42,7 +42,7 @@ return
   EXPECT_EQ(p.i("w"), 31);
 }
 
-TEST(GoldRun, AssignmentConversions) {
+TEST(gold_run, AssignmentConversions) {
   GoldRun p;
   ASSERT_TRUE(p.compile(R"(
 int a, b, c, big
@@ -63,7 +63,7 @@ return
   EXPECT_EQ(p.i("big"), 2147483647);
 }
 
-TEST(GoldRun, LogicAndComparisons) {
+TEST(gold_run, LogicAndComparisons) {
   GoldRun p;
   ASSERT_TRUE(p.compile(R"(
 int r[8]
@@ -83,7 +83,7 @@ return
   for (uint32_t k = 0; k < 8; ++k) EXPECT_EQ(p.i("r", k), want[k]) << "r[" << k << "]";
 }
 
-TEST(GoldRun, BuiltinFunctions) {
+TEST(gold_run, BuiltinFunctions) {
   GoldRun p;
   ASSERT_TRUE(p.compile(R"(
 int f1, f2, r1, r2, r3, s1, s2, s3, ai
@@ -122,7 +122,7 @@ return
   EXPECT_FLOAT_EQ(p.f("sq2"), 0.0f);
 }
 
-TEST(GoldRun, ForLoopsEvaluateBoundsOnce) {
+TEST(gold_run, ForLoopsEvaluateBoundsOnce) {
   GoldRun p;
   ASSERT_TRUE(p.compile(R"(
 int sum, cnt, down, n, k
@@ -152,13 +152,13 @@ return
   EXPECT_FLOAT_EQ(p.f("fsum"), 5.0f);
 }
 
-TEST(GoldRun, ZeroStepIsARunTimeError) {
+TEST(gold_run, ZeroStepIsARunTimeError) {
   GoldRun p;
   ASSERT_TRUE(p.compile("int k, s\nfunction main()\ns = 0\nfor k = 1:s:10\nend\nreturn\n"));
   EXPECT_EQ(p.run("main"), vm::SliceEnd::Error);
 }
 
-TEST(GoldRun, WhileBreakContinueAndSwitch) {
+TEST(gold_run, WhileBreakContinueAndSwitch) {
   GoldRun p;
   ASSERT_TRUE(p.compile(R"(
 int arr[10], i, evens, sw[4], a, b, c
@@ -212,7 +212,7 @@ return
   EXPECT_EQ(p.i("sw", 3), 99);
 }
 
-TEST(GoldRun, FunctionsWithSeveralOutputsNargoutRecursion) {
+TEST(gold_run, FunctionsWithSeveralOutputsNargoutRecursion) {
   GoldRun p;
   ASSERT_TRUE(p.compile(R"(
 int q, r, n1, n2, fact, location[4], err
@@ -268,7 +268,7 @@ return
   EXPECT_EQ(p.i("err"), 0);
 }
 
-TEST(GoldRun, TryCatchCatchesARefusedCommand) {
+TEST(gold_run, TryCatchCatchesARefusedCommand) {
   GoldRun p;
   ASSERT_TRUE(p.compile(R"(
 int stage
@@ -287,7 +287,7 @@ return
   EXPECT_EQ(p.i("stage"), 11);
 }
 
-TEST(GoldRun, DriveCommandsCaseInsensitive) {
+TEST(gold_run, DriveCommandsCaseInsensitive) {
   GoldRun p;
   ASSERT_TRUE(p.compile(R"(
 ##START
@@ -308,7 +308,7 @@ BG;
   EXPECT_EQ(p.host.executed[0], gold::find_command("BG")->id);
 }
 
-TEST(GoldRun, UntilAndWaitTakeTime) {
+TEST(gold_run, UntilAndWaitTakeTime) {
   GoldRun p;
   ASSERT_TRUE(p.compile(R"(
 int t0, t1
@@ -324,7 +324,7 @@ return
   EXPECT_LT(p.i("t1"), 210000);
 }
 
-TEST(GoldRun, GotoLabelsAndReset) {
+TEST(gold_run, GotoLabelsAndReset) {
   GoldRun p;
   ASSERT_TRUE(p.compile(R"(
 int n, m
@@ -355,7 +355,7 @@ return
   EXPECT_EQ(p.i("m"), 5);
 }
 
-TEST(GoldRun, EveryLineEndsWithEol) {
+TEST(gold_run, EveryLineEndsWithEol) {
   GoldRun p;
   ASSERT_TRUE(p.compile("int a\n##START\na = 1\na = 2; a = 3\nwhile(1)\nend\n"));
   // The endless loop still gives the machine a line end each turn.
@@ -370,7 +370,7 @@ TEST(GoldRun, EveryLineEndsWithEol) {
   EXPECT_EQ(p.image.lines.front().line, 3u);
 }
 
-TEST(GoldRun, ImageNamesGlobalsLocalsRoutinesAndEvents) {
+TEST(gold_run, ImageNamesGlobalsLocalsRoutinesAndEvents) {
   GoldRun p;
   ASSERT_TRUE(p.compile(R"(
 int g, arr[3]
