@@ -811,7 +811,7 @@ Program Parser::program() {
       continue;
     }
     if (k == Keyword::Int || k == Keyword::Float) {
-      VarType type;
+      VarType type{};
       type_keyword(type);
       declaration(type, p.globals, false, false);
       continue;
