@@ -1,0 +1,184 @@
+// VM micro-benchmarks: dispatch (assembly loops), calls and array access (Gold programs).
+// items_per_second counts executed VM instructions.
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "program.h"
+
+namespace {
+
+using uprog::bench::Program;
+
+void run(benchmark::State& state, Program& program) {
+  uint64_t executed = 0;
+  for (auto _ : state) {
+    const uint64_t n = program.run_main();
+    if (n == 0) {
+      state.SkipWithError("the program did not finish");
+      return;
+    }
+    executed += n;
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(executed));
+}
+
+void load_assembly(benchmark::State& state, Program& program, const std::string& text) {
+  const std::string error = program.load_assembly(text);
+  if (!error.empty()) state.SkipWithError(error.c_str());
+}
+void load_gold(benchmark::State& state, Program& program, const std::string& text) {
+  const std::string error = program.load_gold(text);
+  if (!error.empty()) state.SkipWithError(error.c_str());
+}
+
+// A counting loop: INCL, LDL, PUSHI, LTI, JNZ per iteration (5 dispatches).
+void BM_DispatchLoop(benchmark::State& state) {
+  Program p;
+  load_assembly(state, p, R"(.routine function "main" in=0 out=0 entry=main
+.local int "i"
+main:
+  PUSHI 0
+  STL 0
+loop:
+  INCL 0 1
+  LDL 0
+  PUSHI 100000
+  LTI
+  JNZ loop
+  RET
+)");
+  run(state, p);
+}
+BENCHMARK(BM_DispatchLoop);
+
+// Straight-line dispatch: 16 NOPs per iteration of the same loop.
+void BM_DispatchNop(benchmark::State& state) {
+  std::string nops;
+  for (int i = 0; i < 16; ++i) nops += "  NOP\n";
+  Program p;
+  load_assembly(state, p, R"(.routine function "main" in=0 out=0 entry=main
+.local int "i"
+main:
+  PUSHI 0
+  STL 0
+loop:
+)" + nops + R"(  INCL 0 1
+  LDL 0
+  PUSHI 10000
+  LTI
+  JNZ loop
+  RET
+)");
+  run(state, p);
+}
+BENCHMARK(BM_DispatchNop);
+
+// The same counting loop as the Gold compiler emits it (for, EOLs and all).
+void BM_GoldForLoop(benchmark::State& state) {
+  Program p;
+  load_gold(state, p, R"(int result
+function main()
+global int result
+int i, s
+s = 0
+for i = 1:100000
+  s = s + i
+end
+result = s
+return
+)");
+  run(state, p);
+}
+BENCHMARK(BM_GoldForLoop);
+
+// 100000 calls of a one-input, one-output function.
+void BM_GoldCall(benchmark::State& state) {
+  Program p;
+  load_gold(state, p, R"(int result
+function main()
+global int result
+int i, s
+s = 0
+for i = 1:100000
+  s = s + inc(i)
+end
+result = s
+return
+
+function [int r] = inc(int x)
+r = x + 1
+return
+)");
+  run(state, p);
+}
+BENCHMARK(BM_GoldCall);
+
+// The same calls in assembly, without the EOLs and for-loop code Gold adds.
+void BM_AsmCall(benchmark::State& state) {
+  Program p;
+  load_assembly(state, p, R"(.routine function "main" in=0 out=0 entry=main
+.local int "i"
+.routine function "inc" in=1 out=1 entry=inc
+.local int "x"
+.local int "r"
+main:
+  PUSHI 0
+  STL 0
+loop:
+  LDL 0
+  CALL inc 1
+  POP
+  INCL 0 1
+  LDL 0
+  PUSHI 100000
+  LTI
+  JNZ loop
+  RET
+inc:
+  LDL 0
+  PUSHI 1
+  ADDI
+  STL 1
+  RET
+)");
+  run(state, p);
+}
+BENCHMARK(BM_AsmCall);
+
+// Writes then reads of a 2040-element global int array.
+void BM_GoldArrayWrite(benchmark::State& state) {
+  Program p;
+  load_gold(state, p, R"(int a[2040]
+function main()
+global int a[2040]
+int i
+for i = 0:2039
+  a[i] = i
+end
+return
+)");
+  run(state, p);
+}
+BENCHMARK(BM_GoldArrayWrite);
+
+void BM_GoldArrayRead(benchmark::State& state) {
+  Program p;
+  load_gold(state, p, R"(int a[2040]
+int result
+function main()
+global int a[2040]
+global int result
+int i, s
+s = 0
+for i = 0:2039
+  s = s + a[i]
+end
+result = s
+return
+)");
+  run(state, p);
+}
+BENCHMARK(BM_GoldArrayRead);
+
+}  // namespace

@@ -1,0 +1,20 @@
+-- A 2040-element int array: 3000 rounds of fill a[i]=(i*7919+round)%2040, then sum, min and
+-- max of the array; each round adds (sum+min+max) to a checksum kept below 1000000.
+local a = {}
+for i = 0, 2039 do a[i] = 0 end
+local total = 0
+for r = 1, 3000 do
+  for i = 0, 2039 do
+    a[i] = (i * 7919 + r) % 2040
+  end
+  local s, mn, mx = 0, a[0], a[0]
+  for i = 0, 2039 do
+    local v = a[i]
+    s = s + v
+    if v < mn then mn = v end
+    if v > mx then mx = v end
+  end
+  total = (total + s + mn + mx) % 1000000
+end
+result = total
+print(result)

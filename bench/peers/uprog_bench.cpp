@@ -1,0 +1,166 @@
+// The peers' bench driver: compiles a Gold file, runs `main` to its end with an unlimited budget
+// on the bare VM (a fake Host, no drive simulation), prints the globals named by --then.
+// --histogram counts executed opcodes and opcode pairs instead (one instruction per slice).
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bytecode/assembly.h"
+#include "bytecode/image.h"
+#include "bytecode/opcodes.h"
+#include "dialects/gold/compile.h"
+#include "support/diagnostic.h"
+#include "vm/machine.h"
+
+namespace {
+
+using uprog::Value;
+namespace bc = uprog::bytecode;
+namespace vm = uprog::vm;
+
+// No drive: commands read 0 and succeed; the clock moves only when the program waits.
+class FakeHost final : public vm::Host {
+ public:
+  vm::CommandStatus read(uint32_t, int32_t, Value& out) override {
+    out = Value::of_int(0);
+    return vm::kCommandOk;
+  }
+  vm::CommandStatus write(uint32_t, int32_t, Value) override { return vm::kCommandOk; }
+  vm::CommandStatus execute(uint32_t, int32_t, const Value*, uint32_t) override {
+    return vm::kCommandOk;
+  }
+  uint32_t now_us() override { return now; }
+  uint32_t now = 0;
+  ~FakeHost() = default;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void print_histogram(const std::map<uint32_t, uint64_t>& ops,
+                     const std::map<std::pair<uint32_t, uint32_t>, uint64_t>& pairs, uint64_t total) {
+  std::vector<std::pair<uint64_t, std::string>> rows;
+  for (const auto& [op, n] : ops) rows.emplace_back(n, bc::kOpNames[op]);
+  std::sort(rows.rbegin(), rows.rend());
+  std::printf("executed %llu instructions\nopcode            count      share\n",
+              static_cast<unsigned long long>(total));
+  for (const auto& [n, name] : rows)
+    std::printf("%-12s %12llu  %5.1f%%\n", name.c_str(), static_cast<unsigned long long>(n),
+                100.0 * static_cast<double>(n) / static_cast<double>(total));
+  rows.clear();
+  for (const auto& [p, n] : pairs)
+    rows.emplace_back(n, std::string(bc::kOpNames[p.first]) + " " + bc::kOpNames[p.second]);
+  std::sort(rows.rbegin(), rows.rend());
+  std::printf("\nopcode pair                 count      share\n");
+  for (size_t i = 0; i < rows.size() && i < 25; ++i)
+    std::printf("%-22s %12llu  %5.1f%%\n", rows[i].second.c_str(),
+                static_cast<unsigned long long>(rows[i].first),
+                100.0 * static_cast<double>(rows[i].first) / static_cast<double>(total));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string file;
+  std::vector<std::string> then;
+  bool histogram = false, emit_asm = false, timing = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--then" && i + 1 < argc) then.emplace_back(argv[++i]);
+    else if (arg == "--histogram") histogram = true;
+    else if (arg == "--asm") emit_asm = true;
+    else if (arg == "--timing") timing = true;
+    else file = arg;
+  }
+  if (file.empty()) {
+    std::fprintf(stderr, "usage: uprog_bench FILE.ehl [--then GLOBAL]... [--asm] [--histogram] [--timing]\n");
+    return 2;
+  }
+  const auto compile_start = std::chrono::steady_clock::now();
+  uprog::gold::CompileResult compiled = uprog::gold::compile_file(file);
+  if (!compiled.ok()) {
+    std::fprintf(stderr, "%s", uprog::format_text(compiled.diagnostics).c_str());
+    return 1;
+  }
+  const double compile_s = seconds_since(compile_start);
+  const bc::Image& image = compiled.image;
+  if (emit_asm) {
+    std::printf("%s", bc::disassemble(image).c_str());
+    return 0;
+  }
+  const std::vector<uint8_t> bytes = bc::encode(image);
+  bc::ImageView view;
+  if (bc::load_image(bytes.data(), bytes.size(), view) != bc::LoadError::Ok) {
+    std::fprintf(stderr, "the image does not load\n");
+    return 1;
+  }
+  const vm::MachineConfig config;
+  std::vector<uint64_t> memory(vm::Machine::memory_needed(view, config) / 8 + 1);
+  FakeHost host;
+  vm::Machine machine;
+  const vm::LoadStatus status =
+      machine.load(bytes.data(), bytes.size(), config, memory.data(), memory.size() * 8, host);
+  if (!status.ok()) {
+    std::fprintf(stderr, "the VM refuses the image (verify error %d at pc %u)\n",
+                 static_cast<int>(status.verify), status.pc);
+    return 1;
+  }
+  const int main_routine = image.find_routine("main");
+  if (main_routine < 0) {
+    std::fprintf(stderr, "no function main\n");
+    return 1;
+  }
+  machine.start(0, static_cast<uint32_t>(main_routine));
+
+  const auto run_start = std::chrono::steady_clock::now();
+  std::map<uint32_t, uint64_t> ops;
+  std::map<std::pair<uint32_t, uint32_t>, uint64_t> pairs;
+  uint64_t executed = 0;
+  uint32_t previous = UINT32_MAX;
+  vm::SliceResult r{vm::SliceEnd::NotRunning, 0};
+  for (;;) {
+    if (histogram) {
+      const uint32_t op = image.code[machine.pc(0)] & 0xFFu;
+      r = machine.run_slice(0, vm::Budget::of_instructions(1));
+      if (r.executed != 0) {
+        ++ops[op];
+        if (previous != UINT32_MAX) ++pairs[{previous, op}];
+        previous = op;
+      }
+    } else {
+      r = machine.run_slice(0, vm::Budget::unlimited());
+    }
+    executed += r.executed;
+    if (r.end == vm::SliceEnd::Finished) break;
+    if (r.end == vm::SliceEnd::Error) {
+      std::fprintf(stderr, "run-time error %d at pc %u\n", static_cast<int>(machine.last_error(0)),
+                   machine.pc(0));
+      return 1;
+    }
+    if (r.end == vm::SliceEnd::Waiting) host.now += 1000;
+  }
+  const double run_s = seconds_since(run_start);
+  if (histogram) print_histogram(ops, pairs, executed);
+  if (timing)
+    std::fprintf(stderr, "compile %.6f s, run %.6f s, %llu instructions\n", compile_s, run_s,
+                 static_cast<unsigned long long>(executed));
+  for (const std::string& name : then) {
+    const int g = image.find_global(name);
+    Value v = Value::of_int(0);
+    if (g < 0 || !machine.read_global(static_cast<uint32_t>(g), 0, v)) {
+      std::fprintf(stderr, "no global %s\n", name.c_str());
+      return 1;
+    }
+    if (image.globals[static_cast<size_t>(g)].type == uprog::ValueType::Float)
+      std::printf("%s=%.9g\n", name.c_str(), static_cast<double>(v.f));
+    else
+      std::printf("%s=%d\n", name.c_str(), v.i);
+  }
+  return 0;
+}
