@@ -1,0 +1,24 @@
+// libFuzzer target: the Gold compiler (preprocessor, lexer, parser, checker, code generator) on
+// an arbitrary source file; an image it accepts must encode, load and verify,
+// and runs for a bounded budget.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "bytecode/image.h"
+#include "dialects/gold/compile.h"
+#include "run_image.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  using namespace uprog;
+  const SourceFile source{"fuzz.ehl", std::string(reinterpret_cast<const char*>(data), size)};
+  const gold::CompileResult result = gold::compile(source);
+  if (!result.ok()) return 0;
+  // What the compiler produces, the drive must take: a compiler bug shows as a crash here.
+  const std::vector<uint8_t> bytes = bytecode::encode(result.image);
+  const vm::LoadStatus status = fuzz::load_and_run(bytes.data(), bytes.size());
+  if (!status.ok() && !status.no_memory) abort();
+  return 0;
+}
