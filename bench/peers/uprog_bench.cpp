@@ -1,6 +1,7 @@
 // The peers' bench driver: compiles a Gold file, runs `main` to its end with an unlimited budget
 // on the bare VM (a fake Host, no drive simulation), prints the globals named by --then.
-// --histogram counts executed opcodes and opcode pairs instead (one instruction per slice).
+// --histogram counts executed opcodes and opcode pairs instead (one instruction per slice);
+// --check only compiles (the compile-speed comparison while `uprog check` does not exist).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -69,17 +70,18 @@ void print_histogram(const std::map<uint32_t, uint64_t>& ops,
 int main(int argc, char** argv) {
   std::string file;
   std::vector<std::string> then;
-  bool histogram = false, emit_asm = false, timing = false;
+  bool histogram = false, emit_asm = false, timing = false, check = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--then" && i + 1 < argc) then.emplace_back(argv[++i]);
     else if (arg == "--histogram") histogram = true;
     else if (arg == "--asm") emit_asm = true;
     else if (arg == "--timing") timing = true;
+    else if (arg == "--check") check = true;
     else file = arg;
   }
   if (file.empty()) {
-    std::fprintf(stderr, "usage: uprog_bench FILE.ehl [--then GLOBAL]... [--asm] [--histogram] [--timing]\n");
+    std::fprintf(stderr, "usage: uprog_bench FILE.ehl [--then GLOBAL]... [--asm] [--check] [--histogram] [--timing]\n");
     return 2;
   }
   const auto compile_start = std::chrono::steady_clock::now();
@@ -89,6 +91,10 @@ int main(int argc, char** argv) {
     return 1;
   }
   const double compile_s = seconds_since(compile_start);
+  if (check) {
+    if (timing) std::fprintf(stderr, "compile %.6f s\n", compile_s);
+    return 0;
+  }
   const bc::Image& image = compiled.image;
   if (emit_asm) {
     std::printf("%s", bc::disassemble(image).c_str());
