@@ -1,0 +1,41 @@
+// `uprog transcript FILE...`: replays each transcript on a fresh simulated drive, prints every
+// mismatch as FILE:LINE: expected …, got …, and exits 0 only if all of them match.
+#include <fmt/core.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "controller/transcript.h"
+
+namespace uprog::cli {
+namespace {
+
+void add_transcript(CLI::App& app, Action& action) {
+  auto* cmd = app.add_subcommand("transcript", "Replay transcripts on a simulated drive and check the answers");
+  auto files = std::make_shared<std::vector<std::string>>();
+  auto quiet = std::make_shared<bool>(false);
+  cmd->add_option("FILE", *files, "transcript files (shared/spec/transcript.md)")->required();
+  cmd->add_flag("-q,--quiet", *quiet, "print only mismatches");
+  cmd->callback([&action, files, quiet] {
+    action = [files, quiet] {
+      int failed = 0, checks = 0;
+      for (const std::string& path : *files) {
+        const controller::TranscriptResult r = controller::run_transcript_file(path);
+        checks += r.checks;
+        for (const std::string& f : r.failures) fmt::print("{}\n", f);
+        if (!r.ok) ++failed;
+        if (!*quiet) fmt::print("{}: {} ({} checks)\n", path, r.ok ? "ok" : "FAILED", r.checks);
+      }
+      fmt::print("{} of {} transcripts passed, {} checks\n", files->size() - static_cast<size_t>(failed),
+                 files->size(), checks);
+      return failed == 0 ? 0 : 1;
+    };
+  });
+}
+
+const Subcommand kTranscript(add_transcript);
+
+}  // namespace
+}  // namespace uprog::cli
