@@ -6,7 +6,18 @@
 
 namespace uprog::bytecode {
 
-enum class Operand : uint8_t { None, Imm, Const, Local, Global, Routine, Target, Count, Command, Unit };
+enum class Operand : uint8_t {
+  None, Imm, Const, Local, Global, Routine, Target, Count, Command, Unit, LocalPair, LocalImm
+};
+
+// The packed B operands of the fused local comparisons.
+constexpr uint32_t pack_locals(uint32_t first, uint32_t second) { return first | (second << 16); }
+constexpr uint32_t pack_local_imm(uint32_t local, int32_t imm) {
+  return local | (static_cast<uint32_t>(imm) << 16);
+}
+constexpr uint32_t packed_first(uint32_t b) { return b & 0xFFFFu; }
+constexpr uint32_t packed_second(uint32_t b) { return b >> 16; }
+constexpr int32_t packed_imm(uint32_t b) { return static_cast<int32_t>(b) >> 16; }
 enum class Flow : uint8_t { Next, Jump, Branch, Call, Stop };
 
 constexpr int kVar = -1;  // a stack effect that the operands decide

@@ -89,6 +89,8 @@ class Verifier {
         const RoutineRecord callee = image_.routines[a];
         if (image_.code[pc + 1] > callee.outputs) return fail(VerifyError::BadOperand, pc);
       }
+      if (word_op(word) == Op::REMLK && image_.code[pc + 1] == 0)
+        return fail(VerifyError::BadOperand, pc);
       if (word_op(word) == Op::CMDRUN && image_.code[pc + 1] > limits_.max_stack)
         return fail(VerifyError::BadOperand, pc);
     }
@@ -122,6 +124,12 @@ class Verifier {
     const int32_t depth = s_.depth[pc];
 
     if (info.a == Operand::Local && a >= locals) return fail(VerifyError::BadLocal, pc);
+    if (info.b == Operand::LocalPair || info.b == Operand::LocalImm) {
+      const uint32_t b = image_.code[pc + 1];
+      if (bytecode::packed_first(b) >= locals) return fail(VerifyError::BadLocal, pc);
+      if (info.b == Operand::LocalPair && bytecode::packed_second(b) >= locals)
+        return fail(VerifyError::BadLocal, pc);
+    }
 
     int32_t pop = info.pop;
     int32_t push = info.push;

@@ -483,6 +483,73 @@ op_CLOCK:
   ++ip;
   DISPATCH();
 
+op_ADDLK:
+  (sp++)->i = arith::wrap_add(locals[A()].i, static_cast<int32_t>(B()));
+  ip += 2;
+  DISPATCH();
+op_REMLK:
+  (sp++)->i = arith::int_rem(locals[A()].i, static_cast<int32_t>(B()));
+  ip += 2;
+  DISPATCH();
+
+#define JUMP_LOCALS(op)                                                        \
+  {                                                                            \
+    const uint32_t pair = B();                                                 \
+    const int32_t a = locals[bytecode::packed_first(pair)].i;                  \
+    const int32_t b = locals[bytecode::packed_second(pair)].i;                 \
+    ip = a op b ? code + A() : ip + 2;                                         \
+    DISPATCH();                                                                \
+  }
+#define JUMP_LOCAL_IMM(op)                                                     \
+  {                                                                            \
+    const uint32_t pair = B();                                                 \
+    const int32_t a = locals[bytecode::packed_first(pair)].i;                  \
+    ip = a op bytecode::packed_imm(pair) ? code + A() : ip + 2;                \
+    DISPATCH();                                                                \
+  }
+#define JUMP_COMPARE(type, field, cond)                                        \
+  {                                                                            \
+    const type a = sp[-2].field;                                               \
+    const type b = sp[-1].field;                                               \
+    sp -= 2;                                                                   \
+    ip = (cond) ? code + A() : ip + 1;                                         \
+    DISPATCH();                                                                \
+  }
+op_JEQLL: JUMP_LOCALS(==)
+op_JNELL: JUMP_LOCALS(!=)
+op_JLTLL: JUMP_LOCALS(<)
+op_JLELL: JUMP_LOCALS(<=)
+op_JGTLL: JUMP_LOCALS(>)
+op_JGELL: JUMP_LOCALS(>=)
+op_JEQLK: JUMP_LOCAL_IMM(==)
+op_JNELK: JUMP_LOCAL_IMM(!=)
+op_JLTLK: JUMP_LOCAL_IMM(<)
+op_JLELK: JUMP_LOCAL_IMM(<=)
+op_JGTLK: JUMP_LOCAL_IMM(>)
+op_JGELK: JUMP_LOCAL_IMM(>=)
+op_JEQI: JUMP_COMPARE(int32_t, i, a == b)
+op_JNEI: JUMP_COMPARE(int32_t, i, a != b)
+op_JLTI: JUMP_COMPARE(int32_t, i, a < b)
+op_JLEI: JUMP_COMPARE(int32_t, i, a <= b)
+op_JGTI: JUMP_COMPARE(int32_t, i, a > b)
+op_JGEI: JUMP_COMPARE(int32_t, i, a >= b)
+op_JNEQF: JUMP_COMPARE(float, f, !(a == b))
+op_JNNEF: JUMP_COMPARE(float, f, !(a != b))
+op_JNLTF: JUMP_COMPARE(float, f, !(a < b))
+op_JNLEF: JUMP_COMPARE(float, f, !(a <= b))
+op_JNGTF: JUMP_COMPARE(float, f, !(a > b))
+op_JNGEF: JUMP_COMPARE(float, f, !(a >= b))
+#undef JUMP_LOCALS
+#undef JUMP_LOCAL_IMM
+#undef JUMP_COMPARE
+op_JMPEOL:
+  ip = code + A();
+  if (--lines == 0) {
+    end = SliceEnd::LineEnd;
+    goto stop;
+  }
+  DISPATCH();
+
 op_CMDGET: {
   Value v;
   detail = host_->read(A(), static_cast<int32_t>(B()), v);

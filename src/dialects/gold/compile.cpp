@@ -1,6 +1,8 @@
 // The compiler driver: preprocess, check line lengths, lex, parse, check, generate.
 #include "dialects/gold/compile.h"
 
+#include "bytecode/peephole.h"
+
 #include "dialects/gold/lexer.h"
 #include "dialects/gold/parser.h"
 #include "preproc/preprocess.h"
@@ -71,6 +73,7 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
     result.image = generate_program(program, symbols, locator, reporter);
     result.image.source_name = source.name;
     result.image.created_unix_s = options.created_unix_s;
+    if (options.optimize) bytecode::optimize(result.image);
   }
   result.diagnostics = reporter.finish(options.max_errors);
   if (!result.ok()) result.image = bytecode::Image{};

@@ -18,6 +18,7 @@ struct CompileOptions {
   size_t max_errors = 30;
   bool preprocess = true;
   uint64_t created_unix_s = 0;  // stored in the image; 0 keeps builds reproducible
+  bool optimize = true;         // run the peephole pass (bytecode/peephole.h)
 };
 
 struct CompileResult {

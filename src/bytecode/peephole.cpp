@@ -1,0 +1,211 @@
+// Peephole fusion over decoded instructions. A sequence is fused only when no instruction after
+// its first is a jump target, catch target, routine entry or the start of a source line, so
+// every place control can arrive at survives; then every such place is relocated.
+#include "bytecode/peephole.h"
+
+#include <optional>
+#include <vector>
+
+#include "bytecode/opcodes.h"
+
+namespace uprog::bytecode {
+namespace {
+
+struct Instr {
+  uint32_t pc;  // where it was; kept by the first instruction of a fused sequence
+  Op op;
+  uint32_t a;
+  uint32_t b;
+};
+
+bool decode(const std::vector<uint32_t>& code, std::vector<Instr>& out) {
+  for (uint32_t pc = 0; pc < code.size();) {
+    const uint32_t word = code[pc];
+    if ((word & 0xFFu) >= kOpCount) return false;
+    const Op op = word_op(word);
+    const uint32_t length = op_length(op);
+    if (length > code.size() - pc) return false;
+    out.push_back({pc, op, word_a(word), length == 2 ? code[pc + 1] : 0});
+    pc += length;
+  }
+  return true;
+}
+
+// Int comparisons and the fused jumps taken when they are true; for JZ, their negation.
+struct CompareFamily {
+  Op compare, when_true, when_false, locals_true, locals_false, imm_true, imm_false;
+};
+constexpr CompareFamily kIntCompares[] = {
+    {Op::EQI, Op::JEQI, Op::JNEI, Op::JEQLL, Op::JNELL, Op::JEQLK, Op::JNELK},
+    {Op::NEI, Op::JNEI, Op::JEQI, Op::JNELL, Op::JEQLL, Op::JNELK, Op::JEQLK},
+    {Op::LTI, Op::JLTI, Op::JGEI, Op::JLTLL, Op::JGELL, Op::JLTLK, Op::JGELK},
+    {Op::LEI, Op::JLEI, Op::JGTI, Op::JLELL, Op::JGTLL, Op::JLELK, Op::JGTLK},
+    {Op::GTI, Op::JGTI, Op::JLEI, Op::JGTLL, Op::JLELL, Op::JGTLK, Op::JLELK},
+    {Op::GEI, Op::JGEI, Op::JLTI, Op::JGELL, Op::JLTLL, Op::JGELK, Op::JLTLK},
+};
+// Float comparisons fuse only with JZ: "jump unless" keeps NaN's answers exact.
+constexpr std::pair<Op, Op> kFloatCompares[] = {
+    {Op::EQF, Op::JNEQF}, {Op::NEF, Op::JNNEF}, {Op::LTF, Op::JNLTF},
+    {Op::LEF, Op::JNLEF}, {Op::GTF, Op::JNGTF}, {Op::GEF, Op::JNGEF},
+};
+
+bool fits_int16(int32_t v) { return v >= -32768 && v <= 32767; }
+int32_t imm_of(const Instr& i) { return static_cast<int32_t>(i.a << 8) >> 8; }
+
+class Fuser {
+ public:
+  Fuser(const std::vector<Instr>& in, const std::vector<bool>& boundary)
+      : in_(in), boundary_(boundary) {}
+
+  // The fused instruction for the sequence at `i` and how many instructions it replaces.
+  std::optional<std::pair<Instr, size_t>> match(size_t i) const {
+    for (auto m : {&Fuser::compare_locals, &Fuser::compare_branch, &Fuser::test_zero,
+                   &Fuser::local_constant, &Fuser::eol_jump}) {
+      if (auto r = (this->*m)(i)) return r;
+    }
+    return std::nullopt;
+  }
+
+ private:
+  // Instruction i + k exists and control cannot arrive at it except from i + k - 1.
+  bool free(size_t i, size_t k) const {
+    for (size_t j = 1; j <= k; ++j)
+      if (i + j >= in_.size() || boundary_[in_[i + j].pc]) return false;
+    return true;
+  }
+  const Instr& at(size_t i) const { return in_[i]; }
+  static bool is_branch(Op op) { return op == Op::JZ || op == Op::JNZ; }
+
+  // LDL a; LDL b | PUSHI k; <int compare>; JZ/JNZ T
+  std::optional<std::pair<Instr, size_t>> compare_locals(size_t i) const {
+    if (!free(i, 3) || at(i).op != Op::LDL || !is_branch(at(i + 3).op)) return std::nullopt;
+    const Instr& second = at(i + 1);
+    for (const auto& f : kIntCompares) {
+      if (at(i + 2).op != f.compare) continue;
+      const bool jump_if_true = at(i + 3).op == Op::JNZ;
+      const uint32_t local = at(i).a;
+      if (local > 0xFFFF) return std::nullopt;
+      if (second.op == Op::LDL && second.a <= 0xFFFF) {
+        return std::pair{Instr{at(i).pc, jump_if_true ? f.locals_true : f.locals_false,
+                               at(i + 3).a, pack_locals(local, second.a)},
+                         size_t{4}};
+      }
+      if (second.op == Op::PUSHI && fits_int16(imm_of(second))) {
+        return std::pair{Instr{at(i).pc, jump_if_true ? f.imm_true : f.imm_false, at(i + 3).a,
+                               pack_local_imm(local, imm_of(second))},
+                         size_t{4}};
+      }
+    }
+    return std::nullopt;
+  }
+
+  // <compare>; JZ/JNZ T
+  std::optional<std::pair<Instr, size_t>> compare_branch(size_t i) const {
+    if (!free(i, 1) || !is_branch(at(i + 1).op)) return std::nullopt;
+    const bool jump_if_true = at(i + 1).op == Op::JNZ;
+    for (const auto& f : kIntCompares) {
+      if (at(i).op == f.compare)
+        return std::pair{Instr{at(i).pc, jump_if_true ? f.when_true : f.when_false, at(i + 1).a, 0},
+                         size_t{2}};
+    }
+    if (jump_if_true) return std::nullopt;
+    for (const auto& [compare, jump_unless] : kFloatCompares) {
+      if (at(i).op == compare)
+        return std::pair{Instr{at(i).pc, jump_unless, at(i + 1).a, 0}, size_t{2}};
+    }
+    return std::nullopt;
+  }
+
+  // PUSHI 0; NEI|EQI; JZ|JNZ T — a test against zero is the branch itself.
+  std::optional<std::pair<Instr, size_t>> test_zero(size_t i) const {
+    if (!free(i, 2) || at(i).op != Op::PUSHI || imm_of(at(i)) != 0) return std::nullopt;
+    const Op compare = at(i + 1).op;
+    const Op branch = at(i + 2).op;
+    if ((compare != Op::NEI && compare != Op::EQI) || !is_branch(branch)) return std::nullopt;
+    const bool jump_if_nonzero = (compare == Op::NEI) == (branch == Op::JNZ);
+    return std::pair{Instr{at(i).pc, jump_if_nonzero ? Op::JNZ : Op::JZ, at(i + 2).a, 0},
+                     size_t{3}};
+  }
+
+  // LDL a; PUSHI k; ADDI|SUBI|REMI
+  std::optional<std::pair<Instr, size_t>> local_constant(size_t i) const {
+    if (!free(i, 2) || at(i).op != Op::LDL || at(i + 1).op != Op::PUSHI) return std::nullopt;
+    const int32_t k = imm_of(at(i + 1));
+    const Op op = at(i + 2).op;
+    if (op == Op::ADDI || op == Op::SUBI) {
+      const int32_t addend = op == Op::ADDI ? k : -k;  // |k| < 2^23: no overflow
+      return std::pair{Instr{at(i).pc, Op::ADDLK, at(i).a, static_cast<uint32_t>(addend)}, size_t{3}};
+    }
+    if (op == Op::REMI && k != 0)
+      return std::pair{Instr{at(i).pc, Op::REMLK, at(i).a, static_cast<uint32_t>(k)}, size_t{3}};
+    return std::nullopt;
+  }
+
+  // EOL; JMP T
+  std::optional<std::pair<Instr, size_t>> eol_jump(size_t i) const {
+    if (!free(i, 1) || at(i).op != Op::EOL || at(i + 1).op != Op::JMP) return std::nullopt;
+    return std::pair{Instr{at(i).pc, Op::JMPEOL, at(i + 1).a, 0}, size_t{2}};
+  }
+
+  const std::vector<Instr>& in_;
+  const std::vector<bool>& boundary_;
+};
+
+}  // namespace
+
+PeepholeStats optimize(Image& image) {
+  PeepholeStats stats;
+  stats.words_before = stats.words_after = static_cast<uint32_t>(image.code.size());
+  std::vector<Instr> in;
+  if (!decode(image.code, in)) return stats;
+
+  const size_t size = image.code.size();
+  std::vector<bool> boundary(size + 1, false);
+  for (const Instr& i : in)
+    if (op_info(i.op).a == Operand::Target && i.a <= size) boundary[i.a] = true;
+  for (const Routine& r : image.routines)
+    if (r.entry <= size) boundary[r.entry] = true;
+  for (const LineEntry& l : image.lines)
+    if (l.code <= size) boundary[l.code] = true;
+
+  // One pass, longest patterns first.
+  std::vector<Instr> out;
+  const Fuser fuser(in, boundary);
+  for (size_t i = 0; i < in.size();) {
+    if (auto m = fuser.match(i)) {
+      out.push_back(m->first);
+      i += m->second;
+      ++stats.fused;
+    } else {
+      out.push_back(in[i++]);
+    }
+  }
+
+  // Old instruction starts (and the end) to new ones.
+  std::vector<uint32_t> relocated(size + 1, UINT32_MAX);
+  std::vector<uint32_t> code;
+  for (const Instr& i : out) {
+    relocated[i.pc] = static_cast<uint32_t>(code.size());
+    code.push_back(make_word(i.op, i.a));
+    if (op_length(i.op) == 2) code.push_back(i.b);
+  }
+  relocated[size] = static_cast<uint32_t>(code.size());
+  const auto move = [&](uint32_t old) { return old <= size ? relocated[old] : UINT32_MAX; };
+  // A place that was inside a fused sequence cannot be referenced (it was no boundary), so
+  // every lookup below finds a relocated start; an out-of-range one is left to the verifier.
+  for (uint32_t pc = 0; pc < code.size(); pc += op_length(word_op(code[pc]))) {
+    const Op op = word_op(code[pc]);
+    if (op_info(op).a != Operand::Target) continue;
+    const uint32_t target = move(word_a(code[pc]));
+    if (target != UINT32_MAX) code[pc] = make_word(op, target);
+  }
+  for (Routine& r : image.routines)
+    if (move(r.entry) != UINT32_MAX) r.entry = move(r.entry);
+  for (LineEntry& l : image.lines)
+    if (move(l.code) != UINT32_MAX) l.code = move(l.code);
+  image.code = std::move(code);
+  stats.words_after = static_cast<uint32_t>(image.code.size());
+  return stats;
+}
+
+}  // namespace uprog::bytecode

@@ -1,0 +1,178 @@
+// The peephole pass changes no behaviour: every VM case runs to the same end with the same
+// globals before and after it. And it fuses what it should, and nothing control can enter.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "bytecode/opcodes.h"
+#include "bytecode/peephole.h"
+#include "vm_fixture.h"
+
+namespace uprog::test {
+namespace {
+
+namespace fs = std::filesystem;
+using bytecode::Op;
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<Op> ops_of(const bytecode::Image& image) {
+  std::vector<Op> ops;
+  for (uint32_t pc = 0; pc < image.code.size(); pc += bytecode::op_length(bytecode::word_op(image.code[pc])))
+    ops.push_back(bytecode::word_op(image.code[pc]));
+  return ops;
+}
+
+// Loads `text` twice, the second time optimized, runs both and compares every global.
+void expect_same_behaviour(const std::string& text, const std::string& name) {
+  LoadedProgram plain;
+  ASSERT_TRUE(plain.load(text)) << name;
+  bytecode::Image image = plain.image;
+  bytecode::optimize(image);
+  LoadedProgram fused;
+  ASSERT_TRUE(fused.load(bytecode::disassemble(image))) << name << "\n" << bytecode::disassemble(image);
+  const int main_routine = image.find_routine("main");
+  ASSERT_GE(main_routine, 0);
+  plain.machine.start(0, static_cast<uint32_t>(main_routine));
+  fused.machine.start(0, static_cast<uint32_t>(main_routine));
+  const auto a = plain.run_to_end();
+  const auto b = fused.run_to_end();
+  EXPECT_EQ(a.end, b.end) << name;
+  EXPECT_EQ(plain.machine.last_error(0), fused.machine.last_error(0)) << name;
+  EXPECT_EQ(plain.host.clock_us, fused.host.clock_us) << name;
+  for (const auto& g : plain.image.globals) {
+    for (uint32_t k = 0; k < g.length; ++k) {
+      EXPECT_EQ(plain.global(g.name, k).bits, fused.global(g.name, k).bits) << name << " " << g.name;
+    }
+  }
+}
+
+TEST(Peephole, EveryCaseBehavesTheSame) {
+  for (const auto& e : fs::directory_iterator(fs::path(UPROG_SOURCE_DIR) / "tests/vm/cases"))
+    expect_same_behaviour(read(e.path()), e.path().stem().string());
+}
+
+const char* kLoop = R"(
+.global int "total" 1
+.global float "x" 1
+.const float 2.5
+.routine function "main" in=0 out=0 entry=main
+.local int "i"
+.local int "n"
+main:
+  PUSHI 1
+  STL 0
+  PUSHI 100
+  STL 1
+  EOL
+top:
+  LDL 0
+  LDL 1
+  LEI
+  JZ done
+  LDL 0
+  PUSHI 3
+  REMI
+  PUSHI 0
+  NEI
+  JZ next
+  LDG total
+  LDL 0
+  PUSHI 7
+  REMI
+  ADDI
+  STG total
+  EOL
+next:
+  LDL 0
+  PUSHI -1
+  SUBI
+  STL 0
+  LDL 0
+  PUSHI 50
+  GTI
+  JNZ skip
+  LDG x
+  PUSHK 0
+  LTF
+  JZ skip
+  LDG x
+  PUSHK 0
+  ADDF
+  STG x
+skip:
+  EOL
+  JMP top
+done:
+  RET
+)";
+
+TEST(Peephole, FusesTheLoop) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(kLoop));
+  bytecode::Image image = p.image;
+  const auto stats = bytecode::optimize(image);
+  EXPECT_GT(stats.fused, 0u);
+  EXPECT_LT(stats.words_after, stats.words_before);
+  const std::vector<Op> expected = {
+      Op::PUSHI, Op::STL, Op::PUSHI, Op::STL, Op::EOL,
+      Op::JGTLL,                        // LDL i; LDL n; LEI; JZ done
+      Op::REMLK, Op::JZ,                // LDL i; PUSHI 3; REMI — then PUSHI 0; NEI; JZ
+      Op::LDG, Op::REMLK, Op::ADDI, Op::STG, Op::EOL,
+      Op::ADDLK, Op::STL,               // next: is a target, so the EOL before it stays
+      Op::JGTLK,                        // LDL i; PUSHI 50; GTI; JNZ skip
+      Op::LDG, Op::PUSHK, Op::JNLTF,    // LTF; JZ skip
+      Op::LDG, Op::PUSHK, Op::ADDF, Op::STG,
+      Op::JMPEOL,                       // skip: EOL; JMP top
+      Op::RET};
+  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  expect_same_behaviour(kLoop, "loop");
+}
+
+TEST(Peephole, NeverFusesAcrossAPlaceControlCanEnter) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.global int "g" 1
+.routine function "main" in=0 out=0 entry=main
+.local int "i"
+main:
+  LDL 0
+middle:
+  PUSHI 3
+  REMI
+  STG g
+  LDL 0
+  JZ middle2
+middle2:
+  RET
+)"));
+  bytecode::Image image = p.image;
+  image.routines.push_back({"other", bytecode::RoutineKind::Label, 0, 0, {}, 1});
+  bytecode::optimize(image);
+  // `middle` is a routine entry: LDL; PUSHI; REMI stays three instructions.
+  EXPECT_EQ(ops_of(image)[0], Op::LDL);
+  EXPECT_EQ(ops_of(image)[1], Op::PUSHI);
+}
+
+TEST(Peephole, RelocatesLinesEntriesAndTargets) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(kLoop));
+  bytecode::Image image = p.image;
+  image.lines = {{0, "f", 1}, {5, "f", 2}, {22, "f", 4}};
+  bytecode::optimize(image);
+  ASSERT_EQ(image.lines.size(), 3u);
+  EXPECT_EQ(image.lines[0].code, 0u);
+  EXPECT_EQ(image.lines[1].code, 5u);  // the loop top keeps its place: nothing before it fused
+  EXPECT_EQ(image.routines[0].entry, 0u);
+}
+
+}  // namespace
+}  // namespace uprog::test
