@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,10 +43,11 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void print_histogram(const std::map<uint32_t, uint64_t>& ops,
-                     const std::map<std::pair<uint32_t, uint32_t>, uint64_t>& pairs, uint64_t total) {
+void print_histogram(const std::vector<uint64_t>& ops, const std::vector<uint64_t>& pairs,
+                     uint64_t total) {
   std::vector<std::pair<uint64_t, std::string>> rows;
-  for (const auto& [op, n] : ops) rows.emplace_back(n, bc::kOpNames[op]);
+  for (size_t op = 0; op < bc::kOpCount; ++op)
+    if (ops[op] != 0) rows.emplace_back(ops[op], bc::kOpNames[op]);
   std::sort(rows.rbegin(), rows.rend());
   std::printf("executed %llu instructions\nopcode            count      share\n",
               static_cast<unsigned long long>(total));
@@ -55,8 +55,9 @@ void print_histogram(const std::map<uint32_t, uint64_t>& ops,
     std::printf("%-12s %12llu  %5.1f%%\n", name.c_str(), static_cast<unsigned long long>(n),
                 100.0 * static_cast<double>(n) / static_cast<double>(total));
   rows.clear();
-  for (const auto& [p, n] : pairs)
-    rows.emplace_back(n, std::string(bc::kOpNames[p.first]) + " " + bc::kOpNames[p.second]);
+  for (size_t p = 0; p < pairs.size(); ++p)
+    if (pairs[p] != 0)
+      rows.emplace_back(pairs[p], std::string(bc::kOpNames[p / 256]) + " " + bc::kOpNames[p % 256]);
   std::sort(rows.rbegin(), rows.rend());
   std::printf("\nopcode pair                 count      share\n");
   for (size_t i = 0; i < rows.size() && i < 25; ++i)
@@ -70,6 +71,7 @@ void print_histogram(const std::map<uint32_t, uint64_t>& ops,
 int main(int argc, char** argv) {
   std::string file;
   std::vector<std::string> then;
+  uint64_t limit = 0;  // --histogram: stop after this many instructions (0: run to the end)
   bool histogram = false, emit_asm = false, timing = false, check = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -78,10 +80,11 @@ int main(int argc, char** argv) {
     else if (arg == "--asm") emit_asm = true;
     else if (arg == "--timing") timing = true;
     else if (arg == "--check") check = true;
+    else if (arg == "--limit" && i + 1 < argc) limit = std::stoull(argv[++i]);
     else file = arg;
   }
   if (file.empty()) {
-    std::fprintf(stderr, "usage: uprog_bench FILE.ehl [--then GLOBAL]... [--asm] [--check] [--histogram] [--timing]\n");
+    std::fprintf(stderr, "usage: uprog_bench FILE.ehl [--then GLOBAL]... [--asm] [--check] [--histogram [--limit N]] [--timing]\n");
     return 2;
   }
   const auto compile_start = std::chrono::steady_clock::now();
@@ -125,8 +128,7 @@ int main(int argc, char** argv) {
   machine.start(0, static_cast<uint32_t>(main_routine));
 
   const auto run_start = std::chrono::steady_clock::now();
-  std::map<uint32_t, uint64_t> ops;
-  std::map<std::pair<uint32_t, uint32_t>, uint64_t> pairs;
+  std::vector<uint64_t> ops(256), pairs(256 * 256);
   uint64_t executed = 0;
   uint32_t previous = UINT32_MAX;
   vm::SliceResult r{vm::SliceEnd::NotRunning, 0};
@@ -136,14 +138,14 @@ int main(int argc, char** argv) {
       r = machine.run_slice(0, vm::Budget::of_instructions(1));
       if (r.executed != 0) {
         ++ops[op];
-        if (previous != UINT32_MAX) ++pairs[{previous, op}];
+        if (previous != UINT32_MAX) ++pairs[previous * 256 + op];
         previous = op;
       }
     } else {
       r = machine.run_slice(0, vm::Budget::unlimited());
     }
     executed += r.executed;
-    if (r.end == vm::SliceEnd::Finished) break;
+    if (r.end == vm::SliceEnd::Finished || (limit != 0 && executed >= limit)) break;
     if (r.end == vm::SliceEnd::Error) {
       std::fprintf(stderr, "run-time error %d at pc %u\n", static_cast<int>(machine.last_error(0)),
                    machine.pc(0));
