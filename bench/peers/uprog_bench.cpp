@@ -1,11 +1,15 @@
 // The peers' bench driver: compiles a Gold file, runs `main` to its end with an unlimited budget
 // on the bare VM (a fake Host, no drive simulation), prints the globals named by --then.
 // --histogram counts executed opcodes and opcode pairs instead (one instruction per slice);
+// A .s file (uprog assembly, e.g. hand-edited --asm output) is assembled and run through the
+// same peephole pass, to measure a code-generation change before the compiler makes it.
 // --check only compiles (the compile-speed comparison while `uprog check` does not exist).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,6 +17,7 @@
 #include "bytecode/assembly.h"
 #include "bytecode/image.h"
 #include "bytecode/opcodes.h"
+#include "bytecode/peephole.h"
 #include "dialects/gold/compile.h"
 #include "support/diagnostic.h"
 #include "vm/machine.h"
@@ -72,7 +77,7 @@ int main(int argc, char** argv) {
   std::string file;
   std::vector<std::string> then;
   uint64_t limit = 0;  // --histogram: stop after this many instructions (0: run to the end)
-  bool histogram = false, emit_asm = false, timing = false, check = false;
+  bool histogram = false, emit_asm = false, timing = false, check = false, peephole = true;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--then" && i + 1 < argc) then.emplace_back(argv[++i]);
@@ -80,15 +85,30 @@ int main(int argc, char** argv) {
     else if (arg == "--asm") emit_asm = true;
     else if (arg == "--timing") timing = true;
     else if (arg == "--check") check = true;
+    else if (arg == "--no-peephole") peephole = false;
     else if (arg == "--limit" && i + 1 < argc) limit = std::stoull(argv[++i]);
     else file = arg;
   }
   if (file.empty()) {
-    std::fprintf(stderr, "usage: uprog_bench FILE.ehl [--then GLOBAL]... [--asm] [--check] [--histogram [--limit N]] [--timing]\n");
+    std::fprintf(stderr, "usage: uprog_bench FILE.ehl|FILE.s [--then GLOBAL]... [--asm] [--no-peephole] [--check] [--histogram [--limit N]] [--timing]\n");
     return 2;
   }
   const auto compile_start = std::chrono::steady_clock::now();
-  uprog::gold::CompileResult compiled = uprog::gold::compile_file(file);
+  uprog::gold::CompileResult compiled;
+  if (file.size() > 2 && file.compare(file.size() - 2, 2, ".s") == 0) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    if (!bc::assemble(text.str(), file, compiled.image, compiled.diagnostics)) {
+      std::fprintf(stderr, "%s", uprog::format_text(compiled.diagnostics).c_str());
+      return 1;
+    }
+    bc::optimize(compiled.image);
+  } else {
+    uprog::gold::CompileOptions options;
+    options.optimize = peephole;
+    compiled = uprog::gold::compile_file(file, options);
+  }
   if (!compiled.ok()) {
     std::fprintf(stderr, "%s", uprog::format_text(compiled.diagnostics).c_str());
     return 1;
