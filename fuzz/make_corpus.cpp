@@ -65,7 +65,8 @@ int main(int argc, char** argv) {
   for (const auto& p : files_in(src / "examples/asm", ".s")) asm_files.push_back(p);
 
   Corpus preproc(out / "fuzz_preproc"), compile(out / "fuzz_gold_compile"),
-      line(out / "fuzz_gold_line"), image(out / "fuzz_image");
+      line(out / "fuzz_gold_line"), image(out / "fuzz_image"),
+      command_line(out / "fuzz_command_line"), transcript(out / "fuzz_transcript");
   for (const auto& p : preproc_cases) preproc.add(read(p));
   for (const auto& p : gold_examples) {
     preproc.add(read(p));
@@ -79,6 +80,14 @@ int main(int argc, char** argv) {
     for (std::string l; std::getline(lines, l);)
       if (!l.empty() && l.size() < 200) line.add(l);
   }
+  // Transcripts, and the lines they send for the command line.
+  for (const auto& p : files_in(src / "tests/transcripts", ".txt")) {
+    transcript.add(read(p));
+    std::istringstream lines(read(p));
+    for (std::string l; std::getline(lines, l);)
+      if (l.size() > 2 && l.compare(0, 2, "> ") == 0) command_line.add(l.substr(2));
+  }
+  for (const auto& p : files_in(src / "fuzz/corpus/fuzz_gold_line", "")) command_line.add(read(p));
   // Images.
   for (const auto& p : asm_files) {
     uprog::bytecode::Image img;
@@ -91,7 +100,8 @@ int main(int argc, char** argv) {
         uprog::gold::compile(uprog::SourceFile{p.filename().string(), read(p)});
     if (r.ok()) image.add(as_string(uprog::bytecode::encode(r.image)));
   }
-  std::printf("seeds: fuzz_preproc %zu, fuzz_gold_compile %zu, fuzz_gold_line %zu, fuzz_image %zu\n",
-              preproc.size(), compile.size(), line.size(), image.size());
+  std::printf("seeds: fuzz_preproc %zu, fuzz_gold_compile %zu, fuzz_gold_line %zu, fuzz_image %zu, "
+              "fuzz_command_line %zu, fuzz_transcript %zu\n", preproc.size(), compile.size(),
+              line.size(), image.size(), command_line.size(), transcript.size());
   return 0;
 }
