@@ -149,7 +149,6 @@ bool Controller::Impl::program_control(const std::string& text, std::vector<Answ
 std::vector<std::string> Controller::Impl::listing() const {
   // The drive keeps the image, not the source text: LS lists the program's entry points.
   std::vector<std::string> out;
-  out.push_back(ram_decoded.source_name.empty() ? "program" : ram_decoded.source_name);
   for (const bytecode::Routine& r : ram_decoded.routines) {
     if (r.name.empty() || r.name[0] == '$') continue;
     out.push_back(kind_name(r.kind) + " " + r.name);
