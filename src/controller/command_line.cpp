@@ -30,12 +30,12 @@ Answer Controller::Impl::error_answer(int32_t code, std::string why) {
   return Answer{"Error: " + why, code};
 }
 
-std::vector<Answer> Controller::Impl::send(std::string_view text) {
+std::vector<Answer> Controller::Impl::send(std::string_view text, bool takes_time) {
   std::vector<Answer> answers;
   for (const std::string& e : split_expressions(text)) {
     expression(e, answers);
     // The drive answers from its background loop: every expression takes one servo cycle.
-    advance(axis->period_us());
+    if (takes_time) advance(axis->period_us());
   }
   return answers;
 }

@@ -253,6 +253,7 @@ Controller::Controller(ControllerOptions options) : impl_(std::make_unique<Impl>
 Controller::~Controller() = default;
 const std::vector<std::string>& Controller::boot_messages() const { return impl_->boot_messages; }
 std::vector<Answer> Controller::send(std::string_view line) { return impl_->send(line); }
+std::vector<Answer> Controller::query(std::string_view line) { return impl_->send(line, false); }
 DownloadResult Controller::download(const std::vector<uint8_t>& bytes) { return impl_->download(bytes); }
 
 bool Controller::download_source_file(const std::string& path, std::vector<Diagnostic>& diagnostics) {

@@ -72,6 +72,8 @@ class Controller {
   // answer per expression that shows a value or fails, in order. Each expression takes one
   // servo cycle of virtual time (the drive answers from its background loop).
   std::vector<Answer> send(std::string_view line);
+  // As send(), but takes no virtual time: for recorders and tools that sample the drive.
+  std::vector<Answer> query(std::string_view line);
 
   // Stores an image (verified first: CRC, format, verifier). Does not load it into RAM: `CC`
   // (or load_stored_program()) does. A refused image leaves the stored program intact.

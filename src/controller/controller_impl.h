@@ -64,7 +64,7 @@ struct Controller::Impl final : vm::Host {
   std::string where(uint32_t pc) const;
 
   // --- the command line (command_line.cpp, program_control.cpp) ---
-  std::vector<Answer> send(std::string_view text);
+  std::vector<Answer> send(std::string_view text, bool takes_time = true);
   void expression(const std::string& text, std::vector<Answer>& answers);
   bool program_control(const std::string& text, std::vector<Answer>& answers);
   void run_line(const std::string& text, std::vector<Answer>& answers);

@@ -1,0 +1,40 @@
+// `uprog check FILE...`: compiles Gold sources and prints their diagnostics (gcc style or
+// JSON); exit 0 when all are clean, 1 when any has errors.
+#include <fmt/core.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "dialects/gold/compile.h"
+
+namespace uprog::cli {
+namespace {
+
+void add_check(CLI::App& app, Action& action) {
+  auto* cmd = app.add_subcommand("check", "Compile Gold sources and report diagnostics");
+  auto files = std::make_shared<std::vector<std::string>>();
+  auto format = std::make_shared<std::string>("text");
+  cmd->add_option("FILE", *files, "Gold source files")->required();
+  cmd->add_option("--format", *format, "text or json")->check(CLI::IsMember({"text", "json"}));
+  cmd->callback([&action, files, format] {
+    action = [files, format] {
+      std::vector<Diagnostic> all;
+      bool errors = false;
+      for (const std::string& f : *files) {
+        const gold::CompileResult r = gold::compile_file(f);
+        errors = errors || !r.ok();
+        all.insert(all.end(), r.diagnostics.begin(), r.diagnostics.end());
+      }
+      if (*format == "json") fmt::print("{}\n", format_json(all));
+      else fmt::print("{}", format_text(all));
+      return errors ? 1 : 0;
+    };
+  });
+}
+
+const Subcommand kCheck(add_check);
+
+}  // namespace
+}  // namespace uprog::cli

@@ -1,0 +1,202 @@
+// `uprog run FILE`: runs a Gold program on a fresh simulated drive in virtual time and prints
+// what happened (auto-routines, errors, final state); --then lines go to the command line after.
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "controller/controller.h"
+#include "controller/transcript.h"
+#include "drive/axis.h"
+#include "support/files.h"
+
+namespace uprog::cli {
+namespace {
+
+struct RunOptions {
+  std::string file;
+  std::string entry;
+  std::string duration = "1s";
+  std::string budget = "1";
+  std::vector<std::string> inputs;  // N=LEVEL@TIME
+  std::vector<std::string> faults;  // NAME@TIME
+  std::string record;               // PX,VX,myvar
+  std::string csv;
+  std::vector<std::string> then;
+};
+
+struct Scheduled {
+  uint64_t at_us;
+  int input = 0;
+  bool level = false;
+  std::string fault;  // empty for an input
+};
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  for (;;) {
+    const size_t p = s.find(sep, start);
+    out.push_back(s.substr(start, p == std::string::npos ? std::string::npos : p - start));
+    if (p == std::string::npos) return out;
+    start = p + 1;
+  }
+}
+
+bool parse_schedule(const RunOptions& o, std::vector<Scheduled>& out) {
+  for (const std::string& s : o.inputs) {
+    const size_t eq = s.find('='), at = s.find('@');
+    Scheduled e;
+    if (eq == std::string::npos || at == std::string::npos || at < eq ||
+        !controller::parse_duration_us(s.substr(at + 1), e.at_us)) {
+      fmt::print(stderr, "uprog run: --input {}: expected N=LEVEL@TIME, e.g. 2=1@500ms\n", s);
+      return false;
+    }
+    const std::string n = s.substr(0, eq), level = s.substr(eq + 1, at - eq - 1);
+    if (n.size() != 1 || n[0] < '1' || n[0] > '6' || (level != "0" && level != "1")) {
+      fmt::print(stderr, "uprog run: --input {}: N is 1..6 and LEVEL 0 or 1\n", s);
+      return false;
+    }
+    e.input = n[0] - '0';
+    e.level = level == "1";
+    out.push_back(e);
+  }
+  for (const std::string& s : o.faults) {
+    const size_t at = s.find('@');
+    Scheduled e;
+    if (at == std::string::npos || !controller::parse_duration_us(s.substr(at + 1), e.at_us)) {
+      fmt::print(stderr, "uprog run: --fault {}: expected NAME@TIME, e.g. feedback@1s\n", s);
+      return false;
+    }
+    e.fault = s.substr(0, at);
+    out.push_back(e);
+  }
+  std::stable_sort(out.begin(), out.end(), [](const Scheduled& a, const Scheduled& b) { return a.at_us < b.at_us; });
+  return true;
+}
+
+std::string shown(const controller::Answer& a) {
+  return a.is_error() ? fmt::format("{} (EC {})", a.text, a.error) : a.text;
+}
+
+int run(const RunOptions& o) {
+  controller::ControllerOptions copts;
+  if (o.budget == "unlimited") {
+    copts.timing.unlimited = true;
+  } else {
+    const long n = std::strtol(o.budget.c_str(), nullptr, 10);
+    if (n <= 0 || std::to_string(n) != o.budget) {
+      fmt::print(stderr, "uprog run: --budget takes a positive number of lines per cycle or 'unlimited'\n");
+      return 2;
+    }
+    copts.timing.lines_per_cycle = static_cast<uint32_t>(n);
+  }
+  uint64_t duration_us = 0;
+  if (!controller::parse_duration_us(o.duration, duration_us)) {
+    fmt::print(stderr, "uprog run: --for {}: expected a duration such as 500ms or 2s\n", o.duration);
+    return 2;
+  }
+  std::vector<Scheduled> schedule;
+  if (!parse_schedule(o, schedule)) return 2;
+  const std::vector<std::string> signals = o.record.empty() ? std::vector<std::string>{} : split(o.record, ',');
+  if (!signals.empty() && o.csv.empty()) {
+    fmt::print(stderr, "uprog run: --record needs --csv OUT\n");
+    return 2;
+  }
+
+  controller::Controller drive(copts);
+  std::vector<Diagnostic> diagnostics;
+  const bool compiled = drive.download_source_file(o.file, diagnostics);
+  if (!diagnostics.empty()) fmt::print(stderr, "{}", format_text(diagnostics));
+  if (!compiled) return 1;
+  std::string error;
+  if (!drive.load_stored_program(&error)) {
+    fmt::print(stderr, "uprog run: {}\n", error);
+    return 1;
+  }
+  std::string entry = o.entry.empty() ? "main" : o.entry;
+  int32_t code = drive.execute_program(entry);
+  if (code != 0 && o.entry.empty()) {
+    entry = "AUTOEXEC";
+    code = drive.execute_program(entry);
+  }
+  if (code != 0) {
+    fmt::print(stderr, "uprog run: cannot start at '{}' (error {})\n", o.entry.empty() ? "main" : o.entry, code);
+    return 1;
+  }
+
+  std::string csv;
+  if (!signals.empty()) csv = "time_us," + o.record + "\n";
+  const uint64_t period = drive.axis().period_us();
+  bool run_time_error = false;
+  auto print_log = [&] {
+    for (const controller::LogEntry& e : drive.take_log()) {
+      fmt::print("[{:10.3f} ms] {}\n", static_cast<double>(e.time_us) / 1000.0, e.text);
+      if (e.text.rfind("run-time error", 0) == 0) run_time_error = true;
+    }
+  };
+  size_t next = 0;
+  const uint64_t start = drive.now_us();
+  while (drive.now_us() - start < duration_us) {
+    while (next < schedule.size() && schedule[next].at_us <= drive.now_us() - start) {
+      const Scheduled& e = schedule[next++];
+      if (e.fault.empty()) {
+        drive.set_input_level(e.input, e.level);
+        fmt::print("[{:10.3f} ms] input {} = {}\n", static_cast<double>(drive.now_us()) / 1000.0, e.input, e.level ? 1 : 0);
+      } else if (drive.inject_fault(e.fault)) {
+        fmt::print("[{:10.3f} ms] fault {}\n", static_cast<double>(drive.now_us()) / 1000.0, e.fault);
+      } else {
+        fmt::print(stderr, "uprog run: no fault named '{}'\n", e.fault);
+        return 2;
+      }
+    }
+    drive.advance(signals.empty() ? std::min<uint64_t>(period * 20, duration_us - (drive.now_us() - start)) : period);
+    print_log();
+    if (!signals.empty()) {
+      csv += std::to_string(drive.now_us() - start);
+      for (const std::string& s : signals) {
+        const std::vector<controller::Answer> a = drive.query(s);
+        csv += "," + (a.size() == 1 && !a[0].is_error() ? a[0].text : std::string());
+      }
+      csv += "\n";
+    }
+  }
+  if (!signals.empty() && !write_file_atomically(o.csv, csv.data(), csv.size(), &error)) {
+    fmt::print(stderr, "uprog run: {}\n", error);
+    return 2;
+  }
+  fmt::print("after {:.3f} ms: PS={} PX={} VX={} MO={} MF={}", static_cast<double>(drive.now_us() - start) / 1000.0,
+             drive.program_status(), drive.axis().position(), drive.axis().velocity(),
+             drive.axis().motor_on() ? 1 : 0, drive.axis().motor_fault());
+  if (drive.program_error() != 0) fmt::print(" error={} ({})", drive.program_error(), drive.program_error_text());
+  fmt::print("\n");
+  for (const std::string& line : o.then) {
+    for (const controller::Answer& a : drive.send(line)) fmt::print("{}\n", shown(a));
+  }
+  print_log();
+  return run_time_error ? 3 : 0;
+}
+
+void add_run(CLI::App& app, Action& action) {
+  auto* cmd = app.add_subcommand("run", "Run a Gold program on a fresh simulated drive in virtual time");
+  auto o = std::make_shared<RunOptions>();
+  cmd->add_option("FILE", o->file, "Gold source file")->required();
+  cmd->add_option("--entry", o->entry, "function or label to start at (default main, else AUTOEXEC)");
+  cmd->add_option("--for", o->duration, "virtual time to run (default 1s)");
+  cmd->add_option("--budget", o->budget, "source lines per servo cycle, or 'unlimited' (default 1)");
+  cmd->add_option("--input", o->inputs, "N=LEVEL@TIME: set digital input N at TIME");
+  cmd->add_option("--fault", o->faults, "NAME@TIME: latch a drive fault at TIME");
+  cmd->add_option("--record", o->record, "comma-separated signals to sample every servo cycle (PX,VX,myvar)");
+  cmd->add_option("--csv", o->csv, "where --record writes its samples");
+  cmd->add_option("--then", o->then, "a command line sent after the run; its answers are printed");
+  cmd->callback([&action, o] { action = [o] { return run(*o); }; });
+}
+
+const Subcommand kRun(add_run);
+
+}  // namespace
+}  // namespace uprog::cli
