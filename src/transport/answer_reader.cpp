@@ -1,0 +1,31 @@
+// Splits the drive's byte stream into answers and end-of-line marks (answer_reader.h).
+#include "transport/answer_reader.h"
+
+namespace uprog::transport {
+
+namespace {
+constexpr std::size_t kMaxAnswer = 1 << 16;  // a longer answer is delivered in pieces
+}
+
+void AnswerReader::feed(std::string_view bytes, std::vector<AnswerEvent>& out) {
+  for (const char c : bytes) {
+    const bool was_after_cr = after_cr_;
+    after_cr_ = c == '\r';
+    if (c == ';') {
+      out.push_back({false, parse_wire_reply(partial_)});
+      partial_.clear();
+    } else if (c == '\r' || c == '\n') {
+      if (c == '\n' && was_after_cr) continue;  // the LF of CR LF
+      out.push_back({true, {}});
+      partial_.clear();  // stray text before a line break is not an answer
+    } else {
+      partial_.push_back(c);
+      if (partial_.size() >= kMaxAnswer) {
+        out.push_back({false, parse_wire_reply(partial_)});
+        partial_.clear();
+      }
+    }
+  }
+}
+
+}  // namespace uprog::transport

@@ -1,0 +1,33 @@
+// The drive's serial port, simulated: a pseudo-terminal in raw mode whose slave path (/dev/pts/N)
+// picocom, screen or socat open as they would a real RS-232 port. Same framing and answers as TCP.
+#pragma once
+#include "transport/asio.h"
+#include <memory>
+#include <string>
+
+#include "transport/line_framer.h"
+#include "transport/line_service.h"
+#include "transport/stream_session.h"
+
+namespace uprog::transport {
+
+class PtyServer {
+ public:
+  using Session = StreamSession<boost::asio::posix::stream_descriptor>;
+
+  // Opens the pty (throws boost::system::system_error if it cannot).
+  PtyServer(boost::asio::io_context& io, LineService& service, FramerOptions options = {});
+  ~PtyServer();
+  PtyServer(const PtyServer&) = delete;
+  PtyServer& operator=(const PtyServer&) = delete;
+
+  const std::string& slave_path() const { return slave_path_; }
+  void stop();
+
+ private:
+  std::shared_ptr<Session> session_;
+  std::string slave_path_;
+  int slave_fd_ = -1;  // held open so the master never reads EIO between two terminal programs
+};
+
+}  // namespace uprog::transport

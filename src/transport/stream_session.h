@@ -1,0 +1,107 @@
+// The asynchronous I/O of one host connection (a TCP socket or a pty master): reads bytes, hands
+// them to a HostSession, writes the answers in order. Stops reading while too much output waits
+// (a host that never reads cannot make the server grow). All on the server's one thread.
+#pragma once
+#include <array>
+#include "transport/asio.h"
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "transport/host_session.h"
+
+namespace uprog::transport {
+
+inline constexpr std::size_t kMaxQueuedOutput = 256 * 1024;
+
+template <class Stream>
+class StreamSession : public std::enable_shared_from_this<StreamSession<Stream>> {
+ public:
+  StreamSession(Stream stream, LineService& service, FramerOptions options,
+                std::function<void()> on_closed = {})
+      : stream_(std::move(stream)), host_(service, options), on_closed_(std::move(on_closed)) {}
+
+  void start() { read(); }
+
+  // Closes the connection at once (server shutdown).
+  void close() {
+    if (closed_) return;
+    closed_ = true;
+    host_.disconnect();
+    boost::system::error_code ignored;
+    stream_.close(ignored);
+    if (on_closed_) on_closed_();
+  }
+
+  Stream& stream() { return stream_; }
+
+ private:
+  void read() {
+    if (closed_ || reading_ || read_done_) return;
+    reading_ = true;
+    stream_.async_read_some(
+        boost::asio::buffer(input_),
+        [self = this->shared_from_this()](const boost::system::error_code& ec, std::size_t n) {
+          self->on_read(ec, n);
+        });
+  }
+
+  void on_read(const boost::system::error_code& ec, std::size_t n) {
+    reading_ = false;
+    if (closed_) return;
+    if (ec) {
+      // End of input, or an error: the host is gone mid-line or done. Answers already due are
+      // still written (a host may half-close after its last line), then the connection closes.
+      read_done_ = true;
+      host_.disconnect();
+      if (!writing_ && pending_.empty()) close();
+      return;
+    }
+    host_.receive(std::string_view(input_.data(), n), pending_);
+    write();
+    if (queued() < kMaxQueuedOutput) read();
+  }
+
+  void write() {
+    if (closed_ || writing_ || pending_.empty()) return;
+    writing_ = true;
+    writing_buffer_.swap(pending_);
+    pending_.clear();
+    boost::asio::async_write(
+        stream_, boost::asio::buffer(writing_buffer_),
+        [self = this->shared_from_this()](const boost::system::error_code& ec, std::size_t) {
+          self->on_written(ec);
+        });
+  }
+
+  void on_written(const boost::system::error_code& ec) {
+    writing_ = false;
+    writing_buffer_.clear();
+    if (closed_) return;
+    if (ec) {
+      close();
+      return;
+    }
+    write();
+    if (read_done_ && !writing_ && pending_.empty()) {
+      close();
+      return;
+    }
+    if (queued() < kMaxQueuedOutput) read();
+  }
+
+  std::size_t queued() const { return pending_.size() + writing_buffer_.size(); }
+
+  Stream stream_;
+  HostSession host_;
+  std::function<void()> on_closed_;
+  std::array<char, 4096> input_{};
+  std::string pending_;
+  std::string writing_buffer_;
+  bool reading_ = false;
+  bool writing_ = false;
+  bool read_done_ = false;
+  bool closed_ = false;
+};
+
+}  // namespace uprog::transport

@@ -1,0 +1,46 @@
+// Answers on the wire: the server's form and the host-side reader agree.
+#include <gtest/gtest.h>
+
+#include "transport/answer_reader.h"
+#include "transport/reply.h"
+
+namespace uprog::transport {
+namespace {
+
+TEST(Reply, ValueErrorAndSilentForms) {
+  EXPECT_EQ(wire_reply({"4", 0}), "4;");
+  EXPECT_EQ(wire_reply({"", 0}), ";");
+  EXPECT_EQ(wire_reply({"Operand out of range", 21}), "?21 Operand out of range;");
+  EXPECT_EQ(wire_reply({"", 21}), "?21;");
+}
+
+TEST(Reply, TextCannotBreakTheFrame) {
+  EXPECT_EQ(wire_reply({"a;b\r\nc", 0}), "a b  c;");
+  EXPECT_EQ(wire_reply({"?x", 0}), " ?x;");  // a value never reads as an error
+}
+
+TEST(Reply, ParseReadsWhatWasWritten) {
+  EXPECT_EQ(parse_wire_reply("?21 Operand out of range"), (Reply{"Operand out of range", 21}));
+  EXPECT_EQ(parse_wire_reply("?900"), (Reply{"", 900}));
+  EXPECT_EQ(parse_wire_reply("3.600000"), (Reply{"3.600000", 0}));
+  EXPECT_EQ(parse_wire_reply("?"), (Reply{"", -1}));
+}
+
+TEST(AnswerReader, SplitsAnswersAndLineEnds) {
+  AnswerReader reader;
+  std::vector<AnswerEvent> events;
+  reader.feed(";4", events);
+  EXPECT_EQ(events.size(), 1u);
+  EXPECT_EQ(reader.partial(), "4");
+  reader.feed(";\r", events);
+  reader.feed("\n?19 Command syntax error;\r\n", events);
+  ASSERT_EQ(events.size(), 5u);
+  EXPECT_EQ(events[0].reply, (Reply{"", 0}));
+  EXPECT_EQ(events[1].reply, (Reply{"4", 0}));
+  EXPECT_TRUE(events[2].end_of_line);
+  EXPECT_EQ(events[3].reply, (Reply{"Command syntax error", 19}));
+  EXPECT_TRUE(events[4].end_of_line);
+}
+
+}  // namespace
+}  // namespace uprog::transport

@@ -1,0 +1,172 @@
+// `uprog sim`: the simulated drive served to hosts over TCP and/or a pseudo-terminal, its virtual
+// time paced to the wall clock. Stops cleanly on SIGINT/SIGTERM. See docs/protocol.md.
+#include <fmt/core.h>
+
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+#include "commands.h"
+#include "transport/pacer.h"
+#include "transport/pty_server.h"
+#include "transport/tcp_server.h"
+#ifdef UPROG_HAVE_CONTROLLER
+#include "controller/controller.h"
+#include "support/files.h"
+#include "transport/controller_service.h"
+#endif
+
+namespace uprog::cli {
+
+namespace {
+
+struct SimOptions {
+  std::string listen;
+  bool pty = false;
+  std::string state_dir;
+  std::string program;
+  bool safe_boot = false;
+  bool log = false;
+};
+
+#ifdef UPROG_HAVE_CONTROLLER
+
+// Downloads `path` (a .upi image or a Gold source), loads it as CC does and, unless safe boot,
+// starts AUTOEXEC as a power-up would. False with the reasons printed.
+bool install_program(controller::Controller& drive, const SimOptions& options) {
+  const std::string& path = options.program;
+  if (path.ends_with(".upi")) {
+    std::string error;
+    const auto bytes = read_binary_file(path, &error);
+    if (!bytes) {
+      fmt::print(stderr, "uprog sim: {}\n", error);
+      return false;
+    }
+    const auto result = drive.download(*bytes);
+    if (!result.ok) {
+      fmt::print(stderr, "uprog sim: {}: {}\n", path, result.error);
+      return false;
+    }
+  } else {
+    std::vector<Diagnostic> diagnostics;
+    if (!drive.download_source_file(path, diagnostics)) {
+      fmt::print(stderr, "{}", format_text(diagnostics));
+      return false;
+    }
+  }
+  std::string error;
+  if (!drive.load_stored_program(&error)) {
+    fmt::print(stderr, "uprog sim: {}: {}\n", path, error);
+    return false;
+  }
+  if (!options.safe_boot) drive.execute_program("AUTOEXEC");  // no AUTOEXEC: nothing starts
+  return true;
+}
+
+// Passes lines to the drive and, with --log, prints what the firmware did after each step.
+class SimService final : public transport::LineService {
+ public:
+  SimService(controller::Controller& drive, bool log) : drive_(drive), inner_(drive), log_(log) {}
+  std::vector<transport::Reply> handle_line(std::string_view line) override {
+    auto replies = inner_.handle_line(line);
+    print_log();
+    return replies;
+  }
+  void advance(std::uint32_t us) override {
+    inner_.advance(us);
+    print_log();
+  }
+
+ private:
+  void print_log() {
+    if (!log_) return;
+    for (const auto& entry : drive_.take_log()) {
+      fmt::print("{:>12} us  {}\n", entry.time_us, entry.text);
+      std::fflush(stdout);
+    }
+  }
+  controller::Controller& drive_;
+  transport::ControllerService inner_;
+  bool log_;
+};
+
+int run_sim(const SimOptions& options) {
+  namespace asio = boost::asio;
+  asio::ip::tcp::endpoint endpoint;
+  std::string error;
+  const bool listen = !options.listen.empty() || !options.pty;
+  if (listen && !transport::parse_endpoint(options.listen.empty() ? "127.0.0.1:5025" : options.listen,
+                                           endpoint, error)) {
+    fmt::print(stderr, "uprog sim: {}\n", error);
+    return 2;
+  }
+  controller::ControllerOptions controller_options;
+  controller_options.state_dir = options.state_dir;
+  controller_options.safe_boot = options.safe_boot;
+  controller::Controller drive(controller_options);
+  for (const auto& message : drive.boot_messages()) fmt::print(stderr, "uprog sim: {}\n", message);
+  if (!options.program.empty() && !install_program(drive, options)) return 1;
+
+  SimService service(drive, options.log);
+  asio::io_context io;
+  std::unique_ptr<transport::TcpServer> tcp;
+  std::unique_ptr<transport::PtyServer> pty;
+  try {
+    if (listen) {
+      tcp = std::make_unique<transport::TcpServer>(io, service, endpoint);
+      const auto where = tcp->local_endpoint();
+      const auto address = where.address().to_string();
+      fmt::print("listening on tcp {}:{}\n",
+                 where.address().is_v6() ? "[" + address + "]" : address, where.port());
+    }
+    if (options.pty) {
+      pty = std::make_unique<transport::PtyServer>(io, service);
+      fmt::print("listening on pty {}\n", pty->slave_path());
+    }
+  } catch (const boost::system::system_error& e) {
+    fmt::print(stderr, "uprog sim: {}\n", e.what());
+    return 1;
+  }
+  std::fflush(stdout);
+
+  transport::Pacer pacer(io, service);
+  pacer.start();
+  asio::signal_set signals(io, SIGINT, SIGTERM);
+  signals.async_wait([&](const boost::system::error_code& ec, int) {
+    if (ec) return;
+    pacer.stop();
+    if (tcp) tcp->stop();
+    if (pty) pty->stop();
+    io.stop();
+  });
+  io.run();
+  fmt::print(stderr, "uprog sim: stopped at {} us of virtual time\n", drive.now_us());
+  return 0;
+}
+
+#else
+
+int run_sim(const SimOptions&) {
+  fmt::print(stderr, "uprog sim: this build has no controller (src/controller)\n");
+  return 1;
+}
+
+#endif
+
+void add_sim(CLI::App& app, Action& action) {
+  auto* cmd = app.add_subcommand("sim", "Serve the simulated drive over TCP and/or a pty");
+  auto options = std::make_shared<SimOptions>();
+  cmd->add_option("--listen", options->listen,
+                  "HOST:PORT to listen on (default 127.0.0.1:5025; port 0 picks a free one)");
+  cmd->add_flag("--pty", options->pty, "also open a pseudo-terminal and print its path");
+  cmd->add_option("--state", options->state_dir, "folder for the stored program and parameters");
+  cmd->add_option("--program", options->program, "Gold source or .upi image to download and load");
+  cmd->add_flag("--safe-boot", options->safe_boot, "boot without running AUTOEXEC");
+  cmd->add_flag("--log", options->log, "print what the firmware does (auto-routines, errors)");
+  cmd->callback([&action, options] { action = [options] { return run_sim(*options); }; });
+}
+
+const Subcommand kSim(add_sim);
+
+}  // namespace
+}  // namespace uprog::cli
