@@ -66,7 +66,8 @@ int main(int argc, char** argv) {
 
   Corpus preproc(out / "fuzz_preproc"), compile(out / "fuzz_gold_compile"),
       line(out / "fuzz_gold_line"), image(out / "fuzz_image"),
-      command_line(out / "fuzz_command_line"), transcript(out / "fuzz_transcript");
+      command_line(out / "fuzz_command_line"), transcript(out / "fuzz_transcript"),
+      transport(out / "fuzz_transport");
   for (const auto& p : preproc_cases) preproc.add(read(p));
   for (const auto& p : gold_examples) {
     preproc.add(read(p));
@@ -85,7 +86,10 @@ int main(int argc, char** argv) {
     transcript.add(read(p));
     std::istringstream lines(read(p));
     for (std::string l; std::getline(lines, l);)
-      if (l.size() > 2 && l.compare(0, 2, "> ") == 0) command_line.add(l.substr(2));
+      if (l.size() > 2 && l.compare(0, 2, "> ") == 0) {
+        command_line.add(l.substr(2));
+        transport.add(std::string("\0\5", 2) + l.substr(2) + "\r\n");  // options, chunk, bytes
+      }
   }
   for (const auto& p : files_in(src / "fuzz/corpus/fuzz_gold_line", "")) command_line.add(read(p));
   // Images.
@@ -101,7 +105,8 @@ int main(int argc, char** argv) {
     if (r.ok()) image.add(as_string(uprog::bytecode::encode(r.image)));
   }
   std::printf("seeds: fuzz_preproc %zu, fuzz_gold_compile %zu, fuzz_gold_line %zu, fuzz_image %zu, "
-              "fuzz_command_line %zu, fuzz_transcript %zu\n", preproc.size(), compile.size(),
-              line.size(), image.size(), command_line.size(), transcript.size());
+              "fuzz_command_line %zu, fuzz_transcript %zu, fuzz_transport %zu\n", preproc.size(),
+              compile.size(), line.size(), image.size(), command_line.size(), transcript.size(),
+              transport.size());
   return 0;
 }
