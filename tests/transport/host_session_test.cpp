@@ -16,26 +16,26 @@ std::string talk(std::string_view bytes) {
   return out;
 }
 
-TEST(HostSession, AnswersEachExpressionAndEndsTheTypedLine) {
+TEST(transport_host_session, AnswersEachExpressionAndEndsTheTypedLine) {
   EXPECT_EQ(talk("PX=7; PX-3\r\n"), "PX=7;PX-3;\r\n");
   EXPECT_EQ(talk("quiet\n"), ";\r\n");
   EXPECT_EQ(talk("two;err 21\n"), "1;2;?21 Failed;\r\n");
 }
 
-TEST(HostSession, SemicolonTerminatedLinesNeedNoLineBreak) {
+TEST(transport_host_session, SemicolonTerminatedLinesNeedNoLineBreak) {
   EXPECT_EQ(talk("a;b;"), "a;b;");
 }
 
-TEST(HostSession, CommentOnlyLineStillEndsWithLineBreak) {
+TEST(transport_host_session, CommentOnlyLineStillEndsWithLineBreak) {
   EXPECT_EQ(talk("** note\n\n"), "\r\n");
 }
 
-TEST(HostSession, FramingErrorsAreAnsweredWithTransportCodes) {
+TEST(transport_host_session, FramingErrorsAreAnsweredWithTransportCodes) {
   EXPECT_EQ(talk(std::string(600, 'x') + "\nok\n"), "?900 Line too long;\r\nok;\r\n");
   EXPECT_EQ(talk(std::string("a\0b;ok;", 7)), "?901 Bad character;ok;");
 }
 
-TEST(HostSession, DisconnectDropsThePartialLine) {
+TEST(transport_host_session, DisconnectDropsThePartialLine) {
   testing::FakeService service;
   HostSession session(service);
   std::string out;

@@ -22,37 +22,37 @@ const Frame kBreak{Kind::kLineBreak, {}};
 const Frame kTooLong{Kind::kTooLong, {}};
 const Frame kBad{Kind::kBadCharacter, {}};
 
-TEST(LineFramer, EachTerminatorEndsALine) {
+TEST(transport_framer, EachTerminatorEndsALine) {
   EXPECT_EQ(frame("PX\r"), (std::vector<Frame>{line("PX"), kBreak}));
   EXPECT_EQ(frame("PX\n"), (std::vector<Frame>{line("PX"), kBreak}));
   EXPECT_EQ(frame("PX;"), (std::vector<Frame>{line("PX")}));
 }
 
-TEST(LineFramer, ManualExampleSplitsIntoTwoExpressions) {
+TEST(transport_framer, ManualExampleSplitsIntoTwoExpressions) {
   EXPECT_EQ(frame("PX=7; PX-3\r\n"), (std::vector<Frame>{line("PX=7"), line("PX-3"), kBreak}));
 }
 
-TEST(LineFramer, SemicolonBeforeLineEndIsIgnoredAndCrLfIsOneBreak) {
+TEST(transport_framer, SemicolonBeforeLineEndIsIgnoredAndCrLfIsOneBreak) {
   EXPECT_EQ(frame("PX;\r\n"), (std::vector<Frame>{line("PX"), kBreak}));
   EXPECT_EQ(frame(";;\r\n\r\n\n"), (std::vector<Frame>{kBreak}));
 }
 
-TEST(LineFramer, BlankLinesGiveNothing) {
+TEST(transport_framer, BlankLinesGiveNothing) {
   EXPECT_TRUE(frame("\r\n  \t \n\r").empty());
 }
 
-TEST(LineFramer, IndentationIsTrimmed) {
+TEST(transport_framer, IndentationIsTrimmed) {
   EXPECT_EQ(frame("   UI[1] = 3  \t\n"), (std::vector<Frame>{line("UI[1] = 3"), kBreak}));
 }
 
-TEST(LineFramer, CommentRunsToLineEndAndHidesSemicolons) {
+TEST(transport_framer, CommentRunsToLineEndAndHidesSemicolons) {
   EXPECT_EQ(frame("PX=1 ** set; PX\nVX\n"),
             (std::vector<Frame>{line("PX=1"), kBreak, line("VX"), kBreak}));
   EXPECT_EQ(frame("** only a comment\n"), (std::vector<Frame>{kBreak}));
   EXPECT_EQ(frame("3*4*5\n"), (std::vector<Frame>{line("3*4*5"), kBreak}));
 }
 
-TEST(LineFramer, CommentMarkerMaySpanChunks) {
+TEST(transport_framer, CommentMarkerMaySpanChunks) {
   LineFramer framer;
   std::vector<Frame> out;
   framer.feed("PX=1 *", out);
@@ -60,25 +60,25 @@ TEST(LineFramer, CommentMarkerMaySpanChunks) {
   EXPECT_EQ(out, (std::vector<Frame>{line("PX=1"), kBreak}));
 }
 
-TEST(LineFramer, NoCommentMarkerWhenDisabled) {
+TEST(transport_framer, NoCommentMarkerWhenDisabled) {
   FramerOptions options;
   options.comment_marker = "";
   EXPECT_EQ(frame("a**b\n", options), (std::vector<Frame>{line("a**b"), kBreak}));
 }
 
-TEST(LineFramer, SemicolonCanBeOrdinary) {
+TEST(transport_framer, SemicolonCanBeOrdinary) {
   FramerOptions options;
   options.semicolon_ends_line = false;
   EXPECT_EQ(frame("a;b\n", options), (std::vector<Frame>{line("a;b"), kBreak}));
 }
 
-TEST(LineFramer, LineOfExactlyTheLimitPassesOneMoreIsTooLong) {
+TEST(transport_framer, LineOfExactlyTheLimitPassesOneMoreIsTooLong) {
   const std::string at_limit(511, 'x');
   EXPECT_EQ(frame(at_limit + ";"), (std::vector<Frame>{line(at_limit)}));
   EXPECT_EQ(frame(at_limit + "y;"), (std::vector<Frame>{kTooLong}));
 }
 
-TEST(LineFramer, HugeLineGivesOneErrorThenResynchronises) {
+TEST(transport_framer, HugeLineGivesOneErrorThenResynchronises) {
   LineFramer framer;
   std::vector<Frame> out;
   const std::string chunk(1000, 'A');
@@ -89,22 +89,22 @@ TEST(LineFramer, HugeLineGivesOneErrorThenResynchronises) {
   EXPECT_EQ(out, (std::vector<Frame>{kTooLong, kBreak, line("PX"), kBreak}));
 }
 
-TEST(LineFramer, NulAndBinaryBytesMakeTheLineBad) {
+TEST(transport_framer, NulAndBinaryBytesMakeTheLineBad) {
   EXPECT_EQ(frame(std::string("P\0X\n", 4)), (std::vector<Frame>{kBad, kBreak}));
   EXPECT_EQ(frame("\x1b[A;PX;"), (std::vector<Frame>{kBad, line("PX")}));
   EXPECT_EQ(frame("\xc3\xa9;"), (std::vector<Frame>{kBad}));
 }
 
-TEST(LineFramer, BinaryInsideACommentIsIgnored) {
+TEST(transport_framer, BinaryInsideACommentIsIgnored) {
   EXPECT_EQ(frame(std::string("PX ** \0\xff;\n", 11)), (std::vector<Frame>{line("PX"), kBreak}));
 }
 
-TEST(LineFramer, BackspaceAndDeleteEraseACharacter) {
+TEST(transport_framer, BackspaceAndDeleteEraseACharacter) {
   EXPECT_EQ(frame("PY\bX\r"), (std::vector<Frame>{line("PX"), kBreak}));
   EXPECT_EQ(frame("\x7fPXX\x7f;"), (std::vector<Frame>{line("PX")}));
 }
 
-TEST(LineFramer, ResetDropsAPartialLine) {
+TEST(transport_framer, ResetDropsAPartialLine) {
   LineFramer framer;
   std::vector<Frame> out;
   framer.feed("PX=12", out);
@@ -113,7 +113,7 @@ TEST(LineFramer, ResetDropsAPartialLine) {
   EXPECT_EQ(out, (std::vector<Frame>{line("VX"), kBreak}));
 }
 
-TEST(LineFramer, ChunkingDoesNotChangeTheResult) {
+TEST(transport_framer, ChunkingDoesNotChangeTheResult) {
   const std::string input =
       "PX=7; PX-3\r\n** c;c\n" + std::string(600, 'z') + ";UI[1]\x01;\tVX \n;;\r" + "AB\x7f" + "C;";
   const auto whole = frame(input);
@@ -132,7 +132,7 @@ TEST(LineFramer, ChunkingDoesNotChangeTheResult) {
   EXPECT_EQ(whole.size(), 10u);
 }
 
-TEST(LineFramer, RandomBytesNeverCrashAndStayBounded) {
+TEST(transport_framer, RandomBytesNeverCrashAndStayBounded) {
   std::mt19937 random(7);
   LineFramer framer;
   std::vector<Frame> out;

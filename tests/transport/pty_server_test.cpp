@@ -12,7 +12,7 @@ namespace {
 
 using namespace std::chrono_literals;
 
-TEST(PtyServer, SlaveOpensAndServesLines) {
+TEST(transport_pty, SlaveOpensAndServesLines) {
   testing::ServerFixture server(true);
   ASSERT_TRUE(server.pty_path().starts_with("/dev/pts/"));
   const int fd = ::open(server.pty_path().c_str(), O_RDWR | O_NOCTTY);
@@ -24,7 +24,7 @@ TEST(PtyServer, SlaveOpensAndServesLines) {
   EXPECT_EQ(terminal.line_answers(), (std::vector<Reply>{{"Bad character", kErrorBadCharacter}}));
 }
 
-TEST(PtyServer, SocatTalksToTheSlave) {
+TEST(transport_pty, SocatTalksToTheSlave) {
   testing::ServerFixture server(true);
   const std::string command = "printf 'two;err 19\\r' | timeout 10 socat -t 1 - " +
                               server.pty_path() + ",raw,echo=0 2>&1";

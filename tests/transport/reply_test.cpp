@@ -7,26 +7,26 @@
 namespace uprog::transport {
 namespace {
 
-TEST(Reply, ValueErrorAndSilentForms) {
+TEST(transport_reply, ValueErrorAndSilentForms) {
   EXPECT_EQ(wire_reply({"4", 0}), "4;");
   EXPECT_EQ(wire_reply({"", 0}), ";");
   EXPECT_EQ(wire_reply({"Operand out of range", 21}), "?21 Operand out of range;");
   EXPECT_EQ(wire_reply({"", 21}), "?21;");
 }
 
-TEST(Reply, TextCannotBreakTheFrame) {
+TEST(transport_reply, TextCannotBreakTheFrame) {
   EXPECT_EQ(wire_reply({"a;b\r\nc", 0}), "a b  c;");
   EXPECT_EQ(wire_reply({"?x", 0}), " ?x;");  // a value never reads as an error
 }
 
-TEST(Reply, ParseReadsWhatWasWritten) {
+TEST(transport_reply, ParseReadsWhatWasWritten) {
   EXPECT_EQ(parse_wire_reply("?21 Operand out of range"), (Reply{"Operand out of range", 21}));
   EXPECT_EQ(parse_wire_reply("?900"), (Reply{"", 900}));
   EXPECT_EQ(parse_wire_reply("3.600000"), (Reply{"3.600000", 0}));
   EXPECT_EQ(parse_wire_reply("?"), (Reply{"", -1}));
 }
 
-TEST(AnswerReader, SplitsAnswersAndLineEnds) {
+TEST(transport_answer_reader, SplitsAnswersAndLineEnds) {
   AnswerReader reader;
   std::vector<AnswerEvent> events;
   reader.feed(";4", events);

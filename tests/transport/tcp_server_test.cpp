@@ -13,7 +13,7 @@ using namespace std::chrono_literals;
 using testing::ServerFixture;
 using testing::TestClient;
 
-TEST(TcpServer, AnswersALineAndEndsIt) {
+TEST(transport_tcp, AnswersALineAndEndsIt) {
   ServerFixture server;
   TestClient client(server.port());
   ASSERT_TRUE(client.send("PX=7; PX-3\r\n"));
@@ -22,7 +22,7 @@ TEST(TcpServer, AnswersALineAndEndsIt) {
   EXPECT_EQ(client.line_answers(), (std::vector<Reply>{{"Failed", 21}}));
 }
 
-TEST(TcpServer, EightClientsTwoThousandLinesEachAllAnsweredInOrder) {
+TEST(transport_tcp, EightClientsTwoThousandLinesEachAllAnsweredInOrder) {
   constexpr int kClients = 8;
   constexpr int kLines = 2000;
   ServerFixture server;
@@ -55,7 +55,7 @@ TEST(TcpServer, EightClientsTwoThousandLinesEachAllAnsweredInOrder) {
   std::printf("8 clients x 2000 lines: %lld ms\n", static_cast<long long>(ms.count()));
 }
 
-TEST(TcpServer, HundredThousandByteLineGetsOneErrorThenServiceResumes) {
+TEST(transport_tcp, HundredThousandByteLineGetsOneErrorThenServiceResumes) {
   ServerFixture server;
   TestClient hostile(server.port());
   TestClient other(server.port());
@@ -68,7 +68,7 @@ TEST(TcpServer, HundredThousandByteLineGetsOneErrorThenServiceResumes) {
   EXPECT_EQ(server.lines_handled(), 2u);
 }
 
-TEST(TcpServer, BinaryGarbageGetsErrorsNeverACrash) {
+TEST(transport_tcp, BinaryGarbageGetsErrorsNeverACrash) {
   ServerFixture server;
   TestClient hostile(server.port());
   std::mt19937 random(1234);
@@ -94,7 +94,7 @@ TEST(TcpServer, BinaryGarbageGetsErrorsNeverACrash) {
   EXPECT_EQ(other.line_answers(), (std::vector<Reply>{{"fine", 0}}));
 }
 
-TEST(TcpServer, ClientDisconnectingMidLineIsCleanedUp) {
+TEST(transport_tcp, ClientDisconnectingMidLineIsCleanedUp) {
   ServerFixture server;
   {
     TestClient leaving(server.port());
@@ -112,7 +112,7 @@ TEST(TcpServer, ClientDisconnectingMidLineIsCleanedUp) {
   EXPECT_EQ(server.session_count(), 1u);
 }
 
-TEST(TcpServer, HalfClosedClientStillGetsItsAnswersThenTheConnectionCloses) {
+TEST(transport_tcp, HalfClosedClientStillGetsItsAnswersThenTheConnectionCloses) {
   ServerFixture server;
   TestClient client(server.port());
   ASSERT_TRUE(client.send("a;b;c\n"));
@@ -121,7 +121,7 @@ TEST(TcpServer, HalfClosedClientStillGetsItsAnswersThenTheConnectionCloses) {
   EXPECT_TRUE(client.closed_by_peer(5s));
 }
 
-TEST(TcpServer, ClientThatNeverReadsDoesNotStallOthers) {
+TEST(transport_tcp, ClientThatNeverReadsDoesNotStallOthers) {
   ServerFixture server;
   TestClient flooder(server.port());
   // 10 MB of lines whose answers are 10 MB: more than the kernel's socket buffers hold.
@@ -140,7 +140,7 @@ TEST(TcpServer, ClientThatNeverReadsDoesNotStallOthers) {
   writer.join();
 }
 
-TEST(TcpServer, PacerAdvancesVirtualTimeWithTheWallClock) {
+TEST(transport_tcp, PacerAdvancesVirtualTimeWithTheWallClock) {
   ServerFixture server;
   TestClient client(server.port());
   ASSERT_TRUE(client.send("now\n"));
@@ -156,7 +156,7 @@ TEST(TcpServer, PacerAdvancesVirtualTimeWithTheWallClock) {
   EXPECT_LE(after - before, static_cast<unsigned long long>(wall_us) + 20'000u);
 }
 
-TEST(ParseEndpoint, AcceptsHostPortForms) {
+TEST(transport_endpoint, AcceptsHostPortForms) {
   boost::asio::ip::tcp::endpoint endpoint;
   std::string error;
   ASSERT_TRUE(parse_endpoint("127.0.0.1:5000", endpoint, error));
