@@ -51,8 +51,8 @@ class ServerFixture {
   }
 
  private:
+  FakeService service_;  // outlives the io_context, whose pending handlers hold sessions
   boost::asio::io_context io_;
-  FakeService service_;
   Pacer pacer_{io_, service_};
   std::unique_ptr<TcpServer> tcp_;
   std::unique_ptr<PtyServer> pty_;
