@@ -310,7 +310,8 @@ class Assembler {
     if (info.b != Operand::None) {
       int64_t n = 0;
       const bool is_signed = info.b == Operand::Imm;
-      if (number(ts[2], n, is_signed ? INT32_MIN : 0, is_signed ? INT32_MAX : UINT32_MAX))
+      const Token& b = ts[info.a != Operand::None ? 2 : 1];
+      if (number(b, n, is_signed ? INT32_MIN : 0, is_signed ? INT32_MAX : UINT32_MAX))
         image_.code.push_back(static_cast<uint32_t>(n));
       else
         image_.code.push_back(0);

@@ -3,6 +3,7 @@
 // every place control can arrive at survives; then every such place is relocated.
 #include "bytecode/peephole.h"
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -59,8 +60,9 @@ class Fuser {
 
   // The fused instruction for the sequence at `i` and how many instructions it replaces.
   std::optional<std::pair<Instr, size_t>> match(size_t i) const {
-    for (auto m : {&Fuser::compare_locals, &Fuser::compare_branch, &Fuser::test_zero,
-                   &Fuser::local_constant, &Fuser::eol_jump}) {
+    for (auto m : {&Fuser::compare_locals, &Fuser::arithmetic_locals, &Fuser::local_constant,
+                   &Fuser::two_locals, &Fuser::compare_branch, &Fuser::test_zero,
+                   &Fuser::eol_jump}) {
       if (auto r = (this->*m)(i)) return r;
     }
     return std::nullopt;
@@ -141,6 +143,32 @@ class Fuser {
     return std::nullopt;
   }
 
+  // LDL a; LDL b; ADDI|SUBI|ADDF|SUBF|MULF [; STL c]
+  std::optional<std::pair<Instr, size_t>> arithmetic_locals(size_t i) const {
+    if (!free(i, 2) || at(i).op != Op::LDL || at(i + 1).op != Op::LDL) return std::nullopt;
+    if (at(i).a > 0xFFFF || at(i + 1).a > 0xFFFF) return std::nullopt;
+    static constexpr std::array<std::array<Op, 3>, 5> kForms = {{
+        {Op::ADDI, Op::ADDILL, Op::ADDILLS}, {Op::SUBI, Op::SUBILL, Op::SUBILLS},
+        {Op::ADDF, Op::ADDFLL, Op::ADDFLLS}, {Op::SUBF, Op::SUBFLL, Op::SUBFLLS},
+        {Op::MULF, Op::MULFLL, Op::MULFLLS}}};
+    const uint32_t pair = pack_locals(at(i).a, at(i + 1).a);
+    for (const auto& [plain, push, store] : kForms) {
+      if (at(i + 2).op != plain) continue;
+      if (free(i, 3) && at(i + 3).op == Op::STL)
+        return std::pair{Instr{at(i).pc, store, at(i + 3).a, pair}, size_t{4}};
+      return std::pair{Instr{at(i).pc, push, 0, pair}, size_t{3}};
+    }
+    return std::nullopt;
+  }
+
+  // LDL a; LDL b   or   LDL a; STL b
+  std::optional<std::pair<Instr, size_t>> two_locals(size_t i) const {
+    if (!free(i, 1) || at(i).op != Op::LDL) return std::nullopt;
+    if (at(i + 1).op == Op::LDL) return std::pair{Instr{at(i).pc, Op::LDL2, at(i).a, at(i + 1).a}, size_t{2}};
+    if (at(i + 1).op == Op::STL) return std::pair{Instr{at(i).pc, Op::MOVL, at(i + 1).a, at(i).a}, size_t{2}};
+    return std::nullopt;
+  }
+
   // EOL; JMP T
   std::optional<std::pair<Instr, size_t>> eol_jump(size_t i) const {
     if (!free(i, 1) || at(i).op != Op::EOL || at(i + 1).op != Op::JMP) return std::nullopt;
@@ -150,6 +178,26 @@ class Fuser {
   const std::vector<Instr>& in_;
   const std::vector<bool>& boundary_;
 };
+
+// A jump to a JMP goes straight to its target; a jump-and-end-of-line to a RET becomes
+// RETEOL. Targets are followed a bounded number of steps, so a cycle of jumps stays a cycle.
+void thread_jumps(std::vector<uint32_t>& code) {
+  const auto final_target = [&](uint32_t target) {
+    for (int hops = 0; hops < 8 && target < code.size() && word_op(code[target]) == Op::JMP; ++hops)
+      target = word_a(code[target]);
+    return target;
+  };
+  for (uint32_t pc = 0; pc < code.size(); pc += op_length(word_op(code[pc]))) {
+    const Op op = word_op(code[pc]);
+    if (op_info(op).a != Operand::Target || op == Op::TRY) continue;
+    const uint32_t target = final_target(word_a(code[pc]));
+    if (op == Op::JMPEOL && target < code.size() && word_op(code[target]) == Op::RET) {
+      code[pc] = make_word(Op::RETEOL, 0);
+      continue;
+    }
+    code[pc] = make_word(op, target);
+  }
+}
 
 }  // namespace
 
@@ -199,6 +247,7 @@ PeepholeStats optimize(Image& image) {
     const uint32_t target = move(word_a(code[pc]));
     if (target != UINT32_MAX) code[pc] = make_word(op, target);
   }
+  thread_jumps(code);
   for (Routine& r : image.routines)
     if (move(r.entry) != UINT32_MAX) r.entry = move(r.entry);
   for (LineEntry& l : image.lines)

@@ -124,6 +124,8 @@ class Verifier {
     const int32_t depth = s_.depth[pc];
 
     if (info.a == Operand::Local && a >= locals) return fail(VerifyError::BadLocal, pc);
+    if (info.b == Operand::Local && image_.code[pc + 1] >= locals)
+      return fail(VerifyError::BadLocal, pc);
     if (info.b == Operand::LocalPair || info.b == Operand::LocalImm) {
       const uint32_t b = image_.code[pc + 1];
       if (bytecode::packed_first(b) >= locals) return fail(VerifyError::BadLocal, pc);

@@ -89,6 +89,13 @@ SliceResult Machine::run_slice(uint32_t thread, Budget budget) {
 }
 
 SliceResult Machine::execute(Thread& t, Budget budget) {
+  return budget.instructions != 0 ? execute_loop<true>(t, budget) : execute_loop<false>(t, budget);
+}
+
+// kCounted: the slice has an instruction budget. The loop without it is a separate copy, so
+// that running to the next line or wait pays nothing per instruction for counting.
+template <bool kCounted>
+SliceResult Machine::execute_loop(Thread& t, Budget budget) {
   static const void* const kDispatch[] = {
 #define OP(name, a, b, pop, push, flow, meaning) &&op_##name,
 #include "bytecode/opcodes.def"
@@ -102,6 +109,8 @@ SliceResult Machine::execute(Thread& t, Budget budget) {
   const uint64_t initial = budget.instructions != 0 ? budget.instructions : UINT64_MAX;
   uint64_t steps = initial;
   uint64_t lines = budget.lines != 0 ? budget.lines : UINT64_MAX;
+  // A call may start a frame at or below this stack position (see enter()).
+  const Value* const call_limit = t.stack + (config_.stack - max_depth_);
   uint32_t word = 0;
   RunError error = RunError::None;
   int32_t detail = 0;
@@ -111,7 +120,7 @@ SliceResult Machine::execute(Thread& t, Budget budget) {
 #define LOAD() (ip = code + t.pc, sp = t.sp, locals = t.frames[t.frame_count - 1].locals)
 #define DISPATCH()                           \
   do {                                       \
-    if (steps-- == 0) goto out_of_budget;    \
+    if (kCounted && steps-- == 0) goto out_of_budget; \
     word = *ip;                              \
     goto* kDispatch[word & 0xFFu];           \
   } while (0)
@@ -384,12 +393,33 @@ op_JZ:
 op_JNZ:
   ip = (--sp)->i != 0 ? code + A() : ip + 1;
   DISPATCH();
-op_CALL:
+op_CALL: {
+  // The common case inline; enter() handles the rest and reports which limit was hit.
+  const RoutineInfo& r = routines_[A()];
+  Value* base = sp - r.inputs;
+  Value* callee = t.locals_top;
+  if (t.frame_count < config_.frames && r.locals <= static_cast<size_t>(t.locals_end - callee) &&
+      base <= call_limit) {
+    Frame& f = t.frames[t.frame_count++];
+    f.return_pc = static_cast<uint32_t>(ip - code) + 2;
+    f.routine = A();
+    f.locals = callee;
+    f.stack_base = base;
+    f.nargout = static_cast<uint8_t>(B());
+    f.kind = FrameKind::Call;
+    for (uint32_t i = 0; i < r.inputs; ++i) callee[i] = base[i];
+    for (uint32_t i = r.inputs; i < r.locals; ++i) callee[i].bits = 0;
+    t.locals_top = callee + r.locals;
+    sp = base;
+    locals = callee;
+    ip = code + r.entry;
+    DISPATCH();
+  }
   SAVE();
-  t.sp = sp;
   if (!enter(t, A(), t.pc + 2, static_cast<uint8_t>(B()), FrameKind::Call, error)) goto raise_error;
   LOAD();
   DISPATCH();
+}
 op_RET: {
   const Frame& f = t.frames[t.frame_count - 1];
   t.frame_count--;
@@ -410,15 +440,23 @@ op_RET: {
       end = SliceEnd::Halted;
       goto stop;
     }
-    DISPATCH();
+  } else {
+    const Value* outputs = f.locals + routines_[f.routine].inputs;
+    Value* base = f.stack_base;
+    if (f.nargout == 1) {
+      base[0] = outputs[0];
+    } else {
+      for (uint32_t i = 0; i < f.nargout; ++i) base[i] = outputs[i];
+    }
+    sp = base + f.nargout;
+    if (t.frame_count == 0) goto finished;
+    ip = code + f.return_pc;
+    locals = t.frames[t.frame_count - 1].locals;
   }
-  const Value* outputs = f.locals + routines_[f.routine].inputs;
-  Value* base = f.stack_base;
-  for (uint32_t i = 0; i < f.nargout; ++i) base[i] = outputs[i];
-  sp = base + f.nargout;
-  if (t.frame_count == 0) goto finished;
-  ip = code + f.return_pc;
-  locals = t.frames[t.frame_count - 1].locals;
+  if (lines == 0) {
+    end = SliceEnd::LineEnd;
+    goto stop;
+  }
   DISPATCH();
 }
 op_NARGOUT:
@@ -549,6 +587,42 @@ op_JMPEOL:
     goto stop;
   }
   DISPATCH();
+op_RETEOL:
+  // The line ends here; the return is the line's last instruction, so a slice whose line
+  // budget runs out at this end of line stops after the return, in the caller.
+  --lines;
+  goto op_RET;
+op_LDL2:
+  sp[0] = locals[A()];
+  sp[1] = locals[B()];
+  sp += 2;
+  ip += 2;
+  DISPATCH();
+op_MOVL:
+  locals[A()] = locals[B()];
+  ip += 2;
+  DISPATCH();
+
+#define LOCALS_ARITH(type, field, expr, store)                             \
+  {                                                                        \
+    const uint32_t pair = B();                                             \
+    const type a = locals[bytecode::packed_first(pair)].field;             \
+    const type b = locals[bytecode::packed_second(pair)].field;            \
+    store = (expr);                                                        \
+    ip += 2;                                                               \
+    DISPATCH();                                                            \
+  }
+op_ADDILL: LOCALS_ARITH(int32_t, i, arith::wrap_add(a, b), (sp++)->i)
+op_SUBILL: LOCALS_ARITH(int32_t, i, arith::wrap_sub(a, b), (sp++)->i)
+op_ADDFLL: LOCALS_ARITH(float, f, a + b, (sp++)->f)
+op_SUBFLL: LOCALS_ARITH(float, f, a - b, (sp++)->f)
+op_MULFLL: LOCALS_ARITH(float, f, a * b, (sp++)->f)
+op_ADDILLS: LOCALS_ARITH(int32_t, i, arith::wrap_add(a, b), locals[A()].i)
+op_SUBILLS: LOCALS_ARITH(int32_t, i, arith::wrap_sub(a, b), locals[A()].i)
+op_ADDFLLS: LOCALS_ARITH(float, f, a + b, locals[A()].f)
+op_SUBFLLS: LOCALS_ARITH(float, f, a - b, locals[A()].f)
+op_MULFLLS: LOCALS_ARITH(float, f, a * b, locals[A()].f)
+#undef LOCALS_ARITH
 
 op_CMDGET: {
   Value v;
@@ -601,7 +675,7 @@ finished:
   SAVE();
   reset_thread(t);
   t.last_error = RunError::None;
-  return {SliceEnd::Finished, initial - steps};
+  return {SliceEnd::Finished, kCounted ? initial - steps : 0};
 
 raise_error:
   SAVE();
@@ -611,11 +685,11 @@ raise_error:
     LOAD();
     DISPATCH();
   }
-  return {SliceEnd::Error, initial - steps};
+  return {SliceEnd::Error, kCounted ? initial - steps : 0};
 
 stop:
   SAVE();
-  return {end, initial - steps};
+  return {end, kCounted ? initial - steps : 0};
 
 #undef SAVE
 #undef LOAD
@@ -629,5 +703,8 @@ stop:
 #undef COMPARE
 #undef UNARY
 }
+
+template SliceResult Machine::execute_loop<true>(Thread& t, Budget budget);
+template SliceResult Machine::execute_loop<false>(Thread& t, Budget budget);
 
 }  // namespace uprog::vm

@@ -48,7 +48,7 @@ enum class SliceEnd : uint8_t {
 
 struct SliceResult {
   SliceEnd end;
-  uint64_t executed;  // instructions run in this slice
+  uint64_t executed;  // instructions run in this slice; counted only under an instruction budget
 };
 
 struct LoadStatus {
@@ -166,6 +166,8 @@ class Machine {
   };
 
   SliceResult execute(Thread& t, Budget budget);
+  template <bool kCounted>
+  SliceResult execute_loop(Thread& t, Budget budget);
   // Enters routine r: pushes a frame, moves the inputs into its locals. False on an error,
   // which is then set in `error`.
   bool enter(Thread& t, uint32_t routine, uint32_t return_pc, uint8_t nargout, FrameKind kind,

@@ -176,3 +176,68 @@ TEST(Peephole, RelocatesLinesEntriesAndTargets) {
 
 }  // namespace
 }  // namespace uprog::test
+
+namespace uprog::test {
+namespace {
+
+TEST(Peephole, FusesLocalArithmeticAndThreadsJumps) {
+  const char* text = R"(
+.global float "out" 1
+.routine function "main" in=0 out=0 entry=main
+.local float "a"
+.local float "b"
+.local float "c"
+.routine function "f" in=0 out=1 entry=f
+.local int "r"
+main:
+  PUSHK 0
+  STL 0
+  PUSHK 1
+  STL 1
+  LDL 0
+  LDL 1
+  SUBF
+  STL 2
+  LDL 2
+  LDL 0
+  MULF
+  STG out
+  LDL 2
+  STL 0
+  JMP hop
+hop:
+  JMP done
+done:
+  RET
+f:
+  PUSHI 4
+  STL 0
+  EOL
+  JMP leave
+leave:
+  RET
+.const float 1.5
+.const float 4.0
+)";
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(text));
+  bytecode::Image image = p.image;
+  bytecode::optimize(image);
+  const std::vector<Op> expected = {Op::PUSHK, Op::STL, Op::PUSHK, Op::STL,
+                                    Op::SUBFLLS,             // c = a - b
+                                    Op::MULFLL, Op::STG,     // out = c * a
+                                    Op::MOVL,                // a = c
+                                    Op::JMP,                 // to hop, threaded to done
+                                    Op::JMP, Op::RET,
+                                    Op::PUSHI, Op::STL, Op::RETEOL, Op::RET};
+  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  // The first JMP (instruction 8) now goes straight to the RET (instruction 10).
+  std::vector<uint32_t> pcs;
+  for (uint32_t pc = 0; pc < image.code.size(); pc += bytecode::op_length(bytecode::word_op(image.code[pc])))
+    pcs.push_back(pc);
+  EXPECT_EQ(bytecode::word_a(image.code[pcs[8]]), pcs[10]);
+  expect_same_behaviour(text, "locals");
+}
+
+}  // namespace
+}  // namespace uprog::test

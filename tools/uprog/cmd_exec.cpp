@@ -78,11 +78,9 @@ int run(const std::string& path, const std::string& entry) {
     return 1;
   }
   machine.start(0, static_cast<uint32_t>(routine));
-  uint64_t executed = 0;
   vm::SliceResult r{};
   for (;;) {
     r = machine.run_slice(0, vm::Budget::unlimited());
-    executed += r.executed;
     if (r.end == vm::SliceEnd::Waiting) {
       host.advance_to(host.now_us() + 1000);  // waits advance virtual time in 1 ms steps
       continue;
@@ -95,7 +93,7 @@ int run(const std::string& path, const std::string& entry) {
                static_cast<int>(machine.last_error(0)), vm::run_error_text(machine.last_error(0)),
                machine.pc(0));
   } else {
-    fmt::print("{}: finished after {} instructions, {} µs of virtual time\n", entry, executed,
+    fmt::print("{}: finished after {} µs of virtual time\n", entry,
                host.now_us());
   }
   for (uint32_t g = 0; g < image.globals.size(); ++g) {
