@@ -161,11 +161,23 @@ class Fuser {
     return std::nullopt;
   }
 
-  // LDL a; LDL b   or   LDL a; STL b
+  // LDL a; LDL b | LDL a; STL b | LDL a; PUSHK k | PUSHK k; LDL a — unless the second
+  // instruction starts a longer pattern of its own.
   std::optional<std::pair<Instr, size_t>> two_locals(size_t i) const {
-    if (!free(i, 1) || at(i).op != Op::LDL) return std::nullopt;
-    if (at(i + 1).op == Op::LDL) return std::pair{Instr{at(i).pc, Op::LDL2, at(i).a, at(i + 1).a}, size_t{2}};
-    if (at(i + 1).op == Op::STL) return std::pair{Instr{at(i).pc, Op::MOVL, at(i + 1).a, at(i).a}, size_t{2}};
+    if (!free(i, 1)) return std::nullopt;
+    const Instr& first = at(i);
+    const Instr& second = at(i + 1);
+    if (second.op == Op::LDL && (arithmetic_locals(i + 1) || compare_locals(i + 1) ||
+                                 local_constant(i + 1)))
+      return std::nullopt;
+    if (first.op == Op::LDL && second.op == Op::LDL)
+      return std::pair{Instr{first.pc, Op::LDL2, first.a, second.a}, size_t{2}};
+    if (first.op == Op::LDL && second.op == Op::STL)
+      return std::pair{Instr{first.pc, Op::MOVL, second.a, first.a}, size_t{2}};
+    if (first.op == Op::LDL && second.op == Op::PUSHK)
+      return std::pair{Instr{first.pc, Op::LDLK, first.a, second.a}, size_t{2}};
+    if (first.op == Op::PUSHK && second.op == Op::LDL)
+      return std::pair{Instr{first.pc, Op::LDKL, first.a, second.a}, size_t{2}};
     return std::nullopt;
   }
 

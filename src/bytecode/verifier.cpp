@@ -85,6 +85,8 @@ class Verifier {
         default: break;
       }
       if (word_op(word) == Op::CMPD && a > 5) return fail(VerifyError::BadOperand, pc);
+      if (info.b == Operand::Const && image_.code[pc + 1] >= image_.constants.size())
+        return fail(VerifyError::BadConstant, pc);
       if (word_op(word) == Op::CALL) {
         const RoutineRecord callee = image_.routines[a];
         if (image_.code[pc + 1] > callee.outputs) return fail(VerifyError::BadOperand, pc);

@@ -10,6 +10,7 @@
 // - A slice stops only between instructions: at a budget check (before an instruction), after
 //   EOL, YIELD or WAIT, or at an end of the program, a breakpoint or an uncaught error.
 #include <cmath>
+#include <cstring>
 
 // Computed goto (labels as values) is a GNU extension that g++ and clang both support.
 #pragma GCC diagnostic ignored "-Wpedantic"
@@ -408,7 +409,14 @@ op_CALL: {
     f.nargout = static_cast<uint8_t>(B());
     f.kind = FrameKind::Call;
     for (uint32_t i = 0; i < r.inputs; ++i) callee[i] = base[i];
-    for (uint32_t i = r.inputs; i < r.locals; ++i) callee[i].bits = 0;
+    // Most routines have a local or two beyond their inputs: a memset call would cost more.
+    Value* rest = callee + r.inputs;
+    switch (r.locals - r.inputs) {
+      case 2: rest[1].bits = 0; [[fallthrough]];
+      case 1: rest[0].bits = 0; [[fallthrough]];
+      case 0: break;
+      default: std::memset(static_cast<void*>(rest), 0, (r.locals - r.inputs) * sizeof(Value));
+    }
     t.locals_top = callee + r.locals;
     sp = base;
     locals = callee;
@@ -594,6 +602,18 @@ op_RETEOL:
   goto op_RET;
 op_LDL2:
   sp[0] = locals[A()];
+  sp[1] = locals[B()];
+  sp += 2;
+  ip += 2;
+  DISPATCH();
+op_LDLK:
+  sp[0] = locals[A()];
+  sp[1] = constants_[B()];
+  sp += 2;
+  ip += 2;
+  DISPATCH();
+op_LDKL:
+  sp[0] = constants_[A()];
   sp[1] = locals[B()];
   sp += 2;
   ip += 2;

@@ -3,6 +3,7 @@
 .global int "ints" 5
 .global float "floats" 6
 .global int "moved" 1
+.global float "fsum" 1
 .global int "halved" 1
 .const float 1.5
 .const float 4.0
@@ -60,6 +61,12 @@ main:
   PUSHI 5
   LDL 5
   STGX floats         ; floats[5] = 6
+  LDLK 2 1            ; x, 4.0
+  MULF
+  LDKL 0 3            ; 1.5, y
+  ADDF
+  ADDF
+  STG fsum            ; x*4 + (1.5 + y) = 11.5
   MOVL 4 0            ; ri = a
   LDL2 4 1
   SUBI
@@ -90,4 +97,5 @@ half:
 ; expect floats[4] = 2.5
 ; expect floats[5] = 6.0
 ; expect moved = 4
+; expect fsum = 11.5
 ; expect halved = 4
