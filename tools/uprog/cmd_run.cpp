@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "dialects/gold/compile.h"
 #include "controller/controller.h"
 #include "controller/transcript.h"
 #include "drive/axis.h"
@@ -20,7 +21,8 @@ namespace {
 struct RunOptions {
   std::string file;
   std::string entry;
-  std::string duration = "1s";
+  std::string duration;  // empty: until the program has ended and the axis is still
+  std::string limit = "60s";
   std::string budget = "1";
   std::vector<std::string> inputs;  // N=LEVEL@TIME
   std::vector<std::string> faults;  // NAME@TIME
@@ -96,8 +98,10 @@ int run(const RunOptions& o) {
     copts.timing.lines_per_cycle = static_cast<uint32_t>(n);
   }
   uint64_t duration_us = 0;
-  if (!controller::parse_duration_us(o.duration, duration_us)) {
-    fmt::print(stderr, "uprog run: --for {}: expected a duration such as 500ms or 2s\n", o.duration);
+  const bool until_idle = o.duration.empty();
+  const std::string& span = until_idle ? o.limit : o.duration;
+  if (!controller::parse_duration_us(span, duration_us)) {
+    fmt::print(stderr, "uprog run: {}: expected a duration such as 500ms or 2s\n", span);
     return 2;
   }
   std::vector<Scheduled> schedule;
@@ -118,14 +122,26 @@ int run(const RunOptions& o) {
     fmt::print(stderr, "uprog run: {}\n", error);
     return 1;
   }
-  std::string entry = o.entry.empty() ? "main" : o.entry;
-  int32_t code = drive.execute_program(entry);
-  if (code != 0 && o.entry.empty()) {
-    entry = "AUTOEXEC";
+  // Without --entry: main, else AUTOEXEC, else the first function or label of the file.
+  std::vector<std::string> entries = {o.entry};
+  if (o.entry.empty()) {
+    entries = {"main", "AUTOEXEC"};
+    const gold::CompileResult again = gold::compile_file(o.file);
+    for (const bytecode::Routine& r : again.image.routines) {
+      if (r.kind == bytecode::RoutineKind::Function || r.kind == bytecode::RoutineKind::Label) {
+        entries.push_back(r.name);
+        break;
+      }
+    }
+  }
+  int32_t code = -1;
+  for (const std::string& entry : entries) {
     code = drive.execute_program(entry);
+    if (code == 0) break;
   }
   if (code != 0) {
-    fmt::print(stderr, "uprog run: cannot start at '{}' (error {})\n", o.entry.empty() ? "main" : o.entry, code);
+    fmt::print(stderr, "uprog run: cannot start at '{}' (error {})\n",
+               entries.front().empty() ? "main" : entries.front(), code);
     return 1;
   }
 
@@ -141,7 +157,13 @@ int run(const RunOptions& o) {
   };
   size_t next = 0;
   const uint64_t start = drive.now_us();
-  while (drive.now_us() - start < duration_us) {
+  // Without --for, the run ends once the program has ended, nothing is scheduled any more and
+  // the axis is at rest (in position, or its motor off): what the motor did is then complete.
+  const auto idle = [&] {
+    const int32_t ms = drive.axis().motion_status();
+    return until_idle && drive.program_status() != 1 && next == schedule.size() && (ms == 0 || ms == 3);
+  };
+  while (drive.now_us() - start < duration_us && !idle()) {
     while (next < schedule.size() && schedule[next].at_us <= drive.now_us() - start) {
       const Scheduled& e = schedule[next++];
       if (e.fault.empty()) {
@@ -186,7 +208,10 @@ void add_run(CLI::App& app, Action& action) {
   auto o = std::make_shared<RunOptions>();
   cmd->add_option("FILE", o->file, "Gold source file")->required();
   cmd->add_option("--entry", o->entry, "function or label to start at (default main, else AUTOEXEC)");
-  cmd->add_option("--for", o->duration, "virtual time to run (default 1s)");
+  cmd->add_option("--for", o->duration,
+                  "virtual time to run (default: until the program has ended and the axis is still)");
+  cmd->add_option("--limit", o->limit, "without --for, the longest virtual time to run")
+      ->capture_default_str();
   cmd->add_option("--budget", o->budget, "source lines per servo cycle, or 'unlimited' (default 1)");
   cmd->add_option("--input", o->inputs, "N=LEVEL@TIME: set digital input N at TIME");
   cmd->add_option("--fault", o->faults, "NAME@TIME: latch a drive fault at TIME");
