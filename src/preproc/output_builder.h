@@ -10,7 +10,10 @@ namespace uprog::preproc {
 
 class OutputBuilder {
  public:
-  explicit OutputBuilder(std::string file) : file_(std::move(file)) {}
+  OutputBuilder(std::string file, size_t expected_size) : file_(std::move(file)) {
+    result_.map.file = file_;
+    result_.text.reserve(expected_size);
+  }
 
   // Output that follows comes from `line`, starting at `column` (1-based).
   void mark(int line, int column) {
@@ -20,11 +23,11 @@ class OutputBuilder {
     if (!segs.empty()) {
       // Continuing the previous segment needs no new entry.
       const auto& last = segs.back();
-      if (last.origin.line == line &&
-          static_cast<size_t>(last.origin.column) + (at - last.out_begin) == static_cast<size_t>(column))
+      if (last.line == line &&
+          static_cast<size_t>(last.column) + (at - last.out_begin) == static_cast<size_t>(column))
         return;
     }
-    segs.push_back({at, Location{file_, line, column}});
+    segs.push_back({at, line, column});
   }
   void append(std::string_view s) { result_.text.append(s); }
   void append(char c) { result_.text.push_back(c); }

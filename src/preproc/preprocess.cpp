@@ -60,7 +60,7 @@ std::string_view trim(std::string_view s) {
 class Preprocessor {
  public:
   Preprocessor(const SourceFile& source, const PreprocOptions& options, DiagnosticList& diagnostics)
-      : source_(source), options_(options), diagnostics_(diagnostics), out_(source.name) {}
+      : source_(source), options_(options), diagnostics_(diagnostics), out_(source.name, source.text.size()) {}
 
   Preprocessed run() {
     const std::string_view text = source_.text;
@@ -323,7 +323,15 @@ class Preprocessor {
   // --- expansion ----------------------------------------------------------------------------
 
   void expand_line(std::string_view line) {
-    std::vector<Span> spans;
+    if (macros_.empty()) {
+      // Nothing to replace: the line goes out as it is. Only a '/' can open a block comment
+      // (all comment markers but `**` start with it), and only its state must be followed.
+      if (in_block_comment_ || line.find('/') != std::string_view::npos) track_comments(line);
+      out_.append(line);
+      return;
+    }
+    std::vector<Span>& spans = spans_;
+    spans.clear();
     scan_line(line, options_, in_block_comment_, spans);
     for (const Span& s : spans) {
       const std::string_view piece = line.substr(s.begin, s.end - s.begin);

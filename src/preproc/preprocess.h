@@ -87,11 +87,13 @@ class SourceMap {
   // The expansion that produced `offset`, or nullptr.
   const Expansion* expansion_at(size_t offset) const;
 
-  // Filled by the preprocessor.
+  // Filled by the preprocessor. A segment per source line at least, so it holds no file name
+  // (every segment is in `file`): no string is built per line.
   struct Segment {
     size_t out_begin;  // output offset where this segment starts
-    Location origin;   // original place of its first character; columns advance one by one
+    int line, column;  // original place of its first character; columns advance one by one
   };
+  std::string file;
   std::vector<Segment> segments;  // sorted by out_begin
   std::vector<Expansion> expansions;
 };

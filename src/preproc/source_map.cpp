@@ -18,11 +18,10 @@ Location SourceMap::locate(size_t offset) const {
   if (const Expansion* e = expansion_at(offset)) return e->used_at;
   const auto it = std::upper_bound(segments.begin(), segments.end(), offset,
                                    [](size_t o, const Segment& s) { return o < s.out_begin; });
-  if (it == segments.begin()) return segments.empty() ? Location{} : segments.front().origin;
+  if (segments.empty()) return Location{};
+  if (it == segments.begin()) return Location{file, segments.front().line, segments.front().column};
   const Segment& s = *(it - 1);
-  Location where = s.origin;
-  where.column += static_cast<int>(std::min<size_t>(offset - s.out_begin, 1u << 30));
-  return where;
+  return Location{file, s.line, s.column + static_cast<int>(std::min<size_t>(offset - s.out_begin, 1u << 30))};
 }
 
 }  // namespace uprog::preproc

@@ -23,7 +23,9 @@ void add_check(CLI::App& app, Action& action) {
       std::vector<Diagnostic> all;
       bool errors = false;
       for (const std::string& f : *files) {
-        const gold::CompileResult r = gold::compile_file(f);
+        gold::CompileOptions options;
+        options.check_only = true;  // every diagnostic of a build, without building the image
+        const gold::CompileResult r = gold::compile_file(f, options);
         errors = errors || !r.ok();
         all.insert(all.end(), r.diagnostics.begin(), r.diagnostics.end());
       }

@@ -19,7 +19,8 @@ enum class Kind : uint8_t { Int, Float, Dynamic, None };
 enum class VarType : uint8_t { Int, Float };
 
 struct Expr;
-using ExprPtr = std::unique_ptr<Expr>;
+// Nodes belong to an AstArena (below); these pointers never own.
+using ExprPtr = Expr*;
 
 // What a name turned out to be, filled in by the checker.
 enum class RefKind : uint8_t { Unresolved, Local, Global, Function, Builtin, Command, Nargout };
@@ -34,7 +35,7 @@ struct Expr {
   Tok op = Tok::Eof;  // Unary / Binary
   int32_t int_value = 0;
   float float_value = 0.0f;
-  ExprPtr lhs, rhs;   // Unary uses lhs
+  ExprPtr lhs = nullptr, rhs = nullptr;  // Unary uses lhs
   // Ref: a name, maybe with [index] or (arguments).
   std::string name;
   bool has_index = false;   // name[...]
@@ -49,7 +50,7 @@ struct Expr {
 };
 
 struct Stmt;
-using StmtPtr = std::unique_ptr<Stmt>;
+using StmtPtr = Stmt*;
 using Block = std::vector<StmtPtr>;
 
 enum class StmtKind : uint8_t {
@@ -62,12 +63,12 @@ enum class StmtKind : uint8_t {
 };
 
 struct IfArm {
-  ExprPtr cond;  // null for else
+  ExprPtr cond = nullptr;  // null for else
   Block body;
 };
 
 struct SwitchCase {
-  ExprPtr value;  // null for otherwise
+  ExprPtr value = nullptr;  // null for otherwise
   Block body;
   uint32_t offset = 0;
 };
@@ -76,9 +77,9 @@ struct Stmt {
   StmtKind kind;
   uint32_t offset = 0;
   bool ends_line = false;    // the last statement on its source line: an EOL follows it
-  ExprPtr value;             // Expr, Assign, While, Until, Wait, Switch (subject), For (start)
+  ExprPtr value = nullptr;  // Expr, Assign, While, Until, Wait, Switch (subject), For (start)
   std::vector<ExprPtr> targets;  // Assign, IncDec, For (the iteration variable)
-  ExprPtr step, end;         // For
+  ExprPtr step = nullptr, end = nullptr;  // For
   int delta = 0;             // IncDec
   std::vector<IfArm> arms;   // If
   std::vector<SwitchCase> cases;  // Switch
@@ -121,6 +122,49 @@ struct Program {
   std::vector<FunctionDef> functions;  // definitions and prototypes, in source order
   Block top;
   bool empty = true;  // nothing but blanks and comments
+};
+
+}  // namespace uprog::gold
+
+namespace uprog::gold {
+
+// Makes nodes in blocks and frees them all at once: a parse costs a few large allocations
+// instead of one per node, and no recursive teardown. The arena must outlive its nodes' users.
+template <class T>
+class NodePool {
+ public:
+  T* make() {
+    if (used_ == kBlock) {
+      blocks_.push_back(std::make_unique<T[]>(kBlock));
+      used_ = 0;
+    }
+    return &blocks_.back()[used_++];
+  }
+
+ private:
+  static constexpr size_t kBlock = 256;
+  std::vector<std::unique_ptr<T[]>> blocks_;
+  size_t used_ = kBlock;
+};
+
+class AstArena {
+ public:
+  Expr* expr(ExprKind k, uint32_t offset) {
+    Expr* e = exprs_.make();
+    e->kind = k;
+    e->offset = offset;
+    return e;
+  }
+  Stmt* stmt(StmtKind k, uint32_t offset) {
+    Stmt* s = stmts_.make();
+    s->kind = k;
+    s->offset = offset;
+    return s;
+  }
+
+ private:
+  NodePool<Expr> exprs_;
+  NodePool<Stmt> stmts_;
 };
 
 }  // namespace uprog::gold

@@ -1,6 +1,8 @@
 // Name resolution, kinds and semantic errors for Gold programs and command lines.
 #include "dialects/gold/checker.h"
 
+#include <algorithm>
+#include <string_view>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -39,8 +41,35 @@ Kind kind_of(ValueType t) { return t == ValueType::Int ? Kind::Int : Kind::Float
 // Where an expression begins (a binary expression's own offset is its operator's).
 uint32_t start_of(const Expr& e) {
   const Expr* x = &e;
-  while (x->kind == ExprKind::Binary) x = x->lhs.get();
+  while (x->kind == ExprKind::Binary) x = x->lhs;
   return x->offset;
+}
+
+// find_command scans the whole table, case-insensitively; the checker asks about every declared
+// name and every name that is not a variable, so it looks in an index of upper-case names.
+const CommandInfo* command_named(std::string_view name) {
+  struct Index {
+    std::unordered_map<std::string, const CommandInfo*> by_name;  // upper case
+    size_t longest = 0;
+  };
+  static const Index index = [] {
+    Index x;
+    for (const CommandInfo& c : all_commands()) {
+      std::string key(c.name);
+      for (char& ch : key) ch = ch >= 'a' && ch <= 'z' ? static_cast<char>(ch - 'a' + 'A') : ch;
+      x.by_name.emplace(std::move(key), &c);
+      x.longest = std::max(x.longest, c.name.size());
+    }
+    return x;
+  }();
+  if (name.size() > index.longest || name.size() > 16) return nullptr;
+  char upper[16];
+  for (size_t i = 0; i < name.size(); ++i) {
+    const char c = name[i];
+    upper[i] = c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
+  }
+  const auto it = index.by_name.find(std::string(upper, name.size()));
+  return it == index.by_name.end() ? nullptr : it->second;
 }
 
 bool const_index(const Expr& e, int32_t& out) {
@@ -85,7 +114,7 @@ class Checker {
   void error(Error e, uint32_t offset) { r_.error(e, offset); }
 
   bool clashes_with_system(const std::string& name) {
-    return find_command(name) != nullptr || find_builtin(name) != nullptr;
+    return command_named(name) != nullptr || find_builtin(name) != nullptr;
   }
 
   void declare_globals(const std::vector<VarDecl>& globals) {
@@ -308,7 +337,7 @@ class Checker {
         else value(rhs);
       } else {
         const Expr* left = &rhs;
-        while (left->kind == ExprKind::Binary) left = left->lhs.get();
+        while (left->kind == ExprKind::Binary) left = left->lhs;
         const bool call_first = left->kind == ExprKind::Ref && left->has_parens &&
                                 function_index_.count(left->name) > 0;
         if (call_first) error(Error::BadFunctionCall, start_of(rhs));  // "[a,b] = f(x) + 5"
@@ -416,7 +445,7 @@ class Checker {
       e.builtin = b->id;
       return;
     }
-    if (const CommandInfo* c = find_command(e.name)) {
+    if (const CommandInfo* c = command_named(e.name)) {
       e.ref = RefKind::Command;
       e.command = c;
       return;

@@ -56,6 +56,7 @@ class Gen {
   uint32_t here() const { return cb_.here(); }
   void emit(Op op, uint32_t a = 0, uint32_t b = 0) { cb_.emit(op, a, b); }
   void line_entry(uint32_t offset) {
+    if (!with_lines) return;  // a check needs no line table
     const Location where = loc_.locate(offset);
     const uint32_t line = static_cast<uint32_t>(where.line);
     if (!img_.lines.empty() && img_.lines.back().line == line && img_.lines.back().file == where.file) return;
@@ -71,6 +72,7 @@ class Gen {
     if (it != goto_labels_.end() && !cb_.bound(it->second)) cb_.bind(it->second);
   }
 
+  bool with_lines = true;
   std::function<void(const Expr&)> show;  // the command line's way to show a bare value
   std::vector<int32_t> routine_of_function;  // function symbol -> routine index
   std::unordered_map<std::string, int32_t> routine_of_label;  // top-level labels
@@ -773,11 +775,12 @@ class Gen {
 }  // namespace
 
 bytecode::Image generate_program(const Program& program, const Symbols& symbols, const Locator& locator,
-                                 Reporter& reporter) {
+                                 Reporter& reporter, bool with_lines) {
   bytecode::Image img;
   for (const GlobalSym& g : symbols.globals)
     img.globals.push_back({g.name, value_type(g.type), g.length == 0 ? 1u : static_cast<uint32_t>(g.length)});
   Gen gen(img, &symbols, locator);
+  gen.with_lines = with_lines;
   gen.globals_ = symbols.globals;
 
   // Routine numbers: functions with a body first, then the top-level labels in order.
@@ -841,6 +844,8 @@ bytecode::Image generate_program(const Program& program, const Symbols& symbols,
     if (const AutoRoutineName* a = find_auto_routine(img.routines[i].name))
       img.events.push_back({a->event, static_cast<uint32_t>(i)});
   }
+  // A program of declarations only still loads: its globals serve the command line.
+  if (img.code.empty()) gen.emit(Op::RET);
   if (!gen.finish()) reporter.error(Error::InternalCompilerError, 0);
   if (img.code.size() > bytecode::kOperandMax) reporter.error(Error::CompiledCodeTooLong, 0);
   img.info.push_back("dialect=gold");

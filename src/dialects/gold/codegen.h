@@ -12,8 +12,10 @@
 
 namespace uprog::gold {
 
+// `with_lines` false leaves the line table empty: for a check, which needs only the diagnostics
+// (the code is still generated, since its size can be an error, 65).
 bytecode::Image generate_program(const Program& program, const Symbols& symbols,
-                                 const Locator& locator, Reporter& reporter);
+                                 const Locator& locator, Reporter& reporter, bool with_lines = true);
 
 // One value a command line shows: the global holding it and, for a pair, the one holding its
 // run-time type (0 int, 1 float).

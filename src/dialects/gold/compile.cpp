@@ -66,17 +66,18 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   check_line_lengths(source, reporter);
 
   const std::vector<Token> tokens = lex(pre.text, reporter);
-  Program program = parse_program(tokens, reporter);
+  AstArena arena;
+  Program program = parse_program(tokens, reporter, arena);
   if (program.empty && !reporter.has_errors()) reporter.error(Error::EmptyProgram, 0);
   Symbols symbols = check_program(program, reporter);
   if (!reporter.has_errors()) {
-    result.image = generate_program(program, symbols, locator, reporter);
+    result.image = generate_program(program, symbols, locator, reporter, !options.check_only);
     result.image.source_name = source.name;
     result.image.created_unix_s = options.created_unix_s;
-    if (options.optimize) bytecode::optimize(result.image);
+    if (options.optimize && !options.check_only) bytecode::optimize(result.image);
   }
   result.diagnostics = reporter.finish(options.max_errors);
-  if (!result.ok()) result.image = bytecode::Image{};
+  if (!result.ok() || options.check_only) result.image = bytecode::Image{};
   return result;
 }
 
@@ -112,7 +113,8 @@ CompiledLine compile_line(std::string_view line, const std::vector<KnownGlobal>&
   Reporter reporter(locator);
   if (text.size() > kMaxCommandLine) reporter.error(Error::ClauseIsTooLong, 0);
   const std::vector<Token> tokens = lex(text, reporter);
-  Block block = parse_line(tokens, reporter);
+  AstArena arena;
+  Block block = parse_line(tokens, reporter, arena);
   check_line(block, known, reporter);
   if (!reporter.has_errors()) result.image = generate_line(block, known, locator, reporter, result.values);
   result.diagnostics = reporter.finish(CompileOptions{}.max_errors);

@@ -19,6 +19,9 @@ struct CompileOptions {
   bool preprocess = true;
   uint64_t created_unix_s = 0;  // stored in the image; 0 keeps builds reproducible
   bool optimize = true;         // run the peephole pass (bytecode/peephole.h)
+  // Diagnostics only (`uprog check`): the same diagnostics as a build, but no peephole pass,
+  // no line table, and an empty image.
+  bool check_only = false;
 };
 
 struct CompileResult {

@@ -2,7 +2,6 @@
 #include "dialects/gold/keywords.h"
 
 #include <array>
-#include <cctype>
 
 namespace uprog::gold {
 
@@ -23,8 +22,10 @@ Keyword keyword_of(std::string_view word) {
   }};
   if (word.size() < 2 || word.size() > 9) return Keyword::None;
   char lower[10];
-  for (size_t i = 0; i < word.size(); ++i)
-    lower[i] = static_cast<char>(std::tolower(static_cast<unsigned char>(word[i])));
+  for (size_t i = 0; i < word.size(); ++i) {
+    const char c = word[i];
+    lower[i] = c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;  // ASCII only
+  }
   const std::string_view w(lower, word.size());
   for (const Entry& e : kWords)
     if (e.text == w) return e.kw;

@@ -86,6 +86,7 @@ class Lexer {
         const size_t b = i_;
         while (i_ < s_.size() && is_ident_char(s_[i_])) ++i_;
         push(Tok::Ident, b, i_ - b);
+        out_.back().kw = keyword_of(out_.back().text);
         continue;
       }
       if (c == '#' && i_ + 1 < s_.size() &&

@@ -22,34 +22,29 @@ int level_of(Tok t) {
     default: return -1;
   }
 }
-constexpr int kTopLevel = 8;
 
-ExprPtr make(ExprKind k, uint32_t offset) {
-  auto e = std::make_unique<Expr>();
-  e->kind = k;
-  e->offset = offset;
-  return e;
-}
 
 }  // namespace
 
 ExprPtr Parser::expr() { return binary(0); }
 
-ExprPtr Parser::binary(int level) {
-  if (level > kTopLevel) return unary(false);
-  ExprPtr left = binary(level + 1);
+// Precedence climbing as one loop per level actually used: an operand is parsed once, then
+// operators of level >= `min_level` fold to the left (all of Gold's operators are left-assoc).
+ExprPtr Parser::binary(int min_level) {
+  ExprPtr left = unary(false);
   if (!left) return nullptr;
-  while (level_of(peek().kind) == level) {
+  while (true) {
+    const int level = level_of(peek().kind);
+    if (level < min_level) return left;
     const Token& op = next();
     ExprPtr right = binary(level + 1);
     if (!right) return nullptr;
-    ExprPtr b = make(ExprKind::Binary, op.offset);
+    ExprPtr b = arena_.expr(ExprKind::Binary, op.offset);
     b->op = op.kind;
     b->lhs = std::move(left);
     b->rhs = std::move(right);
     left = std::move(b);
   }
-  return left;
 }
 
 ExprPtr Parser::unary(bool under_minus) {
@@ -63,7 +58,7 @@ ExprPtr Parser::unary(bool under_minus) {
     ExprPtr operand = unary(k == Tok::Minus);
     --unary_chain_;
     if (!operand) return nullptr;
-    ExprPtr u = make(ExprKind::Unary, op.offset);
+    ExprPtr u = arena_.expr(ExprKind::Unary, op.offset);
     u->op = k;
     u->lhs = std::move(operand);
     return u;
@@ -76,21 +71,21 @@ ExprPtr Parser::primary(bool under_minus) {
   switch (t.kind) {
     case Tok::Int: {
       next();
-      ExprPtr e = make(ExprKind::IntLit, t.offset);
+      ExprPtr e = arena_.expr(ExprKind::IntLit, t.offset);
       e->int_value = t.int_value;
       return e;
     }
     case Tok::Float: {
       next();
-      ExprPtr e = make(ExprKind::FloatLit, t.offset);
+      ExprPtr e = arena_.expr(ExprKind::FloatLit, t.offset);
       e->float_value = t.float_value;
       return e;
     }
     case Tok::Ident: {
-      const Keyword k = keyword_of(t.text);
+      const Keyword k = t.kw;
       if (k == Keyword::Nargout) {
         next();
-        return make(ExprKind::Nargout, t.offset);
+        return arena_.expr(ExprKind::Nargout, t.offset);
       }
       if (k != Keyword::None) {
         error(Error::ValueIsExpected, t.offset);
@@ -137,7 +132,7 @@ ExprPtr Parser::primary(bool under_minus) {
 
 // A name, then maybe [index] or (arguments). The checker decides what the name is.
 ExprPtr Parser::ref_after_name(const Token& name) {
-  ExprPtr e = make(ExprKind::Ref, name.offset);
+  ExprPtr e = arena_.expr(ExprKind::Ref, name.offset);
   e->name = std::string(name.text);
   if (at(Tok::LBracket)) {
     const Token& open = next();

@@ -10,12 +10,6 @@ namespace uprog::gold {
 namespace detail {
 
 namespace {
-StmtPtr make_stmt(StmtKind k, uint32_t offset) {
-  auto s = std::make_unique<Stmt>();
-  s->kind = k;
-  s->offset = offset;
-  return s;
-}
 bool is_ref(const Expr* e) { return e != nullptr && e->kind == ExprKind::Ref; }
 }  // namespace
 
@@ -62,7 +56,7 @@ bool Parser::check_name(const Token& t) {
     error(Error::InvalidName, t.offset);
     return false;
   }
-  if (keyword_of(t.text) != Keyword::None || find_auto_routine(t.text) != nullptr) {
+  if (t.kw != Keyword::None || find_auto_routine(t.text) != nullptr) {
     error(Error::NameIsKeyword, t.offset);
     return false;
   }
@@ -244,7 +238,7 @@ StmtPtr Parser::statement() {
   const Token& t = peek();
   if (t.kind == Tok::Label || t.kind == Tok::AutoLabel) {
     next();
-    StmtPtr s = make_stmt(StmtKind::Label, t.offset);
+    StmtPtr s = arena_.stmt(StmtKind::Label, t.offset);
     s->name = std::string(t.text);
     s->auto_label = t.kind == Tok::AutoLabel;
     if (s->name.empty() || s->name[0] == '_' || (s->name[0] >= '0' && s->name[0] <= '9')) {
@@ -280,7 +274,7 @@ StmtPtr Parser::statement() {
       next();
       ExprPtr c = condition();
       if (!c) return nullptr;
-      StmtPtr s = make_stmt(k == Keyword::Until ? StmtKind::Until : StmtKind::Wait, t.offset);
+      StmtPtr s = arena_.stmt(k == Keyword::Until ? StmtKind::Until : StmtKind::Wait, t.offset);
       s->value = std::move(c);
       statement_end();
       finish(*s);
@@ -313,7 +307,7 @@ StmtPtr Parser::statement() {
         if (in_try) error(Error::MisplacedReturn, t.offset);
         sk = StmtKind::Return;
       }
-      StmtPtr s = make_stmt(sk, t.offset);
+      StmtPtr s = arena_.stmt(sk, t.offset);
       statement_end();
       finish(*s);
       return s;
@@ -349,11 +343,11 @@ StmtPtr Parser::simple_statement() {
   const Token& first = peek();
   if (first.kind == Tok::LBracket) {
     next();
-    StmtPtr s = make_stmt(StmtKind::Assign, first.offset);
+    StmtPtr s = arena_.stmt(StmtKind::Assign, first.offset);
     s->bracketed = true;
     while (true) {
       const Token& name = peek();
-      if (name.kind != Tok::Ident || keyword_of(name.text) != Keyword::None) {
+      if (name.kind != Tok::Ident || name.kw != Keyword::None) {
         error(name.kind == Tok::RBracket ? Error::BadNumberOfOutputs : Error::InvalidName, name.offset);
         skip_line();
         return nullptr;
@@ -411,7 +405,7 @@ StmtPtr Parser::simple_statement() {
   }
   if (at(Tok::Assign)) {
     const Token& eq = next();
-    if (!is_ref(e.get())) {
+    if (!is_ref(e)) {
       error(Error::BadFormat, e->offset);
       skip_line();
       return nullptr;
@@ -421,7 +415,7 @@ StmtPtr Parser::simple_statement() {
       skip_line();
       return nullptr;
     }
-    StmtPtr s = make_stmt(StmtKind::Assign, e->offset);
+    StmtPtr s = arena_.stmt(StmtKind::Assign, e->offset);
     s->targets.push_back(std::move(e));
     s->value = expr();
     if (!s->value) {
@@ -434,19 +428,19 @@ StmtPtr Parser::simple_statement() {
   }
   if (at(Tok::PlusPlus) || at(Tok::MinusMinus)) {
     const Token& op = next();
-    if (!is_ref(e.get())) {
+    if (!is_ref(e)) {
       error(Error::BadFormat, op.offset);
       skip_line();
       return nullptr;
     }
-    StmtPtr s = make_stmt(StmtKind::IncDec, e->offset);
+    StmtPtr s = arena_.stmt(StmtKind::IncDec, e->offset);
     s->delta = op.kind == Tok::PlusPlus ? 1 : -1;
     s->targets.push_back(std::move(e));
     statement_end();
     finish(*s);
     return s;
   }
-  if (at(Tok::Comma) && is_ref(e.get())) {
+  if (at(Tok::Comma) && is_ref(e)) {
     // "a, b = func(1,2)": several outputs need brackets (error 15).
     for (size_t k = 0; peek(k).kind != Tok::Newline && peek(k).kind != Tok::Eof; ++k) {
       if (peek(k).kind == Tok::Assign) {
@@ -457,7 +451,7 @@ StmtPtr Parser::simple_statement() {
       if (peek(k).kind == Tok::Semicolon) break;
     }
   }
-  StmtPtr s = make_stmt(StmtKind::Expr, e->offset);
+  StmtPtr s = arena_.stmt(StmtKind::Expr, e->offset);
   s->value = std::move(e);
   statement_end();
   finish(*s);
@@ -466,7 +460,7 @@ StmtPtr Parser::simple_statement() {
 
 StmtPtr Parser::if_statement() {
   const Token& kw_if = next();
-  StmtPtr s = make_stmt(StmtKind::If, kw_if.offset);
+  StmtPtr s = arena_.stmt(StmtKind::If, kw_if.offset);
   ExprPtr c = condition();
   if (c) statement_end();
   finish(*s);
@@ -505,7 +499,7 @@ StmtPtr Parser::if_statement() {
 
 StmtPtr Parser::while_statement() {
   const Token& kw_while = next();
-  StmtPtr s = make_stmt(StmtKind::While, kw_while.offset);
+  StmtPtr s = arena_.stmt(StmtKind::While, kw_while.offset);
   s->value = condition();
   if (s->value) statement_end();
   finish(*s);
@@ -526,10 +520,10 @@ StmtPtr Parser::while_statement() {
 // for k = a:b or k = a:step:b (manual 2.12.2); errors 10, 45, 1.
 StmtPtr Parser::for_statement() {
   const Token& kw_for = next();
-  StmtPtr s = make_stmt(StmtKind::For, kw_for.offset);
+  StmtPtr s = arena_.stmt(StmtKind::For, kw_for.offset);
   bool ok = true;
   const Token& name = peek();
-  if (name.kind != Tok::Ident || keyword_of(name.text) != Keyword::None) {
+  if (name.kind != Tok::Ident || name.kw != Keyword::None) {
     error(Error::BadFlowControlExpression, name.offset);
     ok = false;
   } else {
@@ -598,7 +592,7 @@ StmtPtr Parser::for_statement() {
 // switch / case / otherwise / end (2.11.3): first match wins; errors 41, 42, 48.
 StmtPtr Parser::switch_statement() {
   const Token& kw_switch = next();
-  StmtPtr s = make_stmt(StmtKind::Switch, kw_switch.offset);
+  StmtPtr s = arena_.stmt(StmtKind::Switch, kw_switch.offset);
   s->value = condition();
   if (s->value) statement_end();
   finish(*s);
@@ -642,7 +636,7 @@ StmtPtr Parser::switch_statement() {
 
 StmtPtr Parser::try_statement() {
   const Token& kw_try = next();
-  StmtPtr s = make_stmt(StmtKind::Try, kw_try.offset);
+  StmtPtr s = arena_.stmt(StmtKind::Try, kw_try.offset);
   alone_on_line(Error::TryCatchNotAlone);
   s->ends_line = true;
   nest_.push_back(Nest::Try);
@@ -668,7 +662,7 @@ StmtPtr Parser::try_statement() {
 // goto ##NAME / goto #@NAME (2.11.2, errors 77) and reset NAME (errors 73).
 StmtPtr Parser::goto_or_reset(bool is_goto) {
   const Token& k = next();
-  StmtPtr s = make_stmt(is_goto ? StmtKind::Goto : StmtKind::Reset, k.offset);
+  StmtPtr s = arena_.stmt(is_goto ? StmtKind::Goto : StmtKind::Reset, k.offset);
   const Token& target = peek();
   if (is_goto) {
     if (target.kind != Tok::Label && target.kind != Tok::AutoLabel) {
@@ -801,7 +795,7 @@ Program Parser::program() {
     const Keyword k = kw();
     if (k == Keyword::Function) {
       if (in_section) {
-        StmtPtr r = make_stmt(StmtKind::Return, t.offset);  // a routine ends where a function begins
+        StmtPtr r = arena_.stmt(StmtKind::Return, t.offset);  // a routine ends where a function begins
         r->ends_line = true;
         p.top.push_back(std::move(r));
         in_section = false;
@@ -832,7 +826,7 @@ Program Parser::program() {
     if (k == Keyword::Return) {
       const Token& r = next();
       if (!in_section) error(Error::ExpressionOutOfFunction, r.offset);
-      StmtPtr s = make_stmt(StmtKind::Return, r.offset);
+      StmtPtr s = arena_.stmt(StmtKind::Return, r.offset);
       statement_end();
       finish(*s);
       if (in_section) p.top.push_back(std::move(s));
@@ -849,7 +843,7 @@ Program Parser::program() {
       for (StmtPtr& s : b) p.top.push_back(std::move(s));
   }
   if (in_section) {
-    StmtPtr r = make_stmt(StmtKind::Return, static_cast<uint32_t>(peek().offset));
+    StmtPtr r = arena_.stmt(StmtKind::Return, static_cast<uint32_t>(peek().offset));
     r->ends_line = true;
     p.top.push_back(std::move(r));
   }
@@ -864,9 +858,7 @@ Block Parser::line() {
     for (StmtPtr& s : part) b.push_back(std::move(s));
     if (at(Tok::Eof)) break;
     const Token& r = next();  // a return on the command line ends it
-    StmtPtr s = std::make_unique<Stmt>();
-    s->kind = StmtKind::Return;
-    s->offset = r.offset;
+    StmtPtr s = arena_.stmt(StmtKind::Return, r.offset);
     b.push_back(std::move(s));
   }
   return b;
@@ -874,12 +866,12 @@ Block Parser::line() {
 
 }  // namespace detail
 
-Program parse_program(const std::vector<Token>& tokens, Reporter& reporter) {
-  return detail::Parser(tokens, reporter).program();
+Program parse_program(const std::vector<Token>& tokens, Reporter& reporter, AstArena& arena) {
+  return detail::Parser(tokens, reporter, arena).program();
 }
 
-Block parse_line(const std::vector<Token>& tokens, Reporter& reporter) {
-  return detail::Parser(tokens, reporter).line();
+Block parse_line(const std::vector<Token>& tokens, Reporter& reporter, AstArena& arena) {
+  return detail::Parser(tokens, reporter, arena).line();
 }
 
 }  // namespace uprog::gold

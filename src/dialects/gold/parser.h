@@ -9,9 +9,10 @@
 
 namespace uprog::gold {
 
-Program parse_program(const std::vector<Token>& tokens, Reporter& reporter);
+// The nodes live in `arena`, which must outlive the returned tree.
+Program parse_program(const std::vector<Token>& tokens, Reporter& reporter, AstArena& arena);
 
 // A command-line line: statements only, as if inside a label routine (no functions, no labels).
-Block parse_line(const std::vector<Token>& tokens, Reporter& reporter);
+Block parse_line(const std::vector<Token>& tokens, Reporter& reporter, AstArena& arena);
 
 }  // namespace uprog::gold

@@ -28,7 +28,8 @@ enum Stop : unsigned {
 
 class Parser {
  public:
-  Parser(const std::vector<Token>& tokens, Reporter& reporter) : t_(tokens), r_(reporter) {}
+  Parser(const std::vector<Token>& tokens, Reporter& reporter, AstArena& arena)
+      : t_(tokens), r_(reporter), arena_(arena) {}
 
   Program program();
   Block line();
@@ -76,7 +77,7 @@ class Parser {
   bool at(Tok k) const { return peek().kind == k; }
   Keyword kw(size_t k = 0) const {
     const Token& t = peek(k);
-    return t.kind == Tok::Ident ? keyword_of(t.text) : Keyword::None;
+    return t.kind == Tok::Ident ? t.kw : Keyword::None;
   }
   bool at_kw(Keyword k) const { return kw() == k; }
   bool at_statement_end() const {
@@ -94,6 +95,7 @@ class Parser {
 
   const std::vector<Token>& t_;
   Reporter& r_;
+  AstArena& arena_;
   size_t pos_ = 0;
   std::vector<Nest> nest_;
   bool in_function_ = false;

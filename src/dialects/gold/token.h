@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <string_view>
 
+#include "dialects/gold/keywords.h"
+
 namespace uprog::gold {
 
 enum class Tok : uint8_t {
@@ -21,6 +23,7 @@ enum class Tok : uint8_t {
 
 struct Token {
   Tok kind = Tok::Eof;
+  Keyword kw = Keyword::None;  // for an Ident: the keyword it spells, found once by the lexer
   uint32_t offset = 0;  // into the preprocessed text
   std::string_view text;  // the spelling; for labels the name without ## or #@
   int32_t int_value = 0;
