@@ -16,9 +16,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const SourceFile source{"fuzz.ehl", std::string(reinterpret_cast<const char*>(data), size)};
   const gold::CompileResult result = gold::compile(source);
   if (!result.ok()) return 0;
-  // Known, recorded in fuzz/FINDINGS.md (F1): a program of declarations only compiles to an
-  // image without code, which the verifier refuses. Skipped until the compiler is fixed.
-  if (result.image.code.empty()) return 0;
   // What the compiler produces, the drive must take: a compiler bug shows as a crash here.
   const std::vector<uint8_t> bytes = bytecode::encode(result.image);
   const vm::LoadStatus status = fuzz::load_and_run(bytes.data(), bytes.size());
