@@ -156,6 +156,7 @@ void Machine::reset_thread(Thread& t) {
   t.frame_count = 0;
   t.handler_count = 0;
   t.step_over = false;
+  t.status_before_halt = ThreadStatus::Running;
 }
 
 bool Machine::enter(Thread& t, uint32_t routine, uint32_t return_pc, uint8_t nargout,
@@ -226,14 +227,16 @@ RunError Machine::interrupt(uint32_t thread, uint32_t routine) {
 void Machine::halt(uint32_t thread) {
   if (thread >= thread_count_) return;
   Thread& t = threads_[thread];
-  if (t.status == ThreadStatus::Running || t.status == ThreadStatus::Waiting)
+  if (t.status == ThreadStatus::Running || t.status == ThreadStatus::Waiting) {
+    t.status_before_halt = t.status;  // a halted wait still ends at its time after resume()
     t.status = ThreadStatus::Halted;
+  }
 }
 
 void Machine::resume(uint32_t thread) {
   if (thread >= thread_count_) return;
   Thread& t = threads_[thread];
-  if (t.status == ThreadStatus::Halted) t.status = ThreadStatus::Running;
+  if (t.status == ThreadStatus::Halted) t.status = t.status_before_halt;
   if (t.status == ThreadStatus::AtBreakpoint) {
     t.status = ThreadStatus::Running;
     t.step_over = true;

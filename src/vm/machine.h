@@ -163,6 +163,7 @@ class Machine {
     Handler* handlers;
     uint32_t handler_count;
     bool step_over;  // resumed at a breakpoint: run the original instruction first
+    ThreadStatus status_before_halt;
   };
 
   SliceResult execute(Thread& t, Budget budget);

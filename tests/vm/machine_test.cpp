@@ -237,3 +237,36 @@ TEST(Machine, GlobalsAreCheckedFromOutside) {
 
 }  // namespace
 }  // namespace uprog::test
+
+namespace uprog::test {
+namespace {
+
+TEST(Machine, HaltedWaitKeepsItsTime) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.global int "done" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  PUSHI 10
+  WAIT 1000
+  PUSHI 1
+  STG done
+  RET
+)"));
+  p.machine.start(0, 0);
+  EXPECT_EQ(p.machine.run_slice(0, vm::Budget::unlimited()).end, vm::SliceEnd::Waiting);
+  p.machine.halt(0);
+  p.host.clock_us = 20000;
+  EXPECT_EQ(p.machine.run_slice(0, vm::Budget::unlimited()).end, vm::SliceEnd::Halted);
+  p.host.clock_us = 5000;  // resumed before the wait is over: it still waits
+  p.machine.resume(0);
+  EXPECT_EQ(p.machine.status(0), vm::ThreadStatus::Waiting);
+  EXPECT_EQ(p.machine.run_slice(0, vm::Budget::unlimited()).end, vm::SliceEnd::Waiting);
+  EXPECT_EQ(p.global("done").i, 0);
+  p.host.clock_us = 10000;
+  EXPECT_EQ(p.machine.run_slice(0, vm::Budget::unlimited()).end, vm::SliceEnd::Finished);
+  EXPECT_EQ(p.global("done").i, 1);
+}
+
+}  // namespace
+}  // namespace uprog::test
