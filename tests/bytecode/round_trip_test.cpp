@@ -8,6 +8,7 @@
 
 #include "bytecode/assembly.h"
 #include "bytecode/image.h"
+#include "testlib/test_files.h"
 
 namespace uprog::bytecode {
 namespace {
@@ -17,18 +18,11 @@ namespace fs = std::filesystem;
 std::vector<fs::path> assembly_files() {
   std::vector<fs::path> files;
   for (const char* dir : {"tests/vm/cases", "tests/bytecode/bad", "examples/asm"})
-    for (const auto& e : fs::directory_iterator(fs::path(UPROG_SOURCE_DIR) / dir))
-      if (e.path().extension() == ".s") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
+    for (const auto& f : test::source_files(dir, ".s")) files.push_back(f);
   return files;
 }
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string read(const fs::path& p) { return test::read_whole(p); }
 
 class RoundTrip : public ::testing::TestWithParam<fs::path> {};
 

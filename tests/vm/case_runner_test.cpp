@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "bytecode/opcodes.h"
+#include "testlib/test_files.h"
 #include "vm_fixture.h"
 
 namespace uprog::test {
@@ -23,20 +24,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<fs::path> case_files() {
-  std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(fs::path(UPROG_SOURCE_DIR) / "tests/vm/cases"))
-    if (e.path().extension() == ".s") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::vector<fs::path> case_files() { return source_files("tests/vm/cases", ".s"); }
+std::string read(const fs::path& p) { return read_whole(p); }
 
 class VmCase : public ::testing::TestWithParam<fs::path> {};
 

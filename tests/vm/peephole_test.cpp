@@ -9,6 +9,7 @@
 
 #include "bytecode/opcodes.h"
 #include "bytecode/peephole.h"
+#include "testlib/test_files.h"
 #include "vm_fixture.h"
 
 namespace uprog::test {
@@ -17,12 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 using bytecode::Op;
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string read(const fs::path& p) { return read_whole(p); }
 
 std::vector<Op> ops_of(const bytecode::Image& image) {
   std::vector<Op> ops;
