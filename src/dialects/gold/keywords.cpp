@@ -27,8 +27,8 @@ Keyword keyword_of(std::string_view word) {
     lower[i] = c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;  // ASCII only
   }
   const std::string_view w(lower, word.size());
-  for (const Entry& e : kWords)
-    if (e.text == w) return e.kw;
+  for (const Entry& e : kWords)  // the first letter first: most names are no keyword
+    if (e.text[0] == w[0] && e.text == w) return e.kw;
   return Keyword::None;
 }
 

@@ -1,6 +1,7 @@
 // The Gold lexer.
 #include "dialects/gold/lexer.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 
@@ -134,9 +135,10 @@ class Lexer {
       const char c = s_[i_];
       if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
         ++i_;
-      } else if (starts("//") || starts("**")) {
-        while (i_ < s_.size() && s_[i_] != '\n') ++i_;
-      } else if (starts("/*")) {
+      } else if ((c == '/' || c == '*') && i_ + 1 < s_.size() && s_[i_ + 1] == c) {  // "//", "**"
+        const size_t e = s_.find('\n', i_);
+        i_ = e == std::string::npos ? s_.size() : e;
+      } else if (c == '/' && i_ + 1 < s_.size() && s_[i_ + 1] == '*') {
         const size_t b = i_;
         const size_t e = s_.find("*/", i_ + 2);
         const size_t stop = e == std::string::npos ? s_.size() : e + 2;
@@ -202,6 +204,18 @@ class Lexer {
         while (i_ < s_.size() && is_digit(s_[i_])) ++i_;
       }
     }
+    if (!is_float) {
+      // Most integers fit: read them here, without a string and strtol.
+      uint64_t v = 0;
+      size_t k = b;
+      while (k < i_ && v <= 2147483647u) v = v * 10 + static_cast<uint64_t>(s_[k++] - '0');
+      if (v <= 2147483647u) {
+        Token t = make(Tok::Int, b, i_ - b);
+        t.int_value = static_cast<int32_t>(v);
+        out_.push_back(t);
+        return;
+      }
+    }
     const std::string spelling = s_.substr(b, i_ - b);
     if (!is_float) {
       const double d = std::strtod(spelling.c_str(), nullptr);
@@ -218,7 +232,10 @@ class Lexer {
       return;
     }
     Token t = make(Tok::Float, b, i_ - b);
-    const double d = std::strtod(spelling.c_str(), nullptr);
+    // from_chars rounds as strtod does; out of range it leaves `d` alone, so strtod decides.
+    double d = 0.0;
+    const auto [end, ec] = std::from_chars(spelling.data(), spelling.data() + spelling.size(), d);
+    if (ec != std::errc{} || end != spelling.data() + spelling.size()) d = std::strtod(spelling.c_str(), nullptr);
     // Manual 1.3: floats live in -1e37 < N < 1e37; anything else is an error.
     if (!(std::fabs(d) < 1e37)) r_.error(Error::BadFormat, static_cast<uint32_t>(b));
     t.float_value = std::fabs(d) < 1e37 ? static_cast<float>(d) : 0.0f;

@@ -8,8 +8,8 @@ namespace uprog::gold {
 Locator::Locator(std::string file, const std::string& text, const preproc::SourceMap* map)
     : file_(std::move(file)), map_(map) {
   line_starts_.push_back(0);
-  for (size_t i = 0; i < text.size(); ++i)
-    if (text[i] == '\n') line_starts_.push_back(static_cast<uint32_t>(i + 1));
+  for (size_t i = text.find('\n'); i != std::string::npos; i = text.find('\n', i + 1))
+    line_starts_.push_back(static_cast<uint32_t>(i + 1));
 }
 
 int Locator::text_line(uint32_t offset) const {
