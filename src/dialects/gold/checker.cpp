@@ -8,6 +8,7 @@
 
 #include "dialects/gold/builtins.h"
 #include "dialects/gold/commands.h"
+#include "dialects/gold/ranges.h"
 
 namespace uprog::gold {
 
@@ -368,7 +369,15 @@ class Checker {
     if (s.value) value(*s.value);
     if (s.step) value(*s.step);
     if (s.end) value(*s.end);
+    // Inside the body a local int loop variable with constant bounds stays within them, unless
+    // the body assigns it (only its own frame can: it is a local).
+    IntRange r;
+    const bool known = !s.targets.empty() && s.targets[0]->ref == RefKind::Local && s.targets[0]->type == Kind::Int &&
+                       !s.targets[0]->has_index && !s.targets[0]->has_parens && constant_loop_range(s, r) &&
+                       !block_assigns(s.body, s.targets[0]->name);
+    if (known) loops_.push_back({s.targets[0]->name, r});
     block(s.body);
+    if (known) loops_.pop_back();
   }
 
   // goto: ##name to a label of the same scope, #@name to an auto-routine (top level only).
@@ -562,6 +571,9 @@ class Checker {
         const Kind a = e.lhs->type == Kind::None ? Kind::Int : e.lhs->type;
         const Kind b = e.rhs->type == Kind::None ? Kind::Int : e.rhs->type;
         e.type = binary_kind(e.op, a, b);
+        // int * int is a pair only because it may overflow (1.5): not when it provably fits.
+        if (e.op == Tok::Star && a == Kind::Int && b == Kind::Int && product_fits(*e.lhs, *e.rhs, loops_))
+          e.type = Kind::Int;
         return;
       }
       case ExprKind::Ref: break;
@@ -610,6 +622,7 @@ class Checker {
   std::unordered_set<std::string> redeclared_, poisoned_;
   int current_ = -1;
   const FunctionDef* current_def_ = nullptr;
+  std::vector<LoopRange> loops_;  // the enclosing loops whose variable's range is known
 };
 
 }  // namespace

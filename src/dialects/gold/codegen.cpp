@@ -181,6 +181,10 @@ class Gen {
           value(*e.lhs, Kind::Float);
           value(*e.rhs, Kind::Float);
           emit(Op::MULF);
+        } else if (e.type == Kind::Int) {  // the checker proved the product fits (ranges.h)
+          value(*e.lhs, Kind::Int);
+          value(*e.rhs, Kind::Int);
+          emit(Op::MULI);
         } else if (a == Kind::Int && b == Kind::Int) {
           value(*e.lhs);
           value(*e.rhs);
