@@ -112,6 +112,7 @@ DownloadResult Controller::Impl::download(const std::vector<uint8_t>& bytes) {
     std::string error;
     if (!write_file_atomically(program_path(options), bytes.data(), bytes.size(), &error)) {
       r.ok = false;
+      r.storage_failed = true;
       r.error = "could not store the program: " + error;
       return r;
     }

@@ -53,6 +53,7 @@ struct LogEntry {
 struct DownloadResult {
   bool ok = false;
   std::string error;  // why the image was refused; the stored program is then unchanged
+  bool storage_failed = false;  // the image was sound, but the state directory could not take it
 };
 
 class Controller {

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "controller/connection.h"
 #include "support/files.h"
 
 namespace uprog::controller {
@@ -45,6 +46,7 @@ class Runner {
     ControllerOptions o;
     o.timing = timing;
     drive_ = std::make_unique<Controller>(o);
+    host_ = std::make_unique<Connection>(*drive_);
   }
 
   TranscriptResult run(const std::string& text) {
@@ -133,7 +135,7 @@ class Runner {
       Pending p;
       p.line = number;
       p.sent = sent;
-      p.answers = drive_->send(sent);
+      p.answers = host_->send(sent);  // as a host sends it: DL lines too
       pending_ = std::move(p);
       return;
     }
@@ -202,6 +204,7 @@ class Runner {
 
   std::string name_, base_dir_;
   std::unique_ptr<Controller> drive_;
+  std::unique_ptr<Connection> host_;
   std::optional<Pending> pending_;
   TranscriptResult result_;
 };

@@ -4,7 +4,12 @@
 namespace uprog::transport {
 
 HostSession::HostSession(LineService& service, FramerOptions options)
-    : service_(service), framer_(options) {}
+    : service_(service), channel_(service.open_channel()), framer_(options) {}
+
+void HostSession::disconnect() {
+  framer_.reset();
+  channel_ = service_.open_channel();
+}
 
 void HostSession::receive(std::string_view bytes, std::string& out) {
   frames_.clear();
@@ -12,7 +17,7 @@ void HostSession::receive(std::string_view bytes, std::string& out) {
   for (const Frame& frame : frames_) {
     switch (frame.kind) {
       case Frame::Kind::kLine: {
-        const auto replies = service_.handle_line(frame.text);
+        const auto replies = channel_ ? channel_->handle_line(frame.text) : service_.handle_line(frame.text);
         if (replies.empty()) out.push_back(';');
         for (const Reply& reply : replies) append_wire_reply(reply, out);
         break;

@@ -17,11 +17,13 @@ class HostSession {
 
   // Appends to `out` everything to send back for `bytes`.
   void receive(std::string_view bytes, std::string& out);
-  // The host went away: any partial line is dropped.
-  void disconnect() { framer_.reset(); }
+  // The host went away: any partial line is dropped, and with the channel whatever the service
+  // kept for this host (a download in progress); a host that comes back starts afresh.
+  void disconnect();
 
  private:
   LineService& service_;
+  std::unique_ptr<LineChannel> channel_;  // null when the service keeps nothing per host
   LineFramer framer_;
   std::vector<Frame> frames_;
 };

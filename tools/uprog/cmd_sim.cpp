@@ -76,8 +76,28 @@ class SimService final : public transport::LineService {
     inner_.advance(us);
     print_log();
   }
+  // Each host keeps its own download state (controller::Connection); the log is printed as for
+  // any line.
+  std::unique_ptr<transport::LineChannel> open_channel() override {
+    return std::make_unique<Channel>(*this, inner_.open_channel());
+  }
 
  private:
+  class Channel final : public transport::LineChannel {
+   public:
+    Channel(SimService& owner, std::unique_ptr<transport::LineChannel> inner)
+        : owner_(owner), inner_(std::move(inner)) {}
+    std::vector<transport::Reply> handle_line(std::string_view line) override {
+      auto replies = inner_->handle_line(line);
+      owner_.print_log();
+      return replies;
+    }
+
+   private:
+    SimService& owner_;
+    std::unique_ptr<transport::LineChannel> inner_;
+  };
+
   void print_log() {
     if (!log_) return;
     for (const auto& entry : drive_.take_log()) {

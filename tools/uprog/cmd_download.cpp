@@ -1,0 +1,178 @@
+// `uprog download HOST:PORT FILE`: compiles a Gold source (or takes a .upi image) on the host and
+// downloads it into a running drive with the DL lines of docs/protocol.md; `--load` then sends CC.
+#include <fmt/core.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "bytecode/image.h"
+#include "commands.h"
+#include "controller/download_protocol.h"
+#include "dialects/gold/compile.h"
+#include "support/files.h"
+#include "transport/answer_reader.h"
+#include "transport/asio.h"
+
+namespace uprog::cli {
+namespace {
+
+namespace asio = boost::asio;
+
+struct DownloadOptions {
+  std::string address;
+  std::string file;
+  bool load = false;
+  double timeout_s = 10.0;
+};
+
+// The image to send: FILE read as is when it ends in .upi, else compiled as Gold.
+std::optional<std::vector<uint8_t>> image_of(const std::string& path) {
+  if (path.ends_with(".upi")) {
+    std::string error;
+    auto bytes = read_binary_file(path, &error);
+    if (!bytes) fmt::print(stderr, "uprog download: {}\n", error);
+    return bytes;
+  }
+  const gold::CompileResult r = gold::compile_file(path);
+  if (!r.diagnostics.empty()) fmt::print(stderr, "{}", format_text(r.diagnostics));
+  if (!r.ok()) return std::nullopt;
+  return bytecode::encode(r.image);
+}
+
+// A blocking line-at-a-time conversation: send one line, read its answers up to the CR LF.
+class Link {
+ public:
+  explicit Link(asio::ip::tcp::socket socket) : socket_(std::move(socket)) {}
+
+  // The answers to `line`; nullopt (with `error` set) when the drive is gone or silent.
+  std::optional<std::vector<transport::Reply>> exchange(const std::string& line,
+                                                        std::chrono::milliseconds timeout,
+                                                        std::string& error) {
+    std::string_view bytes = line;
+    const std::string framed = line + "\r\n";
+    bytes = framed;
+    while (!bytes.empty()) {
+      const ssize_t n = ::send(socket_.native_handle(), bytes.data(), bytes.size(), MSG_NOSIGNAL);
+      if (n <= 0) {
+        error = "the drive closed the connection";
+        return std::nullopt;
+      }
+      bytes.remove_prefix(static_cast<std::size_t>(n));
+    }
+    std::vector<transport::Reply> replies;
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    while (true) {
+      for (; next_ < events_.size(); ++next_) {
+        if (events_[next_].end_of_line) {
+          ++next_;
+          return replies;
+        }
+        replies.push_back(events_[next_].reply);
+      }
+      events_.clear();
+      next_ = 0;
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+          deadline - std::chrono::steady_clock::now());
+      pollfd p{socket_.native_handle(), POLLIN, 0};
+      if (::poll(&p, 1, static_cast<int>(std::max<long long>(0, left.count()))) <= 0) {
+        error = "no answer within the timeout";
+        return std::nullopt;
+      }
+      char buffer[4096];
+      const ssize_t n = ::read(socket_.native_handle(), buffer, sizeof buffer);
+      if (n <= 0) {
+        error = "the drive closed the connection";
+        return std::nullopt;
+      }
+      reader_.feed(std::string_view(buffer, static_cast<std::size_t>(n)), events_);
+    }
+  }
+
+ private:
+  asio::ip::tcp::socket socket_;
+  transport::AnswerReader reader_;
+  std::vector<transport::AnswerEvent> events_;
+  std::size_t next_ = 0;
+};
+
+bool connect(asio::io_context& io, const std::string& address, asio::ip::tcp::socket& socket) {
+  const auto colon = address.rfind(':');
+  if (colon == std::string::npos) {
+    fmt::print(stderr, "uprog download: expected HOST:PORT, got '{}'\n", address);
+    return false;
+  }
+  std::string host = address.substr(0, colon);
+  if (host.size() >= 2 && host.front() == '[' && host.back() == ']') host = host.substr(1, host.size() - 2);
+  boost::system::error_code ec;
+  asio::ip::tcp::resolver resolver(io);
+  const auto endpoints = resolver.resolve(host, address.substr(colon + 1), ec);
+  if (!ec) asio::connect(socket, endpoints, ec);
+  if (ec) {
+    fmt::print(stderr, "uprog download: cannot connect to {}: {}\n", address, ec.message());
+    return false;
+  }
+  return true;
+}
+
+// Sends `line` and expects no error; prints the drive's error otherwise.
+bool send_expecting_success(Link& link, const std::string& line, std::chrono::milliseconds timeout) {
+  std::string error;
+  const auto replies = link.exchange(line, timeout, error);
+  if (!replies) {
+    fmt::print(stderr, "uprog download: {}\n", error);
+    return false;
+  }
+  for (const transport::Reply& r : *replies) {
+    if (r.error == 0) continue;
+    const std::string shown = line.size() > 40 ? line.substr(0, 40) + "..." : line;
+    fmt::print(stderr, "uprog download: the drive answered {} with ?{}{}{}\n", shown, r.error,
+               r.text.empty() ? "" : " ", r.text);
+    return false;
+  }
+  return true;
+}
+
+int run_download(const DownloadOptions& options) {
+  const auto image = image_of(options.file);
+  if (!image) return 1;
+  if (image->empty() || image->size() > controller::kDownloadMaxBytes) {
+    fmt::print(stderr, "uprog download: the image has {} bytes; a drive takes 1 to {}\n",
+               image->size(), controller::kDownloadMaxBytes);
+    return 1;
+  }
+  asio::io_context io;
+  asio::ip::tcp::socket socket(io);
+  if (!connect(io, options.address, socket)) return 1;
+  Link link(std::move(socket));
+  const auto timeout = std::chrono::milliseconds(static_cast<long long>(options.timeout_s * 1000));
+  // One line at a time: a refused chunk stops the transfer at once (the drive dropped it too).
+  for (const std::string& line : controller::download_lines(*image)) {
+    if (!send_expecting_success(link, line, timeout)) return 1;
+  }
+  fmt::print("downloaded {} bytes to {}\n", image->size(), options.address);
+  if (options.load) {
+    if (!send_expecting_success(link, "CC", timeout)) return 1;
+    fmt::print("loaded into RAM (CC)\n");
+  }
+  return 0;
+}
+
+void add_download(CLI::App& app, Action& action) {
+  auto* cmd = app.add_subcommand("download", "Download a program into a running drive (uprog sim)");
+  auto options = std::make_shared<DownloadOptions>();
+  cmd->add_option("ADDRESS", options->address, "HOST:PORT of the drive (uprog sim prints it)")->required();
+  cmd->add_option("FILE", options->file, "Gold source, or a .upi image")->required();
+  cmd->add_flag("--load", options->load, "send CC afterwards: load the program into RAM");
+  cmd->add_option("--timeout", options->timeout_s, "seconds to wait for each answer (default 10)");
+  cmd->callback([&action, options] { action = [options] { return run_download(*options); }; });
+}
+
+const Subcommand kDownload(add_download);
+
+}  // namespace
+}  // namespace uprog::cli
