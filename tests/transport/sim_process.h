@@ -73,6 +73,18 @@ class SimProcess {
     return status_;
   }
 
+  // For tests that kill the process themselves: its id, and reaping it once it is gone
+  // (blocks; returns the signal that ended it, 0 if it exited).
+  pid_t pid() const { return pid_; }
+  int reap() {
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    pid_ = 0;
+    ::close(stdout_fd_);
+    status_ = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+  }
+
   std::uint16_t port = 0;
   std::string pty_path;
 
