@@ -46,5 +46,41 @@ TEST(transport_host_session, DisconnectDropsThePartialLine) {
   EXPECT_EQ(service.lines, 1u);
 }
 
+// A service that keeps a count per host: "count" answers how many lines this host has sent.
+class CountingService final : public LineService {
+ public:
+  class Channel final : public LineChannel {
+   public:
+    std::vector<Reply> handle_line(std::string_view line) override {
+      ++lines;
+      if (line == "count") return {{std::to_string(lines), 0}};
+      return {};
+    }
+    int lines = 0;
+  };
+  std::vector<Reply> handle_line(std::string_view) override { return {{"shared", 0}}; }
+  void advance(std::uint32_t) override {}
+  std::unique_ptr<LineChannel> open_channel() override {
+    ++opened;
+    return std::make_unique<Channel>();
+  }
+  int opened = 0;
+};
+
+TEST(transport_host_session, EachHostHasItsOwnChannelDroppedOnDisconnect) {
+  CountingService service;
+  HostSession first(service), second(service);
+  EXPECT_EQ(service.opened, 2);
+  std::string out;
+  first.receive("a;b;count;", out);
+  second.receive("count;", out);
+  EXPECT_EQ(out, ";;3;1;");
+  first.disconnect();  // the host went away: what the service kept for it goes too
+  EXPECT_EQ(service.opened, 3);
+  out.clear();
+  first.receive("count;", out);
+  EXPECT_EQ(out, "1;");
+}
+
 }  // namespace
 }  // namespace uprog::transport

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <random>
 #include <thread>
 
@@ -17,6 +20,11 @@ using testing::SimProcess;
 using testing::TestClient;
 
 const std::string kCounterProgram = std::string(UPROG_SOURCE_DIR) + "/tests/transport/data/counter.ehl";
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
 
 std::string run_shell(const std::string& command, int* status) {
   FILE* pipe = ::popen(command.c_str(), "r");
@@ -155,6 +163,61 @@ TEST(transport_sim, TermInPipeMode) {
   output = run_shell(std::string(UPROG_BINARY) + " term 127.0.0.1:1 </dev/null 2>&1", &status);
   EXPECT_EQ(WEXITSTATUS(status), 1);
   EXPECT_NE(output.find("cannot connect"), std::string::npos);
+}
+
+TEST(transport_sim, DownloadOverTheWireWithUprogDownload) {
+  char pattern[] = "/tmp/uprog_sim_download_XXXXXX";
+  ASSERT_NE(::mkdtemp(pattern), nullptr);
+  const std::string dir = pattern;
+  SimProcess sim({"--listen", "127.0.0.1:0", "--safe-boot", "--state", dir});
+  const std::string address = "127.0.0.1:" + std::to_string(sim.port);
+  const std::string download = std::string(UPROG_BINARY) + " download " + address + " ";
+  int status = 0;
+  auto output = run_shell(download + kCounterProgram + " --load 2>&1", &status);
+  EXPECT_EQ(WEXITSTATUS(status), 0) << output;
+  EXPECT_NE(output.find("downloaded"), std::string::npos) << output;
+  EXPECT_NE(output.find("loaded into RAM (CC)"), std::string::npos) << output;
+  const auto stored = read_file(dir + "/program.upi");
+  ASSERT_FALSE(stored.empty());
+  TestClient client(sim.port);
+  ASSERT_TRUE(client.send("PS\n"));
+  EXPECT_EQ(client.line_answers(), (std::vector<Reply>{{"-1", 0}}));
+
+  // A transfer belongs to its connection: a host that goes away mid-transfer takes it along.
+  {
+    TestClient leaving(sim.port);
+    ASSERT_TRUE(leaving.send("DL##BEGIN=4\nDL=0102\n"));
+    EXPECT_EQ(leaving.answers(2, 5s).size(), 2u);
+    ASSERT_TRUE(client.send("DL=0304\n"));  // another host: it began nothing
+    const auto chunk = client.line_answers();
+    ASSERT_EQ(chunk.size(), 1u);
+    EXPECT_EQ(chunk[0].error, 210);
+  }
+  {
+    TestClient back(sim.port);  // the first host again, on a new connection: nothing to end
+    ASSERT_TRUE(back.send("DL##END\n"));
+    const auto end = back.line_answers();
+    ASSERT_EQ(end.size(), 1u);
+    EXPECT_EQ(end[0].error, 210);
+  }
+  // A corrupt image and a source with errors: exit status 1, the stored program unchanged.
+  auto corrupt = stored;
+  corrupt[corrupt.size() / 2] = static_cast<char>(corrupt[corrupt.size() / 2] ^ 0x10);
+  const std::string corrupt_path = dir + "/corrupt.upi";
+  { std::ofstream(corrupt_path, std::ios::binary) << corrupt; }
+  output = run_shell(download + corrupt_path + " 2>&1", &status);
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  EXPECT_NE(output.find("?213"), std::string::npos) << output;
+  const std::string broken_path = dir + "/broken.ehl";
+  { std::ofstream(broken_path) << "function main()\n  x = = 3\nreturn\n"; }
+  output = run_shell(download + broken_path + " 2>&1", &status);
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  EXPECT_NE(output.find("broken.ehl:2"), std::string::npos) << output;
+  EXPECT_EQ(read_file(dir + "/program.upi"), stored);
+  ASSERT_TRUE(client.send("PS\n"));
+  EXPECT_EQ(client.line_answers(), (std::vector<Reply>{{"-1", 0}}));
+  EXPECT_EQ(sim.stop(), 0);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
