@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <string>
 
 namespace uprog {
 namespace {
@@ -45,7 +46,8 @@ std::optional<std::vector<uint8_t>> read_binary_file(const std::string& path, st
 
 bool write_file_atomically(const std::string& path, const void* data, size_t size,
                            std::string* error) {
-  const std::string temp = path + ".tmp";
+  // One temporary per process: two writers of the same file never share a half-written one.
+  const std::string temp = path + ".tmp." + std::to_string(::getpid());
   const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) {
     set_error(error, "cannot create " + temp);
@@ -64,7 +66,9 @@ bool write_file_atomically(const std::string& path, const void* data, size_t siz
     }
     done += static_cast<size_t>(n);
   }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+  const bool synced = ::fsync(fd) == 0;
+  const bool closed = ::close(fd) == 0;
+  if (!synced || !closed) {
     set_error(error, "cannot flush " + temp);
     ::unlink(temp.c_str());
     return false;

@@ -17,7 +17,24 @@ int Locator::text_line(uint32_t offset) const {
   return static_cast<int>(it - line_starts_.begin());
 }
 
+const preproc::Expansion* Locator::expansion(uint32_t offset) const {
+  if (map_ == nullptr) return nullptr;
+  if (const preproc::Expansion* e = map_->expansion_at(offset)) return e;
+  // An error found just past an expansion's last character ("a = SPEED" with "5 +") is the
+  // expansion's too.
+  if (offset == 0) return nullptr;
+  const preproc::Expansion* e = map_->expansion_at(offset - 1);
+  return e != nullptr && e->end == offset ? e : nullptr;
+}
+
+std::vector<DiagnosticNote> Locator::notes(uint32_t offset) const {
+  const preproc::Expansion* e = expansion(offset);
+  if (e == nullptr) return {};
+  return {{e->defined_at, "in the expansion of '" + e->macro + "', defined here"}};
+}
+
 Location Locator::locate(uint32_t offset) const {
+  if (const preproc::Expansion* e = expansion(offset)) return e->used_at;
   if (map_ != nullptr && !map_->segments.empty()) return map_->locate(offset);
   const int line = text_line(offset);
   Location loc;
@@ -36,7 +53,10 @@ void Reporter::error(Error e, uint32_t offset, std::string detail) {
 
 std::vector<Diagnostic> Reporter::finish(size_t limit) {
   std::vector<Diagnostic> all = std::move(located_);
-  for (Pending& p : pending_) all.push_back(make_error(p.code, locator_.locate(p.offset), std::move(p.detail)));
+  for (Pending& p : pending_) {
+    all.push_back(make_error(p.code, locator_.locate(p.offset), std::move(p.detail)));
+    all.back().notes = locator_.notes(p.offset);
+  }
   std::stable_sort(all.begin(), all.end(), [](const Diagnostic& a, const Diagnostic& b) {
     if (a.where.file != b.where.file) return a.where.file < b.where.file;
     if (a.where.line != b.where.line) return a.where.line < b.where.line;

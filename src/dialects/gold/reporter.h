@@ -16,11 +16,16 @@ class Locator {
  public:
   // `map` may be null: then offsets are located in `text` itself, named `file`.
   Locator(std::string file, const std::string& text, const preproc::SourceMap* map);
+  // Inside (or just past) a macro expansion: where the macro was used.
   Location locate(uint32_t offset) const;
+  // A note naming the macro expansion `offset` lies in, if any.
+  std::vector<DiagnosticNote> notes(uint32_t offset) const;
   // 1-based line of `offset` in the lexer's text (for the line table when there is no map).
   int text_line(uint32_t offset) const;
 
  private:
+  const preproc::Expansion* expansion(uint32_t offset) const;
+
   std::string file_;
   const preproc::SourceMap* map_;
   std::vector<uint32_t> line_starts_;
