@@ -158,10 +158,10 @@ TEST(controller_download, AnUnwritableStateDirIsAStorageError) {
   o.state_dir = dir;
   Controller drive(o);
   Connection host(drive);
-  // A directory where the temporary file would go makes the atomic write fail.
-  std::filesystem::create_directories(dir + "/program.upi.tmp/x");
+  // A directory where the program file would go makes the atomic replacement fail.
+  std::filesystem::create_directories(dir + "/program.upi/x");
   EXPECT_EQ(send_all(host, download_lines(compile_bytes(kProgramA))), "!206");
-  EXPECT_FALSE(std::filesystem::exists(dir + "/program.upi"));
+  EXPECT_TRUE(std::filesystem::is_directory(dir + "/program.upi"));
   std::filesystem::remove_all(dir);
 }
 
