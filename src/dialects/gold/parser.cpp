@@ -180,6 +180,23 @@ ExprPtr Parser::condition() {
 // Parses statements until one of `stops` (not consumed) or the end of the file.
 Block Parser::block(unsigned stops, Keyword& stopped_by) {
   Block out;
+  // Past the nesting limit (error 39, already reported) the block is skipped to its own `end`
+  // by counting, not parsed: recursing on would let hostile input exhaust the stack.
+  if (nest_.size() > static_cast<size_t>(kMaxBlockDepth)) {
+    int depth = 0;
+    for (; !at(Tok::Eof); next()) {
+      const Keyword k = kw();
+      if (k == Keyword::If || k == Keyword::While || k == Keyword::For || k == Keyword::Switch ||
+          k == Keyword::Try) {
+        ++depth;
+      } else if (k == Keyword::End && depth-- == 0) {
+        stopped_by = Keyword::End;
+        return out;
+      }
+    }
+    stopped_by = Keyword::None;
+    return out;
+  }
   while (true) {
     skip_separators();
     if (at(Tok::Eof)) {
