@@ -16,6 +16,7 @@
 #include "dialects/gold/compile.h"
 #include "support/files.h"
 #include "transport/answer_reader.h"
+#include "transport/tcp_connect.h"
 #include "transport/asio.h"
 
 namespace uprog::cli {
@@ -101,22 +102,10 @@ class Link {
 };
 
 bool connect(asio::io_context& io, const std::string& address, asio::ip::tcp::socket& socket) {
-  const auto colon = address.rfind(':');
-  if (colon == std::string::npos) {
-    fmt::print(stderr, "uprog download: expected HOST:PORT, got '{}'\n", address);
-    return false;
-  }
-  std::string host = address.substr(0, colon);
-  if (host.size() >= 2 && host.front() == '[' && host.back() == ']') host = host.substr(1, host.size() - 2);
-  boost::system::error_code ec;
-  asio::ip::tcp::resolver resolver(io);
-  const auto endpoints = resolver.resolve(host, address.substr(colon + 1), ec);
-  if (!ec) asio::connect(socket, endpoints, ec);
-  if (ec) {
-    fmt::print(stderr, "uprog download: cannot connect to {}: {}\n", address, ec.message());
-    return false;
-  }
-  return true;
+  std::string error;
+  if (transport::connect_tcp(io, address, socket, error)) return true;
+  fmt::print(stderr, "uprog download: {}\n", error);
+  return false;
 }
 
 // Sends `line` and expects no error; prints the drive's error otherwise.

@@ -11,6 +11,7 @@
 
 #include "commands.h"
 #include "transport/answer_reader.h"
+#include "transport/tcp_connect.h"
 #include "transport/asio.h"
 #include "transport/line_editor.h"
 
@@ -89,22 +90,10 @@ class Connection {
 };
 
 bool connect(asio::io_context& io, const std::string& address, asio::ip::tcp::socket& socket) {
-  const auto colon = address.rfind(':');
-  if (colon == std::string::npos) {
-    fmt::print(stderr, "uprog term: expected HOST:PORT, got '{}'\n", address);
-    return false;
-  }
-  std::string host = address.substr(0, colon);
-  if (host.size() >= 2 && host.front() == '[' && host.back() == ']') host = host.substr(1, host.size() - 2);
-  boost::system::error_code ec;
-  asio::ip::tcp::resolver resolver(io);
-  const auto endpoints = resolver.resolve(host, address.substr(colon + 1), ec);
-  if (!ec) asio::connect(socket, endpoints, ec);
-  if (ec) {
-    fmt::print(stderr, "uprog term: cannot connect to {}: {}\n", address, ec.message());
-    return false;
-  }
-  return true;
+  std::string error;
+  if (transport::connect_tcp(io, address, socket, error)) return true;
+  fmt::print(stderr, "uprog term: {}\n", error);
+  return false;
 }
 
 int run_term(const TermOptions& options) {
