@@ -8,21 +8,13 @@
 
 #include "bytecode/image.h"
 #include "controller/controller.h"
+#include "compile_bytes.h"
 #include "dialects/gold/compile.h"
 #include "drive/axis.h"
 #include "support/files.h"
 
 namespace uprog::controller {
 namespace {
-
-std::vector<uint8_t> compile_bytes(const std::string& text) {
-  SourceFile source;
-  source.name = "test.ehl";
-  source.text = text;
-  gold::CompileResult r = gold::compile(source);
-  EXPECT_TRUE(r.ok()) << format_text(r.diagnostics);
-  return bytecode::encode(r.image);
-}
 
 std::string one(Controller& c, const std::string& line) {
   const std::vector<Answer> a = c.send(line);

@@ -7,20 +7,12 @@
 #include "bytecode/image.h"
 #include "controller/connection.h"
 #include "controller/download_protocol.h"
+#include "compile_bytes.h"
 #include "dialects/gold/compile.h"
 #include "support/files.h"
 
 namespace uprog::controller {
 namespace {
-
-std::vector<uint8_t> compile_bytes(const std::string& text) {
-  SourceFile source;
-  source.name = "test.ehl";
-  source.text = text;
-  gold::CompileResult r = gold::compile(source);
-  EXPECT_TRUE(r.ok()) << format_text(r.diagnostics);
-  return bytecode::encode(r.image);
-}
 
 // "" for success (no answer), "!CODE" for an error, else the value.
 std::string one(Connection& c, const std::string& line) {

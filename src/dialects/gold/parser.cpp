@@ -214,21 +214,18 @@ Block Parser::block(unsigned stops, Keyword& stopped_by) {
         continue;
       case Keyword::Else:
       case Keyword::Elseif:
-        if (stops & kStopElse) { stopped_by = k; return out; }
-        error(Error::BadNesting, t.offset);
-        skip_line();
-        continue;
       case Keyword::Case:
       case Keyword::Otherwise:
-        if (stops & kStopCase) { stopped_by = k; return out; }
+      case Keyword::Catch: {
+        // The keywords that continue an enclosing block: its stop, or misplaced here.
+        const unsigned stop = k == Keyword::Catch                          ? kStopCatch
+                              : k == Keyword::Case || k == Keyword::Otherwise ? kStopCase
+                                                                             : kStopElse;
+        if (stops & stop) { stopped_by = k; return out; }
         error(Error::BadNesting, t.offset);
         skip_line();
         continue;
-      case Keyword::Catch:
-        if (stops & kStopCatch) { stopped_by = k; return out; }
-        error(Error::BadNesting, t.offset);
-        skip_line();
-        continue;
+      }
       case Keyword::Function:
         if (stops & kStopFunction) { stopped_by = k; return out; }
         error(Error::FunctionInsideBlock, t.offset);
