@@ -2,6 +2,7 @@
 // each expression's type; the code generator reads it. Offsets point into the lexer's text.
 #pragma once
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
@@ -36,8 +37,8 @@ struct Expr {
   int32_t int_value = 0;
   float float_value = 0.0f;
   ExprPtr lhs = nullptr, rhs = nullptr;  // Unary uses lhs
-  // Ref: a name, maybe with [index] or (arguments).
-  std::string name;
+  // Ref: a name, maybe with [index] or (arguments). Names view into the lexer's text.
+  std::string_view name;
   bool has_index = false;   // name[...]
   bool has_parens = false;  // name(...)
   std::vector<ExprPtr> args;  // the index (one) or the call's arguments
@@ -84,14 +85,14 @@ struct Stmt {
   std::vector<IfArm> arms;   // If
   std::vector<SwitchCase> cases;  // Switch
   Block body, handler;       // While/For body; Try body and catch
-  std::string name;          // Goto/Reset/Label target
+  std::string_view name;     // Goto/Reset/Label target
   bool auto_label = false;   // #@ rather than ##
   bool bracketed = false;    // Assign: [a, b] = ...
   uint32_t end_offset = 0;   // the line of the block's `end`
 };
 
 struct VarDecl {
-  std::string name;
+  std::string_view name;
   VarType type = VarType::Int;
   int32_t length = 0;  // 0 for a scalar, else the array's dimension
   uint32_t offset = 0;
@@ -99,27 +100,41 @@ struct VarDecl {
 };
 
 struct Param {
-  std::string name;
+  std::string_view name;
   VarType type = VarType::Int;
   uint32_t offset = 0;
 };
 
 struct FunctionDef {
-  std::string name;
+  std::string_view name;
   uint32_t offset = 0;
   std::vector<Param> inputs, outputs;
   bool has_body = false;
   bool is_auto = false;  // named like an auto-routine (function AUTOEXEC())
   std::vector<VarDecl> locals;  // declared locals and global re-declarations, in order
-  Block body;
+  Block body;               // empty when the parser handed the body to a FunctionBodySink
+  LexState body_start;      // where the body begins, to parse it again
   uint32_t end_offset = 0;  // the closing return
+};
+
+// Takes each function body from the parser as soon as it is parsed, so that a program's tree
+// never holds more than one body. `f` is null when the header was refused (the body was parsed
+// for its errors only). The body's nodes live in `scratch()`, which the sink may reset.
+class AstArena;
+struct Program;
+class FunctionBodySink {
+ public:
+  virtual ~FunctionBodySink() = default;
+  virtual AstArena& scratch() = 0;
+  // `program` holds what is parsed so far, `f` last among its functions.
+  virtual void body(Program& program, FunctionDef* f, Block& body) = 0;
 };
 
 // Top-level code: labels, auto-routines and their statements, in source order. A Label
 // statement opens a routine; a top-level Return closes it.
 struct Program {
   std::vector<VarDecl> globals;
-  std::vector<FunctionDef> functions;  // definitions and prototypes, in source order
+  std::deque<FunctionDef> functions;  // definitions and prototypes, in source order (stable addresses)
   Block top;
   bool empty = true;  // nothing but blanks and comments
 };
@@ -130,21 +145,31 @@ namespace uprog::gold {
 
 // Makes nodes in blocks and frees them all at once: a parse costs a few large allocations
 // instead of one per node, and no recursive teardown. The arena must outlive its nodes' users.
+// reset() recycles the blocks, so one function body after another reuses the same memory.
 template <class T>
 class NodePool {
  public:
   T* make() {
     if (used_ == kBlock) {
-      blocks_.push_back(std::make_unique<T[]>(kBlock));
+      if (++current_ == blocks_.size()) blocks_.push_back(std::make_unique<T[]>(kBlock));
       used_ = 0;
     }
-    return &blocks_.back()[used_++];
+    T* t = &blocks_[current_][used_++];
+    if (recycled_) *t = T{};
+    return t;
+  }
+  void reset() {
+    current_ = static_cast<size_t>(-1);
+    used_ = kBlock;
+    recycled_ = true;
   }
 
  private:
   static constexpr size_t kBlock = 256;
   std::vector<std::unique_ptr<T[]>> blocks_;
+  size_t current_ = static_cast<size_t>(-1);
   size_t used_ = kBlock;
+  bool recycled_ = false;
 };
 
 class AstArena {
@@ -160,6 +185,11 @@ class AstArena {
     s->kind = k;
     s->offset = offset;
     return s;
+  }
+  // Every node made so far is dead; their memory serves the next ones.
+  void reset() {
+    exprs_.reset();
+    stmts_.reset();
   }
 
  private:

@@ -78,29 +78,79 @@ bool const_index(const Expr& e, int32_t& out) {
   return false;
 }
 
+}  // namespace
+
+namespace detail {
+
 class Checker {
  public:
   explicit Checker(Reporter& r) : r_(r) {}
 
-  Symbols program(Program& p) {
-    declare_globals(p.globals);
-    declare_functions(p);
-    declare_top_labels(p.top);
-    // Function bodies, then the top level.
-    for (size_t i = 0; i < p.functions.size(); ++i) {
-      FunctionDef& f = p.functions[i];
-      if (!f.has_body) continue;
-      auto it = function_index_.find(f.name);
-      if (it == function_index_.end()) continue;  // refused when declared
-      const int index = it->second;
-      if (syms_.functions[static_cast<size_t>(index)].def != &f) continue;  // a second body
-      function_body(f, index);
+  // ---- the whole program, as the streaming driver runs it (program_compiler.cpp)
+
+  void declare(Program& p) {
+    declare_globals(p.globals, 0);
+    for (FunctionDef& f : p.functions) declare_function(f);
+    declare_top_labels(p.top, 0);
+  }
+
+  // The symbol whose body `f` is, or -1 when its body is not checked (refused, or a second body).
+  int symbol_for_body(const FunctionDef& f) const {
+    if (!f.has_body) return -1;
+    auto it = function_index_.find(f.name);
+    if (it == function_index_.end()) return -1;  // refused when declared
+    return syms_.functions[static_cast<size_t>(it->second)].def == &f ? it->second : -1;
+  }
+
+  // Checks a body against what `p` declares so far, keeping every error and effect in `out`.
+  void speculate(Program& p, FunctionDef& f, Block& body, CheckedBody& out,
+                 std::vector<std::string_view>& queried) {
+    // Declarations met since the last body; their errors belong to the final pass.
+    std::vector<CapturedError> ignored;
+    capture_ = &ignored;
+    declare_globals(p.globals, globals_seen_);
+    globals_seen_ = p.globals.size();
+    for (; functions_seen_ < p.functions.size(); ++functions_seen_) declare_function(p.functions[functions_seen_]);
+    declare_top_labels(p.top, top_seen_);
+    top_seen_ = p.top.size();
+    out.symbol = symbol_for_body(f);
+    out.checked = out.symbol >= 0;
+    if (out.checked) {
+      capture_ = &out.errors;
+      queried_ = &queried;
+      queries_begin_ = queried.size();
+      poisoned_added_ = &out.poisoned;
+      const size_t labels = syms_.labels.size();
+      function_body(f, out.symbol, body);
+      out.labels.assign(syms_.labels.begin() + static_cast<std::ptrdiff_t>(labels), syms_.labels.end());
     }
+    capture_ = nullptr;
+    queried_ = nullptr;
+    poisoned_added_ = nullptr;
+  }
+
+  // A speculative check that still holds: its errors and effects as if checked here.
+  void accept(int symbol, CheckedBody& spec) {
+    for (const CapturedError& e : spec.errors) r_.error(e.code, e.offset);
+    for (LabelSym& l : spec.labels) {
+      l.function = symbol;
+      syms_.labels.push_back(std::move(l));
+    }
+    for (std::string_view n : spec.poisoned) poisoned_.insert(n);
+  }
+
+  // A body's locals are needed until it is generated, then no more (its code keeps them).
+  void forget_locals(int symbol) { syms_.functions[static_cast<size_t>(symbol)].locals = {}; }
+
+  void check_body(FunctionDef& f, int symbol, Block& body) { function_body(f, symbol, body); }
+
+  void check_top(Program& p) {
     current_ = -1;
     locals_.clear();
     block(p.top);
-    return std::move(syms_);
   }
+
+  Symbols& symbols() { return syms_; }
 
   void line(Block& b, const std::vector<KnownGlobal>& known) {
     for (const KnownGlobal& g : known) {
@@ -112,15 +162,32 @@ class Checker {
   }
 
  private:
-  void error(Error e, uint32_t offset) { r_.error(e, offset); }
+  void error(Error e, uint32_t offset) {
+    if (capture_) capture_->push_back({e, offset});
+    else r_.error(e, offset);
+  }
 
-  bool clashes_with_system(const std::string& name) {
+  // A name whose meaning a later declaration could change (a function, a label): while
+  // speculating, the driver must know it was asked about.
+  void note(std::string_view name) {
+    if (queried_ == nullptr) return;
+    for (size_t i = queried_->size(), k = 0; i-- > queries_begin_ && k < 8; ++k)  // this body's
+      if ((*queried_)[i] == name) return;
+    queried_->push_back(name);
+  }
+
+  void poison(std::string_view name) {
+    if (poisoned_.insert(name).second && poisoned_added_) poisoned_added_->push_back(name);
+  }
+
+  bool clashes_with_system(std::string_view name) {
     return command_named(name) != nullptr || find_builtin(name) != nullptr;
   }
 
-  void declare_globals(const std::vector<VarDecl>& globals) {
-    int64_t words = 0;
-    for (const VarDecl& d : globals) {
+  void declare_globals(const std::vector<VarDecl>& globals, size_t from) {
+    int64_t& words = global_words_;
+    for (size_t i = from; i < globals.size(); ++i) {
+      const VarDecl& d = globals[i];
       if (global_index_.count(d.name) || clashes_with_system(d.name)) {
         error(Error::NameIsNotDistinct, d.offset);
         continue;
@@ -131,7 +198,7 @@ class Checker {
         continue;
       }
       global_index_[d.name] = static_cast<int>(syms_.globals.size());
-      syms_.globals.push_back({d.name, d.type, d.length, d.offset});
+      syms_.globals.push_back({std::string(d.name), d.type, d.length, d.offset});
     }
   }
 
@@ -145,33 +212,33 @@ class Checker {
     return same(a.inputs, b.inputs) && same(a.outputs, b.outputs);
   }
 
-  void declare_functions(Program& p) {
-    for (FunctionDef& f : p.functions) {
+  void declare_function(FunctionDef& f) {
+    {
       auto it = function_index_.find(f.name);
       if (it == function_index_.end()) {
         if (global_index_.count(f.name) || clashes_with_system(f.name)) {
           error(Error::NameIsNotDistinct, f.offset);  // "int func / function func(int a)"
-          continue;
+          return;
         }
         function_index_[f.name] = static_cast<int>(syms_.functions.size());
         FunctionSym s;
-        s.name = f.name;
+        s.name = std::string(f.name);
         s.def = &f;
         s.has_body = f.has_body;
         s.is_auto = f.is_auto;
         s.inputs = f.inputs.size();
         s.outputs = f.outputs.size();
         syms_.functions.push_back(std::move(s));
-        continue;
+        return;
       }
       FunctionSym& s = syms_.functions[static_cast<size_t>(it->second)];
       if (!same_signature(*s.def, f)) {
         error(Error::BadFunctionFormat, f.offset);  // the definition differs from its prototype
-        continue;
+        return;
       }
       if (f.has_body && s.has_body) {
         error(Error::FunctionAlreadyHasBody, f.offset);
-        continue;
+        return;
       }
       if (f.has_body) {
         s.def = &f;
@@ -180,8 +247,9 @@ class Checker {
     }
   }
 
-  void declare_top_labels(const Block& top) {
-    for (const StmtPtr& s : top) {
+  void declare_top_labels(const std::vector<StmtPtr>& top, size_t from) {
+    for (size_t i = from; i < top.size(); ++i) {
+      const StmtPtr& s = top[i];
       if (s->kind != StmtKind::Label) continue;
       if (top_labels_.count(s->name) || (!s->auto_label && function_index_.count(s->name))) {
         error(Error::NameIsNotDistinct, s->offset);
@@ -195,7 +263,7 @@ class Checker {
         }
       }
       top_labels_[s->name] = static_cast<int>(syms_.labels.size());
-      syms_.labels.push_back({s->name, s->auto_label, -1, s->offset});
+      syms_.labels.push_back({std::string(s->name), s->auto_label, -1, s->offset});
     }
   }
 
@@ -207,11 +275,11 @@ class Checker {
         continue;
       }
       local_labels_[s->name] = static_cast<int>(syms_.labels.size());
-      syms_.labels.push_back({s->name, false, function, s->offset});
+      syms_.labels.push_back({std::string(s->name), false, function, s->offset});
     }
   }
 
-  void function_body(FunctionDef& f, int index) {
+  void function_body(FunctionDef& f, int index, Block& body) {
     current_ = index;
     current_def_ = &f;
     locals_.clear();
@@ -219,12 +287,17 @@ class Checker {
     redeclared_.clear();
     FunctionSym& s = syms_.functions[static_cast<size_t>(index)];
     s.locals.clear();
-    auto add_local = [&](const std::string& name, VarType type, uint32_t offset) {
+    auto add_local = [&](std::string_view name, VarType type, uint32_t offset) {
       if (locals_.count(name) || redeclared_.count(name)) {
         error(Error::NameIsNotDistinct, offset);  // "function func(int a) / int a"
         return;
       }
-      if (clashes_with_system(name) || function_index_.count(name)) {
+      if (clashes_with_system(name)) {
+        error(Error::NameIsNotDistinct, offset);
+        return;
+      }
+      note(name);
+      if (function_index_.count(name)) {
         error(Error::NameIsNotDistinct, offset);
         return;
       }
@@ -233,7 +306,7 @@ class Checker {
         return;
       }
       locals_[name] = static_cast<int>(s.locals.size());
-      s.locals.push_back({name, type});
+      s.locals.push_back({std::string(name), type});
     };
     for (const Param& p : f.inputs) add_local(p.name, p.type, p.offset);
     for (const Param& p : f.outputs) add_local(p.name, p.type, p.offset);
@@ -256,8 +329,8 @@ class Checker {
       }
       add_local(d.name, d.type, d.offset);
     }
-    collect_local_labels(f.body, index);
-    block(f.body);
+    collect_local_labels(body, index);
+    block(body);
     current_def_ = nullptr;
   }
 
@@ -339,6 +412,7 @@ class Checker {
       } else {
         const Expr* left = &rhs;
         while (left->kind == ExprKind::Binary) left = left->lhs;
+        if (left->kind == ExprKind::Ref && left->has_parens) note(left->name);
         const bool call_first = left->kind == ExprKind::Ref && left->has_parens &&
                                 function_index_.count(left->name) > 0;
         if (call_first) error(Error::BadFunctionCall, start_of(rhs));  // "[a,b] = f(x) + 5"
@@ -357,7 +431,7 @@ class Checker {
       resolve(v, /*quiet=*/true);
       if (v.ref != RefKind::Local && v.ref != RefKind::Global) {
         error(Error::VariableIsUndefined, v.offset);
-        poisoned_.insert(v.name);  // one error for the loop, not one per use
+        poison(v.name);  // one error for the loop, not one per use
         v.ref = RefKind::Unresolved;
       } else if (v.has_index || v.has_parens || (v.ref == RefKind::Global && global(v).length > 0)) {
         error(Error::VariableIsArray, v.offset);  // "for k[10]=1:10"
@@ -383,6 +457,7 @@ class Checker {
   // goto: ##name to a label of the same scope, #@name to an auto-routine (top level only).
   void jump(Stmt& s) {
     const bool in_function = current_ >= 0;
+    note(s.name);
     if (in_function && !s.auto_label && local_labels_.count(s.name)) return;
     if (!in_function && top_labels_.count(s.name) &&
         syms_.labels[static_cast<size_t>(top_labels_[s.name])].is_auto == s.auto_label)
@@ -394,7 +469,7 @@ class Checker {
     error(known ? Error::BadJumpToLabel : Error::NoSuchFunction, s.offset);
   }
 
-  bool any_local_label(const std::string& name) const {
+  bool any_local_label(std::string_view name) const {
     for (const LabelSym& l : syms_.labels)
       if (l.function >= 0 && l.name == name) return true;
     return false;
@@ -402,6 +477,7 @@ class Checker {
 
   // reset: an auto-routine, a global label or a function without inputs.
   void reset(Stmt& s) {
+    note(s.name);
     if (top_labels_.count(s.name)) return;
     auto it = function_index_.find(s.name);
     if (it != function_index_.end()) {
@@ -445,6 +521,7 @@ class Checker {
     }
     auto f = function_index_.find(e.name);
     if (f != function_index_.end()) {
+      note(e.name);
       e.ref = RefKind::Function;
       e.slot = f->second;
       return;
@@ -459,6 +536,7 @@ class Checker {
       e.command = c;
       return;
     }
+    note(e.name);  // a function declared later would be this name
     if (!quiet && !poisoned_.count(e.name)) error(Error::NoSuchVariable, e.offset);
   }
 
@@ -618,22 +696,38 @@ class Checker {
 
   Reporter& r_;
   Symbols syms_;
-  std::unordered_map<std::string, int> global_index_, function_index_, top_labels_, local_labels_, locals_;
-  std::unordered_set<std::string> redeclared_, poisoned_;
+  std::unordered_map<std::string_view, int> global_index_, function_index_, top_labels_, local_labels_, locals_;
+  std::unordered_set<std::string_view> redeclared_, poisoned_;
   int current_ = -1;
   const FunctionDef* current_def_ = nullptr;
   std::vector<LoopRange> loops_;  // the enclosing loops whose variable's range is known
+  int64_t global_words_ = 0;
+  // Speculation: how far the declarations were taken in, where errors and names go.
+  size_t globals_seen_ = 0, functions_seen_ = 0, top_seen_ = 0;
+  std::vector<CapturedError>* capture_ = nullptr;
+  std::vector<std::string_view>* queried_ = nullptr;
+  size_t queries_begin_ = 0;
+  std::vector<std::string_view>* poisoned_added_ = nullptr;
 };
 
-}  // namespace
+}  // namespace detail
 
-Symbols check_program(Program& program, Reporter& reporter) {
-  Checker c(reporter);
-  return c.program(program);
+ProgramChecker::ProgramChecker(Reporter& reporter) : c_(std::make_unique<detail::Checker>(reporter)) {}
+ProgramChecker::~ProgramChecker() = default;
+void ProgramChecker::declare(Program& p) { c_->declare(p); }
+int ProgramChecker::symbol_for_body(const FunctionDef& f) const { return c_->symbol_for_body(f); }
+void ProgramChecker::speculate(Program& p, FunctionDef& f, Block& body, CheckedBody& out,
+                               std::vector<std::string_view>& queried) {
+  c_->speculate(p, f, body, out, queried);
 }
+void ProgramChecker::accept(int symbol, CheckedBody& spec) { c_->accept(symbol, spec); }
+void ProgramChecker::check_body(FunctionDef& f, int symbol, Block& body) { c_->check_body(f, symbol, body); }
+void ProgramChecker::check_top(Program& p) { c_->check_top(p); }
+void ProgramChecker::forget_locals(int symbol) { c_->forget_locals(symbol); }
+Symbols& ProgramChecker::symbols() { return c_->symbols(); }
 
 void check_line(Block& block, const std::vector<KnownGlobal>& known, Reporter& reporter) {
-  Checker c(reporter);
+  detail::Checker c(reporter);
   c.line(block, known);
 }
 

@@ -2,7 +2,9 @@
 // labels), gives every expression its kind, and reports the manual's semantic errors.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "dialects/gold/ast.h"
@@ -51,7 +53,49 @@ struct KnownGlobal {
   int32_t length = 0;
 };
 
-Symbols check_program(Program& program, Reporter& reporter);
+// An error kept aside while a body is checked speculatively.
+struct CapturedError {
+  Error code;
+  uint32_t offset;
+};
+
+// What checking one function body found, kept until the driver knows whether it still holds.
+struct CheckedBody {
+  bool checked = false;  // false when the body is not checked at all (refused, a second body)
+  int symbol = -1;
+  std::vector<CapturedError> errors;
+  std::vector<LabelSym> labels;            // its local labels
+  std::vector<std::string_view> poisoned;  // undefined loop variables it reported
+};
+
+namespace detail {
+class Checker;
+}
+
+// The checker of a whole program, in the order the streaming driver (program_compiler.h) uses
+// it: speculate() on each body as it is parsed, then declare() everything, then for each body
+// accept() its speculation or check_body() it again, then check_top().
+class ProgramChecker {
+ public:
+  explicit ProgramChecker(Reporter& reporter);
+  ~ProgramChecker();
+  // Checks `body` against the declarations of `p` parsed so far; errors and effects go to `out`,
+  // and every name whose meaning a later declaration could change to `queried`.
+  void speculate(Program& p, FunctionDef& f, Block& body, CheckedBody& out,
+                 std::vector<std::string_view>& queried);
+  // Declares every global, function and top-level label of `p`, reporting their errors.
+  void declare(Program& p);
+  // The symbol whose body `f` is, or -1 when `f`'s body is not checked.
+  int symbol_for_body(const FunctionDef& f) const;
+  void accept(int symbol, CheckedBody& spec);
+  void check_body(FunctionDef& f, int symbol, Block& body);
+  void check_top(Program& p);
+  void forget_locals(int symbol);
+  Symbols& symbols();
+
+ private:
+  std::unique_ptr<detail::Checker> c_;
+};
 // Command-line statements, seeing `known` as globals (indices in that order).
 void check_line(Block& block, const std::vector<KnownGlobal>& known, Reporter& reporter);
 

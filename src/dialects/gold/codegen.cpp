@@ -29,8 +29,8 @@ Kind operand_kind(Kind k) { return k == Kind::None ? Kind::Int : k; }
 
 class Gen {
  public:
-  Gen(bytecode::Image& image, const Symbols* symbols, const Locator& locator)
-      : img_(image), cb_(image.code), syms_(symbols), loc_(locator) {}
+  Gen(bytecode::Image& image, const Symbols* symbols, const Locator& locator, ConstantTable& constants)
+      : img_(image), cb_(image.code), syms_(symbols), loc_(locator), constants_(constants) {}
 
   // ---- routines
 
@@ -73,6 +73,9 @@ class Gen {
   }
 
   bool with_lines = true;
+  // Set for a function's code on its own: routine numbers are known only when the program is
+  // put together, so CALL and RESET operands are left for the driver to fill in.
+  std::vector<RoutineFixup>* fixups = nullptr;
   std::function<void(const Expr&)> show;  // the command line's way to show a bare value
   std::vector<int32_t> routine_of_function;  // function symbol -> routine index
   std::unordered_map<std::string, int32_t> routine_of_label;  // top-level labels
@@ -277,17 +280,21 @@ class Gen {
 
   bool scalar_zero_index(const Expr& e) const {
     if (!e.has_index && !e.has_parens) return true;
-    const GlobalSym* g = e.ref == RefKind::Global ? &syms_globals()[static_cast<size_t>(e.slot)] : nullptr;
+    const GlobalSym* g = e.ref == RefKind::Global ? &(*globals_)[static_cast<size_t>(e.slot)] : nullptr;
     return g != nullptr && g->length == 0 && e.args.size() == 1 && e.args[0]->kind == ExprKind::IntLit &&
            e.args[0]->int_value == 0;
   }
-  const std::vector<GlobalSym>& syms_globals() const { return globals_; }
-  std::vector<GlobalSym> globals_;
+  const std::vector<GlobalSym>* globals_ = nullptr;
 
   void call(const Expr& e, uint32_t nargout) {
     const FunctionSym& f = syms_->functions[static_cast<size_t>(e.slot)];
     for (size_t i = 0; i < e.args.size() && i < f.inputs; ++i)
       value(*e.args[i], kind_of(f.def->inputs[i].type));
+    if (fixups) {
+      fixups->push_back({here(), e.name});
+      emit(Op::CALL, 0, nargout);
+      return;
+    }
     const int32_t routine = routine_of_function[static_cast<size_t>(e.slot)];
     emit(Op::CALL, static_cast<uint32_t>(routine < 0 ? 0 : routine), nargout);
   }
@@ -365,7 +372,7 @@ class Gen {
   Kind target_kind(const Expr& t) const {
     switch (t.ref) {
       case RefKind::Local: return kind_of((*locals_)[static_cast<size_t>(t.slot)].type);
-      case RefKind::Global: return kind_of(globals_[static_cast<size_t>(t.slot)].type);
+      case RefKind::Global: return kind_of((*globals_)[static_cast<size_t>(t.slot)].type);
       case RefKind::Command: return kind_of(t.command->type);
       default: return Kind::Int;
     }
@@ -462,22 +469,24 @@ class Gen {
       case StmtKind::Exit: emit(Op::EXIT); break;
       case StmtKind::Goto: {
         auto it = goto_labels_.find(label_key(s.name, s.auto_label));
-        if (it != goto_labels_.end()) {
-          cb_.emit_to(Op::JMP, it->second);
-        } else {
-          auto r = routine_of_label.find(s.name);  // goto #@AUTOEXEC of "function AUTOEXEC()"
-          emit(Op::RESET, r == routine_of_label.end() ? 0u : static_cast<uint32_t>(r->second));
-        }
+        if (it != goto_labels_.end()) cb_.emit_to(Op::JMP, it->second);
+        else reset_to(s.name);  // goto #@AUTOEXEC of "function AUTOEXEC()"
         break;
       }
-      case StmtKind::Reset: {
-        auto r = routine_of_label.find(s.name);
-        emit(Op::RESET, r == routine_of_label.end() ? 0u : static_cast<uint32_t>(r->second));
-        break;
-      }
+      case StmtKind::Reset: reset_to(s.name); break;
       case StmtKind::Label: bind_label_stmt(s); break;
     }
     temp_top_ = temps;
+  }
+
+  void reset_to(std::string_view name) {
+    if (fixups) {
+      fixups->push_back({here(), name});
+      emit(Op::RESET, 0);
+      return;
+    }
+    auto r = routine_of_label.find(std::string(name));
+    emit(Op::RESET, r == routine_of_label.end() ? 0u : static_cast<uint32_t>(r->second));
   }
 
   void expression_statement(const Stmt& s) {
@@ -752,15 +761,17 @@ class Gen {
   size_t max_locals() const { return locals_->size(); }
 
  private:
-  static std::string label_key(const std::string& name, bool is_auto) { return (is_auto ? "@" : "#") + name; }
+  static std::string label_key(std::string_view name, bool is_auto) {
+    return (is_auto ? "@" : "#") + std::string(name);
+  }
 
   uint32_t constant(ValueType type, uint32_t bits) {
     const uint64_t key = (static_cast<uint64_t>(type) << 32) | bits;
-    auto it = constants_.find(key);
-    if (it != constants_.end()) return it->second;
-    const uint32_t index = static_cast<uint32_t>(img_.constants.size());
-    img_.constants.push_back({type, bits});
-    constants_[key] = index;
+    auto it = constants_.index.find(key);
+    if (it != constants_.index.end()) return it->second;
+    const uint32_t index = static_cast<uint32_t>(constants_.constants.size());
+    constants_.constants.push_back({type, bits});
+    constants_.index[key] = index;
     return index;
   }
 
@@ -773,19 +784,74 @@ class Gen {
   std::unordered_map<std::string, CodeBuilder::Label> goto_labels_;
   std::vector<Loop> loops_;
   int try_depth_ = 0;
-  std::unordered_map<uint64_t, uint32_t> constants_;
+  ConstantTable& constants_;
 };
 
 }  // namespace
 
-bytecode::Image generate_program(const Program& program, const Symbols& symbols, const Locator& locator,
-                                 Reporter& reporter, bool with_lines) {
+FunctionCode generate_function(const Symbols& symbols, int symbol, const Block& body,
+                               uint32_t end_offset, const Locator& locator, ConstantTable& constants,
+                               bool with_lines) {
+  FunctionCode out;
+  bytecode::Image img;
+  Gen gen(img, &symbols, locator, constants);
+  gen.with_lines = with_lines;
+  gen.globals_ = &symbols.globals;
+  gen.fixups = &out.fixups;
+  for (const LocalSym& l : symbols.functions[static_cast<size_t>(symbol)].locals)
+    out.locals.push_back({l.name, value_type(l.type)});
+  gen.begin_routine(&out.locals);
+  gen.declare_goto_labels(body);
+  gen.block(body);
+  gen.line_entry(end_offset);
+  gen.emit(Op::RET);
+  out.ok = gen.finish();
+  out.code = std::move(img.code);
+  out.lines = std::move(img.lines);
+  return out;
+}
+
+namespace {
+
+// The constants in order of first use in `code`, as one generator emitting the whole program in
+// order would have numbered them.
+void renumber_constants(bytecode::Image& img, const ConstantTable& table) {
+  std::vector<uint32_t> renamed(table.constants.size(), UINT32_MAX);
+  for (size_t pc = 0; pc < img.code.size(); pc += bytecode::op_length(bytecode::word_op(img.code[pc]))) {
+    const Op op = bytecode::word_op(img.code[pc]);
+    if (bytecode::op_info(op).a != bytecode::Operand::Const) continue;
+    uint32_t& k = renamed[bytecode::word_a(img.code[pc])];
+    if (k == UINT32_MAX) {
+      k = static_cast<uint32_t>(img.constants.size());
+      img.constants.push_back(table.constants[bytecode::word_a(img.code[pc])]);
+    }
+    img.code[pc] = bytecode::make_word(op, k);
+  }
+}
+
+// Adds `e` after the entries already in `lines` by line_entry()'s rule.
+void append_line(std::vector<bytecode::LineEntry>& lines, const bytecode::LineEntry& e) {
+  if (!lines.empty() && lines.back().line == e.line && lines.back().file == e.file) return;
+  if (!lines.empty() && lines.back().code == e.code) {
+    lines.back().line = e.line;
+    lines.back().file = e.file;
+    return;
+  }
+  lines.push_back(e);
+}
+
+}  // namespace
+
+bytecode::Image generate_program(const Program& program, const Symbols& symbols,
+                                 const std::vector<const FunctionCode*>& bodies,
+                                 uint32_t body_words, bool bodies_ok, const Locator& locator,
+                                 Reporter& reporter, ConstantTable& constants, bool with_lines) {
   bytecode::Image img;
   for (const GlobalSym& g : symbols.globals)
     img.globals.push_back({g.name, value_type(g.type), g.length == 0 ? 1u : static_cast<uint32_t>(g.length)});
-  Gen gen(img, &symbols, locator);
+  Gen gen(img, &symbols, locator, constants);
   gen.with_lines = with_lines;
-  gen.globals_ = symbols.globals;
+  gen.globals_ = &symbols.globals;
 
   // Routine numbers: functions with a body first, then the top-level labels in order.
   gen.routine_of_function.assign(symbols.functions.size(), -1);
@@ -799,17 +865,17 @@ bytecode::Image generate_program(const Program& program, const Symbols& symbols,
     r.kind = f.is_auto ? bytecode::RoutineKind::AutoRoutine : bytecode::RoutineKind::Function;
     r.inputs = static_cast<uint32_t>(f.inputs);
     r.outputs = static_cast<uint32_t>(f.outputs);
-    for (const LocalSym& l : f.locals) r.locals.push_back({l.name, value_type(l.type)});
     img.routines.push_back(std::move(r));
   }
   std::vector<size_t> label_routines;
   for (const StmtPtr& s : program.top) {
     if (s->kind != StmtKind::Label) continue;
-    if (gen.routine_of_label.count(s->name)) continue;
-    gen.routine_of_label[s->name] = static_cast<int32_t>(img.routines.size());
+    const std::string name(s->name);
+    if (gen.routine_of_label.count(name)) continue;
+    gen.routine_of_label[name] = static_cast<int32_t>(img.routines.size());
     label_routines.push_back(img.routines.size());
     bytecode::Routine r;
-    r.name = s->name;
+    r.name = name;
     r.kind = s->auto_label ? bytecode::RoutineKind::AutoRoutine : bytecode::RoutineKind::Label;
     img.routines.push_back(std::move(r));
   }
@@ -821,7 +887,7 @@ bytecode::Image generate_program(const Program& program, const Symbols& symbols,
   gen.declare_goto_labels(program.top);
   for (const StmtPtr& s : program.top) {
     if (s->kind == StmtKind::Label) {
-      auto it = gen.routine_of_label.find(s->name);
+      auto it = gen.routine_of_label.find(std::string(s->name));
       if (it != gen.routine_of_label.end() && img.routines[static_cast<size_t>(it->second)].entry == 0 &&
           img.routines[static_cast<size_t>(it->second)].kind != bytecode::RoutineKind::Function)
         img.routines[static_cast<size_t>(it->second)].entry = gen.here();
@@ -829,17 +895,34 @@ bytecode::Image generate_program(const Program& program, const Symbols& symbols,
     gen.statement(*s);
   }
   for (size_t r : label_routines) img.routines[r].locals = top_locals;
+  bool ok = gen.finish() && bodies_ok;
 
+  // The functions, generated one by one as they were checked, follow in order.
   for (size_t i = 0; i < symbols.functions.size(); ++i) {
-    const FunctionSym& f = symbols.functions[i];
-    if (!f.has_body) continue;
+    if (!symbols.functions[i].has_body) continue;
+    const FunctionCode* body = bodies[i];
+    if (body == nullptr) continue;  // not kept: counted in body_words
+    ok = ok && body->ok;
     bytecode::Routine& r = img.routines[static_cast<size_t>(gen.routine_of_function[i])];
-    r.entry = gen.here();
-    gen.begin_routine(&r.locals);
-    gen.declare_goto_labels(f.def->body);
-    gen.block(f.def->body);
-    gen.line_entry(f.def->end_offset);
-    gen.emit(Op::RET);
+    const uint32_t base = static_cast<uint32_t>(img.code.size());
+    r.entry = base;
+    r.locals = body->locals;
+    for (size_t pc = 0; pc < body->code.size();) {
+      uint32_t word = body->code[pc];
+      const Op op = bytecode::word_op(word);
+      if (bytecode::op_info(op).a == bytecode::Operand::Target)
+        word = bytecode::make_word(op, bytecode::word_a(word) + base);
+      img.code.push_back(word);
+      for (uint32_t k = 1; k < bytecode::op_length(op); ++k) img.code.push_back(body->code[pc + k]);
+      pc += bytecode::op_length(op);
+    }
+    for (const RoutineFixup& f : body->fixups) {
+      auto it = gen.routine_of_label.find(std::string(f.name));
+      const uint32_t routine = it == gen.routine_of_label.end() || it->second < 0 ? 0u : static_cast<uint32_t>(it->second);
+      uint32_t& word = img.code[base + f.pc];
+      word = bytecode::make_word(bytecode::word_op(word), routine);
+    }
+    for (const bytecode::LineEntry& e : body->lines) append_line(img.lines, {e.code + base, e.file, e.line});
   }
 
   // Auto-routines answer their events.
@@ -849,9 +932,10 @@ bytecode::Image generate_program(const Program& program, const Symbols& symbols,
       img.events.push_back({a->event, static_cast<uint32_t>(i)});
   }
   // A program of declarations only still loads: its globals serve the command line.
-  if (img.code.empty()) gen.emit(Op::RET);
-  if (!gen.finish()) reporter.error(Error::InternalCompilerError, 0);
-  if (img.code.size() > bytecode::kOperandMax) reporter.error(Error::CompiledCodeTooLong, 0);
+  if (img.code.empty() && body_words == 0) gen.emit(Op::RET);
+  if (!ok) reporter.error(Error::InternalCompilerError, 0);
+  if (img.code.size() + body_words > bytecode::kOperandMax) reporter.error(Error::CompiledCodeTooLong, 0);
+  renumber_constants(img, constants);
   img.info.push_back("dialect=gold");
   return img;
 }
@@ -864,8 +948,9 @@ bytecode::Image generate_line(const Block& block, const std::vector<KnownGlobal>
     img.globals.push_back({g.name, value_type(g.type), g.length == 0 ? 1u : static_cast<uint32_t>(g.length)});
     globals.push_back({g.name, g.type, g.length, 0});
   }
-  Gen gen(img, nullptr, locator);
-  gen.globals_ = globals;
+  ConstantTable constants;
+  Gen gen(img, nullptr, locator, constants);
+  gen.globals_ = &globals;
   bytecode::Routine r;
   r.name = "$line";
   r.kind = bytecode::RoutineKind::Function;
@@ -890,6 +975,7 @@ bytecode::Image generate_line(const Block& block, const std::vector<KnownGlobal>
   gen.emit(Op::RET);
   img.routines.push_back(std::move(r));
   if (!gen.finish()) reporter.error(Error::InternalCompilerError, 0);
+  img.constants = std::move(constants.constants);
   img.info.push_back("dialect=gold");
   return img;
 }

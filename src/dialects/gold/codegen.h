@@ -3,6 +3,8 @@
 // line table, globals and locals by name and type, routines and auto-routine events.
 #pragma once
 #include <string>
+#include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "bytecode/image.h"
@@ -12,10 +14,41 @@
 
 namespace uprog::gold {
 
-// `with_lines` false leaves the line table empty: for a check, which needs only the diagnostics
-// (the code is still generated, since its size can be an error, 65).
+// The constants of a program, shared by the generators of its parts.
+struct ConstantTable {
+  std::vector<bytecode::Constant> constants;
+  std::unordered_map<uint64_t, uint32_t> index;  // (type << 32 | bits) -> constant
+};
+
+// A CALL or RESET whose routine number is filled in when the program is put together.
+struct RoutineFixup {
+  uint32_t pc;
+  std::string_view name;  // the function's or label's
+};
+
+// One function's code, generated as soon as it is checked: addresses count from its first word.
+struct FunctionCode {
+  std::vector<uint32_t> code;
+  std::vector<bytecode::LineEntry> lines;
+  std::vector<bytecode::Local> locals;  // its locals, then its temporaries
+  std::vector<RoutineFixup> fixups;
+  bool ok = true;  // every label bound
+};
+
+// The body of function `symbol` (its locals already in `symbols`).
+FunctionCode generate_function(const Symbols& symbols, int symbol, const Block& body,
+                               uint32_t end_offset, const Locator& locator, ConstantTable& constants,
+                               bool with_lines);
+
+// The top level, then the functions' code in order (`bodies` per function symbol, null when
+// not kept), the routines and the events. `body_words` and `bodies_ok` tell of the code that was
+// generated but not kept (a check keeps none): the size limit (65) counts it. `with_lines`
+// false leaves the line table empty: for a check, which needs only the diagnostics.
 bytecode::Image generate_program(const Program& program, const Symbols& symbols,
-                                 const Locator& locator, Reporter& reporter, bool with_lines = true);
+                                 const std::vector<const FunctionCode*>& bodies,
+                                 uint32_t body_words, bool bodies_ok, const Locator& locator,
+                                 Reporter& reporter, ConstantTable& constants,
+                                 bool with_lines = true);
 
 // One value a command line shows: the global holding it and, for a pair, the one holding its
 // run-time type (0 int, 1 float).

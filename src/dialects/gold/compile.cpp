@@ -1,10 +1,13 @@
 // The compiler driver: preprocess, check line lengths, lex, parse, check, generate.
 #include "dialects/gold/compile.h"
 
+#include <cstring>
+
 #include "bytecode/peephole.h"
 
 #include "dialects/gold/lexer.h"
 #include "dialects/gold/parser.h"
+#include "dialects/gold/program_compiler.h"
 #include "preproc/preprocess.h"
 #include "support/files.h"
 
@@ -18,18 +21,17 @@ constexpr size_t kMaxLineLength = 128;
 constexpr size_t kMaxCommandLine = 511;
 
 void check_line_lengths(const SourceFile& source, Reporter& reporter) {
-  int line = 1;
-  size_t start = 0;
   const std::string& t = source.text;
-  for (size_t i = 0; i <= t.size(); ++i) {
-    if (i < t.size() && t[i] != '\n') continue;
+  int line = 1;
+  for (size_t start = 0; start <= t.size(); ++line) {
+    const void* nl = std::memchr(t.data() + start, '\n', t.size() - start);
+    const size_t i = nl == nullptr ? t.size() : static_cast<size_t>(static_cast<const char*>(nl) - t.data());
     size_t end = i;
     if (end > start && t[end - 1] == '\r') --end;
     if (end - start > kMaxLineLength) {
       Location where{source.name, line, static_cast<int>(kMaxLineLength) + 1};
       reporter.add(make_error(Error::LineIsTooLong, where));
     }
-    ++line;
     start = i + 1;
   }
 }
@@ -52,26 +54,23 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   CompileResult result;
   preproc::Preprocessed pre;
   DiagnosticList pre_diags;
-  if (options.preprocess) {
+  // Every directive starts with '#': without one the preprocessor would copy the text unchanged.
+  const bool preprocess = options.preprocess && source.text.find('#') != std::string::npos;
+  if (preprocess) {
     preproc::PreprocOptions po;
     po.scheme = "gold";
     // The preprocessor's own defaults map its errors onto Gold's codes (87-96).
     pre = preproc::preprocess(source, po, pre_diags);
-  } else {
-    pre.text = source.text;
   }
-  Locator locator(source.name, pre.text, options.preprocess ? &pre.map : nullptr);
+  const std::string& text = preprocess ? pre.text : source.text;
+  Locator locator(source.name, text, preprocess ? &pre.map : nullptr);
   Reporter reporter(locator);
   for (const Diagnostic& d : pre_diags.items()) reporter.add(d);
   check_line_lengths(source, reporter);
 
-  const std::vector<Token> tokens = lex(pre.text, reporter);
-  AstArena arena;
-  Program program = parse_program(tokens, reporter, arena);
-  if (program.empty && !reporter.has_errors()) reporter.error(Error::EmptyProgram, 0);
-  Symbols symbols = check_program(program, reporter);
+  Lexer lexer(text, reporter);
+  result.image = compile_program(lexer, reporter, locator, !options.check_only);
   if (!reporter.has_errors()) {
-    result.image = generate_program(program, symbols, locator, reporter, !options.check_only);
     result.image.source_name = source.name;
     result.image.created_unix_s = options.created_unix_s;
     if (options.optimize && !options.check_only) bytecode::optimize(result.image);
@@ -112,9 +111,9 @@ CompiledLine compile_line(std::string_view line, const std::vector<KnownGlobal>&
   Locator locator("<command line>", text, nullptr);
   Reporter reporter(locator);
   if (text.size() > kMaxCommandLine) reporter.error(Error::ClauseIsTooLong, 0);
-  const std::vector<Token> tokens = lex(text, reporter);
+  Lexer lexer(text, reporter);
   AstArena arena;
-  Block block = parse_line(tokens, reporter, arena);
+  Block block = parse_line(lexer, reporter, arena);
   check_line(block, known, reporter);
   if (!reporter.has_errors()) result.image = generate_line(block, known, locator, reporter, result.values);
   result.diagnostics = reporter.finish(CompileOptions{}.max_errors);

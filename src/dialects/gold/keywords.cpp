@@ -10,25 +10,42 @@ Keyword keyword_of(std::string_view word) {
     std::string_view text;
     Keyword kw;
   };
+  // Sorted by first letter; kFirst[c - 'a'] is where that letter's words begin.
   static constexpr std::array<Entry, 24> kWords = {{
       {"break", Keyword::Break}, {"case", Keyword::Case}, {"catch", Keyword::Catch},
       {"continue", Keyword::Continue}, {"else", Keyword::Else}, {"elseif", Keyword::Elseif},
       {"end", Keyword::End}, {"exit", Keyword::Exit}, {"float", Keyword::Float},
       {"for", Keyword::For}, {"function", Keyword::Function}, {"global", Keyword::Global},
       {"goto", Keyword::Goto}, {"if", Keyword::If}, {"int", Keyword::Int},
-      {"otherwise", Keyword::Otherwise}, {"reset", Keyword::Reset}, {"return", Keyword::Return},
-      {"switch", Keyword::Switch}, {"try", Keyword::Try}, {"until", Keyword::Until},
-      {"wait", Keyword::Wait}, {"while", Keyword::While}, {"nargout", Keyword::Nargout},
+      {"nargout", Keyword::Nargout}, {"otherwise", Keyword::Otherwise}, {"reset", Keyword::Reset},
+      {"return", Keyword::Return}, {"switch", Keyword::Switch}, {"try", Keyword::Try},
+      {"until", Keyword::Until}, {"wait", Keyword::Wait}, {"while", Keyword::While},
   }};
+  static constexpr auto kFirst = [] {
+    std::array<uint8_t, 27> first{};
+    size_t k = 0;
+    for (size_t c = 0; c < 26; ++c) {
+      first[c] = static_cast<uint8_t>(k);
+      while (k < kWords.size() && static_cast<size_t>(kWords[k].text[0] - 'a') == c) ++k;
+    }
+    first[26] = static_cast<uint8_t>(kWords.size());
+    return first;
+  }();
+  // Most names are no keyword: the length and the first letter decide that without a copy.
   if (word.size() < 2 || word.size() > 9) return Keyword::None;
+  const char c0 = static_cast<char>(word[0] | 0x20);
+  if (c0 < 'a' || c0 > 'z') return Keyword::None;
+  const size_t b = kFirst[static_cast<size_t>(c0 - 'a')];
+  const size_t e = kFirst[static_cast<size_t>(c0 - 'a') + 1];
+  if (b == e) return Keyword::None;
   char lower[10];
   for (size_t i = 0; i < word.size(); ++i) {
     const char c = word[i];
     lower[i] = c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;  // ASCII only
   }
   const std::string_view w(lower, word.size());
-  for (const Entry& e : kWords)  // the first letter first: most names are no keyword
-    if (e.text[0] == w[0] && e.text == w) return e.kw;
+  for (size_t k = b; k < e; ++k)
+    if (kWords[k].text == w) return kWords[k].kw;
   return Keyword::None;
 }
 

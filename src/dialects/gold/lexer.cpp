@@ -1,9 +1,11 @@
-// The Gold lexer.
+// The Gold lexer: a character-class table and one token per call, no allocation.
 #include "dialects/gold/lexer.h"
 
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <string>
 
 namespace uprog::gold {
 
@@ -55,211 +57,244 @@ namespace {
 // The manual (2.7.2, error 52) limits one clause, continuation lines included, to 512 characters.
 constexpr size_t kMaxClause = 512;
 
-bool is_ident_start(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
-bool is_ident_char(char c) { return is_ident_start(c) || (c >= '0' && c <= '9'); }
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_hex(char c) { return is_digit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
+// Character classes, one table lookup per character in the hot loops.
+enum : uint8_t { kIdentStart = 1, kIdentChar = 2, kDigit = 4, kHex = 8, kBlank = 16 };
 
-class Lexer {
- public:
-  Lexer(const std::string& text, Reporter& reporter) : s_(text), r_(reporter) {}
-
-  std::vector<Token> run() {
-    out_.reserve(s_.size() / 3 + 4);
-    while (true) {
-      skip_blank();
-      if (i_ >= s_.size()) break;
-      const char c = s_[i_];
-      if (c == '\n') {
-        newline(i_);
-        ++i_;
-        continue;
-      }
-      if (c == '.' && starts("...")) {
-        continuation();
-        continue;
-      }
-      if (is_digit(c) || (c == '.' && i_ + 1 < s_.size() && is_digit(s_[i_ + 1]))) {
-        number();
-        continue;
-      }
-      if (is_ident_start(c)) {
-        const size_t b = i_;
-        while (i_ < s_.size() && is_ident_char(s_[i_])) ++i_;
-        push(Tok::Ident, b, i_ - b);
-        out_.back().kw = keyword_of(out_.back().text);
-        continue;
-      }
-      if (c == '#' && i_ + 1 < s_.size() &&
-          (s_[i_ + 1] == '#' || s_[i_ + 1] == '@' || is_ident_start(s_[i_ + 1]))) {
-        // "#start" is read as "##start": the manual's own example (2.6) writes it so.
-        const size_t b = i_;
-        const Tok kind = s_[i_ + 1] == '@' ? Tok::AutoLabel : Tok::Label;
-        i_ += is_ident_start(s_[i_ + 1]) ? 1 : 2;
-        const size_t name = i_;
-        while (i_ < s_.size() && is_ident_char(s_[i_])) ++i_;
-        Token t = make(kind, b, i_ - b);
-        t.text = std::string_view(s_).substr(name, i_ - name);
-        out_.push_back(t);
-        continue;
-      }
-      punct();
-    }
-    newline(s_.size());
-    out_.push_back(make(Tok::Eof, s_.size(), 0));
-    return std::move(out_);
+constexpr auto kClass = [] {
+  struct Table {
+    uint8_t c[256] = {};
+  } t;
+  for (int ch = 0; ch < 256; ++ch) {
+    uint8_t k = 0;
+    const bool letter = (ch >= 'A' && ch <= 'Z') || (ch >= 'a' && ch <= 'z') || ch == '_';
+    const bool digit = ch >= '0' && ch <= '9';
+    if (letter) k |= kIdentStart | kIdentChar;
+    if (digit) k |= kIdentChar | kDigit | kHex;
+    if ((ch >= 'a' && ch <= 'f') || (ch >= 'A' && ch <= 'F')) k |= kHex;
+    if (ch == ' ' || ch == '\t' || ch == '\r' || ch == '\f' || ch == '\v') k |= kBlank;
+    t.c[ch] = k;
   }
+  return t;
+}();
 
- private:
-  bool starts(const char* p) const { return s_.compare(i_, std::char_traits<char>::length(p), p) == 0; }
+inline bool is(char c, uint8_t k) { return (kClass.c[static_cast<unsigned char>(c)] & k) != 0; }
+inline bool is_ident_start(char c) { return is(c, kIdentStart); }
+inline bool is_digit(char c) { return is(c, kDigit); }
 
-  Token make(Tok k, size_t b, size_t n) const {
-    Token t;
-    t.kind = k;
-    t.offset = static_cast<uint32_t>(b);
-    t.text = std::string_view(s_).substr(b, n);
+}  // namespace
+
+Token Lexer::make(Tok k, size_t b, size_t n) {
+  Token t;
+  t.kind = k;
+  t.offset = static_cast<uint32_t>(b);
+  t.length = static_cast<uint32_t>(n);
+  st_.last = k;
+  return t;
+}
+
+// The end of a clause: checks its length and makes a Newline token unless one was just made.
+bool Lexer::newline(size_t at, Token& out) {
+  if (at - st_.clause_start > kMaxClause) r_.lex_error(Error::ClauseIsTooLong, st_.clause_start);
+  st_.clause_start = static_cast<uint32_t>(at + 1);
+  if (st_.last == Tok::Newline) return false;
+  out = make(Tok::Newline, at, 0);
+  return true;
+}
+
+// Spaces, tabs, carriage returns and comments; a block comment that spans lines ends the line
+// (true, with the Newline token in `out`).
+bool Lexer::skip_blank(Token& out) {
+  size_t i = st_.pos;
+  const size_t n = s_.size();
+  while (i < n) {
+    const char c = s_[i];
+    if (is(c, kBlank)) {
+      ++i;
+    } else if ((c == '/' || c == '*') && i + 1 < n && s_[i + 1] == c) {  // "//", "**"
+      const void* e = std::memchr(s_.data() + i, '\n', n - i);
+      i = e == nullptr ? n : static_cast<size_t>(static_cast<const char*>(e) - s_.data());
+    } else if (c == '/' && i + 1 < n && s_[i + 1] == '*') {
+      const size_t b = i;
+      const size_t e = s_.find("*/", i + 2);
+      const size_t stop = e == std::string_view::npos ? n : e + 2;
+      const bool spans = std::memchr(s_.data() + b, '\n', stop - b) != nullptr;
+      i = stop;
+      st_.pos = static_cast<uint32_t>(i);
+      if (e == std::string_view::npos) {
+        r_.lex_error(Error::BlockCommentNotFinished, static_cast<uint32_t>(b));
+        return false;
+      }
+      if (spans && newline(b, out)) return true;
+    } else {
+      break;
+    }
+  }
+  st_.pos = static_cast<uint32_t>(i);
+  return false;
+}
+
+Token Lexer::next() {
+  Token out;
+  while (true) {
+    if (skip_blank(out)) return out;
+    size_t i = st_.pos;
+    const size_t n = s_.size();
+    if (i >= n) {
+      if (!st_.at_end) {
+        st_.at_end = true;
+        if (newline(n, out)) return out;
+      }
+      return make(Tok::Eof, n, 0);
+    }
+    const char c = s_[i];
+    if (is_ident_start(c)) {
+      const size_t b = i;
+      while (i < n && is(s_[i], kIdentChar)) ++i;
+      st_.pos = static_cast<uint32_t>(i);
+      out = make(Tok::Ident, b, i - b);
+      out.kw = keyword_of(s_.substr(b, i - b));
+      return out;
+    }
+    if (c == '\n') {
+      st_.pos = static_cast<uint32_t>(i + 1);
+      if (newline(i, out)) return out;
+      continue;
+    }
+    if (is_digit(c) || (c == '.' && i + 1 < n && is_digit(s_[i + 1]))) return number();
+    if (c == '.' && s_.substr(i, 3) == "...") {
+      continuation();
+      continue;
+    }
+    if (c == '#' && i + 1 < n && (s_[i + 1] == '#' || s_[i + 1] == '@' || is_ident_start(s_[i + 1]))) {
+      // "#start" is read as "##start": the manual's own example (2.6) writes it so.
+      const size_t b = i;
+      const Tok kind = s_[i + 1] == '@' ? Tok::AutoLabel : Tok::Label;
+      const uint8_t skip = is_ident_start(s_[i + 1]) ? 1 : 2;
+      i += skip;
+      while (i < n && is(s_[i], kIdentChar)) ++i;
+      st_.pos = static_cast<uint32_t>(i);
+      out = make(kind, b, i - b);
+      out.name_skip = skip;
+      return out;
+    }
+    return punct();
+  }
+}
+
+// "..." joins the next line to this one; what follows it on its own line is a comment.
+void Lexer::continuation() {
+  size_t i = st_.pos;
+  const size_t b = i;
+  const size_t n = s_.size();
+  while (i < n && s_[i] != '\n') ++i;
+  if (i < n) ++i;
+  st_.pos = static_cast<uint32_t>(i);
+  // The manual's error 64: an ellipsis must be followed by another line with something on it.
+  size_t k = i;
+  while (k < n && (s_[k] == ' ' || s_[k] == '\t' || s_[k] == '\r' || s_[k] == '\n')) ++k;
+  if (k >= n) r_.lex_error(Error::ExpressionNotFinished, static_cast<uint32_t>(b));
+}
+
+Token Lexer::number() {
+  size_t i = st_.pos;
+  const size_t b = i;
+  const size_t n = s_.size();
+  if (s_[i] == '0' && i + 1 < n && (s_[i + 1] == 'x' || s_[i + 1] == 'X')) {
+    i += 2;
+    const size_t digits = i;
+    uint64_t v = 0;
+    while (i < n && is(s_[i], kHex)) {
+      const char c = s_[i];
+      const uint64_t d = is_digit(c) ? static_cast<uint64_t>(c - '0')
+                                     : static_cast<uint64_t>((c | 0x20) - 'a' + 10);
+      v = v * 16 + d;
+      if (v > 0xFFFFFFFFull) v = 0x100000000ull;
+      ++i;
+    }
+    st_.pos = static_cast<uint32_t>(i);
+    Token t = make(Tok::Int, b, i - b);
+    if (i == digits || v > 0xFFFFFFFFull) r_.lex_error(Error::BadFormat, static_cast<uint32_t>(b));
+    t.int_value = static_cast<int32_t>(static_cast<uint32_t>(v));
     return t;
   }
-  void push(Tok k, size_t b, size_t n) { out_.push_back(make(k, b, n)); }
-
-  void newline(size_t at) {
-    if (at - clause_start_ > kMaxClause && !clause_reported_) r_.error(Error::ClauseIsTooLong, static_cast<uint32_t>(clause_start_));
-    clause_start_ = at + 1;
-    clause_reported_ = false;
-    if (!out_.empty() && out_.back().kind != Tok::Newline) push(Tok::Newline, at, 0);
+  bool is_float = false;
+  while (i < n && is_digit(s_[i])) ++i;
+  // "1:" and "a.b" are not floats; a dot followed by a second dot starts "...".
+  if (i < n && s_[i] == '.' && s_.substr(i, 3) != "...") {
+    is_float = true;
+    ++i;
+    while (i < n && is_digit(s_[i])) ++i;
   }
-
-  // Spaces, tabs, carriage returns and comments; a block comment that spans lines ends the line.
-  void skip_blank() {
-    while (i_ < s_.size()) {
-      const char c = s_[i_];
-      if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
-        ++i_;
-      } else if ((c == '/' || c == '*') && i_ + 1 < s_.size() && s_[i_ + 1] == c) {  // "//", "**"
-        const size_t e = s_.find('\n', i_);
-        i_ = e == std::string::npos ? s_.size() : e;
-      } else if (c == '/' && i_ + 1 < s_.size() && s_[i_ + 1] == '*') {
-        const size_t b = i_;
-        const size_t e = s_.find("*/", i_ + 2);
-        const size_t stop = e == std::string::npos ? s_.size() : e + 2;
-        bool spans = false;
-        for (size_t k = b; k < stop; ++k) spans = spans || s_[k] == '\n';
-        i_ = stop;
-        if (e == std::string::npos) {
-          r_.error(Error::BlockCommentNotFinished, static_cast<uint32_t>(b));
-          return;
-        }
-        if (spans) newline(b);
-      } else {
-        return;
-      }
-    }
-  }
-
-  // "..." joins the next line to this one; what follows it on its own line is a comment.
-  void continuation() {
-    const size_t b = i_;
-    while (i_ < s_.size() && s_[i_] != '\n') ++i_;
-    if (i_ < s_.size()) ++i_;
-    // The manual's error 64: an ellipsis must be followed by another line with something on it.
-    size_t k = i_;
-    while (k < s_.size() && (s_[k] == ' ' || s_[k] == '\t' || s_[k] == '\r' || s_[k] == '\n')) ++k;
-    if (k >= s_.size()) r_.error(Error::ExpressionNotFinished, static_cast<uint32_t>(b));
-  }
-
-  void number() {
-    const size_t b = i_;
-    if (s_[i_] == '0' && i_ + 1 < s_.size() && (s_[i_ + 1] == 'x' || s_[i_ + 1] == 'X')) {
-      i_ += 2;
-      const size_t digits = i_;
-      uint64_t v = 0;
-      while (i_ < s_.size() && is_hex(s_[i_])) {
-        const char c = s_[i_];
-        const uint64_t d = is_digit(c) ? static_cast<uint64_t>(c - '0')
-                                       : static_cast<uint64_t>((c | 0x20) - 'a' + 10);
-        v = v * 16 + d;
-        if (v > 0xFFFFFFFFull) v = 0x100000000ull;
-        ++i_;
-      }
-      Token t = make(Tok::Int, b, i_ - b);
-      if (i_ == digits || v > 0xFFFFFFFFull) r_.error(Error::BadFormat, static_cast<uint32_t>(b));
-      t.int_value = static_cast<int32_t>(static_cast<uint32_t>(v));
-      out_.push_back(t);
-      return;
-    }
-    bool is_float = false;
-    while (i_ < s_.size() && is_digit(s_[i_])) ++i_;
-    // "1:" and "a.b" are not floats; a dot followed by a second dot starts "...".
-    if (i_ < s_.size() && s_[i_] == '.' && !starts("...")) {
+  if (i < n && (s_[i] == 'e' || s_[i] == 'E')) {
+    size_t k = i + 1;
+    if (k < n && (s_[k] == '+' || s_[k] == '-')) ++k;
+    if (k < n && is_digit(s_[k])) {
       is_float = true;
-      ++i_;
-      while (i_ < s_.size() && is_digit(s_[i_])) ++i_;
+      i = k;
+      while (i < n && is_digit(s_[i])) ++i;
     }
-    if (i_ < s_.size() && (s_[i_] == 'e' || s_[i_] == 'E')) {
-      size_t k = i_ + 1;
-      if (k < s_.size() && (s_[k] == '+' || s_[k] == '-')) ++k;
-      if (k < s_.size() && is_digit(s_[k])) {
-        is_float = true;
-        i_ = k;
-        while (i_ < s_.size() && is_digit(s_[i_])) ++i_;
-      }
-    }
-    if (!is_float) {
-      // Most integers fit: read them here, without a string and strtol.
-      uint64_t v = 0;
-      size_t k = b;
-      while (k < i_ && v <= 2147483647u) v = v * 10 + static_cast<uint64_t>(s_[k++] - '0');
-      if (v <= 2147483647u) {
-        Token t = make(Tok::Int, b, i_ - b);
-        t.int_value = static_cast<int32_t>(v);
-        out_.push_back(t);
-        return;
-      }
-    }
-    const std::string spelling = s_.substr(b, i_ - b);
-    if (!is_float) {
-      const double d = std::strtod(spelling.c_str(), nullptr);
-      // Manual 1.3: an integer beyond the int range is taken as a float.
-      if (d > 2147483647.0) {
-        Token t = make(Tok::Float, b, i_ - b);
-        t.float_value = static_cast<float>(d);
-        out_.push_back(t);
-        return;
-      }
-      Token t = make(Tok::Int, b, i_ - b);
-      t.int_value = static_cast<int32_t>(std::strtol(spelling.c_str(), nullptr, 10));
-      out_.push_back(t);
-      return;
-    }
-    Token t = make(Tok::Float, b, i_ - b);
-    // from_chars rounds as strtod does; out of range it leaves `d` alone, so strtod decides.
-    double d = 0.0;
-    const auto [end, ec] = std::from_chars(spelling.data(), spelling.data() + spelling.size(), d);
-    if (ec != std::errc{} || end != spelling.data() + spelling.size()) d = std::strtod(spelling.c_str(), nullptr);
-    // Manual 1.3: floats live in -1e37 < N < 1e37; anything else is an error.
-    if (!(std::fabs(d) < 1e37)) r_.error(Error::BadFormat, static_cast<uint32_t>(b));
-    t.float_value = std::fabs(d) < 1e37 ? static_cast<float>(d) : 0.0f;
-    out_.push_back(t);
   }
+  st_.pos = static_cast<uint32_t>(i);
+  if (!is_float) {
+    // Most integers fit: read them here, without a string and strtol.
+    uint64_t v = 0;
+    size_t k = b;
+    while (k < i && v <= 2147483647u) v = v * 10 + static_cast<uint64_t>(s_[k++] - '0');
+    if (v <= 2147483647u) {
+      Token t = make(Tok::Int, b, i - b);
+      t.int_value = static_cast<int32_t>(v);
+      return t;
+    }
+  }
+  const std::string spelling(s_.substr(b, i - b));
+  if (!is_float) {
+    const double d = std::strtod(spelling.c_str(), nullptr);
+    // Manual 1.3: an integer beyond the int range is taken as a float.
+    if (d > 2147483647.0) {
+      Token t = make(Tok::Float, b, i - b);
+      t.float_value = static_cast<float>(d);
+      return t;
+    }
+    Token t = make(Tok::Int, b, i - b);
+    t.int_value = static_cast<int32_t>(std::strtol(spelling.c_str(), nullptr, 10));
+    return t;
+  }
+  Token t = make(Tok::Float, b, i - b);
+  // from_chars rounds as strtod does; out of range it leaves `d` alone, so strtod decides.
+  double d = 0.0;
+  const auto [end, ec] = std::from_chars(spelling.data(), spelling.data() + spelling.size(), d);
+  if (ec != std::errc{} || end != spelling.data() + spelling.size()) d = std::strtod(spelling.c_str(), nullptr);
+  // Manual 1.3: floats live in -1e37 < N < 1e37; anything else is an error.
+  if (!(std::fabs(d) < 1e37)) r_.lex_error(Error::BadFormat, static_cast<uint32_t>(b));
+  t.float_value = std::fabs(d) < 1e37 ? static_cast<float>(d) : 0.0f;
+  return t;
+}
 
-  void punct() {
-    const size_t b = i_;
-    auto two = [&](char a, char c) { return s_[i_] == a && i_ + 1 < s_.size() && s_[i_ + 1] == c; };
-    Tok k;
-    size_t n = 2;
-    if (two('<', '<')) k = Tok::Shl;
-    else if (two('>', '>')) k = Tok::Shr;
-    else if (two('<', '=')) k = Tok::Le;
-    else if (two('>', '=')) k = Tok::Ge;
-    else if (two('=', '=')) k = Tok::EqEq;
-    else if (two('!', '=')) k = Tok::Ne;
-    else if (two('&', '&')) k = Tok::AndAnd;
-    else if (two('|', '|')) k = Tok::OrOr;
-    else if (two('+', '+')) k = Tok::PlusPlus;
-    else if (two('-', '-')) k = Tok::MinusMinus;
-    else {
+Token Lexer::punct() {
+  const size_t i = st_.pos;
+  const char c = s_[i];
+  const char d = i + 1 < s_.size() ? s_[i + 1] : '\0';
+  Tok k = Tok::Unknown;
+  size_t n = 2;
+  switch (c) {
+    case '<': k = d == '<' ? Tok::Shl : d == '=' ? Tok::Le : Tok::Lt; break;
+    case '>': k = d == '>' ? Tok::Shr : d == '=' ? Tok::Ge : Tok::Gt; break;
+    case '=': k = d == '=' ? Tok::EqEq : Tok::Assign; break;
+    case '!': k = d == '=' ? Tok::Ne : Tok::Bang; break;
+    case '&': k = d == '&' ? Tok::AndAnd : Tok::Amp; break;
+    case '|': k = d == '|' ? Tok::OrOr : Tok::Pipe; break;
+    case '+': k = d == '+' ? Tok::PlusPlus : Tok::Plus; break;
+    case '-': k = d == '-' ? Tok::MinusMinus : Tok::Minus; break;
+    default: break;
+  }
+  switch (k) {
+    case Tok::Lt: case Tok::Gt: case Tok::Assign: case Tok::Bang: case Tok::Amp: case Tok::Pipe:
+    case Tok::Plus: case Tok::Minus:
       n = 1;
-      switch (s_[i_]) {
+      break;
+    case Tok::Unknown: {
+      n = 1;
+      switch (c) {
         case ';': k = Tok::Semicolon; break;
         case ',': k = Tok::Comma; break;
         case ':': k = Tok::Colon; break;
@@ -267,44 +302,23 @@ class Lexer {
         case ')': k = Tok::RParen; break;
         case '[': k = Tok::LBracket; break;
         case ']': k = Tok::RBracket; break;
-        case '+': k = Tok::Plus; break;
-        case '-': k = Tok::Minus; break;
         case '*': k = Tok::Star; break;
         case '/': k = Tok::Slash; break;
         case '%': k = Tok::Percent; break;
         case '~': k = Tok::Tilde; break;
-        case '!': k = Tok::Bang; break;
-        case '<': k = Tok::Lt; break;
-        case '>': k = Tok::Gt; break;
-        case '&': k = Tok::Amp; break;
-        case '|': k = Tok::Pipe; break;
-        case '=': k = Tok::Assign; break;
         default: {
           // One token for a whole UTF-8 sequence, so that columns stay on the character.
-          k = Tok::Unknown;
-          const auto u = static_cast<unsigned char>(s_[i_]);
-          if (u >= 0xC0) {
-            while (i_ + n < s_.size() && (static_cast<unsigned char>(s_[i_ + n]) & 0xC0) == 0x80) ++n;
+          if (static_cast<unsigned char>(c) >= 0xC0) {
+            while (i + n < s_.size() && (static_cast<unsigned char>(s_[i + n]) & 0xC0) == 0x80) ++n;
           }
         }
       }
+      break;
     }
-    i_ += n;
-    push(k, b, n);
+    default: break;
   }
-
-  const std::string& s_;
-  Reporter& r_;
-  size_t i_ = 0;
-  size_t clause_start_ = 0;
-  bool clause_reported_ = false;
-  std::vector<Token> out_;
-};
-
-}  // namespace
-
-std::vector<Token> lex(const std::string& text, Reporter& reporter) {
-  return Lexer(text, reporter).run();
+  st_.pos = static_cast<uint32_t>(i + n);
+  return make(k, i, n);
 }
 
 }  // namespace uprog::gold

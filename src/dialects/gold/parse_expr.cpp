@@ -39,7 +39,7 @@ ExprPtr Parser::binary(int min_level) {
     const Token& op = next();
     ExprPtr right = binary(level + 1);
     if (!right) return nullptr;
-    ExprPtr b = arena_.expr(ExprKind::Binary, op.offset);
+    ExprPtr b = arena_->expr(ExprKind::Binary, op.offset);
     b->op = op.kind;
     b->lhs = std::move(left);
     b->rhs = std::move(right);
@@ -58,7 +58,7 @@ ExprPtr Parser::unary(bool under_minus) {
     ExprPtr operand = unary(k == Tok::Minus);
     --unary_chain_;
     if (!operand) return nullptr;
-    ExprPtr u = arena_.expr(ExprKind::Unary, op.offset);
+    ExprPtr u = arena_->expr(ExprKind::Unary, op.offset);
     u->op = k;
     u->lhs = std::move(operand);
     return u;
@@ -71,13 +71,13 @@ ExprPtr Parser::primary(bool under_minus) {
   switch (t.kind) {
     case Tok::Int: {
       next();
-      ExprPtr e = arena_.expr(ExprKind::IntLit, t.offset);
+      ExprPtr e = arena_->expr(ExprKind::IntLit, t.offset);
       e->int_value = t.int_value;
       return e;
     }
     case Tok::Float: {
       next();
-      ExprPtr e = arena_.expr(ExprKind::FloatLit, t.offset);
+      ExprPtr e = arena_->expr(ExprKind::FloatLit, t.offset);
       e->float_value = t.float_value;
       return e;
     }
@@ -85,7 +85,7 @@ ExprPtr Parser::primary(bool under_minus) {
       const Keyword k = t.kw;
       if (k == Keyword::Nargout) {
         next();
-        return arena_.expr(ExprKind::Nargout, t.offset);
+        return arena_->expr(ExprKind::Nargout, t.offset);
       }
       if (k != Keyword::None) {
         error(Error::ValueIsExpected, t.offset);
@@ -132,8 +132,8 @@ ExprPtr Parser::primary(bool under_minus) {
 
 // A name, then maybe [index] or (arguments). The checker decides what the name is.
 ExprPtr Parser::ref_after_name(const Token& name) {
-  ExprPtr e = arena_.expr(ExprKind::Ref, name.offset);
-  e->name = std::string(name.text);
+  ExprPtr e = arena_->expr(ExprKind::Ref, name.offset);
+  e->name = text(name);
   if (at(Tok::LBracket)) {
     const Token& open = next();
     e->has_index = true;

@@ -52,15 +52,15 @@ bool Parser::type_keyword(VarType& type) {
 // A name being declared: a letter first, then letters, digits, underscores; not a keyword, not
 // an auto-routine name; at most 12 characters.
 bool Parser::check_name(const Token& t) {
-  if (t.kind != Tok::Ident || t.text.empty() || t.text[0] == '_') {
+  if (t.kind != Tok::Ident || text(t).empty() || text(t)[0] == '_') {
     error(Error::InvalidName, t.offset);
     return false;
   }
-  if (t.kw != Keyword::None || find_auto_routine(t.text) != nullptr) {
+  if (t.kw != Keyword::None || find_auto_routine(text(t)) != nullptr) {
     error(Error::NameIsKeyword, t.offset);
     return false;
   }
-  if (t.text.size() > kMaxNameLength) {
+  if (text(t).size() > kMaxNameLength) {
     error(Error::NameIsTooLong, t.offset);
     return false;
   }
@@ -80,7 +80,7 @@ void Parser::declaration(VarType type, std::vector<VarDecl>& out, bool global_re
       return;
     }
     VarDecl d;
-    d.name = std::string(name.text);
+    d.name = text(name);
     d.type = type;
     d.offset = name.offset;
     d.is_global_redecl = global_redecl;
@@ -147,7 +147,7 @@ bool Parser::param_list(std::vector<Param>& out, Tok close) {
       skip_line();
       return false;
     }
-    out.push_back({std::string(name.text), type, name.offset});
+    out.push_back({text(name), type, name.offset});
     if (at(Tok::Comma)) {
       next();
       continue;
@@ -252,8 +252,8 @@ StmtPtr Parser::statement() {
   const Token& t = peek();
   if (t.kind == Tok::Label || t.kind == Tok::AutoLabel) {
     next();
-    StmtPtr s = arena_.stmt(StmtKind::Label, t.offset);
-    s->name = std::string(t.text);
+    StmtPtr s = arena_->stmt(StmtKind::Label, t.offset);
+    s->name = text(t);
     s->auto_label = t.kind == Tok::AutoLabel;
     if (s->name.empty() || s->name[0] == '_' || (s->name[0] >= '0' && s->name[0] <= '9')) {
       error(Error::InvalidName, t.offset);
@@ -288,7 +288,7 @@ StmtPtr Parser::statement() {
       next();
       ExprPtr c = condition();
       if (!c) return nullptr;
-      StmtPtr s = arena_.stmt(k == Keyword::Until ? StmtKind::Until : StmtKind::Wait, t.offset);
+      StmtPtr s = arena_->stmt(k == Keyword::Until ? StmtKind::Until : StmtKind::Wait, t.offset);
       s->value = std::move(c);
       statement_end();
       finish(*s);
@@ -321,7 +321,7 @@ StmtPtr Parser::statement() {
         if (in_try) error(Error::MisplacedReturn, t.offset);
         sk = StmtKind::Return;
       }
-      StmtPtr s = arena_.stmt(sk, t.offset);
+      StmtPtr s = arena_->stmt(sk, t.offset);
       statement_end();
       finish(*s);
       return s;
@@ -357,7 +357,7 @@ StmtPtr Parser::simple_statement() {
   const Token& first = peek();
   if (first.kind == Tok::LBracket) {
     next();
-    StmtPtr s = arena_.stmt(StmtKind::Assign, first.offset);
+    StmtPtr s = arena_->stmt(StmtKind::Assign, first.offset);
     s->bracketed = true;
     while (true) {
       const Token& name = peek();
@@ -429,7 +429,7 @@ StmtPtr Parser::simple_statement() {
       skip_line();
       return nullptr;
     }
-    StmtPtr s = arena_.stmt(StmtKind::Assign, e->offset);
+    StmtPtr s = arena_->stmt(StmtKind::Assign, e->offset);
     s->targets.push_back(std::move(e));
     s->value = expr();
     if (!s->value) {
@@ -447,7 +447,7 @@ StmtPtr Parser::simple_statement() {
       skip_line();
       return nullptr;
     }
-    StmtPtr s = arena_.stmt(StmtKind::IncDec, e->offset);
+    StmtPtr s = arena_->stmt(StmtKind::IncDec, e->offset);
     s->delta = op.kind == Tok::PlusPlus ? 1 : -1;
     s->targets.push_back(std::move(e));
     statement_end();
@@ -465,7 +465,7 @@ StmtPtr Parser::simple_statement() {
       if (peek(k).kind == Tok::Semicolon) break;
     }
   }
-  StmtPtr s = arena_.stmt(StmtKind::Expr, e->offset);
+  StmtPtr s = arena_->stmt(StmtKind::Expr, e->offset);
   s->value = std::move(e);
   statement_end();
   finish(*s);
@@ -474,7 +474,7 @@ StmtPtr Parser::simple_statement() {
 
 StmtPtr Parser::if_statement() {
   const Token& kw_if = next();
-  StmtPtr s = arena_.stmt(StmtKind::If, kw_if.offset);
+  StmtPtr s = arena_->stmt(StmtKind::If, kw_if.offset);
   ExprPtr c = condition();
   if (c) statement_end();
   finish(*s);
@@ -513,7 +513,7 @@ StmtPtr Parser::if_statement() {
 
 StmtPtr Parser::while_statement() {
   const Token& kw_while = next();
-  StmtPtr s = arena_.stmt(StmtKind::While, kw_while.offset);
+  StmtPtr s = arena_->stmt(StmtKind::While, kw_while.offset);
   s->value = condition();
   if (s->value) statement_end();
   finish(*s);
@@ -534,7 +534,7 @@ StmtPtr Parser::while_statement() {
 // for k = a:b or k = a:step:b (manual 2.12.2); errors 10, 45, 1.
 StmtPtr Parser::for_statement() {
   const Token& kw_for = next();
-  StmtPtr s = arena_.stmt(StmtKind::For, kw_for.offset);
+  StmtPtr s = arena_->stmt(StmtKind::For, kw_for.offset);
   bool ok = true;
   const Token& name = peek();
   if (name.kind != Tok::Ident || name.kw != Keyword::None) {
@@ -606,7 +606,7 @@ StmtPtr Parser::for_statement() {
 // switch / case / otherwise / end (2.11.3): first match wins; errors 41, 42, 48.
 StmtPtr Parser::switch_statement() {
   const Token& kw_switch = next();
-  StmtPtr s = arena_.stmt(StmtKind::Switch, kw_switch.offset);
+  StmtPtr s = arena_->stmt(StmtKind::Switch, kw_switch.offset);
   s->value = condition();
   if (s->value) statement_end();
   finish(*s);
@@ -650,7 +650,7 @@ StmtPtr Parser::switch_statement() {
 
 StmtPtr Parser::try_statement() {
   const Token& kw_try = next();
-  StmtPtr s = arena_.stmt(StmtKind::Try, kw_try.offset);
+  StmtPtr s = arena_->stmt(StmtKind::Try, kw_try.offset);
   alone_on_line(Error::TryCatchNotAlone);
   s->ends_line = true;
   nest_.push_back(Nest::Try);
@@ -676,7 +676,7 @@ StmtPtr Parser::try_statement() {
 // goto ##NAME / goto #@NAME (2.11.2, errors 77) and reset NAME (errors 73).
 StmtPtr Parser::goto_or_reset(bool is_goto) {
   const Token& k = next();
-  StmtPtr s = arena_.stmt(is_goto ? StmtKind::Goto : StmtKind::Reset, k.offset);
+  StmtPtr s = arena_->stmt(is_goto ? StmtKind::Goto : StmtKind::Reset, k.offset);
   const Token& target = peek();
   if (is_goto) {
     if (target.kind != Tok::Label && target.kind != Tok::AutoLabel) {
@@ -693,7 +693,7 @@ StmtPtr Parser::goto_or_reset(bool is_goto) {
     return nullptr;
   }
   next();
-  s->name = std::string(target.text);
+  s->name = text(target);
   s->auto_label = target.kind == Tok::AutoLabel;
   if (!is_goto && at(Tok::LParen)) {
     error(Error::BadFunctionAfterReset, target.offset);  // "reset func(12)"
@@ -706,7 +706,7 @@ StmtPtr Parser::goto_or_reset(bool is_goto) {
 }
 
 // function [int x, int y] = f(int a, float b) / function int Err=Move(int index) / function f()
-void Parser::function_definition(Program& p) {
+void Parser::function_definition(Program& p, FunctionBodySink* on_body) {
   const Token& kw_function = next();
   FunctionDef f;
   f.offset = kw_function.offset;
@@ -727,7 +727,7 @@ void Parser::function_definition(Program& p) {
       skip_line();
       ok = false;
     } else {
-      f.outputs.push_back({std::string(out.text), type, out.offset});
+      f.outputs.push_back({text(out), type, out.offset});
       if (!at(Tok::Assign)) {
         error(Error::BadFunctionFormat, peek().offset);
         skip_line();
@@ -740,7 +740,7 @@ void Parser::function_definition(Program& p) {
   if (ok) {
     const Token& name = peek();
     f.offset = name.offset;
-    if (name.kind == Tok::Ident && find_auto_routine(name.text) != nullptr) {
+    if (name.kind == Tok::Ident && find_auto_routine(text(name)) != nullptr) {
       f.is_auto = true;  // "function AUTOEXEC()" defines the auto-routine
       next();
     } else if (!check_name(name)) {
@@ -749,7 +749,7 @@ void Parser::function_definition(Program& p) {
     } else {
       next();
     }
-    if (ok) f.name = std::string(name.text);
+    if (ok) f.name = text(name);
   }
   if (ok && at(Tok::LParen)) ok = param_list(f.inputs, Tok::RParen);
   if (ok) statement_end();
@@ -763,6 +763,9 @@ void Parser::function_definition(Program& p) {
   }
   f.has_body = true;
   in_function_ = true;
+  FunctionBodySink* sink = on_body;
+  AstArena* const kept = arena_;
+  if (sink) arena_ = &sink->scratch();
   // Locals and global re-declarations open the function (2.6.2, error 29 for later ones).
   while (true) {
     skip_separators();
@@ -784,7 +787,8 @@ void Parser::function_definition(Program& p) {
     break;
   }
   Keyword stopped = Keyword::None;
-  f.body = block(kStopReturn | kStopFunction, stopped);
+  f.body_start = mark();
+  Block body = block(kStopReturn | kStopFunction, stopped);
   in_function_ = false;
   if (stopped == Keyword::Return) {
     const Token& ret = next();
@@ -794,10 +798,29 @@ void Parser::function_definition(Program& p) {
     error(Error::FunctionWithoutReturn, f.offset);
     f.end_offset = peek().offset;
   }
+  arena_ = kept;
+  if (!sink) {
+    f.body = std::move(body);
+    if (ok) p.functions.push_back(std::move(f));
+    return;
+  }
   if (ok) p.functions.push_back(std::move(f));
+  sink->body(p, ok ? &p.functions.back() : nullptr, body);
 }
 
-Program Parser::program() {
+Block Parser::reparse_body(const LexState& start) {
+  lex_.restore(start);
+  ahead_.clear();
+  head_ = 0;
+  nest_.clear();
+  in_function_ = true;
+  Keyword stopped = Keyword::None;
+  Block body = block(kStopReturn | kStopFunction, stopped);
+  in_function_ = false;
+  return body;
+}
+
+Program Parser::program(FunctionBodySink* on_body) {
   Program p;
   bool in_section = false;   // after a label, before its closing return
   bool reported_outside = false;
@@ -809,12 +832,12 @@ Program Parser::program() {
     const Keyword k = kw();
     if (k == Keyword::Function) {
       if (in_section) {
-        StmtPtr r = arena_.stmt(StmtKind::Return, t.offset);  // a routine ends where a function begins
+        StmtPtr r = arena_->stmt(StmtKind::Return, t.offset);  // a routine ends where a function begins
         r->ends_line = true;
         p.top.push_back(std::move(r));
         in_section = false;
       }
-      function_definition(p);
+      function_definition(p, on_body);
       reported_outside = false;
       continue;
     }
@@ -840,7 +863,7 @@ Program Parser::program() {
     if (k == Keyword::Return) {
       const Token& r = next();
       if (!in_section) error(Error::ExpressionOutOfFunction, r.offset);
-      StmtPtr s = arena_.stmt(StmtKind::Return, r.offset);
+      StmtPtr s = arena_->stmt(StmtKind::Return, r.offset);
       statement_end();
       finish(*s);
       if (in_section) p.top.push_back(std::move(s));
@@ -857,7 +880,7 @@ Program Parser::program() {
       for (StmtPtr& s : b) p.top.push_back(std::move(s));
   }
   if (in_section) {
-    StmtPtr r = arena_.stmt(StmtKind::Return, static_cast<uint32_t>(peek().offset));
+    StmtPtr r = arena_->stmt(StmtKind::Return, static_cast<uint32_t>(peek().offset));
     r->ends_line = true;
     p.top.push_back(std::move(r));
   }
@@ -872,7 +895,7 @@ Block Parser::line() {
     for (StmtPtr& s : part) b.push_back(std::move(s));
     if (at(Tok::Eof)) break;
     const Token& r = next();  // a return on the command line ends it
-    StmtPtr s = arena_.stmt(StmtKind::Return, r.offset);
+    StmtPtr s = arena_->stmt(StmtKind::Return, r.offset);
     b.push_back(std::move(s));
   }
   return b;
@@ -880,12 +903,16 @@ Block Parser::line() {
 
 }  // namespace detail
 
-Program parse_program(const std::vector<Token>& tokens, Reporter& reporter, AstArena& arena) {
-  return detail::Parser(tokens, reporter, arena).program();
+Program parse_program(Lexer& lexer, Reporter& reporter, AstArena& arena, FunctionBodySink* on_body) {
+  return detail::Parser(lexer, reporter, arena).program(on_body);
 }
 
-Block parse_line(const std::vector<Token>& tokens, Reporter& reporter, AstArena& arena) {
-  return detail::Parser(tokens, reporter, arena).line();
+Block reparse_body(Lexer& lexer, Reporter& reporter, AstArena& arena, const FunctionDef& f) {
+  return detail::Parser(lexer, reporter, arena).reparse_body(f.body_start);
+}
+
+Block parse_line(Lexer& lexer, Reporter& reporter, AstArena& arena) {
+  return detail::Parser(lexer, reporter, arena).line();
 }
 
 }  // namespace uprog::gold

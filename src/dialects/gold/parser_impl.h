@@ -5,6 +5,7 @@
 
 #include "dialects/gold/ast.h"
 #include "dialects/gold/keywords.h"
+#include "dialects/gold/lexer.h"
 #include "dialects/gold/reporter.h"
 #include "dialects/gold/token.h"
 
@@ -28,11 +29,15 @@ enum Stop : unsigned {
 
 class Parser {
  public:
-  Parser(const std::vector<Token>& tokens, Reporter& reporter, AstArena& arena)
-      : t_(tokens), r_(reporter), arena_(arena) {}
+  Parser(Lexer& lexer, Reporter& reporter, AstArena& arena)
+      : lex_(lexer), r_(reporter), arena_(&arena) {}
 
-  Program program();
+  // `on_body`, when set, receives each function's body as soon as it is parsed (and the tree
+  // keeps no body); without it every body stays in the tree.
+  Program program(FunctionBodySink* on_body = nullptr);
   Block line();
+  // A function body again, from where the first parse began it (FunctionDef::body_start).
+  Block reparse_body(const LexState& start);
 
   // Expressions (parse_expr.cpp). A null result means an error was reported.
   ExprPtr expr();
@@ -53,7 +58,7 @@ class Parser {
   StmtPtr switch_statement();
   StmtPtr try_statement();
   StmtPtr goto_or_reset(bool is_goto);
-  void function_definition(Program& p);
+  void function_definition(Program& p, FunctionBodySink* on_body);
   bool param_list(std::vector<Param>& out, Tok close);
   bool type_keyword(VarType& type);
   void declaration(VarType type, std::vector<VarDecl>& out, bool global_redecl, bool local);
@@ -64,27 +69,36 @@ class Parser {
   void finish(Stmt& s);
 
  public:
-  // Tokens.
-  const Token& peek(size_t k = 0) const {
-    const size_t i = pos_ + k;
-    return i < t_.size() ? t_[i] : t_.back();
+  // Tokens, by value: the lookahead buffer refills as the parser moves on.
+  Token peek(size_t k = 0) {
+    while (ahead_.size() - head_ <= k) ahead_.push_back({lex_.state(), lex_.next()});
+    return ahead_[head_ + k].token;
   }
-  const Token& next() {
-    const Token& t = peek();
-    if (pos_ < t_.size() - 1) ++pos_;
+  Token next() {
+    const Token t = peek();
+    if (t.kind != Tok::Eof && ++head_ == ahead_.size()) {
+      ahead_.clear();
+      head_ = 0;
+    }
     return t;
   }
-  bool at(Tok k) const { return peek().kind == k; }
-  Keyword kw(size_t k = 0) const {
-    const Token& t = peek(k);
+  // The lexer's state before the next token.
+  LexState mark() {
+    peek();
+    return ahead_[head_].before;
+  }
+  std::string_view text(const Token& t) const { return t.text(lex_.text()); }
+  bool at(Tok k) { return peek().kind == k; }
+  Keyword kw(size_t k = 0) {
+    const Token t = peek(k);
     return t.kind == Tok::Ident ? t.kw : Keyword::None;
   }
-  bool at_kw(Keyword k) const { return kw() == k; }
-  bool at_statement_end() const {
+  bool at_kw(Keyword k) { return kw() == k; }
+  bool at_statement_end() {
     const Tok k = peek().kind;
     return k == Tok::Newline || k == Tok::Semicolon || k == Tok::Comma || k == Tok::Eof;
   }
-  bool at_line_end() const { return at(Tok::Newline) || at(Tok::Eof); }
+  bool at_line_end() { return at(Tok::Newline) || at(Tok::Eof); }
   void skip_line() {
     while (!at_line_end()) next();
   }
@@ -93,10 +107,15 @@ class Parser {
   }
   void error(Error e, uint32_t offset) { r_.error(e, offset); }
 
-  const std::vector<Token>& t_;
+  struct Ahead {
+    LexState before;
+    Token token;
+  };
+  Lexer& lex_;
   Reporter& r_;
-  AstArena& arena_;
-  size_t pos_ = 0;
+  AstArena* arena_;
+  std::vector<Ahead> ahead_;
+  size_t head_ = 0;
   std::vector<Nest> nest_;
   bool in_function_ = false;
   int paren_depth_ = 0;

@@ -5,14 +5,12 @@
 
 namespace uprog::gold {
 
-Locator::Locator(std::string file, const std::string& text, const preproc::SourceMap* map)
-    : file_(std::move(file)), map_(map) {
-  line_starts_.push_back(0);
-  for (size_t i = text.find('\n'); i != std::string::npos; i = text.find('\n', i + 1))
-    line_starts_.push_back(static_cast<uint32_t>(i + 1));
-}
-
 int Locator::text_line(uint32_t offset) const {
+  if (line_starts_.empty()) {
+    line_starts_.push_back(0);
+    for (size_t i = text_.find('\n'); i != std::string_view::npos; i = text_.find('\n', i + 1))
+      line_starts_.push_back(static_cast<uint32_t>(i + 1));
+  }
   auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
   return static_cast<int>(it - line_starts_.begin());
 }
@@ -45,13 +43,22 @@ Location Locator::locate(uint32_t offset) const {
 }
 
 void Reporter::error(Error e, uint32_t offset, std::string detail) {
+  add_pending(e, stage_, offset, std::move(detail));
+}
+
+void Reporter::lex_error(Error e, uint32_t offset) { add_pending(e, Stage::Lex, offset, {}); }
+
+void Reporter::add_pending(Error e, Stage stage, uint32_t offset, std::string detail) {
+  if (muted_) return;
   // One error per place is enough: recovery may meet the same bad token twice.
   for (const Pending& p : pending_)
     if (p.offset == offset && p.code == e) return;
-  pending_.push_back({e, offset, std::move(detail)});
+  pending_.push_back({e, stage, offset, std::move(detail)});
 }
 
 std::vector<Diagnostic> Reporter::finish(size_t limit) {
+  std::stable_sort(pending_.begin(), pending_.end(),
+                   [](const Pending& a, const Pending& b) { return a.stage < b.stage; });
   std::vector<Diagnostic> all = std::move(located_);
   for (Pending& p : pending_) {
     all.push_back(make_error(p.code, locator_.locate(p.offset), std::move(p.detail)));

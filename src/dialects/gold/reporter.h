@@ -3,6 +3,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "dialects/gold/errors.h"
@@ -15,7 +16,9 @@ namespace uprog::gold {
 class Locator {
  public:
   // `map` may be null: then offsets are located in `text` itself, named `file`.
-  Locator(std::string file, const std::string& text, const preproc::SourceMap* map);
+  // `text` must outlive the locator.
+  Locator(std::string file, std::string_view text, const preproc::SourceMap* map)
+      : file_(std::move(file)), text_(text), map_(map) {}
   // Inside (or just past) a macro expansion: where the macro was used.
   Location locate(uint32_t offset) const;
   // A note naming the macro expansion `offset` lies in, if any.
@@ -27,14 +30,26 @@ class Locator {
   const preproc::Expansion* expansion(uint32_t offset) const;
 
   std::string file_;
+  std::string_view text_;
   const preproc::SourceMap* map_;
-  std::vector<uint32_t> line_starts_;
+  // Found on the first question: a compile without errors or line table never asks.
+  mutable std::vector<uint32_t> line_starts_;
 };
+
+// The compiler's stages, in the order they ran before the front end streamed: errors at one place
+// are listed in this order, although the lexer now runs interleaved with the parser and the
+// checker with both.
+enum class Stage : uint8_t { Lex, Parse, Check };
 
 class Reporter {
  public:
   explicit Reporter(const Locator& locator) : locator_(locator) {}
+  // An error of the current stage (set_stage; Parse at first).
   void error(Error e, uint32_t offset, std::string detail = {});
+  void lex_error(Error e, uint32_t offset);
+  void set_stage(Stage s) { stage_ = s; }
+  // While muted, errors are dropped: a second parse of text already parsed once.
+  void set_muted(bool muted) { muted_ = muted; }
   // Errors that already have a place (from the preprocessor or the line-length check).
   void add(Diagnostic d) { located_.push_back(std::move(d)); }
   size_t count() const { return pending_.size() + located_.size(); }
@@ -45,10 +60,15 @@ class Reporter {
  private:
   struct Pending {
     Error code;
+    Stage stage;
     uint32_t offset;
     std::string detail;
   };
+  void add_pending(Error e, Stage stage, uint32_t offset, std::string detail);
+
   const Locator& locator_;
+  Stage stage_ = Stage::Parse;
+  bool muted_ = false;
   std::vector<Pending> pending_;
   std::vector<Diagnostic> located_;
 };
