@@ -45,9 +45,13 @@ constexpr CompareFamily kIntCompares[] = {
     {Op::GEI, Op::JGEI, Op::JLTI, Op::JGELL, Op::JLTLL, Op::JGELK, Op::JLTLK},
 };
 // Float comparisons fuse only with JZ: "jump unless" keeps NaN's answers exact.
-constexpr std::pair<Op, Op> kFloatCompares[] = {
-    {Op::EQF, Op::JNEQF}, {Op::NEF, Op::JNNEF}, {Op::LTF, Op::JNLTF},
-    {Op::LEF, Op::JNLEF}, {Op::GTF, Op::JNGTF}, {Op::GEF, Op::JNGEF},
+struct FloatCompareFamily {
+  Op compare, jump_unless, locals_unless, constant_unless;
+};
+constexpr FloatCompareFamily kFloatCompares[] = {
+    {Op::EQF, Op::JNEQF, Op::JNEQFLL, Op::JNEQFLK}, {Op::NEF, Op::JNNEF, Op::JNNEFLL, Op::JNNEFLK},
+    {Op::LTF, Op::JNLTF, Op::JNLTFLL, Op::JNLTFLK}, {Op::LEF, Op::JNLEF, Op::JNLEFLL, Op::JNLEFLK},
+    {Op::GTF, Op::JNGTF, Op::JNGTFLL, Op::JNGTFLK}, {Op::GEF, Op::JNGEF, Op::JNGEFLL, Op::JNGEFLK},
 };
 
 bool fits_int16(int32_t v) { return v >= -32768 && v <= 32767; }
@@ -79,15 +83,27 @@ class Fuser {
   static bool is_branch(Op op) { return op == Op::JZ || op == Op::JNZ; }
 
   // LDL a; LDL b | PUSHI k; <int compare>; JZ/JNZ T
+  // LDL a; LDL b | PUSHK k; <float compare>; JZ T
   std::optional<std::pair<Instr, size_t>> compare_locals(size_t i) const {
     if (!free(i, 3) || at(i).op != Op::LDL || !is_branch(at(i + 3).op)) return std::nullopt;
     const Instr& second = at(i + 1);
+    // Both halves of a packed operand hold 16 bits: a local or a constant's index.
+    const bool second_packs = (second.op == Op::LDL || second.op == Op::PUSHK) && second.a <= 0xFFFF;
+    if (at(i).a > 0xFFFF) return std::nullopt;
+    for (const auto& f : kFloatCompares) {
+      if (at(i + 2).op != f.compare || at(i + 3).op != Op::JZ) continue;
+      if (!second_packs) return std::nullopt;
+      if (second.op == Op::LDL)
+        return std::pair{Instr{at(i).pc, f.locals_unless, at(i + 3).a, pack_locals(at(i).a, second.a)},
+                         size_t{4}};
+      return std::pair{Instr{at(i).pc, f.constant_unless, at(i + 3).a, pack_locals(at(i).a, second.a)},
+                       size_t{4}};
+    }
     for (const auto& f : kIntCompares) {
       if (at(i + 2).op != f.compare) continue;
       const bool jump_if_true = at(i + 3).op == Op::JNZ;
       const uint32_t local = at(i).a;
-      if (local > 0xFFFF) return std::nullopt;
-      if (second.op == Op::LDL && second.a <= 0xFFFF) {
+      if (second.op == Op::LDL && second_packs) {
         return std::pair{Instr{at(i).pc, jump_if_true ? f.locals_true : f.locals_false,
                                at(i + 3).a, pack_locals(local, second.a)},
                          size_t{4}};
@@ -111,9 +127,9 @@ class Fuser {
                          size_t{2}};
     }
     if (jump_if_true) return std::nullopt;
-    for (const auto& [compare, jump_unless] : kFloatCompares) {
-      if (at(i).op == compare)
-        return std::pair{Instr{at(i).pc, jump_unless, at(i + 1).a, 0}, size_t{2}};
+    for (const auto& f : kFloatCompares) {
+      if (at(i).op == f.compare)
+        return std::pair{Instr{at(i).pc, f.jump_unless, at(i + 1).a, 0}, size_t{2}};
     }
     return std::nullopt;
   }

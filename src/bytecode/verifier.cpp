@@ -87,6 +87,9 @@ class Verifier {
       if (word_op(word) == Op::CMPD && a > 5) return fail(VerifyError::BadOperand, pc);
       if (info.b == Operand::Const && image_.code[pc + 1] >= image_.constants.size())
         return fail(VerifyError::BadConstant, pc);
+      if (info.b == Operand::LocalConst &&
+          bytecode::packed_second(image_.code[pc + 1]) >= image_.constants.size())
+        return fail(VerifyError::BadConstant, pc);
       if (word_op(word) == Op::CALL) {
         const RoutineRecord callee = image_.routines[a];
         if (image_.code[pc + 1] > callee.outputs) return fail(VerifyError::BadOperand, pc);
@@ -128,7 +131,7 @@ class Verifier {
     if (info.a == Operand::Local && a >= locals) return fail(VerifyError::BadLocal, pc);
     if (info.b == Operand::Local && image_.code[pc + 1] >= locals)
       return fail(VerifyError::BadLocal, pc);
-    if (info.b == Operand::LocalPair || info.b == Operand::LocalImm) {
+    if (info.b == Operand::LocalPair || info.b == Operand::LocalImm || info.b == Operand::LocalConst) {
       const uint32_t b = image_.code[pc + 1];
       if (bytecode::packed_first(b) >= locals) return fail(VerifyError::BadLocal, pc);
       if (info.b == Operand::LocalPair && bytecode::packed_second(b) >= locals)

@@ -553,6 +553,21 @@ op_REMLK:
     ip = a op bytecode::packed_imm(pair) ? code + A() : ip + 2;                \
     DISPATCH();                                                                \
   }
+// Float comparisons jump "unless" (see peephole.cpp): NaN compares false and falls through.
+#define JUMP_UNLESS_FLOATS(a_expr, b_expr, op)                                 \
+  {                                                                            \
+    const uint32_t pair = B();                                                 \
+    const float a = a_expr;                                                    \
+    const float b = b_expr;                                                    \
+    ip = !(a op b) ? code + A() : ip + 2;                                      \
+    DISPATCH();                                                                \
+  }
+#define JUMP_UNLESS_LOCALS(op)                                                 \
+  JUMP_UNLESS_FLOATS(locals[bytecode::packed_first(pair)].f,                   \
+                     locals[bytecode::packed_second(pair)].f, op)
+#define JUMP_UNLESS_LOCAL_CONST(op)                                            \
+  JUMP_UNLESS_FLOATS(locals[bytecode::packed_first(pair)].f,                   \
+                     constants_[bytecode::packed_second(pair)].f, op)
 #define JUMP_COMPARE(type, field, cond)                                        \
   {                                                                            \
     const type a = sp[-2].field;                                               \
@@ -585,9 +600,24 @@ op_JNLTF: JUMP_COMPARE(float, f, !(a < b))
 op_JNLEF: JUMP_COMPARE(float, f, !(a <= b))
 op_JNGTF: JUMP_COMPARE(float, f, !(a > b))
 op_JNGEF: JUMP_COMPARE(float, f, !(a >= b))
+op_JNEQFLL: JUMP_UNLESS_LOCALS(==)
+op_JNNEFLL: JUMP_UNLESS_LOCALS(!=)
+op_JNLTFLL: JUMP_UNLESS_LOCALS(<)
+op_JNLEFLL: JUMP_UNLESS_LOCALS(<=)
+op_JNGTFLL: JUMP_UNLESS_LOCALS(>)
+op_JNGEFLL: JUMP_UNLESS_LOCALS(>=)
+op_JNEQFLK: JUMP_UNLESS_LOCAL_CONST(==)
+op_JNNEFLK: JUMP_UNLESS_LOCAL_CONST(!=)
+op_JNLTFLK: JUMP_UNLESS_LOCAL_CONST(<)
+op_JNLEFLK: JUMP_UNLESS_LOCAL_CONST(<=)
+op_JNGTFLK: JUMP_UNLESS_LOCAL_CONST(>)
+op_JNGEFLK: JUMP_UNLESS_LOCAL_CONST(>=)
 #undef JUMP_LOCALS
 #undef JUMP_LOCAL_IMM
 #undef JUMP_COMPARE
+#undef JUMP_UNLESS_FLOATS
+#undef JUMP_UNLESS_LOCALS
+#undef JUMP_UNLESS_LOCAL_CONST
 op_JMPEOL:
   ip = code + A();
   if (--lines == 0) {

@@ -235,5 +235,66 @@ leave:
   expect_same_behaviour(text, "locals");
 }
 
+// `if (a < b)` and `if (a >= 0.5)` on float locals: one instruction each, NaN included (q).
+TEST(Peephole, FusesFloatComparesOnLocals) {
+  const char* text = R"(
+.global int "count" 1
+.routine function "main" in=0 out=0 entry=main
+.local float "a"
+.local float "b"
+.local float "q"
+main:
+  PUSHK 0
+  STL 0
+  PUSHK 1
+  STL 1
+  PUSHK 2
+  STL 2
+  LDL 0
+  LDL 1
+  LTF
+  JZ skip1
+  PUSHI 1
+  STG count
+skip1:
+  LDL 2
+  PUSHK 0
+  GEF
+  JZ skip2
+  PUSHI 2
+  STG count
+skip2:
+  LDL 0
+  PUSHK 0
+  GEF
+  JZ skip3
+  LDG count
+  PUSHI 10
+  ADDI
+  STG count
+skip3:
+  RET
+.const float 0.5
+.const float 4.0
+.const float bits 2143289344
+)";
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(text));
+  bytecode::Image image = p.image;
+  bytecode::optimize(image);
+  const std::vector<Op> expected = {Op::PUSHK, Op::STL, Op::PUSHK, Op::STL, Op::PUSHK, Op::STL,
+                                    Op::JNLTFLL, Op::PUSHI, Op::STG,   // a < b
+                                    Op::JNGEFLK, Op::PUSHI, Op::STG,   // q >= 0.5: NaN, skipped
+                                    Op::JNGEFLK, Op::LDG, Op::PUSHI, Op::ADDI, Op::STG,  // a >= 0.5
+                                    Op::RET};
+  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  expect_same_behaviour(text, "float compares");
+  LoadedProgram fused;
+  ASSERT_TRUE(fused.load(bytecode::disassemble(image)));
+  fused.machine.start(0, 0);
+  fused.run_to_end();
+  EXPECT_EQ(fused.global("count", 0).i, 11);
+}
+
 }  // namespace
 }  // namespace uprog::test
