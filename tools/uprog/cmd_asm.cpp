@@ -12,8 +12,7 @@ namespace uprog::cli {
 
 namespace {
 
-void add_asm(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("asm", "Assemble uprog assembly into a binary image");
+void add_asm(CLI::App* cmd, Action& action) {
   auto input = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>();
   cmd->add_option("FILE", *input, "assembly source")->required();
@@ -43,8 +42,7 @@ void add_asm(CLI::App& app, Action& action) {
   });
 }
 
-void add_disasm(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("disasm", "Print a binary image as uprog assembly");
+void add_disasm(CLI::App* cmd, Action& action) {
   auto input = std::make_shared<std::string>();
   cmd->add_option("FILE", *input, "binary image (.upi)")->required();
   cmd->callback([&action, input] {
@@ -62,8 +60,8 @@ void add_disasm(CLI::App& app, Action& action) {
   });
 }
 
-const Subcommand kAsm(add_asm);
-const Subcommand kDisasm(add_disasm);
+const Subcommand kAsm("asm", "Assemble uprog assembly into a binary image", add_asm);
+const Subcommand kDisasm("disasm", "Print a binary image as uprog assembly", add_disasm);
 
 }  // namespace
 }  // namespace uprog::cli

@@ -14,8 +14,7 @@
 namespace uprog::cli {
 namespace {
 
-void add_build(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("build", "Compile a Gold source into an image");
+void add_build(CLI::App* cmd, Action& action) {
   auto input = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>();
   auto emit = std::make_shared<std::string>("image");
@@ -47,7 +46,7 @@ void add_build(CLI::App& app, Action& action) {
   });
 }
 
-const Subcommand kBuild(add_build);
+const Subcommand kBuild("build", "Compile a Gold source into an image", add_build);
 
 }  // namespace
 }  // namespace uprog::cli

@@ -12,8 +12,7 @@
 namespace uprog::cli {
 namespace {
 
-void add_check(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("check", "Compile Gold sources and report diagnostics");
+void add_check(CLI::App* cmd, Action& action) {
   auto files = std::make_shared<std::vector<std::string>>();
   auto format = std::make_shared<std::string>("text");
   cmd->add_option("FILE", *files, "Gold source files")->required();
@@ -36,7 +35,7 @@ void add_check(CLI::App& app, Action& action) {
   });
 }
 
-const Subcommand kCheck(add_check);
+const Subcommand kCheck("check", "Compile Gold sources and report diagnostics", add_check);
 
 }  // namespace
 }  // namespace uprog::cli

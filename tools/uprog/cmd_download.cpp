@@ -151,8 +151,7 @@ int run_download(const DownloadOptions& options) {
   return 0;
 }
 
-void add_download(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("download", "Download a program into a running drive (uprog sim)");
+void add_download(CLI::App* cmd, Action& action) {
   auto options = std::make_shared<DownloadOptions>();
   cmd->add_option("ADDRESS", options->address, "HOST:PORT of the drive (uprog sim prints it)")->required();
   cmd->add_option("FILE", options->file, "Gold source, or a .upi image")->required();
@@ -161,7 +160,7 @@ void add_download(CLI::App& app, Action& action) {
   cmd->callback([&action, options] { action = [options] { return run_download(*options); }; });
 }
 
-const Subcommand kDownload(add_download);
+const Subcommand kDownload("download", "Download a program into a running drive (uprog sim)", add_download);
 
 }  // namespace
 }  // namespace uprog::cli

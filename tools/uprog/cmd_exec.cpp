@@ -110,8 +110,7 @@ int run(const std::string& path, const std::string& entry) {
   return failed ? 1 : 0;
 }
 
-void add_exec(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("exec", "Run an image or assembly file on the bare VM");
+void add_exec(CLI::App* cmd, Action& action) {
   auto input = std::make_shared<std::string>();
   auto entry = std::make_shared<std::string>("main");
   cmd->add_option("FILE", *input, "image (.upi) or assembly (.s)")->required();
@@ -119,7 +118,7 @@ void add_exec(CLI::App& app, Action& action) {
   cmd->callback([&action, input, entry] { action = [input, entry] { return run(*input, *entry); }; });
 }
 
-const Subcommand kExec(add_exec);
+const Subcommand kExec("exec", "Run an image or assembly file on the bare VM", add_exec);
 
 }  // namespace
 }  // namespace uprog::cli

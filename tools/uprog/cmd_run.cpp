@@ -203,8 +203,7 @@ int run(const RunOptions& o) {
   return run_time_error ? 3 : 0;
 }
 
-void add_run(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("run", "Run a Gold program on a fresh simulated drive in virtual time");
+void add_run(CLI::App* cmd, Action& action) {
   auto o = std::make_shared<RunOptions>();
   cmd->add_option("FILE", o->file, "Gold source file")->required();
   cmd->add_option("--entry", o->entry, "function or label to start at (default main, else AUTOEXEC)");
@@ -221,7 +220,7 @@ void add_run(CLI::App& app, Action& action) {
   cmd->callback([&action, o] { action = [o] { return run(*o); }; });
 }
 
-const Subcommand kRun(add_run);
+const Subcommand kRun("run", "Run a Gold program on a fresh simulated drive in virtual time", add_run);
 
 }  // namespace
 }  // namespace uprog::cli

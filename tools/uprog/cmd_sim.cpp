@@ -173,8 +173,7 @@ int run_sim(const SimOptions&) {
 
 #endif
 
-void add_sim(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("sim", "Serve the simulated drive over TCP and/or a pty");
+void add_sim(CLI::App* cmd, Action& action) {
   auto options = std::make_shared<SimOptions>();
   cmd->add_option("--listen", options->listen,
                   "HOST:PORT to listen on (default 127.0.0.1:5025; port 0 picks a free one)");
@@ -186,7 +185,7 @@ void add_sim(CLI::App& app, Action& action) {
   cmd->callback([&action, options] { action = [options] { return run_sim(*options); }; });
 }
 
-const Subcommand kSim(add_sim);
+const Subcommand kSim("sim", "Serve the simulated drive over TCP and/or a pty", add_sim);
 
 }  // namespace
 }  // namespace uprog::cli

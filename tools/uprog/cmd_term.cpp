@@ -133,8 +133,7 @@ int run_term(const TermOptions& options) {
   return options.fail_on_error && connection.errors > 0 ? 4 : 0;
 }
 
-void add_term(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("term", "Talk to a drive over TCP (interactive, or stdin piped)");
+void add_term(CLI::App* cmd, Action& action) {
   auto options = std::make_shared<TermOptions>();
   cmd->add_option("ADDRESS", options->address, "HOST:PORT of the drive (uprog sim prints it)")
       ->required();
@@ -144,7 +143,7 @@ void add_term(CLI::App& app, Action& action) {
   cmd->callback([&action, options] { action = [options] { return run_term(*options); }; });
 }
 
-const Subcommand kTerm(add_term);
+const Subcommand kTerm("term", "Talk to a drive over TCP (interactive, or stdin piped)", add_term);
 
 }  // namespace
 }  // namespace uprog::cli

@@ -12,8 +12,7 @@
 namespace uprog::cli {
 namespace {
 
-void add_transcript(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("transcript", "Replay transcripts on a simulated drive and check the answers");
+void add_transcript(CLI::App* cmd, Action& action) {
   auto files = std::make_shared<std::vector<std::string>>();
   auto quiet = std::make_shared<bool>(false);
   cmd->add_option("FILE", *files, "transcript files (shared/spec/transcript.md)")->required();
@@ -35,7 +34,7 @@ void add_transcript(CLI::App& app, Action& action) {
   });
 }
 
-const Subcommand kTranscript(add_transcript);
+const Subcommand kTranscript("transcript", "Replay transcripts on a simulated drive and check the answers", add_transcript);
 
 }  // namespace
 }  // namespace uprog::cli

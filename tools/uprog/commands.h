@@ -9,13 +9,18 @@ namespace uprog::cli {
 
 // The action of the chosen subcommand returns the process's exit code.
 using Action = std::function<int()>;
-// Adds the subcommand to `app`; its callback stores what to run in `action`.
-using AddSubcommand = void (*)(CLI::App& app, Action& action);
-
-std::vector<AddSubcommand>& subcommands();
+// Adds the subcommand's options to `cmd`; its callback stores what to run in `action`.
+using AddOptions = void (*)(CLI::App* cmd, Action& action);
 
 struct Subcommand {
-  explicit Subcommand(AddSubcommand add) { subcommands().push_back(add); }
+  const char* name;  // what the user types: `uprog <name> ...`
+  const char* description;
+  AddOptions add_options;
+  Subcommand(const char* name_, const char* description_, AddOptions add_options_)
+      : name(name_), description(description_), add_options(add_options_) {
+    registry().push_back(this);
+  }
+  static std::vector<const Subcommand*>& registry();
 };
 
 }  // namespace uprog::cli
