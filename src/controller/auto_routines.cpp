@@ -67,6 +67,7 @@ int AutoRoutines::precedence(uint32_t event) {
 }
 
 void AutoRoutines::update_active(const vm::Machine& machine, uint32_t thread) {
+  if (active_.empty()) return;
   const vm::ThreadStatus status = machine.status(thread);
   while (!active_.empty()) {
     const Active& a = active_.back();

@@ -49,6 +49,8 @@ class AutoRoutines {
   void entered_perr(const vm::Machine& machine, uint32_t thread);
   bool perr_active() const;
   bool perr_block() const { return perr_block_; }
+  // No event pending and no auto-routine active: update_active and take_next have nothing to do.
+  bool quiet() const { return pending_ == 0 && active_.empty(); }
 
  private:
   struct Active {

@@ -20,7 +20,7 @@ void Controller::Impl::advance(uint64_t duration_us) {
 
 void Controller::Impl::servo_cycle() {
   const uint32_t drive_events = axis->step();
-  if (!machine) return;
+  if (!machine || drive_events == 0) return;
   const uint32_t events = auto_events_of_drive_events(drive_events);
   for (uint32_t e = 0; e < kAutoEventCount; ++e) {
     if ((events >> e) & 1u) autos.raise(e);
@@ -28,6 +28,7 @@ void Controller::Impl::servo_cycle() {
 }
 
 void Controller::Impl::dispatch_auto_routines() {
+  if (autos.quiet()) return;  // the usual servo cycle: nothing pending, nothing active
   // A halted program takes no auto-routines until XC; they stay pending.
   const vm::ThreadStatus status = machine->status(kProgramThread);
   if (status == vm::ThreadStatus::Halted || status == vm::ThreadStatus::AtBreakpoint) return;

@@ -14,7 +14,8 @@ double floor_mod(double a, double m) { return a - m * std::floor(a / m); }
 
 }  // namespace
 
-Axis::Axis(const MotorModel& motor) : motor_(motor) {
+Axis::Axis(const MotorModel& motor)
+    : motor_(motor), accel_per_amp_counts_per_s2_(motor.accel_per_amp_counts_per_s2()) {
   smooth_position_.reset(1, 0.0);
   smooth_velocity_.reset(1, 0.0);
   smooth_accel_.reset(1, 0.0);
@@ -140,6 +141,7 @@ void Axis::set_jog_velocity(int32_t velocity_counts_per_s) {
 
 void Axis::start_profile(const Profile& profile, bool stopping) {
   profile_ = profile;
+  profile_duration_s_ = profile.duration_s();
   stopping_ = stopping;
   profile_start_cycle_ = cycles_;
   if (!moving_) {
@@ -265,6 +267,10 @@ uint32_t Axis::scan_inputs() {
   for (int n = 1; n <= kInputCount; ++n) {
     const int32_t logic = params_.input_logic[n - 1];
     const bool active = input_active(n);
+    // Nothing to do for an input that did not change, unless it is an active inhibit.
+    if (active == input_was_active_[n - 1] &&
+        !(active && input_function(logic) == InputFunction::kInhibit))
+      continue;
     const bool rose = active && !input_was_active_[n - 1];
     const bool fell = !active && input_was_active_[n - 1];
     input_was_active_[n - 1] = active;
@@ -304,7 +310,7 @@ void Axis::enforce_limits() {
   if (!moving_) return;
   bool block_forward = false, block_reverse = false, hard_stop = false;
   for (int n = 1; n <= kInputCount; ++n) {
-    if (!input_active(n)) continue;
+    if (!input_was_active_[n - 1]) continue;  // scan_inputs has just read every input
     switch (input_function(params_.input_logic[n - 1])) {
       case InputFunction::kForwardLimit: block_forward = true; break;
       case InputFunction::kReverseLimit: block_reverse = true; break;
@@ -312,7 +318,7 @@ void Axis::enforce_limits() {
       default: break;
     }
   }
-  if (stopping_) return;
+  if (stopping_ || !(hard_stop || block_forward || block_reverse)) return;
   const ProfileSample end = profile_.final_state();
   double heading = raw_.velocity_counts_per_s;
   if (heading == 0.0) heading = end.velocity_counts_per_s + (end.position_counts - raw_.position_counts);
@@ -324,7 +330,7 @@ void Axis::advance_profile() {
   if (!moving_) return;
   const double t_s = static_cast<double>(cycles_ - profile_start_cycle_) * dt_s();
   raw_ = sample(profile_, t_s);
-  const bool profile_done = t_s >= profile_.duration_s() && raw_.velocity_counts_per_s == 0.0;
+  const bool profile_done = t_s >= profile_duration_s_ && raw_.velocity_counts_per_s == 0.0;
   if (profile_done) raw_ = profile_.final_state();
   ref_.position_counts = smooth_position_.push(raw_.position_counts);
   ref_.velocity_counts_per_s = smooth_velocity_.push(raw_.velocity_counts_per_s);
@@ -349,7 +355,7 @@ void Axis::close_loop() {
   const double limit_a = current_limit_a();
   const LoopInputs in{ref_.position_counts, ref_.velocity_counts_per_s, ref_.accel_counts_per_s2,
                       motor_state_.position_counts, motor_state_.velocity_counts_per_s,
-                      motor_.accel_per_amp_counts_per_s2()};
+                      accel_per_amp_counts_per_s2_};
   switch (params_.unit_mode) {
     case 1:
       current_command_a_ = std::clamp(static_cast<double>(torque_command_a_), -limit_a, limit_a);
@@ -365,7 +371,12 @@ void Axis::close_loop() {
   }
   const double voltage = current_loop(params_.gains, loop_, current_command_a_,
                                       motor_state_.current_a, motor_.bus_voltage_v, dt);
-  step_motor(motor_, motor_state_, voltage, dt);
+  step_motor(motor_, motor_step(), motor_state_, voltage);
+}
+
+const MotorStep& Axis::motor_step() {
+  if (motor_step_.dt_s != dt_s()) motor_step_ = motor_step_constants(motor_, dt_s());
+  return motor_step_;
 }
 
 uint32_t Axis::step() {
@@ -399,8 +410,8 @@ uint32_t Axis::step() {
     // feedback so that PE stays 0 and enabling does not jump.
     motor_state_.current_a = 0.0;
     const double back_emf_v = motor_.torque_constant_nm_per_a *
-                              motor_state_.velocity_counts_per_s / motor_.counts_per_rad();
-    step_motor(motor_, motor_state_, back_emf_v, dt_s());
+                              motor_state_.velocity_counts_per_s / motor_step().counts_per_rad;
+    step_motor(motor_, motor_step(), motor_state_, back_emf_v);
     motor_state_.current_a = 0.0;
     raw_ = {motor_state_.position_counts, 0.0, 0.0};
     ref_ = raw_;

@@ -125,7 +125,12 @@ class Axis {
   double current_limit_a();
   void close_loop();
 
+  // The motor model's per-cycle constants for the current TS (refreshed when TS changes).
+  const MotorStep& motor_step();
+
   MotorModel motor_;
+  MotorStep motor_step_;
+  double accel_per_amp_counts_per_s2_;  // of motor_, for the acceleration feedforward
   MotorState motor_state_;
   Parameters params_;
   LoopState loop_;
@@ -147,6 +152,7 @@ class Axis {
   bool moving_ = false;
   bool stopping_ = false;  // the profile is a stop (ST, SD): limits need not stop it again
   Profile profile_;
+  double profile_duration_s_ = 0.0;  // profile_.duration_s(), summed once per profile
   uint64_t profile_start_cycle_ = 0;
   ProfileSample raw_{0.0, 0.0, 0.0};  // the profile before smoothing
   ProfileSample ref_{0.0, 0.0, 0.0};  // the reference the loops follow

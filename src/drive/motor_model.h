@@ -30,8 +30,19 @@ struct MotorState {
   double current_a = 0.0;
 };
 
+// What step_motor derives from the model and the cycle time alone: computed once per TS rather
+// than once per cycle (an exp() and two divisions).
+struct MotorStep {
+  double dt_s = 0.0;
+  double winding_decay = 1.0;  // exp(-dt R / L)
+  double counts_per_rad = 1.0;
+};
+MotorStep motor_step_constants(const MotorModel& model, double dt_s);
+
 // Advances the motor by dt_s with the winding voltage held at voltage_v (clamped to the bus).
 // The electrical part is integrated exactly; the mechanics semi-implicitly.
 void step_motor(const MotorModel& model, MotorState& state, double voltage_v, double dt_s);
+// The same with the constants of motor_step_constants(model, dt_s).
+void step_motor(const MotorModel& model, const MotorStep& step, MotorState& state, double voltage_v);
 
 }  // namespace uprog::drive

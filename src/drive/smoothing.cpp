@@ -14,11 +14,17 @@ void MovingAverage::reset(uint32_t length, double initial) {
 }
 
 double MovingAverage::push(double sample) {
-  const size_t previous = (next_ + window_.size() - 1) % window_.size();
+  const size_t n = window_.size();
+  if (n == 1) {  // no smoothing (SF=0), the usual case: the window holds this sample alone
+    window_[0] = sample;
+    sum_ = sample;
+    return sample;
+  }
+  const size_t previous = next_ == 0 ? n - 1 : next_ - 1;
   equal_run_ = window_[previous] == sample ? equal_run_ + 1 : 0;
   sum_ += sample - window_[next_];
   window_[next_] = sample;
-  next_ = (next_ + 1) % window_.size();
+  next_ = next_ + 1 == n ? 0 : next_ + 1;
   if (next_ == 0) {
     sum_ = 0.0;
     for (double v : window_) sum_ += v;
