@@ -65,8 +65,8 @@ class Fuser {
   // The fused instruction for the sequence at `i` and how many instructions it replaces.
   std::optional<std::pair<Instr, size_t>> match(size_t i) const {
     for (auto m : {&Fuser::compare_locals, &Fuser::arithmetic_locals, &Fuser::local_constant,
-                   &Fuser::two_locals, &Fuser::compare_branch, &Fuser::test_zero,
-                   &Fuser::eol_jump}) {
+                   &Fuser::two_locals, &Fuser::store_constant, &Fuser::compare_branch,
+                   &Fuser::test_zero, &Fuser::line_ending_jump, &Fuser::eol_jump}) {
       if (auto r = (this->*m)(i)) return r;
     }
     return std::nullopt;
@@ -194,6 +194,24 @@ class Fuser {
       return std::pair{Instr{first.pc, Op::LDLK, first.a, second.a}, size_t{2}};
     if (first.op == Op::PUSHK && second.op == Op::LDL)
       return std::pair{Instr{first.pc, Op::LDKL, first.a, second.a}, size_t{2}};
+    return std::nullopt;
+  }
+
+  // PUSHK k; STL a
+  std::optional<std::pair<Instr, size_t>> store_constant(size_t i) const {
+    if (!free(i, 1) || at(i).op != Op::PUSHK || at(i + 1).op != Op::STL) return std::nullopt;
+    return std::pair{Instr{at(i).pc, Op::STLK, at(i + 1).a, at(i).a}, size_t{2}};
+  }
+
+  // INCL a k | STL a; EOL; JMP T — a loop's step, or the last assignment of an if arm.
+  std::optional<std::pair<Instr, size_t>> line_ending_jump(size_t i) const {
+    if (!free(i, 2) || at(i + 1).op != Op::EOL || at(i + 2).op != Op::JMP) return std::nullopt;
+    const Instr& first = at(i);
+    const uint32_t target = at(i + 2).a;
+    if (first.op == Op::STL) return std::pair{Instr{first.pc, Op::STLJEOL, target, first.a}, size_t{3}};
+    const int32_t step = static_cast<int32_t>(first.b);
+    if (first.op == Op::INCL && first.a <= 0xFFFF && fits_int16(step))
+      return std::pair{Instr{first.pc, Op::INCLJEOL, target, pack_local_imm(first.a, step)}, size_t{3}};
     return std::nullopt;
   }
 

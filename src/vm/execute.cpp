@@ -618,13 +618,28 @@ op_JNGEFLK: JUMP_UNLESS_LOCAL_CONST(>=)
 #undef JUMP_UNLESS_FLOATS
 #undef JUMP_UNLESS_LOCALS
 #undef JUMP_UNLESS_LOCAL_CONST
-op_JMPEOL:
-  ip = code + A();
-  if (--lines == 0) {
-    end = SliceEnd::LineEnd;
-    goto stop;
+// A line that ends by jumping (a loop's step, an if arm's last assignment) stops the slice
+// at the jump's target, as EOL; JMP would.
+#define END_LINE_AND_JUMP()        \
+  {                                \
+    ip = code + A();               \
+    if (--lines == 0) {            \
+      end = SliceEnd::LineEnd;     \
+      goto stop;                   \
+    }                              \
+    DISPATCH();                    \
   }
-  DISPATCH();
+op_JMPEOL: END_LINE_AND_JUMP()
+op_INCLJEOL: {
+  const uint32_t pair = B();
+  int32_t& counter = locals[bytecode::packed_first(pair)].i;
+  counter = arith::wrap_add(counter, bytecode::packed_imm(pair));
+  END_LINE_AND_JUMP()
+}
+op_STLJEOL:
+  locals[B()] = *--sp;
+  END_LINE_AND_JUMP()
+#undef END_LINE_AND_JUMP
 op_RETEOL:
   // The line ends here; the return is the line's last instruction, so a slice whose line
   // budget runs out at this end of line stops after the return, in the caller.
@@ -640,6 +655,10 @@ op_LDLK:
   sp[0] = locals[A()];
   sp[1] = constants_[B()];
   sp += 2;
+  ip += 2;
+  DISPATCH();
+op_STLK:
+  locals[A()] = constants_[B()];
   ip += 2;
   DISPATCH();
 op_LDKL:

@@ -219,19 +219,20 @@ leave:
   ASSERT_TRUE(p.load(text));
   bytecode::Image image = p.image;
   bytecode::optimize(image);
-  const std::vector<Op> expected = {Op::PUSHK, Op::STL, Op::PUSHK, Op::STL,
+  const std::vector<Op> expected = {Op::STLK, Op::STLK,      // a = 1.5, b = 4.0
                                     Op::SUBFLLS,             // c = a - b
                                     Op::MULFLL, Op::STG,     // out = c * a
                                     Op::MOVL,                // a = c
                                     Op::JMP,                 // to hop, threaded to done
                                     Op::JMP, Op::RET,
-                                    Op::PUSHI, Op::STL, Op::RETEOL, Op::RET};
+                                    Op::PUSHI, Op::STLJEOL,  // r = 4, end of line, to leave
+                                    Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
-  // The first JMP (instruction 8) now goes straight to the RET (instruction 10).
+  // The first JMP (instruction 6) now goes straight to the RET (instruction 8).
   std::vector<uint32_t> pcs;
   for (uint32_t pc = 0; pc < image.code.size(); pc += bytecode::op_length(bytecode::word_op(image.code[pc])))
     pcs.push_back(pc);
-  EXPECT_EQ(bytecode::word_a(image.code[pcs[8]]), pcs[10]);
+  EXPECT_EQ(bytecode::word_a(image.code[pcs[6]]), pcs[8]);
   expect_same_behaviour(text, "locals");
 }
 
@@ -282,7 +283,7 @@ skip3:
   ASSERT_TRUE(p.load(text));
   bytecode::Image image = p.image;
   bytecode::optimize(image);
-  const std::vector<Op> expected = {Op::PUSHK, Op::STL, Op::PUSHK, Op::STL, Op::PUSHK, Op::STL,
+  const std::vector<Op> expected = {Op::STLK, Op::STLK, Op::STLK,
                                     Op::JNLTFLL, Op::PUSHI, Op::STG,   // a < b
                                     Op::JNGEFLK, Op::PUSHI, Op::STG,   // q >= 0.5: NaN, skipped
                                     Op::JNGEFLK, Op::LDG, Op::PUSHI, Op::ADDI, Op::STG,  // a >= 0.5
@@ -294,6 +295,73 @@ skip3:
   fused.machine.start(0, 0);
   fused.run_to_end();
   EXPECT_EQ(fused.global("count", 0).i, 11);
+}
+
+// `for k = 1:3 ... end` steps and jumps back in one instruction; `x = 0.5` stores a constant;
+// an if arm's last assignment ends its line and jumps past the else.
+TEST(Peephole, FusesLineEndingJumpsAndConstantStores) {
+  const char* text = R"(
+.global int "total" 1
+.routine function "main" in=0 out=0 entry=main
+.local int "k"
+.local float "x"
+main:
+  PUSHK 0
+  STL 1
+  EOL
+  PUSHI 1
+  STL 0
+head:
+  LDL 0
+  PUSHI 3
+  GTI
+  JNZ done
+  LDG total
+  LDL 0
+  ADDI
+  STG total
+  EOL
+  INCL 0 1
+  EOL
+  JMP head
+done:
+  LDG total
+  PUSHI 6
+  EQI
+  JZ other
+  PUSHI 100
+  STL 0
+  EOL
+  JMP end
+other:
+  PUSHI 200
+  STL 0
+  EOL
+end:
+  LDL 0
+  STG total
+  RET
+.const float 0.5
+)";
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(text));
+  bytecode::Image image = p.image;
+  bytecode::optimize(image);
+  const std::vector<Op> expected = {Op::STLK, Op::EOL, Op::PUSHI, Op::STL,
+                                    Op::JGTLK,                                  // k > 3
+                                    Op::LDG, Op::LDL, Op::ADDI, Op::STG, Op::EOL,
+                                    Op::INCLJEOL,                               // k += 1; back
+                                    Op::LDG, Op::PUSHI, Op::JNEI,               // total == 6
+                                    Op::PUSHI, Op::STLJEOL,                     // k = 100; to end
+                                    Op::PUSHI, Op::STL, Op::EOL,
+                                    Op::LDL, Op::STG, Op::RET};
+  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  expect_same_behaviour(text, "line-ending jumps");
+  LoadedProgram fused;
+  ASSERT_TRUE(fused.load(bytecode::disassemble(image)));
+  fused.machine.start(0, 0);
+  fused.run_to_end();
+  EXPECT_EQ(fused.global("total", 0).i, 100);
 }
 
 }  // namespace

@@ -1,0 +1,55 @@
+; The superinstructions that end a line and jump, and the constant store, run directly.
+; i counts 0, 3, 6, 9 (INCLJEOL adds 3 and jumps back), then j counts down 5..1 (a step of -1);
+; STLJEOL stores 42 into i and jumps over the store of 7.
+.global int "sum" 1
+.global int "down" 1
+.global int "last" 1
+.global float "half" 1
+.const float 2.5
+.routine function "main" in=0 out=0 entry=main
+.local int "i"
+.local float "f"
+.local int "j"
+main:
+  STLK 1 0           ; f = 2.5
+  LDL 1
+  STG half
+  PUSHI 0
+  STL 0
+up:
+  LDL 0
+  PUSHI 10
+  GEI
+  JNZ counted
+  LDG sum
+  LDL 0
+  ADDI
+  STG sum
+  INCLJEOL up 196608          ; i += 3 (local 0, step 3), end of line, back to up
+counted:
+  PUSHI 5
+  STL 2
+down:
+  LDL 2
+  PUSHI 0
+  LEI
+  JNZ stored
+  LDG down
+  LDL 2
+  ADDI
+  STG down
+  INCLJEOL down 4294901762    ; j += -1 (local 2, step -1)
+stored:
+  PUSHI 42
+  STLJEOL after 0             ; i = 42, end of line, jump to after
+  PUSHI 7
+  STL 0
+after:
+  LDL 0
+  STG last
+  RET
+; expect end: finished
+; expect half = 2.5
+; expect sum = 18
+; expect down = 15
+; expect last = 42
