@@ -23,9 +23,11 @@ struct Timing {
   uint32_t lines_per_cycle = 1;
   // The program runs until it waits, yields or ends: only waits advance time (CI, benchmarks).
   bool unlimited = false;
-  // Guard for `unlimited`: a slice stops after this many instructions even without a wait, so
-  // a busy loop cannot hang the simulation (it continues in the next cycle).
-  uint64_t unlimited_instruction_cap = 5'000'000;
+  // Guard for `unlimited`: a slice stops after this many source lines even without a wait, so
+  // a busy loop cannot hang the simulation (it continues in the next cycle). Lines, not
+  // instructions: every loop iteration and every call of a compiled program ends a line, and a
+  // line budget costs the VM nothing per instruction.
+  uint64_t unlimited_line_cap = 1'000'000;
 };
 
 struct ControllerOptions {

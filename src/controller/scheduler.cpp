@@ -79,9 +79,8 @@ void Controller::Impl::background_slice() {
   dispatch_auto_routines();
   const vm::ThreadStatus before = machine->status(kProgramThread);
   if (before != vm::ThreadStatus::Running && before != vm::ThreadStatus::Waiting) return;
-  const vm::Budget budget = options.timing.unlimited
-                                ? vm::Budget::of_instructions(options.timing.unlimited_instruction_cap)
-                                : vm::Budget::of_lines(options.timing.lines_per_cycle);
+  const vm::Budget budget = vm::Budget::of_lines(
+      options.timing.unlimited ? options.timing.unlimited_line_cap : options.timing.lines_per_cycle);
   const vm::SliceResult r = machine->run_slice(kProgramThread, budget);
   if (r.end == vm::SliceEnd::Error) on_run_time_error();
   if (r.end == vm::SliceEnd::Finished) log("program finished");

@@ -152,5 +152,23 @@ TEST(controller, UnlimitedBudgetRunsUntilAWait) {
   EXPECT_EQ(one(c, "done"), "2");
 }
 
+// A busy loop under the unlimited budget is cut at the line cap each cycle: the drive still
+// answers, and every cycle runs the same number of lines.
+TEST(controller, UnlimitedBudgetCapsABusyLoopPerCycle) {
+  ControllerOptions o;
+  o.timing.unlimited = true;
+  o.timing.unlimited_line_cap = 3000;
+  Controller c(o);
+  ASSERT_TRUE(c.download(compile_bytes("int i\nfunction main()\nwhile (1)\ni = i + 1\nend\nreturn\n")).ok);
+  ASSERT_TRUE(c.load_stored_program());
+  ASSERT_EQ(c.execute_program("main"), 0);
+  // Each iteration ends three lines: the while header, `i = i + 1`, and the loop's end.
+  c.advance(50);
+  EXPECT_EQ(one(c, "i"), "1000");
+  // The command line's expression took a cycle of its own (its slice ran after the answer).
+  c.advance(50);
+  EXPECT_EQ(one(c, "i"), "3000");
+}
+
 }  // namespace
 }  // namespace uprog::controller
