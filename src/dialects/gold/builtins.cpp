@@ -25,6 +25,7 @@ constexpr std::array<BuiltinInfo, 14> kBuiltins = {{
 }  // namespace
 
 const BuiltinInfo* find_builtin(std::string_view name) {
+  if (name.size() < 3 || name.size() > 6) return nullptr;  // "sin" .. "prgerr"
   for (const BuiltinInfo& b : kBuiltins)
     if (b.name == name) return &b;
   return nullptr;

@@ -73,6 +73,29 @@ const CommandInfo* command_named(std::string_view name) {
   return it == index.by_name.end() ? nullptr : it->second;
 }
 
+// A function's own names (locals, local labels): few, looked up often, cleared for every function.
+// A short list searched in order beats a hash table that allocates a node per name.
+class NameList {
+ public:
+  size_t count(std::string_view name) const { return find(name) != nullptr ? 1 : 0; }
+  const int* find(std::string_view name) const {
+    for (const auto& [n, v] : items_)
+      if (n == name) return &v;
+    return nullptr;
+  }
+  int& operator[](std::string_view name) {
+    for (auto& [n, v] : items_)
+      if (n == name) return v;
+    items_.emplace_back(name, 0);
+    return items_.back().second;
+  }
+  void insert(std::string_view name) { (*this)[name]; }
+  void clear() { items_.clear(); }
+
+ private:
+  std::vector<std::pair<std::string_view, int>> items_;
+};
+
 bool const_index(const Expr& e, int32_t& out) {
   if (e.kind == ExprKind::IntLit) { out = e.int_value; return true; }
   return false;
@@ -104,7 +127,7 @@ class Checker {
 
   // Checks a body against what `p` declares so far, keeping every error and effect in `out`.
   void speculate(Program& p, FunctionDef& f, Block& body, CheckedBody& out,
-                 std::vector<std::string_view>& queried) {
+                 std::vector<uint32_t>& queried) {
     // Declarations met since the last body; their errors belong to the final pass.
     std::vector<CapturedError> ignored;
     capture_ = &ignored;
@@ -140,7 +163,9 @@ class Checker {
   }
 
   // A body's locals are needed until it is generated, then no more (its code keeps them).
-  void forget_locals(int symbol) { syms_.functions[static_cast<size_t>(symbol)].locals = {}; }
+  void forget_locals(int symbol) {
+    std::vector<LocalSym>().swap(syms_.functions[static_cast<size_t>(symbol)].locals);
+  }
 
   void check_body(FunctionDef& f, int symbol, Block& body) { function_body(f, symbol, body); }
 
@@ -171,9 +196,10 @@ class Checker {
   // speculating, the driver must know it was asked about.
   void note(std::string_view name) {
     if (queried_ == nullptr) return;
+    const uint32_t h = name_hash(name);
     for (size_t i = queried_->size(), k = 0; i-- > queries_begin_ && k < 8; ++k)  // this body's
-      if ((*queried_)[i] == name) return;
-    queried_->push_back(name);
+      if ((*queried_)[i] == h) return;
+    queried_->push_back(h);
   }
 
   void poison(std::string_view name) {
@@ -501,10 +527,9 @@ class Checker {
   void resolve(Expr& e, bool quiet = false) {
     if (e.ref != RefKind::Unresolved) return;
     if (current_ >= 0) {
-      auto it = locals_.find(e.name);
-      if (it != locals_.end()) {
+      if (const int* local = locals_.find(e.name)) {
         e.ref = RefKind::Local;
-        e.slot = it->second;
+        e.slot = *local;
         return;
       }
     }
@@ -696,8 +721,9 @@ class Checker {
 
   Reporter& r_;
   Symbols syms_;
-  std::unordered_map<std::string_view, int> global_index_, function_index_, top_labels_, local_labels_, locals_;
-  std::unordered_set<std::string_view> redeclared_, poisoned_;
+  std::unordered_map<std::string_view, int> global_index_, function_index_, top_labels_;
+  NameList local_labels_, locals_, redeclared_;
+  std::unordered_set<std::string_view> poisoned_;
   int current_ = -1;
   const FunctionDef* current_def_ = nullptr;
   std::vector<LoopRange> loops_;  // the enclosing loops whose variable's range is known
@@ -705,7 +731,7 @@ class Checker {
   // Speculation: how far the declarations were taken in, where errors and names go.
   size_t globals_seen_ = 0, functions_seen_ = 0, top_seen_ = 0;
   std::vector<CapturedError>* capture_ = nullptr;
-  std::vector<std::string_view>* queried_ = nullptr;
+  std::vector<uint32_t>* queried_ = nullptr;
   size_t queries_begin_ = 0;
   std::vector<std::string_view>* poisoned_added_ = nullptr;
 };
@@ -717,7 +743,7 @@ ProgramChecker::~ProgramChecker() = default;
 void ProgramChecker::declare(Program& p) { c_->declare(p); }
 int ProgramChecker::symbol_for_body(const FunctionDef& f) const { return c_->symbol_for_body(f); }
 void ProgramChecker::speculate(Program& p, FunctionDef& f, Block& body, CheckedBody& out,
-                               std::vector<std::string_view>& queried) {
+                               std::vector<uint32_t>& queried) {
   c_->speculate(p, f, body, out, queried);
 }
 void ProgramChecker::accept(int symbol, CheckedBody& spec) { c_->accept(symbol, spec); }

@@ -68,6 +68,14 @@ struct CheckedBody {
   std::vector<std::string_view> poisoned;  // undefined loop variables it reported
 };
 
+// A short fingerprint of a name (FNV-1a). Two names may share one: then a body is checked
+// again for nothing, never kept wrongly.
+inline uint32_t name_hash(std::string_view name) {
+  uint32_t h = 2166136261u;
+  for (const char c : name) h = (h ^ static_cast<unsigned char>(c)) * 16777619u;
+  return h;
+}
+
 namespace detail {
 class Checker;
 }
@@ -80,9 +88,9 @@ class ProgramChecker {
   explicit ProgramChecker(Reporter& reporter);
   ~ProgramChecker();
   // Checks `body` against the declarations of `p` parsed so far; errors and effects go to `out`,
-  // and every name whose meaning a later declaration could change to `queried`.
+  // and every name whose meaning a later declaration could change to `queried` (as name_hash).
   void speculate(Program& p, FunctionDef& f, Block& body, CheckedBody& out,
-                 std::vector<std::string_view>& queried);
+                 std::vector<uint32_t>& queried);
   // Declares every global, function and top-level label of `p`, reporting their errors.
   void declare(Program& p);
   // The symbol whose body `f` is, or -1 when `f`'s body is not checked.

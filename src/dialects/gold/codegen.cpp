@@ -789,11 +789,16 @@ class Gen {
 
 }  // namespace
 
-FunctionCode generate_function(const Symbols& symbols, int symbol, const Block& body,
-                               uint32_t end_offset, const Locator& locator, ConstantTable& constants,
-                               bool with_lines) {
-  FunctionCode out;
+void generate_function(const Symbols& symbols, int symbol, const Block& body, uint32_t end_offset,
+                       const Locator& locator, ConstantTable& constants, bool with_lines,
+                       FunctionCode& out) {
   bytecode::Image img;
+  img.code = std::move(out.code);
+  img.lines = std::move(out.lines);
+  img.code.clear();
+  img.lines.clear();
+  out.fixups.clear();
+  out.locals.clear();
   Gen gen(img, &symbols, locator, constants);
   gen.with_lines = with_lines;
   gen.globals_ = &symbols.globals;
@@ -808,7 +813,6 @@ FunctionCode generate_function(const Symbols& symbols, int symbol, const Block& 
   out.ok = gen.finish();
   out.code = std::move(img.code);
   out.lines = std::move(img.lines);
-  return out;
 }
 
 namespace {
@@ -845,12 +849,26 @@ void append_line(std::vector<bytecode::LineEntry>& lines, const bytecode::LineEn
 bytecode::Image generate_program(const Program& program, const Symbols& symbols,
                                  const std::vector<const FunctionCode*>& bodies,
                                  uint32_t body_words, bool bodies_ok, const Locator& locator,
-                                 Reporter& reporter, ConstantTable& constants, bool with_lines) {
+                                 Reporter& reporter, ConstantTable& constants, bool check_only) {
   bytecode::Image img;
+  if (check_only) {
+    // Only the code's soundness and size count: no routines, no line table, no image.
+    Gen gen(img, &symbols, locator, constants);
+    gen.with_lines = false;
+    gen.globals_ = &symbols.globals;
+    std::vector<RoutineFixup> ignored;
+    gen.fixups = &ignored;
+    std::vector<bytecode::Local> top_locals;
+    gen.begin_routine(&top_locals);
+    gen.declare_goto_labels(program.top);
+    for (const StmtPtr& s : program.top) gen.statement(*s);
+    if (!gen.finish() || !bodies_ok) reporter.error(Error::InternalCompilerError, 0);
+    if (img.code.size() + body_words > bytecode::kOperandMax) reporter.error(Error::CompiledCodeTooLong, 0);
+    return {};
+  }
   for (const GlobalSym& g : symbols.globals)
     img.globals.push_back({g.name, value_type(g.type), g.length == 0 ? 1u : static_cast<uint32_t>(g.length)});
   Gen gen(img, &symbols, locator, constants);
-  gen.with_lines = with_lines;
   gen.globals_ = &symbols.globals;
 
   // Routine numbers: functions with a body first, then the top-level labels in order.

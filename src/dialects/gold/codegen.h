@@ -35,20 +35,21 @@ struct FunctionCode {
   bool ok = true;  // every label bound
 };
 
-// The body of function `symbol` (its locals already in `symbols`).
-FunctionCode generate_function(const Symbols& symbols, int symbol, const Block& body,
-                               uint32_t end_offset, const Locator& locator, ConstantTable& constants,
-                               bool with_lines);
+// The body of function `symbol` (its locals already in `symbols`) into `out`, whose buffers
+// are reused.
+void generate_function(const Symbols& symbols, int symbol, const Block& body, uint32_t end_offset,
+                       const Locator& locator, ConstantTable& constants, bool with_lines,
+                       FunctionCode& out);
 
 // The top level, then the functions' code in order (`bodies` per function symbol, null when
 // not kept), the routines and the events. `body_words` and `bodies_ok` tell of the code that was
-// generated but not kept (a check keeps none): the size limit (65) counts it. `with_lines`
-// false leaves the line table empty: for a check, which needs only the diagnostics.
+// generated but not kept (a check keeps none): the size limit (65) counts it. `check_only`
+// gives no image, only the diagnostics.
 bytecode::Image generate_program(const Program& program, const Symbols& symbols,
                                  const std::vector<const FunctionCode*>& bodies,
                                  uint32_t body_words, bool bodies_ok, const Locator& locator,
                                  Reporter& reporter, ConstantTable& constants,
-                                 bool with_lines = true);
+                                 bool check_only = false);
 
 // One value a command line shows: the global holding it and, for a pair, the one holding its
 // run-time type (0 int, 1 float).

@@ -1,6 +1,7 @@
 // The compiler driver: preprocess, check line lengths, lex, parse, check, generate.
 #include "dialects/gold/compile.h"
 
+#include <cstdio>
 #include <cstring>
 
 #include "bytecode/peephole.h"
@@ -80,9 +81,33 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   return result;
 }
 
+namespace {
+
+// The whole file in one string of the right size: read_text_file() goes through a string stream,
+// which copies a large file several times (and every new page costs a fault).
+std::optional<std::string> read_source(const std::string& path, std::string* why) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (f != nullptr && std::fseek(f, 0, SEEK_END) == 0) {
+    const long size = std::ftell(f);
+    std::string text;
+    if (size >= 0 && std::fseek(f, 0, SEEK_SET) == 0) {
+      text.resize(static_cast<size_t>(size));
+      const size_t got = std::fread(text.data(), 1, text.size(), f);
+      const bool whole = got == text.size() && std::fgetc(f) == EOF && !std::ferror(f);
+      std::fclose(f);
+      if (whole) return text;
+      return read_text_file(path, why);  // the file changed size meanwhile
+    }
+  }
+  if (f != nullptr) std::fclose(f);
+  return read_text_file(path, why);  // not a seekable file (a pipe): and its own error text
+}
+
+}  // namespace
+
 CompileResult compile_file(const std::string& path, const CompileOptions& options) {
   std::string why;
-  std::optional<std::string> text = read_text_file(path, &why);
+  std::optional<std::string> text = read_source(path, &why);
   if (!text) {
     CompileResult r;
     Diagnostic d = make_error(Error::OpenFileFailure, Location{path, 0, 0}, why);

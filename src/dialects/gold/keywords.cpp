@@ -37,15 +37,18 @@ Keyword keyword_of(std::string_view word) {
   if (c0 < 'a' || c0 > 'z') return Keyword::None;
   const size_t b = kFirst[static_cast<size_t>(c0 - 'a')];
   const size_t e = kFirst[static_cast<size_t>(c0 - 'a') + 1];
-  if (b == e) return Keyword::None;
-  char lower[10];
-  for (size_t i = 0; i < word.size(); ++i) {
-    const char c = word[i];
-    lower[i] = c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;  // ASCII only
+  for (size_t k = b; k < e; ++k) {
+    const std::string_view t = kWords[k].text;
+    if (t.size() != word.size()) continue;
+    size_t i = 1;
+    while (i < t.size()) {
+      const char c = word[i];
+      const char lower = c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;  // ASCII only
+      if (lower != t[i]) break;
+      ++i;
+    }
+    if (i == t.size()) return kWords[k].kw;
   }
-  const std::string_view w(lower, word.size());
-  for (size_t k = b; k < e; ++k)
-    if (kWords[k].text == w) return kWords[k].kw;
   return Keyword::None;
 }
 
@@ -56,6 +59,7 @@ const AutoRoutineName* find_auto_routine(std::string_view name) {
       {"AUTO_I4", 10}, {"AUTO_I5", 11}, {"AUTO_I6", 12}, {"AUTO_HM", 13}, {"AUTO_HY", 14},
       {"AUTO_PERR", 15},
   }};
+  if (name.size() < 7 || name.substr(0, 4) != "AUTO") return nullptr;  // most names: at once
   for (const AutoRoutineName& n : kNames)
     if (n.name == name) return &n;
   return nullptr;

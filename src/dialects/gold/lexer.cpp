@@ -104,22 +104,23 @@ bool Lexer::newline(size_t at, Token& out) {
 // Spaces, tabs, carriage returns and comments; a block comment that spans lines ends the line
 // (true, with the Newline token in `out`).
 bool Lexer::skip_blank(Token& out) {
-  size_t i = st_.pos;
-  const size_t n = s_.size();
-  while (i < n) {
-    const char c = s_[i];
+  const char* const begin = s_.data();
+  const char* const end = begin + s_.size();
+  const char* p = begin + st_.pos;
+  while (p < end) {
+    const char c = *p;
     if (is(c, kBlank)) {
-      ++i;
-    } else if ((c == '/' || c == '*') && i + 1 < n && s_[i + 1] == c) {  // "//", "**"
-      const void* e = std::memchr(s_.data() + i, '\n', n - i);
-      i = e == nullptr ? n : static_cast<size_t>(static_cast<const char*>(e) - s_.data());
-    } else if (c == '/' && i + 1 < n && s_[i + 1] == '*') {
-      const size_t b = i;
-      const size_t e = s_.find("*/", i + 2);
-      const size_t stop = e == std::string_view::npos ? n : e + 2;
-      const bool spans = std::memchr(s_.data() + b, '\n', stop - b) != nullptr;
-      i = stop;
-      st_.pos = static_cast<uint32_t>(i);
+      ++p;
+    } else if ((c == '/' || c == '*') && p + 1 < end && p[1] == c) {  // "//", "**"
+      const void* e = std::memchr(p, '\n', static_cast<size_t>(end - p));
+      p = e == nullptr ? end : static_cast<const char*>(e);
+    } else if (c == '/' && p + 1 < end && p[1] == '*') {
+      const size_t b = static_cast<size_t>(p - begin);
+      const size_t e = s_.find("*/", b + 2);
+      const size_t stop = e == std::string_view::npos ? s_.size() : e + 2;
+      const bool spans = std::memchr(p, '\n', stop - b) != nullptr;
+      p = begin + stop;
+      st_.pos = static_cast<uint32_t>(stop);
       if (e == std::string_view::npos) {
         r_.lex_error(Error::BlockCommentNotFinished, static_cast<uint32_t>(b));
         return false;
@@ -129,7 +130,7 @@ bool Lexer::skip_blank(Token& out) {
       break;
     }
   }
-  st_.pos = static_cast<uint32_t>(i);
+  st_.pos = static_cast<uint32_t>(p - begin);
   return false;
 }
 
@@ -149,7 +150,8 @@ Token Lexer::next() {
     const char c = s_[i];
     if (is_ident_start(c)) {
       const size_t b = i;
-      while (i < n && is(s_[i], kIdentChar)) ++i;
+      const char* const text = s_.data();
+      while (i < n && is(text[i], kIdentChar)) ++i;
       st_.pos = static_cast<uint32_t>(i);
       out = make(Tok::Ident, b, i - b);
       out.kw = keyword_of(s_.substr(b, i - b));

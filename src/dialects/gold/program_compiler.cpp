@@ -9,6 +9,7 @@
 #include "dialects/gold/program_compiler.h"
 
 #include <algorithm>
+#include <memory>
 #include <unordered_map>
 
 #include "dialects/gold/checker.h"
@@ -26,7 +27,7 @@ struct BodyRecord {
   bool generated = false;
   uint32_t words = 0;  // code size, also when the code itself is not kept
   bool code_ok = true;
-  FunctionCode code;  // when kept
+  std::unique_ptr<FunctionCode> code;  // when kept
 };
 
 class Driver : public FunctionBodySink {
@@ -60,9 +61,9 @@ class Driver : public FunctionBodySink {
     checker.declare(program);
 
     // Where each name was last declared: a body checked before that may have read it otherwise.
-    std::unordered_map<std::string_view, uint32_t> declared;
+    std::unordered_map<uint32_t, uint32_t> declared;  // name_hash -> offset
     auto declare = [&](std::string_view name, uint32_t offset) {
-      uint32_t& at = declared[name];
+      uint32_t& at = declared[name_hash(name)];
       at = std::max(at, offset);
     };
     for (const VarDecl& g : program.globals) declare(g.name, g.offset);
@@ -105,23 +106,23 @@ class Driver : public FunctionBodySink {
       if (!r.generated) continue;
       words += r.words;
       code_ok = code_ok && r.code_ok;
-      if (keep_code_) bodies[static_cast<size_t>(symbol)] = &r.code;
+      if (keep_code_) bodies[static_cast<size_t>(symbol)] = r.code.get();
     }
     checker.check_top(program);
     if (reporter_.has_errors()) return {};
     // With no error, every body that has a symbol was generated (first or second time).
     return generate_program(program, checker.symbols(), bodies, keep_code_ ? 0 : words, code_ok,
-                            locator_, reporter_, constants_, keep_code_);
+                            locator_, reporter_, constants_, !keep_code_);
   }
 
  private:
   void generate(BodyRecord& r, const Symbols& symbols, int symbol, const Block& body,
                 const FunctionDef& f) {
-    r.code = generate_function(symbols, symbol, body, f.end_offset, locator_, constants_, keep_code_);
+    generate_function(symbols, symbol, body, f.end_offset, locator_, constants_, keep_code_, code_);
     r.generated = true;
-    r.words = static_cast<uint32_t>(r.code.code.size());
-    r.code_ok = r.code.ok;
-    if (!keep_code_) r.code = FunctionCode{};
+    r.words = static_cast<uint32_t>(code_.code.size());
+    r.code_ok = code_.ok;
+    if (keep_code_) r.code = std::make_unique<FunctionCode>(std::move(code_));
   }
 
   Lexer& lexer_;
@@ -131,9 +132,10 @@ class Driver : public FunctionBodySink {
   AstArena tree_;     // globals and the top level: kept to the end
   AstArena scratch_;  // one function body at a time
   ProgramChecker first_;
-  std::vector<std::string_view> queried_;
+  std::vector<uint32_t> queried_;  // name_hash of the names each body asked about
   std::deque<BodyRecord> records_;
   ConstantTable constants_;
+  FunctionCode code_;  // the body being generated; a check reuses its buffers
 };
 
 }  // namespace
