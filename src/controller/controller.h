@@ -28,6 +28,10 @@ struct Timing {
   // instructions: every loop iteration and every call of a compiled program ends a line, and a
   // line budget costs the VM nothing per instruction.
   uint64_t unlimited_line_cap = 1'000'000;
+  // Every slice also stops after this many jumps back (vm::Budget::back_jumps): a downloaded
+  // image whose loop never ends a line (hand-made; compiled Gold always ends one) cannot hang
+  // the drive. Compiled programs meet their line budget long before.
+  uint64_t back_jump_cap = 1'000'000;
 };
 
 struct ControllerOptions {

@@ -79,8 +79,9 @@ void Controller::Impl::background_slice() {
   dispatch_auto_routines();
   const vm::ThreadStatus before = machine->status(kProgramThread);
   if (before != vm::ThreadStatus::Running && before != vm::ThreadStatus::Waiting) return;
-  const vm::Budget budget = vm::Budget::of_lines(
+  vm::Budget budget = vm::Budget::of_lines(
       options.timing.unlimited ? options.timing.unlimited_line_cap : options.timing.lines_per_cycle);
+  budget.back_jumps = options.timing.back_jump_cap;
   const vm::SliceResult r = machine->run_slice(kProgramThread, budget);
   if (r.end == vm::SliceEnd::Error) on_run_time_error();
   if (r.end == vm::SliceEnd::Finished) log("program finished");

@@ -79,7 +79,7 @@ SliceResult Machine::run_slice(uint32_t thread, Budget budget) {
   const uint32_t at = t.pc;
   const uint32_t trap = code_[at];
   code_[at] = b->original;
-  const SliceResult first = execute(t, Budget{1, budget.lines});
+  const SliceResult first = execute(t, Budget{1, budget.lines, budget.back_jumps});
   code_[at] = trap;
   if (first.end != SliceEnd::BudgetSpent || budget.instructions == 1) return first;
   Budget rest = budget;
@@ -110,6 +110,7 @@ SliceResult Machine::execute_loop(Thread& t, Budget budget) {
   const uint64_t initial = budget.instructions != 0 ? budget.instructions : UINT64_MAX;
   uint64_t steps = initial;
   uint64_t lines = budget.lines != 0 ? budget.lines : UINT64_MAX;
+  uint64_t back_jumps = budget.back_jumps != 0 ? budget.back_jumps : UINT64_MAX;
   // A call may start a frame at or below this stack position (see enter()).
   const Value* const call_limit = t.stack + (config_.stack - max_depth_);
   uint32_t word = 0;
@@ -124,6 +125,16 @@ SliceResult Machine::execute_loop(Thread& t, Budget budget) {
     if (kCounted && steps-- == 0) goto out_of_budget; \
     word = *ip;                              \
     goto* kDispatch[word & 0xFFu];           \
+  } while (0)
+// Every jump goes through here: one going back counts against the slice's back_jumps.
+#define JUMP_TO(target)                                    \
+  do {                                                     \
+    const uint32_t* const to = (target);                   \
+    if (to <= ip && --back_jumps == 0) {                   \
+      ip = to;                                             \
+      goto out_of_back_jumps;                              \
+    }                                                      \
+    ip = to;                                               \
   } while (0)
 #define A() (word >> 8)
 #define IMM() (static_cast<int32_t>(word) >> 8)
@@ -386,13 +397,13 @@ op_CMPD: {
 }
 
 op_JMP:
-  ip = code + A();
+  JUMP_TO(code + A());
   DISPATCH();
 op_JZ:
-  ip = (--sp)->i == 0 ? code + A() : ip + 1;
+  if ((--sp)->i == 0) JUMP_TO(code + A()); else ++ip;
   DISPATCH();
 op_JNZ:
-  ip = (--sp)->i != 0 ? code + A() : ip + 1;
+  if ((--sp)->i != 0) JUMP_TO(code + A()); else ++ip;
   DISPATCH();
 op_CALL: {
   // The common case inline; enter() handles the rest and reports which limit was hit.
@@ -484,6 +495,7 @@ op_RESET:
     goto raise_error;
   }
   LOAD();
+  if (--back_jumps == 0) goto out_of_back_jumps;  // a restart is a loop's iteration too
   DISPATCH();
 op_EOL:
   ++ip;
@@ -543,14 +555,14 @@ op_REMLK:
     const uint32_t pair = B();                                                 \
     const int32_t a = locals[bytecode::packed_first(pair)].i;                  \
     const int32_t b = locals[bytecode::packed_second(pair)].i;                 \
-    ip = a op b ? code + A() : ip + 2;                                         \
+    if (a op b) JUMP_TO(code + A()); else ip += 2;                             \
     DISPATCH();                                                                \
   }
 #define JUMP_LOCAL_IMM(op)                                                     \
   {                                                                            \
     const uint32_t pair = B();                                                 \
     const int32_t a = locals[bytecode::packed_first(pair)].i;                  \
-    ip = a op bytecode::packed_imm(pair) ? code + A() : ip + 2;                \
+    if (a op bytecode::packed_imm(pair)) JUMP_TO(code + A()); else ip += 2;    \
     DISPATCH();                                                                \
   }
 // Float comparisons jump "unless" (see peephole.cpp): NaN compares false and falls through.
@@ -559,7 +571,7 @@ op_REMLK:
     const uint32_t pair = B();                                                 \
     const float a = a_expr;                                                    \
     const float b = b_expr;                                                    \
-    ip = !(a op b) ? code + A() : ip + 2;                                      \
+    if (!(a op b)) JUMP_TO(code + A()); else ip += 2;                          \
     DISPATCH();                                                                \
   }
 #define JUMP_UNLESS_LOCALS(op)                                                 \
@@ -573,7 +585,7 @@ op_REMLK:
     const type a = sp[-2].field;                                               \
     const type b = sp[-1].field;                                               \
     sp -= 2;                                                                   \
-    ip = (cond) ? code + A() : ip + 1;                                         \
+    if (cond) JUMP_TO(code + A()); else ++ip;                                  \
     DISPATCH();                                                                \
   }
 op_JEQLL: JUMP_LOCALS(==)
@@ -622,7 +634,7 @@ op_JNGEFLK: JUMP_UNLESS_LOCAL_CONST(>=)
 // at the jump's target, as EOL; JMP would.
 #define END_LINE_AND_JUMP()        \
   {                                \
-    ip = code + A();               \
+    JUMP_TO(code + A());           \
     if (--lines == 0) {            \
       end = SliceEnd::LineEnd;     \
       goto stop;                   \
@@ -740,6 +752,10 @@ out_of_budget:
   end = SliceEnd::BudgetSpent;
   goto stop;
 
+out_of_back_jumps:
+  end = SliceEnd::BudgetSpent;
+  goto stop;
+
 finished:
   SAVE();
   reset_thread(t);
@@ -752,6 +768,8 @@ raise_error:
     error = RunError::None;
     detail = 0;
     LOAD();
+    // A catch block may lie before its try: catching is a loop's iteration too.
+    if (--back_jumps == 0) goto out_of_back_jumps;
     DISPATCH();
   }
   return {SliceEnd::Error, kCounted ? initial - steps : 0};
@@ -760,6 +778,7 @@ stop:
   SAVE();
   return {end, kCounted ? initial - steps : 0};
 
+#undef JUMP_TO
 #undef SAVE
 #undef LOAD
 #undef DISPATCH

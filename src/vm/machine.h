@@ -25,17 +25,21 @@ struct MachineConfig {
   uint32_t breakpoints = 16;
 };
 
-// How much a slice may run: it stops when either count is spent (0 = no limit for that count).
+// How much a slice may run: it stops when any count is spent (0 = no limit for that count).
+// back_jumps counts jumps to an earlier place, caught errors and restarts (RESET): every loop
+// takes one per iteration, so it bounds a slice even in code that never ends a line (a
+// hand-made image's `L: JMP L`) at no cost per instruction.
 struct Budget {
   uint64_t instructions = 0;
   uint64_t lines = 0;
+  uint64_t back_jumps = 0;
   static Budget unlimited() { return {}; }
-  static Budget of_instructions(uint64_t n) { return {n, 0}; }
-  static Budget of_lines(uint64_t n) { return {0, n}; }
+  static Budget of_instructions(uint64_t n) { return {n, 0, 0}; }
+  static Budget of_lines(uint64_t n) { return {0, n, 0}; }
 };
 
 enum class SliceEnd : uint8_t {
-  BudgetSpent,  // the instruction budget ran out
+  BudgetSpent,  // the instruction or back-jump budget ran out
   LineEnd,      // the line budget ran out at an end-of-line
   Yielded,      // the program asked to end the slice (a condition wait)
   Waiting,      // a timed wait has not elapsed

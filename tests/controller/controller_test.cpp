@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "bytecode/assembly.h"
 #include "bytecode/image.h"
 #include "controller/controller.h"
 #include "compile_bytes.h"
@@ -168,6 +169,27 @@ TEST(controller, UnlimitedBudgetCapsABusyLoopPerCycle) {
   // The command line's expression took a cycle of its own (its slice ran after the answer).
   c.advance(50);
   EXPECT_EQ(one(c, "i"), "3000");
+}
+
+// A hand-made image whose loop never ends a line: the drive goes on answering, cycle after
+// cycle, while the program spins (at most Timing::back_jump_cap jumps per slice).
+TEST(controller, ALoopWithoutALineEndDoesNotHangTheDrive) {
+  bytecode::Image image;
+  std::vector<Diagnostic> errors;
+  ASSERT_TRUE(bytecode::assemble(".global int \"n\" 1\n"
+                                 ".routine function \"main\" in=0 out=0 entry=main\n"
+                                 "main:\n  LDG n\n  PUSHI 1\n  ADDI\n  STG n\n  JMP main\n",
+                                 "spin.s", image, errors));
+  ControllerOptions o;
+  o.timing.back_jump_cap = 5000;
+  Controller c(o);
+  ASSERT_TRUE(c.download(bytecode::encode(image)).ok);
+  ASSERT_TRUE(c.load_stored_program());
+  ASSERT_EQ(c.execute_program("main"), 0);
+  c.advance(50);
+  EXPECT_EQ(one(c, "n"), "5000");
+  EXPECT_EQ(one(c, "3+4"), "7");
+  EXPECT_EQ(one(c, "n"), "15000");  // each command line took a cycle of its own
 }
 
 }  // namespace

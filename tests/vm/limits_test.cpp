@@ -145,5 +145,47 @@ TEST(Limits, MemoryTooSmallIsRefused) {
   EXPECT_FALSE(other.loaded());
 }
 
+// Loops that never end a line: an endless jump, a restart and a catch before its try. The
+// back-jump budget stops each slice after exactly that many iterations, and the next slice goes
+// on from there.
+TEST(Limits, BackJumpBudgetBoundsLoopsWithoutALineEnd) {
+  const char* kLoops = R"(
+.global int "n" 1
+.routine function "spin" in=0 out=0 entry=spin
+.routine function "restart" in=0 out=0 entry=restart
+.routine function "catcher" in=0 out=0 entry=catcher
+spin:
+  LDG n
+  PUSHI 1
+  ADDI
+  STG n
+  JMP spin
+restart:
+  LDG n
+  PUSHI 1
+  ADDI
+  STG n
+  RESET 1
+catcher:
+  TRY catcher
+  LDG n
+  PUSHI 1
+  ADDI
+  STG n
+  RAISE 5
+)";
+  for (uint32_t routine = 0; routine < 3; ++routine) {
+    LoadedProgram p;
+    ASSERT_TRUE(p.load(kLoops));
+    p.machine.start(0, routine);
+    vm::Budget budget;
+    budget.back_jumps = 1000;
+    EXPECT_EQ(p.machine.run_slice(0, budget).end, SliceEnd::BudgetSpent) << routine;
+    EXPECT_EQ(p.global("n").i, 1000) << routine;
+    EXPECT_EQ(p.machine.run_slice(0, budget).end, SliceEnd::BudgetSpent) << routine;
+    EXPECT_EQ(p.global("n").i, 2000) << routine;
+  }
+}
+
 }  // namespace
 }  // namespace uprog::test
