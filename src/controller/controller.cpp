@@ -15,6 +15,10 @@ namespace {
 
 uint16_t command_id(std::string_view name) { return gold::find_command(name)->id; }
 
+// The commands the controller answers itself. Looked up once at start-up rather than behind a
+// function-local static's guard: a program reads a drive command nearly every servo cycle.
+const uint16_t kMi = command_id("MI"), kPs = command_id("PS"), kEc = command_id("EC");
+
 const vm::MachineConfig kProgramConfig{};
 
 std::string program_path(const ControllerOptions& o) { return o.state_dir + "/program.upi"; }
@@ -214,7 +218,6 @@ int32_t Controller::Impl::program_status() const {
 // --- Host ---
 
 vm::CommandStatus Controller::Impl::read(uint32_t command, int32_t index, Value& out) {
-  static const uint16_t kMi = command_id("MI"), kPs = command_id("PS"), kEc = command_id("EC");
   if (command == kMi || command == kPs || command == kEc) {
     if (index != 0) return gold::kErrorBadIndex;
     out = Value::of_int(command == kMi ? static_cast<int32_t>(autos.mask())
@@ -227,7 +230,6 @@ vm::CommandStatus Controller::Impl::read(uint32_t command, int32_t index, Value&
 }
 
 vm::CommandStatus Controller::Impl::write(uint32_t command, int32_t index, Value value) {
-  static const uint16_t kMi = command_id("MI"), kPs = command_id("PS"), kEc = command_id("EC");
   if (command == kMi) {
     if (index != 0) return gold::kErrorBadIndex;
     if (value.i < 0 || value.i > 65535) return gold::kErrorOutOfRange;

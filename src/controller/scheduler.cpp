@@ -28,7 +28,6 @@ void Controller::Impl::servo_cycle() {
 }
 
 void Controller::Impl::dispatch_auto_routines() {
-  if (autos.quiet()) return;  // the usual servo cycle: nothing pending, nothing active
   // A halted program takes no auto-routines until XC; they stay pending.
   const vm::ThreadStatus status = machine->status(kProgramThread);
   if (status == vm::ThreadStatus::Halted || status == vm::ThreadStatus::AtBreakpoint) return;
@@ -76,7 +75,8 @@ void Controller::Impl::on_run_time_error() {
 
 void Controller::Impl::background_slice() {
   if (!machine) return;
-  dispatch_auto_routines();
+  // The usual servo cycle has nothing pending and no auto-routine active: no bookkeeping.
+  if (!autos.quiet()) dispatch_auto_routines();
   const vm::ThreadStatus before = machine->status(kProgramThread);
   if (before != vm::ThreadStatus::Running && before != vm::ThreadStatus::Waiting) return;
   vm::Budget budget = vm::Budget::of_lines(
@@ -85,7 +85,7 @@ void Controller::Impl::background_slice() {
   const vm::SliceResult r = machine->run_slice(kProgramThread, budget);
   if (r.end == vm::SliceEnd::Error) on_run_time_error();
   if (r.end == vm::SliceEnd::Finished) log("program finished");
-  autos.update_active(*machine, kProgramThread);
+  if (!autos.quiet()) autos.update_active(*machine, kProgramThread);
 }
 
 }  // namespace uprog::controller

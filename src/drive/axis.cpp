@@ -12,6 +12,13 @@ namespace {
 
 double floor_mod(double a, double m) { return a - m * std::floor(a / m); }
 
+// `a != b` of std::array calls memcmp; six words compare faster in line.
+bool same_logic(const std::array<int32_t, kInputCount>& a, const std::array<int32_t, kInputCount>& b) {
+  int32_t differ = 0;
+  for (size_t i = 0; i < a.size(); ++i) differ |= a[i] ^ b[i];
+  return differ == 0;
+}
+
 }  // namespace
 
 Axis::Axis(const MotorModel& motor)
@@ -27,6 +34,7 @@ Status Axis::load_parameters(const Parameters& params) {
   if (motor_on_) return Status::kMotorOn;
   params_ = params;
   for (int n = 1; n <= kInputCount; ++n) input_was_active_[n - 1] = input_active(n);
+  inputs_changed_ = true;
   return Status::kOk;
 }
 
@@ -42,6 +50,7 @@ Status Axis::set_input_logic(int n, int32_t logic) {
   params_.input_logic[n - 1] = logic;
   // A change of function is not an edge: remember the new logical state as the old one.
   input_was_active_[n - 1] = input_active(n);
+  inputs_changed_ = true;
   return Status::kOk;
 }
 
@@ -239,7 +248,9 @@ uint32_t Axis::status_register() const {
 // ---------------------------------------------------------------- I/O
 
 void Axis::set_input_level(int n, bool high) {
-  if (n >= 1 && n <= kInputCount) input_levels_[n - 1] = high;
+  if (n < 1 || n > kInputCount) return;
+  input_levels_[n - 1] = high;
+  inputs_changed_ = true;
 }
 
 bool Axis::input_active(int n) const {
@@ -302,23 +313,28 @@ uint32_t Axis::scan_inputs() {
         break;
     }
   }
+  inputs_changed_ = false;
+  scanned_logic_ = params_.input_logic;
+  inhibit_active_ = forward_limit_active_ = reverse_limit_active_ = hard_stop_active_ = false;
+  for (int n = 1; n <= kInputCount; ++n) {
+    if (!input_was_active_[n - 1]) continue;
+    switch (input_function(params_.input_logic[n - 1])) {
+      case InputFunction::kInhibit: inhibit_active_ = true; break;
+      case InputFunction::kForwardLimit: forward_limit_active_ = true; break;
+      case InputFunction::kReverseLimit: reverse_limit_active_ = true; break;
+      case InputFunction::kHardStop: hard_stop_active_ = true; break;
+      default: break;
+    }
+  }
   return events;
 }
 
 // Limit switches stop motion toward them and hard stop stops all motion, with SD.
 void Axis::enforce_limits() {
-  if (!moving_) return;
-  bool block_forward = false, block_reverse = false, hard_stop = false;
-  for (int n = 1; n <= kInputCount; ++n) {
-    if (!input_was_active_[n - 1]) continue;  // scan_inputs has just read every input
-    switch (input_function(params_.input_logic[n - 1])) {
-      case InputFunction::kForwardLimit: block_forward = true; break;
-      case InputFunction::kReverseLimit: block_reverse = true; break;
-      case InputFunction::kHardStop: hard_stop = true; break;
-      default: break;
-    }
-  }
-  if (stopping_ || !(hard_stop || block_forward || block_reverse)) return;
+  // The flags are scan_inputs' summary of the inputs as this cycle found them.
+  const bool block_forward = forward_limit_active_, block_reverse = reverse_limit_active_,
+             hard_stop = hard_stop_active_;
+  if (!moving_ || stopping_ || !(hard_stop || block_forward || block_reverse)) return;
   const ProfileSample end = profile_.final_state();
   double heading = raw_.velocity_counts_per_s;
   if (heading == 0.0) heading = end.velocity_counts_per_s + (end.position_counts - raw_.position_counts);
@@ -332,11 +348,18 @@ void Axis::advance_profile() {
   raw_ = sample(profile_, t_s);
   const bool profile_done = t_s >= profile_duration_s_ && raw_.velocity_counts_per_s == 0.0;
   if (profile_done) raw_ = profile_.final_state();
-  ref_.position_counts = smooth_position_.push(raw_.position_counts);
-  ref_.velocity_counts_per_s = smooth_velocity_.push(raw_.velocity_counts_per_s);
-  ref_.accel_counts_per_s2 = smooth_accel_.push(raw_.accel_counts_per_s2);
-  if (profile_done && smooth_position_.settled() && smooth_velocity_.settled() &&
-      smooth_accel_.settled()) {
+  // The three windows always have one length; without smoothing (SF=0) a window of one sample
+  // returns its sample and is always settled, so the reference is the profile itself.
+  const bool smoothing = smooth_position_.length() != 1;
+  if (smoothing) {
+    ref_.position_counts = smooth_position_.push(raw_.position_counts);
+    ref_.velocity_counts_per_s = smooth_velocity_.push(raw_.velocity_counts_per_s);
+    ref_.accel_counts_per_s2 = smooth_accel_.push(raw_.accel_counts_per_s2);
+  } else {
+    ref_ = raw_;
+  }
+  if (profile_done && (!smoothing || (smooth_position_.settled() && smooth_velocity_.settled() &&
+                                      smooth_accel_.settled()))) {
     moving_ = false;
     ref_ = raw_;
   }
@@ -384,7 +407,9 @@ uint32_t Axis::step() {
   pending_events_ = 0;
   ++cycles_;
   time_us_ += period_us();
-  events |= scan_inputs();
+  // IL may also have been changed through parameters(): compared, not trusted.
+  if (inputs_changed_ || inhibit_active_ || !same_logic(params_.input_logic, scanned_logic_))
+    events |= scan_inputs();
 
   if (motor_on_ && !servo_ready_) {
     enable_elapsed_us_ += period_us();
@@ -402,7 +427,7 @@ uint32_t Axis::step() {
   }
 
   if (servo_ready_) {
-    enforce_limits();
+    if (forward_limit_active_ || reverse_limit_active_ || hard_stop_active_) enforce_limits();
     advance_profile();
     close_loop();
   } else {

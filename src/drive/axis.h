@@ -164,6 +164,14 @@ class Axis {
 
   std::array<bool, kInputCount> input_levels_{};
   std::array<bool, kInputCount> input_was_active_{};
+  // scan_inputs runs only when an input or its IL may have changed, or an inhibit holds the
+  // motor off; it leaves here what enforce_limits needs, so the usual cycle reads no input.
+  bool inputs_changed_ = true;
+  std::array<int32_t, kInputCount> scanned_logic_{};  // IL as last scanned
+  bool inhibit_active_ = false;
+  bool forward_limit_active_ = false;
+  bool reverse_limit_active_ = false;
+  bool hard_stop_active_ = false;
   uint32_t outputs_ = 0;
 
   uint32_t time_us_ = 0;

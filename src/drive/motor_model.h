@@ -5,6 +5,8 @@
 // J = 1e-4 kg·m² (motor and load), viscous 1e-5 N·m·s/rad, Coulomb 5e-3 N·m,
 // bus 48 V, encoder 65536 counts per revolution.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace uprog::drive {
@@ -36,13 +38,40 @@ struct MotorStep {
   double dt_s = 0.0;
   double winding_decay = 1.0;  // exp(-dt R / L)
   double counts_per_rad = 1.0;
+  // 1/R when it is exact (R a power of two, as the default 1 ohm is): x * (1/R) is then the same
+  // double as x / R, and the division leaves the cycle's critical path. 0 otherwise.
+  double exact_conductance_s = 0.0;
 };
 MotorStep motor_step_constants(const MotorModel& model, double dt_s);
+
+// tanh(x) rounds to exactly ±1 for |x| >= 22 (glibc returns 1 - tiny there): skip the call.
+inline double saturating_tanh(double x) { return std::abs(x) >= 22.0 ? std::copysign(1.0, x) : std::tanh(x); }
 
 // Advances the motor by dt_s with the winding voltage held at voltage_v (clamped to the bus).
 // The electrical part is integrated exactly; the mechanics semi-implicitly.
 void step_motor(const MotorModel& model, MotorState& state, double voltage_v, double dt_s);
-// The same with the constants of motor_step_constants(model, dt_s).
-void step_motor(const MotorModel& model, const MotorStep& step, MotorState& state, double voltage_v);
+
+// The same with the constants of motor_step_constants(model, dt_s). Inline: it ends every servo
+// cycle's chain of dependent operations (axis.cpp).
+inline void step_motor(const MotorModel& model, const MotorStep& step, MotorState& state, double voltage_v) {
+  const double dt_s = step.dt_s;
+  const double v = std::clamp(voltage_v, -model.bus_voltage_v, model.bus_voltage_v);
+  const double omega_rad_per_s = state.velocity_counts_per_s / step.counts_per_rad;
+  // di/dt = (v - R i - Ke w) / L, solved exactly for a held voltage and speed.
+  const double decay = step.winding_decay;
+  const double drive_v = v - model.torque_constant_nm_per_a * omega_rad_per_s;
+  const double steady_a = step.exact_conductance_s != 0.0 ? drive_v * step.exact_conductance_s
+                                                          : drive_v / model.resistance_ohm;
+  state.current_a = steady_a + (state.current_a - steady_a) * decay;
+
+  // Coulomb friction is smoothed near zero speed (tanh over 0.05 rad/s) so a stopped axis
+  // does not chatter between the two friction signs.
+  const double friction_nm = model.viscous_friction_nm_s_per_rad * omega_rad_per_s +
+                             model.coulomb_friction_nm * saturating_tanh(omega_rad_per_s / 0.05);
+  const double torque_nm = model.torque_constant_nm_per_a * state.current_a - friction_nm;
+  const double accel_counts_per_s2 = torque_nm / model.inertia_kg_m2 * step.counts_per_rad;
+  state.velocity_counts_per_s += accel_counts_per_s2 * dt_s;
+  state.position_counts += state.velocity_counts_per_s * dt_s;
+}
 
 }  // namespace uprog::drive

@@ -13,13 +13,8 @@ void MovingAverage::reset(uint32_t length, double initial) {
   equal_run_ = static_cast<uint32_t>(window_.size());
 }
 
-double MovingAverage::push(double sample) {
+double MovingAverage::push_windowed(double sample) {
   const size_t n = window_.size();
-  if (n == 1) {  // no smoothing (SF=0), the usual case: the window holds this sample alone
-    window_[0] = sample;
-    sum_ = sample;
-    return sample;
-  }
   const size_t previous = next_ == 0 ? n - 1 : next_ - 1;
   equal_run_ = window_[previous] == sample ? equal_run_ + 1 : 0;
   sum_ += sample - window_[next_];

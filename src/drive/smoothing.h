@@ -12,14 +12,22 @@ class MovingAverage {
  public:
   // A window of `length` samples (1 = no smoothing); every slot starts at `initial`.
   void reset(uint32_t length, double initial);
-  // Pushes a sample and returns the average of the last `length` samples.
-  double push(double sample);
+  // Pushes a sample and returns the average of the last `length` samples. Without a window
+  // (SF=0, the usual case, three pushes every servo cycle) the sample is its own average.
+  double push(double sample) {
+    if (window_.size() != 1) return push_windowed(sample);
+    window_[0] = sample;
+    sum_ = sample;
+    return sample;
+  }
   // Moves every stored sample by `delta` (used when the position is redefined).
   void shift(double delta);
   bool settled() const;  // all samples in the window are equal
   uint32_t length() const { return static_cast<uint32_t>(window_.size()); }
 
  private:
+  double push_windowed(double sample);
+
   std::vector<double> window_{0.0};
   double sum_ = 0.0;
   std::size_t next_ = 0;

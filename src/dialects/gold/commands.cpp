@@ -85,6 +85,14 @@ constexpr std::array kCommands{
     CommandInfo{"RR", 56, kI, 0, 0, 0, 0, 1, "recorder: 1 starts a recording"},
 };
 
+// find_command(id) indexes the table directly: row i must hold id i + 1.
+constexpr bool ids_follow_rows() {
+  for (size_t i = 0; i < kCommands.size(); ++i)
+    if (kCommands[i].id != i + 1) return false;
+  return true;
+}
+static_assert(ids_follow_rows(), "kCommands rows must be in id order, 1, 2, 3, ...");
+
 char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
 
 bool equal_ignoring_case(std::string_view a, std::string_view b) {
@@ -102,10 +110,11 @@ const CommandInfo* find_command(std::string_view name) {
   return nullptr;
 }
 
+// Every drive command a program reads or writes comes through here (MS in `until (MS == 0)`
+// once per servo cycle): a direct index, not a scan.
 const CommandInfo* find_command(uint16_t id) {
-  for (const CommandInfo& c : kCommands)
-    if (c.id == id) return &c;
-  return nullptr;
+  if (id < 1 || id > kCommands.size()) return nullptr;
+  return &kCommands[id - 1u];
 }
 
 std::span<const CommandInfo> all_commands() { return kCommands; }

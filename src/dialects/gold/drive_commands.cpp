@@ -15,11 +15,22 @@ enum Id : uint16_t {
   PS, CC, LS, EC, DB, RV, RL, RG, RR,
 };
 
+// The commands the controller serves (handled_by_drive is false for them).
+bool controller_command(uint16_t id) {
+  switch (id) {
+    case SV: case LD: case RS: case MI: case XQ: case HP: case XC: case KL: case PS: case CC:
+    case LS: case EC: case DB:
+      return true;
+    default:
+      return false;
+  }
+}
+
 // Common checks of read and write: the command exists, is the drive's, and the index fits.
 int32_t check(uint16_t id, int32_t index, const CommandInfo*& info) {
   info = find_command(id);
   if (info == nullptr) return kErrorBadCommand;
-  if (!handled_by_drive(id)) return kErrorNotHandledHere;
+  if (controller_command(id)) return kErrorNotHandledHere;
   if (info->flags & kIndexed) {
     if (index < info->min_index || index > info->max_index) return kErrorBadIndex;
   } else if (index != 0) {
@@ -41,15 +52,7 @@ size_t slot(int32_t index) { return static_cast<size_t>(index - 1); }
 
 }  // namespace
 
-bool handled_by_drive(uint16_t id) {
-  switch (id) {
-    case SV: case LD: case RS: case MI: case XQ: case HP: case XC: case KL: case PS: case CC:
-    case LS: case EC: case DB:
-      return false;
-    default:
-      return find_command(id) != nullptr;
-  }
-}
+bool handled_by_drive(uint16_t id) { return !controller_command(id) && find_command(id) != nullptr; }
 
 int32_t error_for(drive::Status status) {
   switch (status) {
