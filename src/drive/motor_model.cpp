@@ -15,6 +15,7 @@ double MotorModel::accel_per_amp_counts_per_s2() const {
 
 MotorStep motor_step_constants(const MotorModel& model, double dt_s) {
   MotorStep step{dt_s, std::exp(-dt_s * model.resistance_ohm / model.inductance_h), model.counts_per_rad()};
+  step.velocity_step_per_nm = step.counts_per_rad / model.inertia_kg_m2 * dt_s;
   // A power of two (frexp's mantissa exactly 0.5) has an exact reciprocal.
   int exponent = 0;
   if (std::isnormal(model.resistance_ohm) && std::frexp(model.resistance_ohm, &exponent) == 0.5) {
