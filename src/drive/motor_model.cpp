@@ -14,14 +14,15 @@ double MotorModel::accel_per_amp_counts_per_s2() const {
 }
 
 MotorStep motor_step_constants(const MotorModel& model, double dt_s) {
-  MotorStep step{dt_s, std::exp(-dt_s * model.resistance_ohm / model.inductance_h), model.counts_per_rad()};
+  MotorStep step;
+  step.dt_s = dt_s;
+  step.winding_decay = std::exp(-dt_s * model.resistance_ohm / model.inductance_h);
+  step.counts_per_rad = model.counts_per_rad();
+  // 1 - decay without cancellation: -expm1(-dt R / L).
+  const double rise = -std::expm1(-dt_s * model.resistance_ohm / model.inductance_h);
+  step.amps_per_volt = rise / model.resistance_ohm;
+  step.amps_per_counts_per_s = model.torque_constant_nm_per_a * rise / model.resistance_ohm / step.counts_per_rad;
   step.velocity_step_per_nm = step.counts_per_rad / model.inertia_kg_m2 * dt_s;
-  // A power of two (frexp's mantissa exactly 0.5) has an exact reciprocal.
-  int exponent = 0;
-  if (std::isnormal(model.resistance_ohm) && std::frexp(model.resistance_ohm, &exponent) == 0.5) {
-    const double conductance = 1.0 / model.resistance_ohm;
-    if (std::isnormal(conductance)) step.exact_conductance_s = conductance;
-  }
   return step;
 }
 

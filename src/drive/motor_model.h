@@ -32,19 +32,16 @@ struct MotorState {
   double current_a = 0.0;
 };
 
-// What step_motor derives from the model and the cycle time alone: computed once per TS rather
-// than once per cycle (an exp() and two divisions).
+// What step_motor derives from the model and the cycle time alone, computed once per TS: the
+// exact solution of the winding over one cycle and the mechanics' step, as factors, so that
+// the voltage meets two multiply-adds on its way to the velocity and no division.
 struct MotorStep {
   double dt_s = 0.0;
   double winding_decay = 1.0;  // exp(-dt R / L)
   double counts_per_rad = 1.0;
-  // 1/R when it is exact (R a power of two, as the default 1 ohm is): x * (1/R) is then the same
-  // double as x / R, and the division leaves the cycle's critical path. 0 otherwise.
-  double exact_conductance_s = 0.0;
-  // Velocity change per cycle per N·m of torque: counts_per_rad / J * dt. One multiplication in
-  // place of a division and two multiplications at the end of the cycle's chain; the velocity
-  // differs from (torque / J * counts_per_rad) * dt in the last bits only.
-  double velocity_step_per_nm = 0.0;
+  double amps_per_volt = 0.0;             // (1 - decay) / R: the current a held voltage adds
+  double amps_per_counts_per_s = 0.0;     // Ke (1 - decay) / (R counts_per_rad): back-EMF's share
+  double velocity_step_per_nm = 0.0;      // counts_per_rad / J * dt
 };
 MotorStep motor_step_constants(const MotorModel& model, double dt_s);
 
@@ -58,23 +55,23 @@ void step_motor(const MotorModel& model, MotorState& state, double voltage_v, do
 // The same with the constants of motor_step_constants(model, dt_s). Inline: it ends every servo
 // cycle's chain of dependent operations (axis.cpp).
 inline void step_motor(const MotorModel& model, const MotorStep& step, MotorState& state, double voltage_v) {
-  const double dt_s = step.dt_s;
   const double v = std::clamp(voltage_v, -model.bus_voltage_v, model.bus_voltage_v);
   const double omega_rad_per_s = state.velocity_counts_per_s / step.counts_per_rad;
-  // di/dt = (v - R i - Ke w) / L, solved exactly for a held voltage and speed.
-  const double decay = step.winding_decay;
-  const double drive_v = v - model.torque_constant_nm_per_a * omega_rad_per_s;
-  const double steady_a = step.exact_conductance_s != 0.0 ? drive_v * step.exact_conductance_s
-                                                          : drive_v / model.resistance_ohm;
-  state.current_a = steady_a + (state.current_a - steady_a) * decay;
+  // di/dt = (v - R i - Ke w) / L, solved exactly for a held voltage and speed:
+  // i' = i decay + (v - Ke w)(1 - decay)/R.
+  const double held_a = state.current_a * step.winding_decay -
+                        state.velocity_counts_per_s * step.amps_per_counts_per_s;
+  state.current_a = v * step.amps_per_volt + held_a;
 
   // Coulomb friction is smoothed near zero speed (tanh over 0.05 rad/s) so a stopped axis
   // does not chatter between the two friction signs.
   const double friction_nm = model.viscous_friction_nm_s_per_rad * omega_rad_per_s +
                              model.coulomb_friction_nm * saturating_tanh(omega_rad_per_s / 0.05);
-  const double torque_nm = model.torque_constant_nm_per_a * state.current_a - friction_nm;
-  state.velocity_counts_per_s += torque_nm * step.velocity_step_per_nm;
-  state.position_counts += state.velocity_counts_per_s * dt_s;
+  // v' = v + (Kt i' - friction) counts_per_rad / J dt, the friction's share first.
+  const double coasting = state.velocity_counts_per_s - friction_nm * step.velocity_step_per_nm;
+  state.velocity_counts_per_s =
+      state.current_a * (model.torque_constant_nm_per_a * step.velocity_step_per_nm) + coasting;
+  state.position_counts += state.velocity_counts_per_s * step.dt_s;
 }
 
 }  // namespace uprog::drive

@@ -5,7 +5,6 @@
 // velocity loop and a 200 1/s position loop.
 #pragma once
 #include <algorithm>
-#include <cmath>
 
 namespace uprog::drive {
 
@@ -33,44 +32,46 @@ struct LoopInputs {
   double accel_per_amp_counts_per_s2;
 };
 
-// The loops run once per servo cycle on the axis's critical path, so they are defined here,
-// inline, where the axis's step can be compiled as one piece (no calls, state kept in registers).
+// The loops run once per servo cycle and lie end to end on its chain of dependent operations
+// (position feedback -> velocity command -> current command -> voltage -> motor -> position):
+// they are inline so that the axis's step compiles as one piece, and each is written so that
+// its error meets one multiplication and one addition. KP·(e + KI·(I + e·dt)) is computed as
+// e·KP(1 + KI·dt) + KP·KI·I: the same value up to the last bits of the double, with the gain
+// products and the integral term ready before the error is.
 
 // The velocity command of the position loop (UM=5).
 inline double position_loop(const Gains& gains, LoopState& state, const LoopInputs& in, double dt_s) {
+  const double kp = gains.kp[3], ki = gains.ki[3];
+  const double ready = gains.kv[1] * in.reference_velocity_counts_per_s + kp * ki * state.position_integral;
   const double error = in.reference_position_counts - in.feedback_position_counts;
   state.position_integral += error * dt_s;
-  // With KI[3] = 0 (the default) the integral term is a signed zero, and error + ±0 is error
-  // itself unless error is zero: said so, the integrator (three operations) leaves the servo
-  // cycle's chain of dependent operations. Same result bit for bit.
-  double with_integral = error;
-  if (gains.ki[3] != 0.0f || error == 0.0 || !std::isfinite(state.position_integral)) [[unlikely]]
-    with_integral = error + gains.ki[3] * state.position_integral;
-  return gains.kv[1] * in.reference_velocity_counts_per_s + gains.kp[3] * with_integral;
+  return error * (kp * (1.0 + ki * dt_s)) + ready;
 }
 
 // The current command of the velocity loop, clamped to ±current_limit_a; the integrator stops
 // while the output is clamped.
 inline double velocity_loop(const Gains& gains, LoopState& state, double velocity_command_counts_per_s,
                             const LoopInputs& in, double current_limit_a, double dt_s) {
-  const double error = velocity_command_counts_per_s - in.feedback_velocity_counts_per_s;
+  const double kp = gains.kp[2], ki = gains.ki[2];
   const double feedforward_a =
       gains.kv[2] * in.reference_accel_counts_per_s2 / in.accel_per_amp_counts_per_s2;
-  const double candidate = state.velocity_integral + error * dt_s;
-  const double unclamped = feedforward_a + gains.kp[2] * (error + gains.ki[2] * candidate);
+  const double ready = feedforward_a + kp * ki * state.velocity_integral;
+  const double error = velocity_command_counts_per_s - in.feedback_velocity_counts_per_s;
+  const double unclamped = error * (kp * (1.0 + ki * dt_s)) + ready;
   const double clamped = std::clamp(unclamped, -current_limit_a, current_limit_a);
-  if (clamped == unclamped) state.velocity_integral = candidate;
+  if (clamped == unclamped) state.velocity_integral += error * dt_s;
   return clamped;
 }
 
 // The winding voltage of the current loop, clamped to ±bus_voltage_v.
 inline double current_loop(const Gains& gains, LoopState& state, double current_command_a,
                            double current_a, double bus_voltage_v, double dt_s) {
+  const double kp = gains.kp[1], ki = gains.ki[1];
+  const double ready = kp * ki * state.current_integral;
   const double error = current_command_a - current_a;
-  const double candidate = state.current_integral + error * dt_s;
-  const double unclamped = gains.kp[1] * (error + gains.ki[1] * candidate);
+  const double unclamped = error * (kp * (1.0 + ki * dt_s)) + ready;
   const double clamped = std::clamp(unclamped, -bus_voltage_v, bus_voltage_v);
-  if (clamped == unclamped) state.current_integral = candidate;
+  if (clamped == unclamped) state.current_integral += error * dt_s;
   return clamped;
 }
 
