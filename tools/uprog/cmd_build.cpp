@@ -8,6 +8,7 @@
 #include "bytecode/assembly.h"
 #include "bytecode/image.h"
 #include "commands.h"
+#include "huge_heap.h"
 #include "dialects/gold/compile.h"
 #include "support/files.h"
 
@@ -23,6 +24,7 @@ void add_build(CLI::App* cmd, Action& action) {
   cmd->add_option("--emit", *emit, "image or asm")->check(CLI::IsMember({"image", "asm"}));
   cmd->callback([&action, input, output, emit] {
     action = [input, output, emit] {
+      prepare_heap_for_compiling({*input});
       const gold::CompileResult r = gold::compile_file(*input);
       if (!r.diagnostics.empty()) fmt::print(stderr, "{}", format_text(r.diagnostics));
       if (!r.ok()) return 1;

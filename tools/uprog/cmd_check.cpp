@@ -8,6 +8,7 @@
 
 #include "commands.h"
 #include "dialects/gold/compile.h"
+#include "huge_heap.h"
 
 namespace uprog::cli {
 namespace {
@@ -21,6 +22,7 @@ void add_check(CLI::App* cmd, Action& action) {
     action = [files, format] {
       std::vector<Diagnostic> all;
       bool errors = false;
+      prepare_heap_for_compiling(*files);
       for (const std::string& f : *files) {
         gold::CompileOptions options;
         options.check_only = true;  // every diagnostic of a build, without building the image
