@@ -46,9 +46,14 @@ std::string Program::load(bytecode::Image image) {
   return {};
 }
 
-uint64_t Program::run_main() {
+bool Program::run_main() {
   machine_.start(0, main_);
-  const vm::SliceResult r = machine_.run_slice(0, vm::Budget::unlimited());
+  return machine_.run_slice(0, vm::Budget::unlimited()).end == vm::SliceEnd::Finished;
+}
+
+uint64_t Program::count_main() {
+  machine_.start(0, main_);
+  const vm::SliceResult r = machine_.run_slice(0, vm::Budget::of_instructions(UINT64_MAX / 2));
   return r.end == vm::SliceEnd::Finished ? r.executed : 0;
 }
 

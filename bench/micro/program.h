@@ -24,8 +24,11 @@ class Program {
   // Returns an error text, empty on success.
   std::string load_assembly(const std::string& text);
   std::string load_gold(const std::string& source);
-  // Runs main to its end; returns the instructions executed (0 when it did not finish).
-  uint64_t run_main();
+  // Runs main to its end with no budget, as a drive runs a program between waits (the VM's
+  // uncounted loop); false when it did not finish.
+  bool run_main();
+  // Runs main once under an instruction budget to count its instructions (0: did not finish).
+  uint64_t count_main();
   int32_t global_int(const std::string& name) const;
 
  private:

@@ -11,16 +11,18 @@ namespace {
 using uprog::bench::Program;
 
 void run(benchmark::State& state, Program& program) {
-  uint64_t executed = 0;
+  const uint64_t per_run = program.count_main();
+  if (per_run == 0) {
+    state.SkipWithError("the program did not finish");
+    return;
+  }
   for (auto _ : state) {
-    const uint64_t n = program.run_main();
-    if (n == 0) {
+    if (!program.run_main()) {
       state.SkipWithError("the program did not finish");
       return;
     }
-    executed += n;
   }
-  state.SetItemsProcessed(static_cast<int64_t>(executed));
+  state.SetItemsProcessed(static_cast<int64_t>(per_run * state.iterations()));
 }
 
 void load_assembly(benchmark::State& state, Program& program, const std::string& text) {
