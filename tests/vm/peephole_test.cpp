@@ -27,6 +27,24 @@ std::vector<Op> ops_of(const bytecode::Image& image) {
   return ops;
 }
 
+// The image of `text` after the peephole pass.
+bytecode::Image optimized(const std::string& text) {
+  LoadedProgram p;
+  EXPECT_TRUE(p.load(text));
+  bytecode::Image image = p.image;
+  bytecode::optimize(image);
+  return image;
+}
+
+// Runs `image` from routine 0 to its end and returns its int global `name`.
+int32_t run_and_read(const bytecode::Image& image, const std::string& name) {
+  LoadedProgram loaded;
+  EXPECT_TRUE(loaded.load(bytecode::disassemble(image)));
+  loaded.machine.start(0, 0);
+  loaded.run_to_end();
+  return loaded.global(name, 0).i;
+}
+
 // Loads `text` twice, the second time optimized, runs both and compares every global.
 void expect_same_behaviour(const std::string& text, const std::string& name) {
   LoadedProgram plain;
@@ -215,10 +233,7 @@ leave:
 .const float 1.5
 .const float 4.0
 )";
-  LoadedProgram p;
-  ASSERT_TRUE(p.load(text));
-  bytecode::Image image = p.image;
-  bytecode::optimize(image);
+  const bytecode::Image image = optimized(text);
   const std::vector<Op> expected = {Op::STLK, Op::STLK,      // a = 1.5, b = 4.0
                                     Op::SUBFLLS,             // c = a - b
                                     Op::MULFLL, Op::STG,     // out = c * a
@@ -279,10 +294,7 @@ skip3:
 .const float 4.0
 .const float bits 2143289344
 )";
-  LoadedProgram p;
-  ASSERT_TRUE(p.load(text));
-  bytecode::Image image = p.image;
-  bytecode::optimize(image);
+  const bytecode::Image image = optimized(text);
   const std::vector<Op> expected = {Op::STLK, Op::STLK, Op::STLK,
                                     Op::JNLTFLL, Op::PUSHI, Op::STG,   // a < b
                                     Op::JNGEFLK, Op::PUSHI, Op::STG,   // q >= 0.5: NaN, skipped
@@ -290,11 +302,7 @@ skip3:
                                     Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   expect_same_behaviour(text, "float compares");
-  LoadedProgram fused;
-  ASSERT_TRUE(fused.load(bytecode::disassemble(image)));
-  fused.machine.start(0, 0);
-  fused.run_to_end();
-  EXPECT_EQ(fused.global("count", 0).i, 11);
+  EXPECT_EQ(run_and_read(image, "count"), 11);
 }
 
 // `for k = 1:3 ... end` steps and jumps back in one instruction; `x = 0.5` stores a constant;
@@ -343,10 +351,7 @@ end:
   RET
 .const float 0.5
 )";
-  LoadedProgram p;
-  ASSERT_TRUE(p.load(text));
-  bytecode::Image image = p.image;
-  bytecode::optimize(image);
+  const bytecode::Image image = optimized(text);
   const std::vector<Op> expected = {Op::STLK, Op::EOL, Op::PUSHI, Op::STL,
                                     Op::JGTLK,                                  // k > 3
                                     Op::LDG, Op::LDL, Op::ADDI, Op::STG, Op::EOL,
@@ -357,11 +362,7 @@ end:
                                     Op::LDL, Op::STG, Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   expect_same_behaviour(text, "line-ending jumps");
-  LoadedProgram fused;
-  ASSERT_TRUE(fused.load(bytecode::disassemble(image)));
-  fused.machine.start(0, 0);
-  fused.run_to_end();
-  EXPECT_EQ(fused.global("total", 0).i, 100);
+  EXPECT_EQ(run_and_read(image, "total"), 100);
 }
 
 }  // namespace
