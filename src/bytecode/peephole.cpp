@@ -93,11 +93,8 @@ class Fuser {
     for (const auto& f : kFloatCompares) {
       if (at(i + 2).op != f.compare || at(i + 3).op != Op::JZ) continue;
       if (!second_packs) return std::nullopt;
-      if (second.op == Op::LDL)
-        return std::pair{Instr{at(i).pc, f.locals_unless, at(i + 3).a, pack_locals(at(i).a, second.a)},
-                         size_t{4}};
-      return std::pair{Instr{at(i).pc, f.constant_unless, at(i + 3).a, pack_locals(at(i).a, second.a)},
-                       size_t{4}};
+      const Op fused = second.op == Op::LDL ? f.locals_unless : f.constant_unless;
+      return std::pair{Instr{at(i).pc, fused, at(i + 3).a, pack_locals(at(i).a, second.a)}, size_t{4}};
     }
     for (const auto& f : kIntCompares) {
       if (at(i + 2).op != f.compare) continue;
