@@ -12,7 +12,7 @@ void AnswerReader::feed(std::string_view bytes, std::vector<AnswerEvent>& out) {
     const bool was_after_cr = after_cr_;
     after_cr_ = c == '\r';
     if (c == ';') {
-      out.push_back({false, parse_wire_reply(partial_)});
+      out.push_back({false, dialect::parse_semicolon_answer(partial_)});
       partial_.clear();
     } else if (c == '\r' || c == '\n') {
       if (c == '\n' && was_after_cr) continue;  // the LF of CR LF
@@ -21,7 +21,7 @@ void AnswerReader::feed(std::string_view bytes, std::vector<AnswerEvent>& out) {
     } else {
       partial_.push_back(c);
       if (partial_.size() >= kMaxAnswer) {
-        out.push_back({false, parse_wire_reply(partial_)});
+        out.push_back({false, dialect::parse_semicolon_answer(partial_)});
         partial_.clear();
       }
     }

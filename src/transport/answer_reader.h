@@ -1,10 +1,12 @@
-// The host's side of the wire: splits what the drive sends into answers (each ends with `;`) and
-// end-of-line marks (CR LF after the answers to one typed line). Used by `uprog term` and tests.
+// The host's side of the semicolon wire (dialect/semicolon_wire.h): splits what the drive sends
+// into answers (each ends with `;`) and end-of-line marks (CR LF after the answers to one typed
+// line). Used by `uprog term`, `uprog download` and tests.
 #pragma once
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "dialect/semicolon_wire.h"
 #include "transport/reply.h"
 
 namespace uprog::transport {

@@ -7,6 +7,14 @@
 namespace uprog::transport {
 namespace {
 
+std::string wire_reply(const Reply& reply) {
+  std::string out;
+  dialect::append_semicolon_answer(reply, out);
+  return out;
+}
+
+Reply parse_wire_reply(std::string_view answer) { return dialect::parse_semicolon_answer(answer); }
+
 TEST(transport_reply, ValueErrorAndSilentForms) {
   EXPECT_EQ(wire_reply({"4", 0}), "4;");
   EXPECT_EQ(wire_reply({"", 0}), ";");
