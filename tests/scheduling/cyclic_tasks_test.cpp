@@ -56,6 +56,8 @@ TEST(CyclicTasks, BudgetsArePeriodOverLineTime) {
     EXPECT_EQ(policy.stats(i).thread, i + 1);
     EXPECT_EQ(policy.stats(i).budget_lines, budgets[i]);
   }
+  EXPECT_EQ(policy.stats(5).thread, scheduling::kNoThread);  // no such task
+  EXPECT_EQ(policy.stats(5).budget_lines, 0u);
 }
 
 TEST(CyclicTasks, PeriodsAreWholeTicks) {
@@ -92,7 +94,8 @@ TEST(CyclicTasks, DueTasksRunEachTickFastestFirst) {
   for (const auto& tick : ticks) {
     for (int32_t id : tick) ++runs[id];
   }
-  EXPECT_EQ(runs, (std::map<int32_t, int>{{62, 256}, {250, 64}, {1000, 16}, {4000, 4}, {16000, 1}}));
+  EXPECT_EQ(runs,
+            (std::map<int32_t, int>{{62, 256}, {250, 64}, {1000, 16}, {4000, 4}, {16000, 1}}));
   for (uint32_t i = 0; i < 5; ++i) {
     EXPECT_EQ(t.policy.stats(i).runs, static_cast<uint64_t>(256 >> (2 * i)));
     EXPECT_EQ(t.policy.stats(i).last_run_lines, 1u);
@@ -156,8 +159,7 @@ TEST(CyclicTasks, AnOverrunEndsTheCall) {
 TEST(CyclicTasks, AChargeCountsAsLinesAndCanOverrun) {
   Ticks t;
   ASSERT_TRUE(t.load(routine_header("plc1") + write_line(1) + write_line(2) + action_line(625) +
-                     "  EOL\n  EOL\n  EOL\n  EOL\n  EOL\n  EOL\n  EOL\n  RET\n" +
-                     routine_header("plc62") + action_line(625) + "  RET\n"));
+                     "  EOL\n  EOL\n  EOL\n  EOL\n  EOL\n  EOL\n  EOL\n  RET\n"));
   ASSERT_TRUE(t.policy.add_task(1, t.routine("plc1"), kMs));
   ASSERT_TRUE(t.policy.start(t.d.machine, 0));
   for (uint64_t k = 1; k <= 16; ++k) t.run_at(k * kTickNs);
@@ -177,7 +179,8 @@ TEST(CyclicTasks, AChargeCountsAsLinesAndCanOverrun) {
 
 TEST(CyclicTasks, ARunTimeErrorEndsTheCallAndStopsTheTask) {
   Ticks t;
-  ASSERT_TRUE(t.load(routine_header("plc62") + "  PUSHI 1\n  PUSHI 0\n  DIVI\n  POP\n  EOL\n  RET\n" +
+  ASSERT_TRUE(t.load(routine_header("plc62") +
+                     "  PUSHI 1\n  PUSHI 0\n  DIVI\n  POP\n  EOL\n  RET\n" +
                      counted_writer("plc250", 250, 1)));
   ASSERT_TRUE(t.policy.add_task(1, t.routine("plc62"), kTickNs));
   ASSERT_TRUE(t.policy.add_task(2, t.routine("plc250"), 250'000));
@@ -244,8 +247,8 @@ TEST(CyclicTasks, ADebtOfTheRealTimeTasksCarriesOver) {
   // 390 lines each tick and a 1562-line run every 4th: 3122 lines in 4 ticks, of 1562.5 the
   // CPU has. The background gets nothing while the debt lasts.
   Ticks t;
-  ASSERT_TRUE(t.load(plain_lines("plc62", 390) + plain_lines("plc250", 1562) +
-                     forever_writer("main", 5)));
+  ASSERT_TRUE(
+      t.load(plain_lines("plc62", 390) + plain_lines("plc250", 1562) + forever_writer("main", 5)));
   ASSERT_TRUE(t.policy.add_task(1, t.routine("plc62"), kTickNs));
   ASSERT_TRUE(t.policy.add_task(2, t.routine("plc250"), 250'000));
   ASSERT_TRUE(t.policy.set_background(3, t.routine("main")));
@@ -284,8 +287,8 @@ TEST(CyclicTasks, TheInitTaskRunsAloneFirst) {
 
 TEST(CyclicTasks, AWaitPausesTheRunUntilTheTaskIsNextDue) {
   Ticks t;
-  ASSERT_TRUE(t.load(routine_header("plc250") + write_line(1) + "  YIELD\n  EOL\n" +
-                     write_line(2) + "  RET\n"));
+  ASSERT_TRUE(t.load(routine_header("plc250") + write_line(1) + "  YIELD\n  EOL\n" + write_line(2) +
+                     "  RET\n"));
   ASSERT_TRUE(t.policy.add_task(1, t.routine("plc250"), 250'000));
   ASSERT_TRUE(t.policy.start(t.d.machine, 0));
   t.run_at(4 * kTickNs);

@@ -40,7 +40,8 @@ exits:
   EOL
   EOL
   EXIT
-)", 1));
+)",
+                     1));
   d.start(0, "fused");
   EXPECT_EQ(step_lines(d.machine, 0, 1, kCap).end, SliceEnd::LineEnd);
   EXPECT_EQ(step_lines(d.machine, 0, 1, kCap).end, SliceEnd::Finished);
@@ -65,7 +66,8 @@ sub:
   CMDSET 1 0
   EOL
   RET
-)", 1));
+)",
+                     1));
   d.start(0, "main");
   EXPECT_EQ(step_lines(d.machine, 0, 1, kCap).end, SliceEnd::LineEnd);
   EXPECT_EQ(d.take_trace(), std::vector<int32_t>{1});
@@ -95,7 +97,8 @@ t:
   CMDSET 1 0
   EOL
   RET
-)", 1));
+)",
+                     1));
   d.start(0, "t");
   const auto first = step_lines(d.machine, 0, 1, kCap);
   EXPECT_EQ(first.end, SliceEnd::Waiting);
@@ -122,7 +125,8 @@ t:
   PUSHI 1
   WAIT 1000
   JMPEOL t
-)", 1));
+)",
+                     1));
   d.start(0, "t");
   step_lines(d.machine, 0, 2, kCap);
   const uint32_t pc = d.machine.pc(0);
@@ -144,7 +148,8 @@ t:
   ADDI
   STG n
   JMP t
-)", 1));
+)",
+                     1));
   d.start(0, "t");
   const auto s = step_lines(d.machine, 0, 1, 250);
   EXPECT_EQ(s.end, SliceEnd::BudgetSpent);

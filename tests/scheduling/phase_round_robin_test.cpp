@@ -195,8 +195,8 @@ TEST(PhaseRoundRobin, OthersSleepsKeepCountingUnderTheLock) {
 TEST(PhaseRoundRobin, AHolderThatSleepsKeepsTheLockAndThePhasesPassIdle) {
   Phases p;
   ASSERT_TRUE(p.load(routine_header("t1") + action_line(kLock) + sleep_line(1) + write_line(11) +
-                     action_line(kUnlock) + write_forever("t1_loop", 1) +
-                     forever_writer("t2", 2) + forever_writer("t3", 3)));
+                     action_line(kUnlock) + write_forever("t1_loop", 1) + forever_writer("t2", 2) +
+                     forever_writer("t3", 3)));
   for (uint32_t t = 1; t <= 3; ++t) p.d.start(t, "t" + std::to_string(t));
   // The sleep begins at phase 1 (50 µs) and ends at 1050 µs, phase 21.
   p.run(25);

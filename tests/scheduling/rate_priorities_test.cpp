@@ -79,7 +79,8 @@ TEST(RatePriorities, PriorityKMakesAThreadDueEveryKthCycleFromItsStart) {
   ASSERT_TRUE(c.policy.set_priority(3, 4));
   const auto later = c.run(10);
   trace.insert(trace.end(), later.begin(), later.end());
-  EXPECT_EQ(cycles_of(trace, 1), (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15}));
+  EXPECT_EQ(cycles_of(trace, 1),
+            (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15}));
   EXPECT_EQ(cycles_of(trace, 2), (std::vector<int>{1, 4, 7, 10, 13}));
   EXPECT_EQ(cycles_of(trace, 3), (std::vector<int>{6, 10, 14}));
 }

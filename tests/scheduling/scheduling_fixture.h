@@ -112,8 +112,7 @@ inline std::string write_forever(const std::string& label, int value) {
 
 // A task that writes `id` in every line, forever: each line is `PUSHI id; CMDSET 1 0; EOL`.
 inline std::string forever_writer(const std::string& name, int id) {
-  return ".routine task \"" + name + "\" in=0 out=0 entry=" + name + "\n" +
-         write_forever(name, id);
+  return ".routine task \"" + name + "\" in=0 out=0 entry=" + name + "\n" + write_forever(name, id);
 }
 
 // A task of `lines` lines that writes `id` in each, then ends (its end is a bare RET).

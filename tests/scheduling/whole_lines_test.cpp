@@ -71,7 +71,8 @@ main:
   CMDSET 1 0
   EOL
   RET
-)", 1));
+)",
+                     1));
   d.start(0, "main");
   LineTiming t;
   t.unlimited = true;
@@ -115,7 +116,8 @@ main:
   ADDI
   STG n
   JMP main
-)", 1));
+)",
+                     1));
   d.start(0, "main");
   LineTiming t;
   t.unlimited = true;
@@ -141,7 +143,8 @@ main:
   POP
   EOL
   RET
-)", 1));
+)",
+                     1));
   d.start(0, "main");
   ASSERT_TRUE(d.machine.set_breakpoint(4));  // the second line's first instruction
   const WholeLines policy(LineTiming{10});

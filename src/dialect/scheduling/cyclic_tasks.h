@@ -20,8 +20,8 @@ struct CyclicTasksConfig {
 struct CyclicTaskStats {
   uint32_t thread = kNoThread;
   uint64_t period_ns = 0;
-  uint64_t budget_lines = 0;       // lines one run may execute: period_ns / line_ns
-  uint64_t runs = 0;               // runs finished
+  uint64_t budget_lines = 0;  // lines one run may execute: period_ns / line_ns
+  uint64_t runs = 0;          // runs finished
   uint64_t last_run_lines = 0;
   uint64_t largest_run_lines = 0;  // an overrun counts with the lines it used (100 % or more)
   uint64_t overruns = 0;
@@ -73,8 +73,10 @@ class CyclicTasks {
   uint32_t running() const { return running_; }
 
   uint32_t task_count() const { return task_count_; }
-  // Task i in the order they run (fastest first); the caller keeps i < task_count().
-  const CyclicTaskStats& stats(uint32_t i) const { return tasks_[i].stats; }
+  // Task i in the order they run (fastest first); past task_count(), an empty record.
+  const CyclicTaskStats& stats(uint32_t i) const {
+    return i < task_count_ ? tasks_[i].stats : kNoStats;
+  }
   // Background loops finished in the last whole virtual second since start; 0 while stopped.
   uint64_t background_loops_last_second() const { return started_ ? loops_last_second_ : 0; }
   void reset_statistics();
@@ -112,6 +114,8 @@ class CyclicTasks {
   void accrue(uint64_t now_ns);
   void latch_seconds(uint64_t now_ns);
 
+  static constexpr CyclicTaskStats kNoStats{};
+
   CyclicTasksConfig config_;
   Task tasks_[kMaxTasks];
   uint32_t task_count_ = 0;
@@ -125,8 +129,8 @@ class CyclicTasks {
   uint64_t first_rt_tick_ = 0;  // the first tick after the init task: every task is due
   uint64_t accrued_ns_ = 0;     // time up to which the background's lines have been credited
   uint64_t accrued_remainder_ns_ = 0;  // time short of a whole line, credited later
-  int64_t credit_lines_ = 0;    // the background's lines; below 0, a debt to the real-time tasks
-  uint64_t rt_lines_ = 0;       // lines the real-time tasks used since the last background slice
+  int64_t credit_lines_ = 0;  // the background's lines; below 0, a debt to the real-time tasks
+  uint64_t rt_lines_ = 0;     // lines the real-time tasks used since the last background slice
   uint64_t charged_ = 0;
   uint32_t running_ = kNoThread;
   uint64_t second_end_ns_ = 0;

@@ -6,8 +6,8 @@
 namespace uprog::scheduling {
 
 vm::Budget WholeLines::budget() const {
-  vm::Budget budget =
-      vm::Budget::of_lines(timing_.unlimited ? timing_.unlimited_line_cap : timing_.lines_per_cycle);
+  vm::Budget budget = vm::Budget::of_lines(timing_.unlimited ? timing_.unlimited_line_cap
+                                                             : timing_.lines_per_cycle);
   budget.back_jumps = timing_.back_jump_cap;
   return budget;
 }
