@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dialect/answer.h"
+#include "dialect/scheduling/whole_lines.h"
 #include "dialect/wire_form.h"
 #include "vm/machine.h"
 
@@ -16,19 +17,7 @@ namespace uprog::dialect {
 
 // How much of the program runs in each cycle, where a dialect lets the user choose (Gold: source
 // lines per background slice; `uprog run --budget`). A dialect with a fixed schedule ignores it.
-struct Timing {
-  uint32_t lines_per_cycle = 1;
-  // The program runs until it waits, yields or ends: only waits advance time (CI, benchmarks).
-  bool unlimited = false;
-  // Guard for `unlimited`: a slice stops after this many source lines even without a wait, so
-  // a busy loop cannot hang the simulation (it continues in the next cycle). Lines, not
-  // instructions: every loop iteration of a compiled program ends a line, and a line budget
-  // costs the VM nothing per instruction.
-  uint64_t unlimited_line_cap = 1'000'000;
-  // Every slice also stops after this many jumps back (vm::Budget::back_jumps): a downloaded
-  // image whose loop never ends a line cannot hang the drive.
-  uint64_t back_jump_cap = 1'000'000;
-};
+using Timing = scheduling::LineTiming;
 
 struct FirmwareOptions {
   Timing timing;

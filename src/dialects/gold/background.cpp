@@ -1,5 +1,6 @@
-// The Gold background: after every servo cycle one slice of the user program (Timing: whole
-// source lines), with auto-routines entered at the slice boundary (a line boundary).
+// The Gold background: after every servo cycle one slice of the user program (the whole-lines
+// policy, scheduling/whole_lines.h), with auto-routines entered at the slice boundary (a line
+// boundary).
 #include "dialects/gold/firmware.h"
 #include "vm/run_error.h"
 
@@ -61,14 +62,9 @@ void Firmware::background_slice() {
   // The usual servo cycle has nothing pending and no auto-routine active: no bookkeeping.
   if (!autos_.quiet()) dispatch_auto_routines();
   vm::Machine& m = *machine();
-  const vm::ThreadStatus before = m.status(kProgramThread);
-  if (before != vm::ThreadStatus::Running && before != vm::ThreadStatus::Waiting) return;
-  const dialect::Timing& timing = options_.timing;
-  vm::Budget budget = vm::Budget::of_lines(timing.unlimited ? timing.unlimited_line_cap : timing.lines_per_cycle);
-  budget.back_jumps = timing.back_jump_cap;
-  const vm::SliceResult r = m.run_slice(kProgramThread, budget);
-  if (r.end == vm::SliceEnd::Error) on_run_time_error();
-  if (r.end == vm::SliceEnd::Finished) log("program finished");
+  const scheduling::Report r = schedule_.slice(m, kProgramThread);
+  if (r.has(kProgramThread, scheduling::ThreadEvent::Error)) on_run_time_error();
+  if (r.has(kProgramThread, scheduling::ThreadEvent::Finished)) log("program finished");
   if (!autos_.quiet()) autos_.update_active(m, kProgramThread);
 }
 

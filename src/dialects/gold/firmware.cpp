@@ -32,7 +32,7 @@ dialect::FramerOptions command_line_framing() {
 }
 
 Firmware::Firmware(dialect::Runtime& runtime, const dialect::FirmwareOptions& options)
-    : runtime_(runtime), options_(options), wire_(command_line_framing()) {}
+    : runtime_(runtime), options_(options), wire_(command_line_framing()), schedule_(options.timing) {}
 
 uint64_t Firmware::cycle_ns() const {
   const uint32_t period_us = runtime_.axis().period_us();

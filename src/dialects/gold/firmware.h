@@ -93,6 +93,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   dialect::Runtime& runtime_;
   dialect::FirmwareOptions options_;
   dialect::SemicolonWire wire_;
+  scheduling::WholeLines schedule_;
   std::unique_ptr<DriveCommands> drive_commands_;
 
   // The stored program (the drive's flash, mirrored) and the one in RAM.
