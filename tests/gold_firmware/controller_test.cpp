@@ -74,6 +74,15 @@ TEST(controller, GarbageAndHugeLinesAreRefusedWithoutHarm) {
   EXPECT_EQ(ps(c), -1);
 }
 
+TEST(controller, ADriveRefusalSaysWhatWentWrong) {
+  Controller c(gold_options());
+  const std::vector<Answer> a = c.send("AC=-5");  // AC takes positive values only
+  ASSERT_EQ(a.size(), 1u);
+  EXPECT_EQ(a[0].error, 21);
+  EXPECT_EQ(a[0].text, "Value out of the command's range");
+  EXPECT_EQ(one(c, "EC"), "21");
+}
+
 TEST(controller, RefusedDownloadKeepsThePreviousProgram) {
   const std::string dir = temp_dir("refused");
   const std::vector<uint8_t> good = compile_bytes("int v\nfunction main()\nv = 5\nreturn\n");

@@ -62,13 +62,13 @@ void Firmware::download_expression(std::string_view expression, DownloadReceiver
                                    std::vector<Answer>& answers) {
   std::vector<uint8_t> image;
   if (auto error = download.handle(expression, image)) {
-    answers.push_back(std::move(*error));
+    answers.push_back(error_answer(error->error, std::move(error->text)));
     return;
   }
   if (image.empty()) return;  // BEGIN, a chunk or ABORT: nothing more to do
   // The image's CRC and the verifier are checked before anything is stored.
   const dialect::DownloadResult r = this->download(image);
-  if (!r.ok) answers.push_back(Answer{r.error, r.storage_failed ? kErrorStorage : kErrorDownloadRefused});
+  if (!r.ok) answers.push_back(error_answer(r.storage_failed ? kErrorStorage : kErrorDownloadRefused, r.error));
 }
 
 void Firmware::expression(std::string_view text, std::vector<Answer>& answers) {
@@ -114,7 +114,10 @@ void Firmware::run_line(const std::string& text, std::vector<Answer>& answers) {
   if (r.end == vm::SliceEnd::Error) {
     const vm::RunError e = m.last_error(0);
     if (e == vm::RunError::CommandRefused) {
-      answers.push_back(error_answer(m.error_detail(0), "drive error " + std::to_string(m.error_detail(0))));
+      // The drive's own refusal: its code, and what it means.
+      const int32_t code = m.error_detail(0);
+      const char* meaning = interpreter_error_text(code);
+      answers.push_back(error_answer(code, meaning != nullptr ? meaning : "drive error " + std::to_string(code)));
     } else {
       answers.push_back(error_answer(kErrorRunTimeBase + static_cast<int32_t>(e), vm::run_error_text(e)));
     }

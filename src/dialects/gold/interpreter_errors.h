@@ -24,3 +24,10 @@ enum InterpreterError : int32_t {
 };
 
 }  // namespace uprog::gold
+
+namespace uprog::gold {
+
+// The text of a registered interpreter error (interpreter_errors.def); nullptr for none.
+const char* interpreter_error_text(int32_t code);
+
+}  // namespace uprog::gold
