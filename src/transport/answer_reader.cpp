@@ -16,8 +16,10 @@ void AnswerReader::feed(std::string_view bytes, std::vector<AnswerEvent>& out) {
       partial_.clear();
     } else if (c == '\r' || c == '\n') {
       if (c == '\n' && was_after_cr) continue;  // the LF of CR LF
-      out.push_back({true, {}});
-      partial_.clear();  // stray text before a line break is not an answer
+      // Text ended by a line break rather than `;` is the drive's own output, not an answer.
+      if (partial_.empty()) out.push_back({true, {}, false});
+      else out.push_back({false, {partial_, 0}, true});
+      partial_.clear();
     } else {
       partial_.push_back(c);
       if (partial_.size() >= kMaxAnswer) {

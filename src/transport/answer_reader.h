@@ -14,6 +14,9 @@ namespace uprog::transport {
 struct AnswerEvent {
   bool end_of_line = false;  // true: all answers to one physical line have come; reply unused
   Reply reply;
+  // True: a line the drive sent on its own (a program's message), its text in reply.text; it is
+  // no answer to any line the host sent.
+  bool output = false;
 };
 
 class AnswerReader {

@@ -34,6 +34,20 @@ TEST(transport_reply, ParseReadsWhatWasWritten) {
   EXPECT_EQ(parse_wire_reply("?"), (Reply{"", -1}));
 }
 
+TEST(transport_answer_reader, TextEndedByALineBreakIsTheDrivesOwnOutput) {
+  AnswerReader reader;
+  std::vector<AnswerEvent> events;
+  reader.feed("7;\r\n%P 1 00000000 00000000 MSG A\r\n8;", events);
+  ASSERT_EQ(events.size(), 4u);
+  EXPECT_EQ(events[0].reply, (Reply{"7", 0}));
+  EXPECT_TRUE(events[1].end_of_line);
+  EXPECT_TRUE(events[2].output);
+  EXPECT_FALSE(events[2].end_of_line);
+  EXPECT_EQ(events[2].reply.text, "%P 1 00000000 00000000 MSG A");
+  EXPECT_EQ(events[3].reply, (Reply{"8", 0}));
+  EXPECT_FALSE(events[3].output);
+}
+
 TEST(transport_answer_reader, SplitsAnswersAndLineEnds) {
   AnswerReader reader;
   std::vector<AnswerEvent> events;

@@ -2,9 +2,6 @@
 // on the host and downloads it into a running drive with its dialect's download lines (Gold: the
 // DL lines of docs/protocol.md); `--load` then sends the dialect's load line (Gold: CC).
 #include <fmt/core.h>
-#include <poll.h>
-#include <sys/socket.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <memory>
@@ -15,14 +12,10 @@
 #include "commands.h"
 #include "dialect_choice.h"
 #include "support/files.h"
-#include "transport/answer_reader.h"
-#include "transport/tcp_connect.h"
-#include "transport/asio.h"
+#include "transport/drive_client.h"
 
 namespace uprog::cli {
 namespace {
-
-namespace asio = boost::asio;
 
 struct DownloadOptions {
   std::string address;
@@ -46,71 +39,8 @@ std::optional<std::vector<uint8_t>> stored_form_of(const std::string& path, cons
   return std::move(r.stored_form);
 }
 
-// A blocking line-at-a-time conversation: send one line, read its answers up to the CR LF.
-class Link {
- public:
-  explicit Link(asio::ip::tcp::socket socket) : socket_(std::move(socket)) {}
-
-  // The answers to `line`; nullopt (with `error` set) when the drive is gone or silent.
-  std::optional<std::vector<transport::Reply>> exchange(const std::string& line,
-                                                        std::chrono::milliseconds timeout,
-                                                        std::string& error) {
-    std::string_view bytes = line;
-    const std::string framed = line + "\r\n";
-    bytes = framed;
-    while (!bytes.empty()) {
-      const ssize_t n = ::send(socket_.native_handle(), bytes.data(), bytes.size(), MSG_NOSIGNAL);
-      if (n <= 0) {
-        error = "the drive closed the connection";
-        return std::nullopt;
-      }
-      bytes.remove_prefix(static_cast<std::size_t>(n));
-    }
-    std::vector<transport::Reply> replies;
-    const auto deadline = std::chrono::steady_clock::now() + timeout;
-    while (true) {
-      for (; next_ < events_.size(); ++next_) {
-        if (events_[next_].end_of_line) {
-          ++next_;
-          return replies;
-        }
-        replies.push_back(events_[next_].reply);
-      }
-      events_.clear();
-      next_ = 0;
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-          deadline - std::chrono::steady_clock::now());
-      pollfd p{socket_.native_handle(), POLLIN, 0};
-      if (::poll(&p, 1, static_cast<int>(std::max<long long>(0, left.count()))) <= 0) {
-        error = "no answer within the timeout";
-        return std::nullopt;
-      }
-      char buffer[4096];
-      const ssize_t n = ::read(socket_.native_handle(), buffer, sizeof buffer);
-      if (n <= 0) {
-        error = "the drive closed the connection";
-        return std::nullopt;
-      }
-      reader_.feed(std::string_view(buffer, static_cast<std::size_t>(n)), events_);
-    }
-  }
-
- private:
-  asio::ip::tcp::socket socket_;
-  transport::AnswerReader reader_;
-  std::vector<transport::AnswerEvent> events_;
-  std::size_t next_ = 0;
-};
-
-bool connect(asio::io_context& io, const std::string& address, asio::ip::tcp::socket& socket) {
-  std::string error;
-  if (transport::connect_tcp(io, address, socket, error)) return true;
-  fmt::print(stderr, "uprog download: {}\n", error);
-  return false;
-}
-
 // Sends `line` and expects no error; prints the drive's error otherwise.
-bool send_expecting_success(Link& link, const std::string& line, std::chrono::milliseconds timeout) {
+bool send_expecting_success(transport::DriveClient& link, const std::string& line, std::chrono::milliseconds timeout) {
   std::string error;
   const auto replies = link.exchange(line, timeout, error);
   if (!replies) {
@@ -137,10 +67,13 @@ int run_download(const DownloadOptions& options) {
                image->size(), d->max_download_bytes());
     return 1;
   }
-  asio::io_context io;
-  asio::ip::tcp::socket socket(io);
-  if (!connect(io, options.address, socket)) return 1;
-  Link link(std::move(socket));
+  std::string error;
+  const auto client = transport::DriveClient::connect(options.address, error);
+  if (!client) {
+    fmt::print(stderr, "uprog download: {}\n", error);
+    return 1;
+  }
+  transport::DriveClient& link = *client;
   const auto timeout = std::chrono::milliseconds(static_cast<long long>(options.timeout_s * 1000));
   // One line at a time: a refused chunk stops the transfer at once (the drive dropped it too).
   for (const std::string& line : d->download_lines(*image)) {
