@@ -55,22 +55,21 @@ class Controller::Drive final : public dialect::Runtime {
 
  private:
   void run_until(uint64_t target_ns);
+  void run_one_axis_until(uint64_t target_ns);
   uint64_t axis_period_ns(size_t a) const { return uint64_t{std::max(axes_[a]->period_us(), 1u)} * 1000; }
   // A firmware's cycle of at least a microsecond: time always moves on.
   uint64_t cycle_ns() const { return std::max<uint64_t>(firmware_->cycle_ns(), 1000); }
 
   uint64_t now_ns_ = 0;
   uint64_t target_ns_ = 0;  // all the time given to advance_ns(), a part of a cycle included
-  std::vector<uint64_t> last_step_ns_;  // per axis, its last servo cycle
-  uint64_t last_cycle_ns_ = 0;          // the firmware's last cycle
+  std::vector<uint64_t> next_step_ns_;  // per axis, when its next servo cycle is due
+  uint64_t next_cycle_ns_ = 0;          // when the firmware's next cycle is due
   std::vector<uint32_t> events_;        // per axis, its event bits since the firmware's last cycle
 };
 
 void Controller::Drive::reboot() {
   axes_.clear();
   axes_.push_back(std::make_unique<drive::Axis>());
-  last_step_ns_.assign(axes_.size(), now_ns_);
-  last_cycle_ns_ = now_ns_;
   events_.assign(axes_.size(), 0);
   std::string error;
   if (auto params = saved_axis_parameters(&error)) {
@@ -79,6 +78,9 @@ void Controller::Drive::reboot() {
     boot_messages_.push_back("saved parameters refused: " + error + "; using defaults");
   }
   firmware_->boot(boot_messages_);
+  next_cycle_ns_ = now_ns_ + cycle_ns();
+  next_step_ns_.resize(axes_.size());
+  for (size_t a = 0; a < axes_.size(); ++a) next_step_ns_[a] = now_ns_ + axis_period_ns(a);
 }
 
 std::optional<drive::Parameters> Controller::Drive::saved_axis_parameters(std::string* error) {
@@ -93,25 +95,49 @@ void Controller::Drive::advance_ns(uint64_t ns) {
 }
 
 // Whatever is due next happens next: an axis's servo cycle, the firmware's cycle, or both at the
-// same instant, the axes first. Periods are read when they are needed, so a changed TS counts
-// from the cycle after the change.
+// same instant, the axes first. A period is read after the cycle it follows, so a TS changed in
+// a cycle counts from the next one.
 void Controller::Drive::run_until(uint64_t target_ns) {
+  if (axes_.size() == 1) return run_one_axis_until(target_ns);
+  const size_t axes = axes_.size();
   for (;;) {
-    uint64_t next = last_cycle_ns_ + cycle_ns();
-    for (size_t a = 0; a < axes_.size(); ++a) next = std::min(next, last_step_ns_[a] + axis_period_ns(a));
+    uint64_t next = next_cycle_ns_;
+    for (size_t a = 0; a < axes; ++a) next = std::min(next, next_step_ns_[a]);
     if (next > target_ns) return;
     now_ns_ = next;
-    for (size_t a = 0; a < axes_.size(); ++a) {
-      if (last_step_ns_[a] + axis_period_ns(a) != next) continue;
-      events_[a] |= axes_[a]->step();
-      last_step_ns_[a] = next;
+    for (size_t a = 0; a < axes; ++a) {
+      if (next_step_ns_[a] == next) events_[a] |= axes_[a]->step();
     }
-    if (last_cycle_ns_ + cycle_ns() == next) {
-      last_cycle_ns_ = next;
+    if (next_cycle_ns_ == next) {
       firmware_->cycle(events_);
-      std::fill(events_.begin(), events_.end(), 0u);
+      for (uint32_t& e : events_) e = 0;
+      next_cycle_ns_ = next + cycle_ns();
+    }
+    for (size_t a = 0; a < axes; ++a) {
+      if (next_step_ns_[a] == next) next_step_ns_[a] = next + axis_period_ns(a);
     }
   }
+}
+
+// The same with one axis, the usual drive: this loop runs every servo cycle, so it keeps what
+// it touches in locals.
+void Controller::Drive::run_one_axis_until(uint64_t target_ns) {
+  drive::Axis& axis = *axes_[0];
+  uint64_t step_due = next_step_ns_[0];
+  for (;;) {
+    const uint64_t next = std::min(next_cycle_ns_, step_due);
+    if (next > target_ns) break;
+    now_ns_ = next;
+    const bool steps = step_due == next;
+    if (steps) events_[0] |= axis.step();
+    if (next_cycle_ns_ == next) {
+      firmware_->cycle(events_);
+      events_[0] = 0;
+      next_cycle_ns_ = next + cycle_ns();
+    }
+    if (steps) step_due = next + axis_period_ns(0);
+  }
+  next_step_ns_[0] = step_due;
 }
 
 // --- the public face ---

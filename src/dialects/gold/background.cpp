@@ -62,9 +62,13 @@ void Firmware::background_slice() {
   // The usual servo cycle has nothing pending and no auto-routine active: no bookkeeping.
   if (!autos_.quiet()) dispatch_auto_routines();
   vm::Machine& m = *machine();
-  const scheduling::Report r = schedule_.slice(m, kProgramThread);
-  if (r.has(kProgramThread, scheduling::ThreadEvent::Error)) on_run_time_error();
-  if (r.has(kProgramThread, scheduling::ThreadEvent::Finished)) log("program finished");
+  // The whole-lines policy's slice (scheduling::WholeLines::slice), without its report: this
+  // runs every servo cycle, and the slice's end says all the firmware needs.
+  const vm::ThreadStatus before = m.status(kProgramThread);
+  if (before != vm::ThreadStatus::Running && before != vm::ThreadStatus::Waiting) return;
+  const vm::SliceResult r = m.run_slice(kProgramThread, slice_budget_);
+  if (r.end == vm::SliceEnd::Error) on_run_time_error();
+  if (r.end == vm::SliceEnd::Finished) log("program finished");
   if (!autos_.quiet()) autos_.update_active(m, kProgramThread);
 }
 

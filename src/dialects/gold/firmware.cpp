@@ -32,17 +32,19 @@ dialect::FramerOptions command_line_framing() {
 }
 
 Firmware::Firmware(dialect::Runtime& runtime, const dialect::FirmwareOptions& options)
-    : runtime_(runtime), options_(options), wire_(command_line_framing()), schedule_(options.timing) {}
+    : runtime_(runtime), options_(options), wire_(command_line_framing()), schedule_(options.timing),
+      slice_budget_(schedule_.budget()) {}
 
 uint64_t Firmware::cycle_ns() const {
-  const uint32_t period_us = runtime_.axis().period_us();
+  const uint32_t period_us = axis_->period_us();
   return uint64_t{period_us == 0 ? 50u : period_us} * 1000;
 }
 
 // Power-up and RS: the controller has made a fresh axis with the saved parameters; the stored
 // program goes into RAM and AUTOEXEC starts.
 void Firmware::boot(std::vector<std::string>& messages) {
-  drive_commands_ = std::make_unique<DriveCommands>(runtime_.axis());
+  axis_ = &runtime_.axis();
+  drive_commands_ = std::make_unique<DriveCommands>(*axis_);
   recorder_map_.clear();
   ec_ = 0;
   if (!flash_read_) {

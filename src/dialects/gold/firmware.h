@@ -94,6 +94,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   dialect::FirmwareOptions options_;
   dialect::SemicolonWire wire_;
   scheduling::WholeLines schedule_;
+  vm::Budget slice_budget_;  // the whole-lines policy's, worked out once
+  drive::Axis* axis_ = nullptr;  // the runtime's axis since the last boot
   std::unique_ptr<DriveCommands> drive_commands_;
 
   // The stored program (the drive's flash, mirrored) and the one in RAM.
