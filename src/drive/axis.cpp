@@ -1,4 +1,5 @@
-// The servo cycle: inputs, enable delay, profile and smoothing, limits, loops, motor, faults.
+// The servo cycle: inputs, enable delay, profile and smoothing, limits, loops, motor, faults,
+// the target window and homing.
 #include "drive/axis.h"
 
 #include <algorithm>
@@ -60,6 +61,13 @@ Status Axis::set_period_us(int32_t period_us) {
   return Status::kOk;
 }
 
+Status Axis::set_counts_per_revolution(int32_t counts) {
+  if (counts < 6) return Status::kOutOfRange;  // the reference's CA[18] range starts at 6
+  if (motor_on_) return Status::kMotorOn;
+  params_.commutation[kCountsPerRevolutionIndex - 1] = counts;
+  return Status::kOk;
+}
+
 // ---------------------------------------------------------------- enable
 
 Status Axis::set_motor_on(bool on) {
@@ -83,6 +91,10 @@ void Axis::motor_off() {
   motor_on_ = false;
   servo_ready_ = false;
   moving_ = false;
+  ramping_ = false;
+  pt_active_ = false;
+  has_target_ = false;
+  in_window_us_ = -1;
   current_command_a_ = 0.0;
   velocity_command_counts_per_s_ = 0.0;
 }
@@ -148,11 +160,21 @@ void Axis::set_jog_velocity(int32_t velocity_counts_per_s) {
   pending_ = Pending::kJog;
 }
 
+void Axis::set_pt_start(int32_t index) {
+  pt_start_ = index;
+  pending_ = Pending::kPt;
+}
+
+int32_t Axis::pt_index() const { return pt_active_ ? pt_executing_ : pt_start_; }
+
 void Axis::start_profile(const Profile& profile, bool stopping) {
   profile_ = profile;
   profile_duration_s_ = profile.duration_s();
   stopping_ = stopping;
   profile_start_cycle_ = cycles_;
+  pt_active_ = false;
+  ramping_ = true;
+  in_window_us_ = -1;
   if (!moving_) {
     // A new motion from rest takes the current SF; while moving the window stays as it is.
     const double window_us = params_.smoothing_ms * 1000.0;
@@ -168,19 +190,44 @@ void Axis::start_profile(const Profile& profile, bool stopping) {
 Status Axis::begin() {
   if (!motor_on_) return Status::kMotorOff;
   if (params_.unit_mode == 1) return Status::kModeNotSupported;
+  if (pending_ == Pending::kPt) {
+    if (params_.unit_mode != 5) return Status::kModeNotSupported;
+    if (!pt_can_start(pt_, pt_start_)) return Status::kBadStartData;
+  }
+  stopped_by_limit_ = false;
+  ends_at_limit_ = false;
+  has_target_ = false;
   const MotionLimits limits{static_cast<double>(params_.speed_counts_per_s),
                             static_cast<double>(params_.accel_counts_per_s2),
                             static_cast<double>(params_.decel_counts_per_s2)};
   const double vh = std::max(1.0, static_cast<double>(params_.velocity_high_counts_per_s));
   const double vl = std::min(-1.0, static_cast<double>(params_.velocity_low_counts_per_s));
+  if (pending_ == Pending::kPt && params_.unit_mode == 5) {
+    // The PT motion runs in advance_pt; the smoothing window does not apply to it.
+    start_profile(plan_stop(raw_.position_counts, 0.0, 1.0), false);
+    pt_active_ = true;
+    pt_executing_ = pt_start_;
+    pt_offset_counts_ = offset_counts_;
+    return Status::kOk;
+  }
   if (params_.unit_mode == 2 || pending_ == Pending::kJog) {
     const double jog = std::clamp(static_cast<double>(params_.jog_velocity_counts_per_s), vl, vh);
+    if (params_.unit_mode == 2 && params_.profiler_mode == 0) {
+      // No profiler (PM=0): the reference is the jog velocity at once.
+      Profile step_to_jog;
+      step_to_jog.start_position_counts = raw_.position_counts;
+      step_to_jog.start_velocity_counts_per_s = jog;
+      step_to_jog.end_velocity_counts_per_s = jog;
+      start_profile(step_to_jog, false);
+      return Status::kOk;
+    }
     if (params_.unit_mode == 5 && !modulo_active() && jog != 0.0) {
       // A position-mode jog ends at the software limit in its direction.
       MotionLimits to_limit = limits;
       to_limit.speed_counts_per_s = std::abs(jog);
       const double limit = jog > 0 ? user_to_internal(params_.position_high_counts)
                                    : user_to_internal(params_.position_low_counts);
+      ends_at_limit_ = true;  // a position-mode jog can only end at the software limit
       start_profile(plan_move(raw_.position_counts, raw_.velocity_counts_per_s, limit, to_limit), false);
     } else {
       start_profile(plan_jog(raw_.position_counts, raw_.velocity_counts_per_s, jog, limits), false);
@@ -191,19 +238,23 @@ Status Axis::begin() {
   if (!modulo_active()) {
     target = std::clamp(target, user_to_internal(params_.position_low_counts),
                         user_to_internal(params_.position_high_counts));
+    ends_at_limit_ = target != target_internal_;
   }
   MotionLimits move = limits;
   move.speed_counts_per_s = std::min(move.speed_counts_per_s, target >= raw_.position_counts ? vh : -vl);
   start_profile(plan_move(raw_.position_counts, raw_.velocity_counts_per_s, target, move), false);
+  has_target_ = true;
   return Status::kOk;
 }
 
 void Axis::stop_with(double decel_counts_per_s2) {
   if (!moving_) return;
   start_profile(plan_stop(raw_.position_counts, raw_.velocity_counts_per_s, decel_counts_per_s2), true);
+  has_target_ = false;  // a stopped motion has no target to settle at: MS stays 1
+  ends_at_limit_ = false;
 }
 
-void Axis::stop() { stop_with(params_.decel_counts_per_s2); }
+void Axis::stop() { stop_with(params_.stop_decel_counts_per_s2); }
 
 // ---------------------------------------------------------------- feedback
 
@@ -228,20 +279,28 @@ int32_t Axis::reference_velocity() const {
 int32_t Axis::reference_position() const { return internal_to_user(ref_.position_counts); }
 
 int32_t Axis::motion_status() const {
-  if (!servo_ready_ || fault_bits_ != 0) return 3;
+  if (!servo_ready_) return 1;  // the motor is off (or still enabling): nothing is commanded
+  switch (params_.unit_mode) {
+    case 1: return 1;                  // no software motion in current mode
+    case 2: return ramping_ ? 2 : 1;   // the reference differs from the JV target while ramping
+    default: break;
+  }
   if (moving_) return 2;
-  if (params_.unit_mode == 5 &&
-      std::abs(ref_.position_counts - motor_state_.position_counts) > kInPositionWindow_counts)
-    return 1;
-  return 0;
+  const bool settled = has_target_ && in_window_us_ >= static_cast<int64_t>(params_.target_time_ms) * 1000;
+  return settled ? 0 : 1;
 }
 
 uint32_t Axis::status_register() const {
   uint32_t sr = 0;
-  if (fault_bits_ != 0) sr |= kSrFault;
+  const uint32_t stage = power_stage_code(fault_bits_);
+  if (stage != 0) sr |= kSrDriveProblem | (stage << kSrPowerStageShift);
   if (motor_on_) sr |= kSrMotorOn;
-  if (moving_) sr |= kSrMoving;
+  if (fault_bits_ != 0) sr |= kSrMotorFailure;
   sr |= (static_cast<uint32_t>(params_.unit_mode) & 7u) << kSrUnitModeShift;
+  if (homing_.armed()) sr |= kSrHoming;
+  if (above_continuous_s_ > kPeakCurrentTime_s) sr |= kSrCurrentLimited;
+  sr |= static_cast<uint32_t>(motion_status() & 3) << kSrMotionStatusShift;
+  if (stopped_by_limit_) sr |= kSrStoppedByLimit;
   return sr;
 }
 
@@ -249,8 +308,37 @@ uint32_t Axis::status_register() const {
 
 void Axis::set_input_level(int n, bool high) {
   if (n < 1 || n > kInputCount) return;
+  remove_position_switch(n);
   input_levels_[n - 1] = high;
   inputs_changed_ = true;
+}
+
+bool Axis::input_level(int n) const { return n >= 1 && n <= kInputCount && input_levels_[n - 1]; }
+
+void Axis::place_position_switch(int n, double from_counts, double to_counts) {
+  if (n < 1 || n > kInputCount) return;
+  switches_[n - 1] = {true, std::min(from_counts, to_counts), std::max(from_counts, to_counts)};
+  any_switch_ = true;
+  follow_position_switches();
+}
+
+void Axis::remove_position_switch(int n) {
+  if (n < 1 || n > kInputCount || !switches_[n - 1].placed) return;
+  switches_[n - 1].placed = false;
+  any_switch_ = false;
+  for (const PositionSwitch& sw : switches_) any_switch_ = any_switch_ || sw.placed;
+}
+
+void Axis::follow_position_switches() {
+  const double at = motor_state_.position_counts;
+  for (int n = 1; n <= kInputCount; ++n) {
+    const PositionSwitch& sw = switches_[n - 1];
+    if (!sw.placed) continue;
+    const bool high = at >= sw.from_counts && at <= sw.to_counts;
+    if (high == input_levels_[n - 1]) continue;
+    input_levels_[n - 1] = high;
+    inputs_changed_ = true;
+  }
 }
 
 bool Axis::input_active(int n) const {
@@ -260,8 +348,14 @@ bool Axis::input_active(int n) const {
 
 uint32_t Axis::input_port() const {
   uint32_t bits = 0;
-  for (int n = 1; n <= kInputCount; ++n)
-    if (input_active(n)) bits |= 1u << (n - 1);
+  for (int n = 1; n <= kInputCount; ++n) {
+    const auto i = static_cast<size_t>(n - 1);
+    if (input_levels_[i]) bits |= 1u << (kIpLevelShift + static_cast<uint32_t>(n) - 1);
+    if (!input_active(n)) continue;
+    const InputFunction f = input_function(params_.input_logic[i]);
+    if (f == InputFunction::kGeneralPurpose) bits |= kIpGeneralPurpose1 << (n - 1);
+    bits |= input_function_bit(f);
+  }
   return bits;
 }
 
@@ -306,10 +400,20 @@ uint32_t Axis::scan_inputs() {
         }
         break;
       case InputFunction::kHome:
-        if (rose) events |= kEventHome;
+        if (rose) home_input_rose_ = true;  // the home event is step_homing's to decide
         break;
       case InputFunction::kHardStop:
         if (rose) events |= kEventHardStop;
+        break;
+      case InputFunction::kSoftStop:
+      case InputFunction::kAbort:
+        if (rose && moving_ && !stopping_) {
+          stop_with(params_.stop_decel_counts_per_s2);
+          stopped_by_limit_ = true;
+        }
+        break;
+      case InputFunction::kIgnore:
+      case InputFunction::kAuxHome:
         break;
     }
   }
@@ -338,14 +442,39 @@ void Axis::enforce_limits() {
   const ProfileSample end = profile_.final_state();
   double heading = raw_.velocity_counts_per_s;
   if (heading == 0.0) heading = end.velocity_counts_per_s + (end.position_counts - raw_.position_counts);
-  if (hard_stop || (block_forward && heading > 0.0) || (block_reverse && heading < 0.0))
+  if (hard_stop || (block_forward && heading > 0.0) || (block_reverse && heading < 0.0)) {
     stop_with(params_.stop_decel_counts_per_s2);
+    stopped_by_limit_ = true;
+  }
+}
+
+void Axis::advance_pt() {
+  const uint64_t cycles = cycles_ - profile_start_cycle_;
+  const PtSample p = sample_pt(pt_, pt_start_, cycles, dt_s());
+  pt_executing_ = p.index;
+  const double offset = pt_offset_counts_;
+  if (p.ended) {
+    // The end of a non-cyclic PT motion: to a complete stop with SD from the last segment's speed.
+    const double end = p.position_counts - offset;
+    const double speed = cycles == 0 ? 0.0 : raw_.velocity_counts_per_s;
+    start_profile(plan_stop(end, speed, params_.stop_decel_counts_per_s2), true);
+    raw_ = sample(profile_, 0.0);
+    ref_ = raw_;
+    return;
+  }
+  raw_ = {p.position_counts - offset, p.velocity_counts_per_s, 0.0};
+  ref_ = raw_;
 }
 
 void Axis::advance_profile() {
   if (!moving_) return;
   const double t_s = static_cast<double>(cycles_ - profile_start_cycle_) * dt_s();
+  if (pt_active_) {
+    advance_pt();
+    return;
+  }
   raw_ = sample(profile_, t_s);
+  ramping_ = t_s < profile_duration_s_;
   const bool profile_done = t_s >= profile_duration_s_ && raw_.velocity_counts_per_s == 0.0;
   if (profile_done) raw_ = profile_.final_state();
   // The three windows always have one length; without smoothing (SF=0) a window of one sample
@@ -358,9 +487,13 @@ void Axis::advance_profile() {
   } else {
     ref_ = raw_;
   }
-  if (profile_done && (!smoothing || (smooth_position_.settled() && smooth_velocity_.settled() &&
-                                      smooth_accel_.settled()))) {
+  const bool settled = !smoothing || (smooth_position_.settled() && smooth_velocity_.settled() &&
+                                      smooth_accel_.settled());
+  if (!settled) ramping_ = true;
+  if (profile_done && settled) {
     moving_ = false;
+    ramping_ = false;
+    if (ends_at_limit_) stopped_by_limit_ = true;
     ref_ = raw_;
   }
 }
@@ -397,6 +530,82 @@ void Axis::close_loop() {
   step_motor(motor_, motor_step(), motor_state_, voltage);
 }
 
+void Axis::check_faults() {
+  const double position_error = ref_.position_counts - motor_state_.position_counts;
+  const double velocity_error = velocity_command_counts_per_s_ - motor_state_.velocity_counts_per_s;
+  const double v = motor_state_.velocity_counts_per_s;
+  const double user_position = motor_state_.position_counts + offset_counts_;
+  if (params_.unit_mode == 5 && std::abs(position_error) > params_.max_position_error_counts)
+    latch_fault(kFaultFollowingError);
+  else if (params_.unit_mode != 1 && std::abs(velocity_error) > params_.max_velocity_error_counts_per_s)
+    latch_fault(kFaultVelocityError);
+  else if (v > params_.speed_fault_high_counts_per_s || v < params_.speed_fault_low_counts_per_s)
+    latch_fault(kFaultSpeedLimit);
+  else if (params_.unit_mode == 5 && !modulo_active() &&
+           (user_position > params_.position_fault_high_counts ||
+            user_position < params_.position_fault_low_counts))
+    latch_fault(kFaultPositionLimit);
+  else if (std::abs(motor_state_.current_a) > 1.5 * params_.peak_current_a + 0.1)
+    latch_fault(kFaultOvercurrent);
+}
+
+// How long the position has been within TR[1] of a reached point-to-point target (MS=0).
+void Axis::track_target_window() {
+  if (!servo_ready_ || moving_ || !has_target_ || params_.unit_mode != 5) {
+    in_window_us_ = -1;
+    return;
+  }
+  const double error = std::abs(ref_.position_counts - motor_state_.position_counts);
+  if (error > params_.target_radius_counts) in_window_us_ = -1;
+  else in_window_us_ = in_window_us_ < 0 ? 0 : in_window_us_ + period_us();
+}
+
+// ---------------------------------------------------------------- homing
+
+void Axis::arm_homing(bool arm) {
+  if (arm) homing_.arm();
+  else homing_.disarm();
+}
+
+uint32_t Axis::step_homing(double position_before_counts) {
+  if (!homing_.armed()) {
+    // Without an armed process a main-home input's activation is itself the home event, as the
+    // Gold manual's AUTO_HM (2.14.9) has it; nothing is captured or set.
+    return home_input_rose_ ? static_cast<uint32_t>(kEventHome) : 0u;
+  }
+  HomingCycle cycle;
+  cycle.home_input_rose = home_input_rose_;
+  cycle.position_counts = motor_state_.position_counts;
+  const HomeTrigger trigger = homing_settings_.trigger;
+  if (trigger == HomeTrigger::kIndex || trigger == HomeTrigger::kHomeInputThenIndex) {
+    cycle.index_at_counts = index_crossed(index_offset_counts_, params_.counts_per_revolution(),
+                                          position_before_counts, motor_state_.position_counts);
+  }
+  const std::optional<double> at = homing_.step(trigger, cycle);
+  if (!at) return 0;
+  home_event(*at);
+  return kEventHome;
+}
+
+void Axis::home_event(double at_counts) {
+  ++home_events_;
+  home_capture_ = internal_to_user(at_counts);
+  const HomingSettings& h = homing_settings_;
+  switch (h.setting) {
+    case HomePositionSetting::kAbsolute: set_position(h.home_value_counts); break;
+    case HomePositionSetting::kRelative:
+      // The captured point becomes the home value; the distance travelled since it is kept.
+      offset_counts_ += static_cast<double>(h.home_value_counts) - home_capture_;
+      break;
+    case HomePositionSetting::kKeep: break;
+  }
+  switch (h.action) {
+    case HomeAction::kStop: stop_with(params_.stop_decel_counts_per_s2); break;
+    case HomeAction::kSetOutput: set_output(h.output, true); break;
+    case HomeAction::kContinue: break;
+  }
+}
+
 const MotorStep& Axis::motor_step() {
   if (motor_step_.dt_s != dt_s()) motor_step_ = motor_step_constants(motor_, dt_s());
   return motor_step_;
@@ -407,9 +616,12 @@ uint32_t Axis::step() {
   pending_events_ = 0;
   ++cycles_;
   time_us_ += period_us();
+  if (any_switch_) follow_position_switches();
+  home_input_rose_ = false;
   // IL may also have been changed through parameters(): compared, not trusted.
   if (inputs_changed_ || inhibit_active_ || !same_logic(params_.input_logic, scanned_logic_))
     events |= scan_inputs();
+  const double position_before = motor_state_.position_counts;
 
   if (motor_on_ && !servo_ready_) {
     enable_elapsed_us_ += period_us();
@@ -442,20 +654,9 @@ uint32_t Axis::step() {
     ref_ = raw_;
   }
 
-  if (servo_ready_) {
-    const double position_error = ref_.position_counts - motor_state_.position_counts;
-    const double velocity_error = velocity_command_counts_per_s_ - motor_state_.velocity_counts_per_s;
-    const double v = motor_state_.velocity_counts_per_s;
-    if (params_.unit_mode == 5 && std::abs(position_error) > params_.max_position_error_counts)
-      latch_fault(kFaultFollowingError);
-    else if (params_.unit_mode != 1 && std::abs(velocity_error) > params_.max_velocity_error_counts_per_s)
-      latch_fault(kFaultVelocityError);
-    else if (v > kSpeedLimitMargin * std::max(1, params_.velocity_high_counts_per_s) ||
-             v < kSpeedLimitMargin * std::min(-1, params_.velocity_low_counts_per_s))
-      latch_fault(kFaultSpeedLimit);
-    else if (std::abs(motor_state_.current_a) > 1.5 * params_.peak_current_a + 0.1)
-      latch_fault(kFaultOvercurrent);
-  }
+  if (servo_ready_) check_faults();
+  track_target_window();
+  if (homing_.armed() || home_input_rose_) events |= step_homing(position_before);
   events |= pending_events_;
   pending_events_ = 0;
   last_events_ = events;

@@ -1,15 +1,18 @@
 // One simulated servo axis in virtual time: profile generator, cascaded loops, motor model,
-// digital I/O, limits and faults. `step()` advances one servo cycle (TS) and reports events.
-// The axis knows physics and parameters, not languages: a dialect maps its commands onto it.
+// digital I/O, limits, faults and homing. `step()` advances one servo cycle (TS) and reports
+// events. The axis knows physics and parameters, not languages: a dialect maps its commands
+// onto it.
 #pragma once
 #include <array>
 #include <cstdint>
 #include <string_view>
 
 #include "drive/events.h"
+#include "drive/homing.h"
 #include "drive/motor_model.h"
 #include "drive/parameters.h"
 #include "drive/profile.h"
+#include "drive/pt_table.h"
 #include "drive/servo_loop.h"
 #include "drive/smoothing.h"
 
@@ -23,19 +26,28 @@ enum class Status : uint8_t {
   kMotorOff,          // needs the motor on (BG)
   kFaultLatched,      // MO=1 while a fault's cause is still present
   kInhibitActive,     // MO=1 while an inhibit input is active
-  kModeNotSupported,  // BG in UM=1; TC outside UM=1 is accepted but has no effect
+  kModeNotSupported,  // BG in UM=1, a PT motion outside UM=5; TC outside UM=1 has no effect
+  kBadStartData,      // BG of a PT motion whose start index or table set-up is unusable
 };
 
 constexpr uint32_t kEnableDelay_us = 20000;        // MO=1 to SO=1
-constexpr double kInPositionWindow_counts = 2.0;    // MS=0 once |PE| is within this
 constexpr double kPeakCurrentTime_s = 3.0;          // PL[1] allowed this long, then CL[1]
-constexpr double kSpeedLimitMargin = 1.2;           // |VX| beyond margin * VH[2]/VL[2] faults
 
+// The status register (SR) as the Elmo reference lays it out (docs/dialects/gold.md, "SR").
+// Bits 12 (program running) and 29 (error in the user program) belong to the program's host.
 enum StatusRegisterBits : uint32_t {
-  kSrFault = 1u << 0,
+  kSrDriveProblem = 1u << 0,        // a power-stage problem; its code is bits 1..3
+  kSrPowerStageShift = 1,           // bits 1..3: the MF power-stage code
   kSrMotorOn = 1u << 4,
-  kSrMoving = 1u << 7,
-  kSrUnitModeShift = 8,  // bits 8..10
+  kSrReferenceMode = 1u << 5,       // RM: an external reference (never: none is simulated)
+  kSrMotorFailure = 1u << 6,        // MF != 0
+  kSrUnitModeShift = 7,             // bits 7..9
+  kSrHoming = 1u << 11,             // a homing process is armed
+  kSrProgramRunning = 1u << 12,
+  kSrCurrentLimited = 1u << 13,     // the current is limited to CL[1] after PL[1]'s time
+  kSrMotionStatusShift = 14,        // bits 14..15: MS
+  kSrStoppedByLimit = 1u << 28,     // RLS, FLS, a stop input, or a VH[3]/VL[3] target limit
+  kSrProgramError = 1u << 29,
 };
 
 class Axis {
@@ -55,6 +67,7 @@ class Axis {
   Status set_unit_mode(int32_t mode);           // UM: 1, 2 or 5, motor off only
   Status set_input_logic(int n, int32_t logic); // IL[n]
   Status set_period_us(int32_t period_us);      // TS, 25..2000
+  Status set_counts_per_revolution(int32_t counts);  // the encoder; spaces the index pulses
 
   // --- enable ---
   Status set_motor_on(bool on);  // MO
@@ -67,8 +80,14 @@ class Axis {
   void set_jog_velocity(int32_t velocity_counts_per_s);  // JV
   int32_t absolute_target() const { return pa_counts_; }
   int32_t relative_move() const { return pr_counts_; }
+  void set_pt_start(int32_t index);                 // PT: the next BG starts a PT motion there
+  int32_t pt_index() const;                         // the executing point, else the start
+  PtTable& pt_table() { return pt_; }               // QP, MP
+  const PtTable& pt_table() const { return pt_; }
   Status begin();  // BG
-  void stop();     // ST: decelerate with DC
+  // ST (and the motion side of KL): the profiler decelerates to a stop with SD; the motor stays
+  // on and holds where it stops. Nothing happens at rest.
+  void stop();
   void set_torque_command(float current_a) { torque_command_a_ = current_a; }  // TC
   float torque_command() const { return torque_command_a_; }
 
@@ -80,19 +99,41 @@ class Axis {
   int32_t reference_velocity() const;       // DV[2]
   int32_t reference_position() const;       // DV[3]
   float current_command() const { return static_cast<float>(current_command_a_); }  // DV[1]
-  int32_t motion_status() const;            // MS
-  uint32_t status_register() const;         // SR
+  int32_t motion_status() const;            // MS: 0 settled in TR, 1 stationary or off, 2 moving
+  uint32_t status_register() const;         // SR, without the program's bits 12 and 29
   uint32_t motor_fault() const { return fault_bits_; }  // MF
   bool profiler_moving() const { return moving_; }
 
   // --- digital I/O ---
   void set_input_level(int n, bool high);   // the electrical level of input n (1..6)
-  bool input_active(int n) const;           // IB[n]
-  uint32_t input_port() const;              // IP
+  bool input_level(int n) const;
+  bool input_active(int n) const;           // the logical state of input n (its IL polarity)
+  uint32_t input_port() const;              // IP (inputs.h, InputPortBits)
   void set_output_port(uint32_t bits) { outputs_ = bits & 0xFu; }  // OP
   uint32_t output_port() const { return outputs_; }
   void set_output(int n, bool on);          // OB[n]
   bool output(int n) const { return ((outputs_ >> (n - 1)) & 1u) != 0; }
+
+  // --- homing and capture (homing.h) ---
+  HomingSettings& homing_settings() { return homing_settings_; }
+  const HomingSettings& homing_settings() const { return homing_settings_; }
+  void arm_homing(bool arm);                      // HM[1]=1 arms, HM[1]=0 disarms
+  bool homing_armed() const { return homing_.armed(); }
+  int32_t home_capture() const { return home_capture_; }  // PX at the last home event
+  uint32_t home_event_count() const { return home_events_; }
+
+  // --- the world a scenario places (positions are the motor's, in counts, whatever PX says) ---
+  // The encoder's index pulse: once per revolution (CA[18] counts) at offset + k * CA[18].
+  void place_index_pulse(double offset_counts) { index_offset_counts_ = offset_counts; }
+  double index_offset() const { return index_offset_counts_; }
+  // Input n's level follows the motor: high while the position lies in [from, to]. A switch
+  // placed on an input replaces its level; set_input_level() on it removes the switch.
+  void place_position_switch(int n, double from_counts, double to_counts);
+  void remove_position_switch(int n);
+
+  // --- auxiliary feedback: the simulated drive has no second encoder; PY is a plain counter ---
+  int32_t aux_position() const { return aux_position_counts_; }
+  void set_aux_position(int32_t counts) { aux_position_counts_ = counts; }
 
   // --- faults ---
   // Latches the named fault (faults.h); with `persistent` its cause stays until
@@ -120,10 +161,16 @@ class Axis {
   void start_profile(const Profile& profile, bool stopping);
   void stop_with(double decel_counts_per_s2);
   uint32_t scan_inputs();
+  void follow_position_switches();
   void advance_profile();
+  void advance_pt();
   void enforce_limits();
   double current_limit_a();
   void close_loop();
+  void check_faults();
+  void track_target_window();
+  uint32_t step_homing(double position_before_counts);
+  void home_event(double at_counts);
 
   // The motor model's per-cycle constants for the current TS (refreshed when TS changes).
   const MotorStep& motor_step();
@@ -148,9 +195,21 @@ class Axis {
   int32_t pa_counts_ = 0;
   int32_t pr_counts_ = 0;
   double target_internal_ = 0.0;
-  enum class Pending : uint8_t { kMove, kJog } pending_ = Pending::kMove;
+  enum class Pending : uint8_t { kMove, kJog, kPt } pending_ = Pending::kMove;
   bool moving_ = false;
   bool stopping_ = false;  // the profile is a stop (ST, SD): limits need not stop it again
+  bool ramping_ = false;   // the profile is still accelerating or decelerating (MS in UM=2)
+  // MS=0 needs a point-to-point target the motion reached and the position within TR[1] of it
+  // for TR[2]: how long it has been within (-1: it is not).
+  bool has_target_ = false;
+  int64_t in_window_us_ = -1;
+  bool stopped_by_limit_ = false;  // SR bit 28, until the next BG
+  bool ends_at_limit_ = false;     // the motion's end is a VH[3]/VL[3] limit, not its target
+  PtTable pt_;
+  int32_t pt_start_ = 1;
+  bool pt_active_ = false;
+  int32_t pt_executing_ = 1;
+  double pt_offset_counts_ = 0.0;  // user-to-internal at the PT start
   Profile profile_;
   double profile_duration_s_ = 0.0;  // profile_.duration_s(), summed once per profile
   uint64_t profile_start_cycle_ = 0;
@@ -172,7 +231,21 @@ class Axis {
   bool forward_limit_active_ = false;
   bool reverse_limit_active_ = false;
   bool hard_stop_active_ = false;
+  bool home_input_rose_ = false;  // this cycle's scan saw a main-home input become active
   uint32_t outputs_ = 0;
+
+  struct PositionSwitch {
+    bool placed = false;
+    double from_counts = 0.0, to_counts = 0.0;
+  };
+  std::array<PositionSwitch, kInputCount> switches_{};
+  bool any_switch_ = false;
+  double index_offset_counts_ = 0.0;
+  HomingSettings homing_settings_;
+  Homing homing_;
+  int32_t home_capture_ = 0;
+  uint32_t home_events_ = 0;
+  int32_t aux_position_counts_ = 0;
 
   uint32_t time_us_ = 0;
   uint64_t cycles_ = 0;

@@ -15,6 +15,7 @@ constexpr std::array kNames{
     FaultName{"short", kFaultShort},
     FaultName{"temperature", kFaultTemperature},
     FaultName{"speed_limit", kFaultSpeedLimit},
+    FaultName{"position_limit", kFaultPositionLimit},
 };
 }  // namespace
 

@@ -4,6 +4,7 @@
 #include "axis_helpers.h"
 #include "drive/axis.h"
 #include "drive/events.h"
+#include "drive/inputs.h"
 
 namespace uprog::drive {
 namespace {
@@ -18,12 +19,14 @@ TEST(drive_axis_io, PolarityEvenIsActiveLowOddIsActiveHigh) {
   ASSERT_EQ(axis.set_input_logic(2, 6), Status::kOk);
   EXPECT_FALSE(axis.input_active(1));
   EXPECT_TRUE(axis.input_active(2));  // unwired = low = active for an active-low input
-  EXPECT_EQ(axis.input_port(), 0b10u);
+  EXPECT_EQ(axis.input_port(), 0b10u);  // general-purpose input 2 is active; no level is high
   axis.set_input_level(1, true);
   axis.set_input_level(2, true);
-  EXPECT_EQ(axis.input_port(), 0b01u);
-  EXPECT_EQ(axis.set_input_logic(1, 2), Status::kOutOfRange);
-  EXPECT_EQ(axis.set_input_logic(1, 22), Status::kOutOfRange);
+  // Input 1 active; both levels high (bits 16 and 17).
+  EXPECT_EQ(axis.input_port(), 0b01u | (0b11u << kIpLevelShift));
+  EXPECT_EQ(axis.set_input_logic(1, 23), Status::kOk);   // abort, the last function
+  EXPECT_EQ(axis.set_input_logic(1, 24), Status::kOutOfRange);
+  EXPECT_EQ(axis.set_input_logic(1, -1), Status::kOutOfRange);
   EXPECT_EQ(axis.set_input_logic(7, 7), Status::kOutOfRange);
 }
 
@@ -161,14 +164,15 @@ TEST(drive_axis_io, OutputsPortAndBits) {
 
 TEST(drive_axis_io, StatusRegisterAndMotionStatus) {
   Axis axis;
-  EXPECT_EQ(axis.status_register(), 5u << kSrUnitModeShift);
-  EXPECT_EQ(axis.motion_status(), 3);
+  // UM=5 in bits 7..9, MS=1 (motor off) in bits 14..15.
+  EXPECT_EQ(axis.status_register(), (5u << kSrUnitModeShift) | (1u << kSrMotionStatusShift));
+  EXPECT_EQ(axis.motion_status(), 1);
   enable(axis);
-  EXPECT_EQ(axis.status_register(), kSrMotorOn | (5u << kSrUnitModeShift));
-  EXPECT_EQ(axis.motion_status(), 0);
+  EXPECT_EQ(axis.status_register(), kSrMotorOn | (5u << kSrUnitModeShift) | (1u << kSrMotionStatusShift));
+  EXPECT_EQ(axis.motion_status(), 1);  // no point-to-point target yet: MS=0 does not apply
   axis.set_absolute_target(1000);
   axis.begin();
-  EXPECT_EQ(axis.status_register() & kSrMoving, kSrMoving);
+  EXPECT_EQ((axis.status_register() >> kSrMotionStatusShift) & 3u, 2u);
   EXPECT_EQ(axis.motion_status(), 2);
 }
 

@@ -46,7 +46,7 @@ TEST(drive_axis_motion, EnableDelayThenServoReady) {
   EXPECT_TRUE(axis.motor_on());
   run_us(axis, kEnableDelay_us - 50);
   EXPECT_FALSE(axis.servo_ready());
-  EXPECT_EQ(axis.motion_status(), 3);
+  EXPECT_EQ(axis.motion_status(), 1);  // MO=0 or not yet closed: the reference is stationary
   axis.step();
   EXPECT_TRUE(axis.servo_ready());
   axis.set_motor_on(false);
@@ -107,10 +107,12 @@ TEST(drive_axis_motion, RelativeMovesAddToPreviousTarget) {
   EXPECT_EQ(axis.relative_move(), -1000);
 }
 
-TEST(drive_axis_motion, StopDeceleratesWithDc) {
+// ST brakes with SD, not DC (docs/dialects/gold.md, "ST").
+TEST(drive_axis_motion, StopDeceleratesWithSd) {
   Axis axis;
   enable(axis);
-  set_motion(axis, 20000, 1000000, 200000);
+  set_motion(axis, 20000, 1000000, 1000000);
+  axis.parameters().stop_decel_counts_per_s2 = 200000;
   axis.set_jog_velocity(20000);
   axis.begin();
   run_us(axis, 100000);

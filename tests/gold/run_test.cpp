@@ -87,7 +87,7 @@ TEST(gold_run, BuiltinFunctions) {
   GoldRun p;
   ASSERT_TRUE(p.compile(R"(
 int f1, f2, r1, r2, r3, s1, s2, s3, ai
-float sn, cs, sq, sq2, af
+float sine, cs, sq, sq2, af
 function main()
 f1 = fix(3.8)
 f2 = fix(-3.8)
@@ -99,7 +99,7 @@ s2 = sign(3.8)
 s3 = sign(0)
 ai = abs(0x80000000)
 af = abs(-123.54)
-sn = sin(0.523598775598)
+sine = sin(0.523598775598)
 cs = cos(1.047197551196)
 sq = sqrt(16)
 sq2 = sqrt(-625)
@@ -116,7 +116,7 @@ return
   EXPECT_EQ(p.i("s3"), 0);
   EXPECT_EQ(p.i("ai"), 2147483647);
   EXPECT_FLOAT_EQ(p.f("af"), 123.54f);
-  EXPECT_NEAR(p.f("sn"), 0.5f, 1e-5);
+  EXPECT_NEAR(p.f("sine"), 0.5f, 1e-5);
   EXPECT_NEAR(p.f("cs"), 0.5f, 1e-5);
   EXPECT_FLOAT_EQ(p.f("sq"), 4.0f);
   EXPECT_FLOAT_EQ(p.f("sq2"), 0.0f);

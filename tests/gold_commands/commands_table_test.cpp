@@ -1,4 +1,5 @@
-// The Gold command table: every command of shared/spec/gold-drive.md, stable ids, flags, ranges.
+// The Gold command table: every command of shared/spec/gold-drive.md and the Elmo reference's
+// that real programs and hosts send, stable ids, flags, ranges.
 #include "dialects/gold/commands.h"
 
 #include <gtest/gtest.h>
@@ -15,6 +16,11 @@ const char* const kSpecCommands[] = {
     "IL", "IP", "IB", "OP", "OB", "MF", "SR", "TM", "TS", "UI", "UF", "SV", "LD", "RS",
     "MI", "XQ", "HP", "XC", "KL", "PS", "CC", "LS", "EC", "DB", "RV", "RL", "RG", "RR"};
 
+// Issue 12's list (docs/dialects/gold.md, "Commands from the reference"), with IQ and HX that
+// host drivers send.
+const char* const kReferenceCommands[] = {"HM", "CA", "QP", "TR", "TI", "WS", "EO", "LL", "HL", "FP",
+                                          "FV", "VR", "SN", "MP", "PT", "PY", "PM", "IQ", "HX"};
+
 const CommandInfo& get(const char* name) {
   const CommandInfo* c = find_command(name);
   EXPECT_NE(c, nullptr) << name;
@@ -24,7 +30,8 @@ const CommandInfo& get(const char* name) {
 
 TEST(gold_commands_table, EveryCommandOfTheSpecIsThere) {
   for (const char* name : kSpecCommands) EXPECT_NE(find_command(name), nullptr) << name;
-  EXPECT_EQ(all_commands().size(), std::size(kSpecCommands));
+  for (const char* name : kReferenceCommands) EXPECT_NE(find_command(name), nullptr) << name;
+  EXPECT_EQ(all_commands().size(), std::size(kSpecCommands) + std::size(kReferenceCommands));
   EXPECT_EQ(find_command("XY"), nullptr);
   EXPECT_EQ(find_command(""), nullptr);
   EXPECT_EQ(find_command(uint16_t{0}), nullptr);
@@ -56,6 +63,8 @@ TEST(gold_commands_table, IdsAreStable) {
   EXPECT_EQ(get("XQ").id, 44);
   EXPECT_EQ(get("LS").id, 50);
   EXPECT_EQ(get("RR").id, 56);
+  EXPECT_EQ(get("HM").id, 57);
+  EXPECT_EQ(get("HX").id, 75);
 }
 
 TEST(gold_commands_table, ActionsAreNotAssignable) {
@@ -74,16 +83,23 @@ TEST(gold_commands_table, HostOnlyCommandsAreNotProgram) {
 }
 
 TEST(gold_commands_table, StatusesAreReadOnly) {
-  for (const char* name : {"SO", "VX", "PE", "DV", "MS", "IP", "IB", "MF", "SR", "PS", "EC"})
+  for (const char* name : {"SO", "VX", "PE", "DV", "MS", "IP", "IB", "MF", "SR", "PS", "EC", "TI", "WS",
+                           "FP", "FV", "VR", "SN", "IQ"})
     EXPECT_TRUE(get(name).flags & kReadOnly) << name;
   for (const char* name : {"MO", "PX", "TM", "OP", "OB", "UI", "IL"})
     EXPECT_FALSE(get(name).flags & kReadOnly) << name;
   EXPECT_TRUE(get("UM").flags & kMotorOffOnly);
+  EXPECT_TRUE(get("CA").flags & kMotorOffOnly);
+  // VR answers text, which a program cannot hold.
+  EXPECT_TRUE(get("VR").flags & kText);
+  EXPECT_TRUE(get("VR").flags & kNotProgram);
 }
 
 TEST(gold_commands_table, IndexRanges) {
   struct Range { const char* name; int32_t lo, hi; };
-  for (const Range& r : {Range{"UI", 1, 24}, Range{"UF", 1, 24}, Range{"IL", 1, 6}, Range{"IB", 1, 6},
+  for (const Range& r : {Range{"UI", 1, 24}, Range{"UF", 1, 24}, Range{"IL", 1, 6}, Range{"IB", 0, 31},
+                         Range{"HM", 1, 7}, Range{"CA", 1, 50}, Range{"QP", 1, 1024}, Range{"TR", 1, 2},
+                         Range{"LL", 2, 3}, Range{"HL", 2, 3}, Range{"SN", 1, 4}, Range{"MP", 1, 6},
                          Range{"OB", 1, 4}, Range{"RV", 1, 8}, Range{"DV", 2, 3}, Range{"ER", 2, 3},
                          Range{"VH", 2, 3}, Range{"VL", 2, 3}, Range{"XM", 1, 2}, Range{"KP", 1, 3},
                          Range{"CL", 1, 1}, Range{"PL", 1, 1}}) {

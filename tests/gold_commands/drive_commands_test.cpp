@@ -68,6 +68,12 @@ const std::map<std::string, Sample> kWritable{
     {"UI", {24, false, -17, -17}},     {"UF", {1, true, 1.5, 1.5}},
     {"RV", {8, false, 3, 3}},          {"RL", {0, false, 500, 500}},
     {"RG", {0, false, 4, 4}},          {"RR", {0, false, 1, 1}},
+    {"HM", {2, false, 1234, 1234}},    {"CA", {19, false, 4, 4}},
+    {"QP", {10, false, -5, -5}},       {"TR", {1, false, 50, 50}},
+    {"EO", {0, false, 0, 0}},          {"LL", {2, false, -3000000, -3000000}},
+    {"HL", {3, false, 900, 900}},      {"MP", {2, false, 10, 10}},
+    {"PT", {0, false, 5, 5}},          {"PY", {0, false, 77, 77}},
+    {"PM", {0, false, 0, 0}},          {"HX", {0, false, 1, 1}},
 };
 
 TEST(gold_commands_mapping, EveryCommandIsReadWrittenOrExecuted) {
@@ -87,6 +93,11 @@ TEST(gold_commands_mapping, EveryCommandIsReadWrittenOrExecuted) {
       EXPECT_EQ(f.commands.read(c.id, index, v), kErrorNoValue) << c.name;
       continue;
     }
+    if (c.flags & kText) {
+      EXPECT_EQ(f.commands.read(c.id, index, v), kErrorNoValue) << c.name;
+      EXPECT_TRUE(f.commands.text(c.id).has_value()) << c.name;
+      continue;
+    }
     EXPECT_EQ(f.commands.read(c.id, index, v), kDriveOk) << c.name;
     if (c.flags & kReadOnly) continue;
     const auto it = kWritable.find(std::string(c.name));
@@ -102,7 +113,7 @@ TEST(gold_commands_mapping, EveryCommandIsReadWrittenOrExecuted) {
       EXPECT_EQ(v.i, static_cast<int32_t>(s.read_back)) << c.name;
     }
   }
-  EXPECT_EQ(served, 43);
+  EXPECT_EQ(served, 62);
   // The actions the drive serves.
   EXPECT_EQ(f.commands.execute(id("ST"), 0), kDriveOk);
   f.write_int("UM", 5);
@@ -119,7 +130,7 @@ TEST(gold_commands_mapping, MoveThroughCommands) {
   ASSERT_EQ(f.write_int("PA", 10000), kDriveOk);
   ASSERT_EQ(f.commands.execute(id("BG"), 0), kDriveOk);
   EXPECT_EQ(f.read_int("MS"), 2);
-  EXPECT_EQ(f.read_int("SR") & 0x80, 0x80);
+  EXPECT_EQ((f.read_int("SR") >> 14) & 3, 2);  // SR bits 14..15 reflect MS
   // Trapezoid: 0.05 s ramps of 1250 counts, 7500 counts of cruise (0.15 s): ends at 0.25 s.
   f.run_us(300000);
   EXPECT_NEAR(f.read_int("PX"), 10000, 1);
@@ -127,8 +138,8 @@ TEST(gold_commands_mapping, MoveThroughCommands) {
   EXPECT_EQ(f.read_int("DV", 2), 0);
   EXPECT_NEAR(f.read_int("PE"), 0, 1);
   EXPECT_NEAR(f.read_int("VX"), 0, 50);
-  EXPECT_EQ(f.read_int("MS"), 0);
-  EXPECT_EQ(f.read_int("SR"), 0x10 | (5 << 8));
+  EXPECT_EQ(f.read_int("MS"), 0);  // 50 ms within TR[1] after the profile: more than TR[2]
+  EXPECT_EQ(f.read_int("SR"), 0x10 | (5 << 7));  // MO in bit 4, UM in bits 7..9, MS=0
 }
 
 TEST(gold_commands_mapping, UserVariablesAndIo) {
@@ -138,10 +149,12 @@ TEST(gold_commands_mapping, UserVariablesAndIo) {
   ASSERT_EQ(f.write_float("UF", -2.5f, 24), kDriveOk);
   EXPECT_EQ(f.axis.parameters().user_floats[23], -2.5f);
   f.axis.set_input_level(2, true);
-  EXPECT_EQ(f.read_int("IB", 2), 1);
-  EXPECT_EQ(f.read_int("IP"), 0b10);
+  EXPECT_EQ(f.read_int("IB", 1), 1);   // general-purpose input 2 active: bit 1
+  EXPECT_EQ(f.read_int("IB", 17), 1);  // its level: bit 16 + 1
+  EXPECT_EQ(f.read_int("IP"), 0b10 | (1 << 17));
   ASSERT_EQ(f.write_int("IL", 6, 2), kDriveOk);  // now active low: high = inactive
-  EXPECT_EQ(f.read_int("IB", 2), 0);
+  EXPECT_EQ(f.read_int("IB", 1), 0);
+  EXPECT_EQ(f.read_int("IB", 17), 1);
   ASSERT_EQ(f.write_int("OB", 1, 2), kDriveOk);
   EXPECT_EQ(f.read_int("OP"), 0b10);
   f.axis.inject_fault("overcurrent");
@@ -173,7 +186,7 @@ TEST(gold_commands_mapping, RefusedOutOfRange) {
   EXPECT_EQ(f.write_int("SP", 0), kErrorOutOfRange);
   EXPECT_EQ(f.write_int("MO", 2), kErrorOutOfRange);
   EXPECT_EQ(f.write_int("UM", 3), kErrorOutOfRange);   // inside 1..5 but not a mode
-  EXPECT_EQ(f.write_int("IL", 2, 1), kErrorOutOfRange);  // not a defined input function
+  EXPECT_EQ(f.write_int("IL", 24, 1), kErrorOutOfRange);  // beyond the last input function
   EXPECT_EQ(f.write_int("TS", 10), kErrorOutOfRange);
   EXPECT_EQ(f.write_float("UF", std::numeric_limits<float>::quiet_NaN(), 1), kErrorOutOfRange);
   EXPECT_EQ(f.write_float("UF", 2e37f, 1), kErrorOutOfRange);

@@ -3,7 +3,10 @@
 // new commands take the next free number.
 //
 // Access: a command whose spec "access" column does not include "program" (SV, LD, RS, HP, XC,
-// KL, CC, LS, DB) is kNotProgram, so a program using it fails with compile error 79.
+// KL, CC, LS, DB) is kNotProgram, so a program using it fails with compile error 79. Rows 57 on
+// are the Elmo reference's commands that real programs and host drivers send
+// (docs/dialects/gold.md, "Commands from the reference"); where a command's range differs per
+// index (HM, TR), the row holds the widest range and DriveCommands checks each index.
 #include "dialects/gold/commands.h"
 
 #include <array>
@@ -37,13 +40,13 @@ constexpr std::array kCommands{
     CommandInfo{"SF", 10, kI, 0, 0, 0, 0, 500, "smoothing (jerk limit) time, ms; 0 = trapezoid"},
     CommandInfo{"JV", 11, kI, 0, 0, 0, kIntMin, kIntMax, "jog velocity, counts/s"},
     CommandInfo{"BG", 12, kI, kAct, 0, 0, 0, 0, "begin the motion defined by PA, PR or JV"},
-    CommandInfo{"ST", 13, kI, kAct, 0, 0, 0, 0, "stop: decelerate with DC"},
+    CommandInfo{"ST", 13, kI, kAct, 0, 0, 0, 0, "stop: decelerate with SD"},
     CommandInfo{"TC", 14, kF, 0, 0, 0, -1000, 1000, "torque (current) command in UM=1, A"},
     CommandInfo{"PX", 15, kI, 0, 0, 0, kIntMin, kIntMax, "main position feedback, counts"},
     CommandInfo{"VX", 16, kI, kR, 0, 0, kIntMin, kIntMax, "main velocity feedback, counts/s"},
     CommandInfo{"PE", 17, kI, kR, 0, 0, kIntMin, kIntMax, "position error (reference - feedback), counts"},
     CommandInfo{"DV", 18, kI, kR | kIx, 2, 3, kIntMin, kIntMax, "desired values: [2] velocity, [3] position"},
-    CommandInfo{"MS", 19, kI, kR, 0, 0, 0, 3, "motion status: 0 in position, 1 settling, 2 moving, 3 off"},
+    CommandInfo{"MS", 19, kI, kR, 0, 0, 0, 3, "motion status: 0 settled in TR, 1 stationary or off, 2 moving"},
     CommandInfo{"ER", 20, kI, kIx, 2, 3, 1, kIntMax, "maximum error: [2] velocity, [3] position"},
     CommandInfo{"VH", 21, kI, kIx, 2, 3, kIntMin, kIntMax, "high limits: [2] velocity, [3] position"},
     CommandInfo{"VL", 22, kI, kIx, 2, 3, kIntMin, kIntMax, "low limits: [2] velocity, [3] position"},
@@ -54,9 +57,9 @@ constexpr std::array kCommands{
     CommandInfo{"CL", 27, kF, kIx, 1, 1, 0, 100, "continuous current limit, A"},
     CommandInfo{"PL", 28, kF, kIx, 1, 1, 0, 100, "peak current limit, A"},
     // Inputs, outputs, status
-    CommandInfo{"IL", 29, kI, kIx, 1, 6, 0, 21, "input logic: function and polarity of input n"},
-    CommandInfo{"IP", 30, kI, kR, 0, 0, 0, 63, "input port: bit n-1 = logical state of input n"},
-    CommandInfo{"IB", 31, kI, kR | kIx, 1, 6, 0, 1, "logical state of input n"},
+    CommandInfo{"IL", 29, kI, kIx, 1, 6, 0, 23, "input logic: function and polarity of input n"},
+    CommandInfo{"IP", 30, kI, kR, 0, 0, kIntMin, kIntMax, "input port: functions in bits 0..14, levels from bit 16"},
+    CommandInfo{"IB", 31, kI, kR | kIx, 0, 31, 0, 1, "bit n of IP"},
     CommandInfo{"OP", 32, kI, 0, 0, 0, 0, 15, "output port: bit n-1 drives output n"},
     CommandInfo{"OB", 33, kI, kIx, 1, 4, 0, 1, "output bit n"},
     CommandInfo{"MF", 34, kI, kR, 0, 0, kIntMin, kIntMax, "motor fault bits; 0 = no fault"},
@@ -83,6 +86,26 @@ constexpr std::array kCommands{
     CommandInfo{"RL", 54, kI, 0, 0, 0, 1, 65536, "recorder length, samples"},
     CommandInfo{"RG", 55, kI, 0, 0, 0, 1, 65535, "recorder gap, servo cycles"},
     CommandInfo{"RR", 56, kI, 0, 0, 0, 0, 1, "recorder: 1 starts a recording"},
+    // From the Elmo reference (docs/dialects/gold.md)
+    CommandInfo{"HM", 57, kI, kIx, 1, 7, kIntMin, kIntMax, "homing: [1] arm, [2] value, [3] event, [4] action, [5] PX, [6] output, [7] capture"},
+    CommandInfo{"CA", 58, kI, kIx | kMotorOffOnly, 1, 50, kIntMin, kIntMax, "commutation and feedback set-up; CA[18] counts per revolution"},
+    CommandInfo{"QP", 59, kI, kIx, 1, 1024, kIntMin, kIntMax, "PT motion: position table"},
+    CommandInfo{"TR", 60, kI, kIx, 1, 2, 0, 32000, "target: [1] radius, counts; [2] time, ms (MS=0)"},
+    CommandInfo{"TI", 61, kI, kR | kIx, 1, 2, kIntMin, kIntMax, "temperature indications, degrees C"},
+    CommandInfo{"WS", 62, kI, kR | kIx, 1, 99, kIntMin, kIntMax, "system words; WS[21] = PX modulo CA[18]"},
+    CommandInfo{"EO", 63, kI, 0, 0, 0, 0, 1, "echo of the host's characters: 1 on, 0 off"},
+    CommandInfo{"LL", 64, kI, kIx, 2, 3, kIntMin, kIntMax, "low feedback limits: [2] speed, [3] position (fault)"},
+    CommandInfo{"HL", 65, kI, kIx, 2, 3, kIntMin, kIntMax, "high feedback limits: [2] speed, [3] position (fault)"},
+    CommandInfo{"FP", 66, kI, kR | kIx, 1, 2, kIntMin, kIntMax, "feedback positions: [1] main (PX), [2] auxiliary (PY)"},
+    CommandInfo{"FV", 67, kI, kR | kIx, 1, 2, kIntMin, kIntMax, "feedback velocities: [1] main (VX), [2] auxiliary"},
+    CommandInfo{"VR", 68, kI, kR | kNotProgram | kText, 0, 0, 0, 0, "firmware version text"},
+    CommandInfo{"SN", 69, kI, kR | kIx, 1, 4, kIntMin, kIntMax, "identity: [1] vendor, [2] product, [3] revision, [4] serial number"},
+    CommandInfo{"MP", 70, kI, kIx, 1, 6, 0, 65535, "PT motion: [1] first, [2] last index, [3] cyclic, [4] cycles per point"},
+    CommandInfo{"PT", 71, kI, 0, 0, 0, 1, 1024, "PT motion: the next BG starts at QP[PT]; reads the executing index"},
+    CommandInfo{"PY", 72, kI, 0, 0, 0, kIntMin, kIntMax, "auxiliary position counter"},
+    CommandInfo{"PM", 73, kI, 0, 0, 0, 0, 1, "profiler mode in UM=2: 1 ramps to JV, 0 steps"},
+    CommandInfo{"IQ", 74, kF, kR, 0, 0, -1e6, 1e6, "active (torque) current, A"},
+    CommandInfo{"HX", 75, kI, 0, 0, 0, 0, 1, "hexadecimal answers: 1 on, 0 off"},
 };
 
 // find_command(id) indexes the table directly: row i must hold id i + 1.

@@ -16,6 +16,7 @@ enum CommandFlag : uint32_t {
   kMotorOffOnly = 1u << 3,   // assignable only while MO=0 (UM, ...)
   kAction = 1u << 4,         // executed, not read or written (BG, ST, SV, LD, RS, ...)
   kIndexed = 1u << 5,        // takes an index: UI[3], IL[2]
+  kText = 1u << 6,           // answers text, not a number (VR): DriveCommands::text()
 };
 
 struct CommandInfo {

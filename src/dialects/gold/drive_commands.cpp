@@ -1,8 +1,10 @@
-// One switch per direction (read, write, execute) from a Gold command id to the axis.
+// One switch per direction (read, write, execute) from a Gold command id to the axis; the
+// commands from the Elmo reference (ids 57 on) have a switch of their own below.
 #include "dialects/gold/drive_commands.h"
 
 #include <cmath>
 
+#include "drive/faults.h"
 #include "drive/parameters.h"
 
 namespace uprog::gold {
@@ -13,7 +15,22 @@ enum Id : uint16_t {
   MO = 1, SO, UM, PA, PR, SP, AC, DC, SD, SF, JV, BG, ST, TC, PX, VX, PE, DV, MS, ER, VH, VL, XM,
   KP, KI, KV, CL, PL, IL, IP, IB, OP, OB, MF, SR, TM, TS, UI, UF, SV, LD, RS, MI, XQ, HP, XC, KL,
   PS, CC, LS, EC, DB, RV, RL, RG, RR,
+  HM, CA, QP, TR, TI, WS, EO, LL, HL, FP, FV, VR, SN, MP, PT, PY, PM, IQ, HX,
 };
+
+bool from_reference(uint16_t id) { return id >= HM; }
+
+// HM[n]: the index's own range (docs/dialects/gold.md, "Homing").
+bool homing_value_in_range(int32_t index, int32_t v) {
+  switch (index) {
+    case 1: return v == 0 || v == 1;
+    case 3: return v >= 0 && v <= drive::kHomeTriggerMax;
+    case 4: return v >= 0 && v <= drive::kHomeActionMax;
+    case 5: return v >= 0 && v <= drive::kHomePositionSettingMax;
+    case 6: return v >= 0 && v <= drive::kOutputCount;
+    default: return true;  // HM[2] takes any position
+  }
+}
 
 // The commands the controller serves (handled_by_drive is false for them).
 bool controller_command(uint16_t id) {
@@ -63,6 +80,7 @@ int32_t error_for(drive::Status status) {
     case drive::Status::kFaultLatched: return kErrorFaultPresent;
     case drive::Status::kInhibitActive: return kErrorInhibitActive;
     case drive::Status::kModeNotSupported: return kErrorModeNotSupported;
+    case drive::Status::kBadStartData: return kErrorBadStartData;
   }
   return kErrorBadCommand;
 }
@@ -71,6 +89,7 @@ int32_t DriveCommands::read(uint16_t id, int32_t index, Value& out) {
   const CommandInfo* info = nullptr;
   if (const int32_t e = check(id, index, info)) return e;
   if (info->flags & kAction) return kErrorNoValue;
+  if (from_reference(id)) return read_reference(id, index, out);
   const drive::Parameters& p = axis_.parameters();
   auto i = [&](int32_t v) { out = Value::of_int(v); return kDriveOk; };
   auto f = [&](float v) { out = Value::of_float(v); return kDriveOk; };
@@ -103,11 +122,11 @@ int32_t DriveCommands::read(uint16_t id, int32_t index, Value& out) {
     case PL: return f(p.peak_current_a);
     case IL: return i(p.input_logic[slot(index)]);
     case IP: return i(static_cast<int32_t>(axis_.input_port()));
-    case IB: return i(axis_.input_active(index) ? 1 : 0);
+    case IB: return i(static_cast<int32_t>((axis_.input_port() >> index) & 1u));
     case OP: return i(static_cast<int32_t>(axis_.output_port()));
     case OB: return i(axis_.output(index) ? 1 : 0);
     case MF: return i(static_cast<int32_t>(axis_.motor_fault()));
-    case SR: return i(static_cast<int32_t>(axis_.status_register()));
+    case SR: return i(static_cast<int32_t>(status_register()));
     case TM: return i(static_cast<int32_t>(axis_.time_us()));
     case TS: return i(p.servo_period_us);
     case UI: return i(p.user_ints[slot(index)]);
@@ -127,6 +146,7 @@ int32_t DriveCommands::write(uint16_t id, int32_t index, Value value) {
   if (info->flags & kReadOnly) return kErrorReadOnly;
   if (!in_range(*info, value)) return kErrorOutOfRange;
   if ((info->flags & kMotorOffOnly) && axis_.motor_on()) return kErrorMotorMustBeOff;
+  if (from_reference(id)) return write_reference(id, index, value);
   drive::Parameters& p = axis_.parameters();
   const int32_t v = value.i;
   switch (id) {
@@ -165,6 +185,125 @@ int32_t DriveCommands::write(uint16_t id, int32_t index, Value value) {
     default: return kErrorBadCommand;
   }
   return kDriveOk;
+}
+
+uint32_t DriveCommands::status_register() const {
+  uint32_t sr = axis_.status_register();
+  if (program_state_) {
+    const ProgramState state = program_state_();
+    if (state.running) sr |= drive::kSrProgramRunning;
+    if (state.error) sr |= drive::kSrProgramError;
+  }
+  return sr;
+}
+
+std::optional<std::string> DriveCommands::text(uint16_t id) const {
+  if (id != VR) return std::nullopt;
+  return std::string(kVersionText);
+}
+
+int32_t DriveCommands::read_reference(uint16_t id, int32_t index, Value& out) {
+  const drive::Parameters& p = axis_.parameters();
+  const drive::HomingSettings& h = axis_.homing_settings();
+  auto i = [&](int32_t v) { out = Value::of_int(v); return kDriveOk; };
+  switch (id) {
+    case HM:
+      switch (index) {
+        case 1: return i(axis_.homing_armed() ? 1 : 0);
+        case 2: return i(h.home_value_counts);
+        case 3: return i(static_cast<int32_t>(h.trigger));
+        case 4: return i(static_cast<int32_t>(h.action));
+        case 5: return i(static_cast<int32_t>(h.setting));
+        case 6: return i(h.output);
+        default: return i(axis_.home_capture());
+      }
+    case CA: return i(p.commutation[slot(index)]);
+    case QP: return i(axis_.pt_table().positions[slot(index)]);
+    case TR: return i(index == 1 ? p.target_radius_counts : p.target_time_ms);
+    case TI: return i(kTemperature_c);
+    case WS: {
+      if (index != 21) return i(0);  // system words the simulated drive does not model
+      // The reference's commutation formula: WS[21] = mod(encoder, CA[18]).
+      const int64_t counts = p.counts_per_revolution();
+      const int64_t m = ((static_cast<int64_t>(axis_.position()) % counts) + counts) % counts;
+      return i(static_cast<int32_t>(m));
+    }
+    case EO: return i(echo_);
+    case LL: return i(index == 2 ? p.speed_fault_low_counts_per_s : p.position_fault_low_counts);
+    case HL: return i(index == 2 ? p.speed_fault_high_counts_per_s : p.position_fault_high_counts);
+    case FP: return i(index == 1 ? axis_.position() : axis_.aux_position());
+    case FV: return i(index == 1 ? axis_.velocity() : 0);  // no auxiliary encoder: it stands still
+    case VR: return kErrorNoValue;  // text: the command line answers it with text()
+    case SN: return i(kIdentity[slot(index)]);
+    case MP: {
+      const drive::PtTable& t = axis_.pt_table();
+      switch (index) {
+        case 1: return i(t.first);
+        case 2: return i(t.last);
+        case 3: return i(t.cyclic ? 1 : 0);
+        case 4: return i(t.cycles_per_point);
+        default: return i(mp_spare_[slot(index) - 4]);
+      }
+    }
+    case PT: return i(axis_.pt_index());
+    case PY: return i(axis_.aux_position());
+    case PM: return i(p.profiler_mode);
+    case IQ: out = Value::of_float(static_cast<float>(axis_.motor_state().current_a)); return kDriveOk;
+    case HX: return i(hex_);
+    default: return kErrorBadCommand;
+  }
+}
+
+int32_t DriveCommands::write_reference(uint16_t id, int32_t index, Value value) {
+  drive::Parameters& p = axis_.parameters();
+  drive::HomingSettings& h = axis_.homing_settings();
+  const int32_t v = value.i;
+  switch (id) {
+    case HM:
+      if (index == 7) return kErrorReadOnly;  // the capture is the drive's
+      if (!homing_value_in_range(index, v)) return kErrorOutOfRange;
+      switch (index) {
+        case 1: axis_.arm_homing(v == 1); break;
+        case 2: h.home_value_counts = v; break;
+        case 3: h.trigger = static_cast<drive::HomeTrigger>(v); break;
+        case 4: h.action = static_cast<drive::HomeAction>(v); break;
+        case 5: h.setting = static_cast<drive::HomePositionSetting>(v); break;
+        default: h.output = v; break;
+      }
+      return kDriveOk;
+    case CA:
+      if (index == drive::kCountsPerRevolutionIndex) {
+        // The reference's range for CA[18]: 6..530,000,000 counts.
+        if (v > 530000000) return kErrorOutOfRange;
+        return error_for(axis_.set_counts_per_revolution(v));
+      }
+      p.commutation[slot(index)] = v;
+      return kDriveOk;
+    case QP: axis_.pt_table().positions[slot(index)] = v; return kDriveOk;
+    case TR:
+      if (index == 2 && v > 100) return kErrorOutOfRange;  // TR[2]: 0..100 ms
+      (index == 1 ? p.target_radius_counts : p.target_time_ms) = v;
+      return kDriveOk;
+    case EO: echo_ = v; return kDriveOk;
+    case LL: (index == 2 ? p.speed_fault_low_counts_per_s : p.position_fault_low_counts) = v; return kDriveOk;
+    case HL: (index == 2 ? p.speed_fault_high_counts_per_s : p.position_fault_high_counts) = v; return kDriveOk;
+    case MP: {
+      drive::PtTable& t = axis_.pt_table();
+      switch (index) {
+        case 1: if (v < 1 || v > drive::kPtPoints) return kErrorOutOfRange; t.first = v; break;
+        case 2: if (v < 1 || v > drive::kPtPoints) return kErrorOutOfRange; t.last = v; break;
+        case 3: if (v > 1) return kErrorOutOfRange; t.cyclic = v == 1; break;
+        case 4: if (v < 1) return kErrorOutOfRange; t.cycles_per_point = v; break;
+        default: mp_spare_[slot(index) - 4] = v; break;
+      }
+      return kDriveOk;
+    }
+    case PT: axis_.set_pt_start(v); return kDriveOk;
+    case PY: axis_.set_aux_position(v); return kDriveOk;
+    case PM: p.profiler_mode = v; return kDriveOk;
+    case HX: hex_ = v; return kDriveOk;
+    default: return kErrorBadCommand;
+  }
 }
 
 int32_t DriveCommands::execute(uint16_t id, int32_t index) {
