@@ -10,6 +10,7 @@
 
 #include "controller/controller.h"
 #include "dialects/registry.h"
+#include "drive/axis.h"
 #include "support/files.h"
 
 namespace uprog::transcript {
@@ -169,6 +170,13 @@ class Runner {
       collect_output();
     } else if (directive == "input") {
       input(number, arg);
+    } else if (directive == "switch") {
+      position_switch(number, arg);
+    } else if (directive == "index") {
+      // An extension: the encoder's index pulse at OFFSET + k * CA[18] motor counts.
+      double offset = 0;
+      if (!parse_number(arg, offset)) fail(number, "index needs 'index OFFSET' in motor counts");
+      else drive().axis().place_index_pulse(offset);
     } else if (directive == "fault") {
       if (!drive().inject_fault(arg)) fail(number, "no fault named '" + arg + "'");
     } else if (directive == "program-error") {
@@ -253,6 +261,31 @@ class Runner {
     const std::string got = without_trailing_blanks(output_.front());
     output_.erase(output_.begin());
     if (got != without_trailing_blanks(arg)) fail(number, "expected output '" + arg + "', got '" + got + "'");
+  }
+
+  static bool parse_number(const std::string& text, double& out) {
+    const std::string t = trim(text);
+    char* end = nullptr;
+    out = std::strtod(t.c_str(), &end);
+    return !t.empty() && end == t.c_str() + t.size() && std::isfinite(out);
+  }
+
+  // An extension: "switch N FROM TO": input N is high while the motor's position (counts) lies
+  // in [FROM, TO]; a later "input N = ..." takes the input back.
+  void position_switch(int number, const std::string& arg) {
+    const size_t a = arg.find_first_of(" \t");
+    const size_t b = a == std::string::npos ? a : arg.find_first_of(" \t", arg.find_first_not_of(" \t", a));
+    int n = 0;
+    double from = 0, to = 0;
+    const std::string first = arg.substr(0, a);
+    const auto [p, e] = std::from_chars(first.data(), first.data() + first.size(), n);
+    if (a == std::string::npos || b == std::string::npos || e != std::errc() ||
+        p != first.data() + first.size() || n < 1 || n > 6 || !parse_number(arg.substr(a, b - a), from) ||
+        !parse_number(arg.substr(b), to)) {
+      fail(number, "switch needs 'switch N FROM TO' with N from 1 to 6 and positions in motor counts");
+      return;
+    }
+    drive().axis().place_position_switch(n, from, to);
   }
 
   void input(int number, const std::string& arg) {
