@@ -530,7 +530,7 @@ void Axis::close_loop() {
   step_motor(motor_, motor_step(), motor_state_, voltage);
 }
 
-void Axis::check_faults() {
+inline void Axis::check_faults() {
   const double position_error = ref_.position_counts - motor_state_.position_counts;
   const double velocity_error = velocity_command_counts_per_s_ - motor_state_.velocity_counts_per_s;
   const double v = motor_state_.velocity_counts_per_s;
@@ -550,7 +550,7 @@ void Axis::check_faults() {
 }
 
 // How long the position has been within TR[1] of a reached point-to-point target (MS=0).
-void Axis::track_target_window() {
+inline void Axis::track_target_window() {
   if (!servo_ready_ || moving_ || !has_target_ || params_.unit_mode != 5) {
     in_window_us_ = -1;
     return;

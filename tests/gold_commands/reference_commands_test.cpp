@@ -83,6 +83,9 @@ TEST(gold_reference_commands, CountsPerRevolutionSpacesTheIndex) {
   ASSERT_EQ(f.write("PX", 0, -1), kDriveOk);
   EXPECT_EQ(f.read("WS", 21), 3999);
   EXPECT_EQ(f.read("WS", 1), 0);
+  // A parameter file (LD) is not range-checked: a CA[18] of 0 must not divide by zero.
+  f.axis.parameters().commutation[17] = 0;
+  EXPECT_EQ(f.read("WS", 21), 0);
 }
 
 TEST(gold_reference_commands, TargetWindowAndFeedbackLimits) {

@@ -225,6 +225,7 @@ int32_t DriveCommands::read_reference(uint16_t id, int32_t index, Value& out) {
       if (index != 21) return i(0);  // system words the simulated drive does not model
       // The reference's commutation formula: WS[21] = mod(encoder, CA[18]).
       const int64_t counts = p.counts_per_revolution();
+      if (counts < 1) return i(0);  // only a loaded parameter file can hold such a CA[18]
       const int64_t m = ((static_cast<int64_t>(axis_.position()) % counts) + counts) % counts;
       return i(static_cast<int32_t>(m));
     }
