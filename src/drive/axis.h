@@ -101,6 +101,9 @@ class Axis {
   float current_command() const { return static_cast<float>(current_command_a_); }  // DV[1]
   int32_t motion_status() const;            // MS: 0 settled in TR, 1 stationary or off, 2 moving
   uint32_t status_register() const;         // SR, without the program's bits 12 and 29
+  // Nothing more will happen by itself: the motor is off, or no profiler runs and a reached
+  // target has settled (MS=0). What the old "MS is 0 or 3" meant (tools/uprog/cmd_run.cpp).
+  bool at_rest() const { return !servo_ready_ || (!moving_ && (!has_target_ || motion_status() == 0)); }
   uint32_t motor_fault() const { return fault_bits_; }  // MF
   bool profiler_moving() const { return moving_; }
 

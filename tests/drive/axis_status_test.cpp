@@ -41,6 +41,19 @@ TEST(drive_status, MsSettlesThroughTargetRadiusAndTime) {
   EXPECT_EQ(sr_motion_status(axis), 0u);
 }
 
+TEST(drive_status, AtRestWhenOffStoppedOrSettled) {
+  Axis axis;
+  EXPECT_TRUE(axis.at_rest());  // the motor is off
+  enable(axis);
+  EXPECT_TRUE(axis.at_rest());  // on, nothing commanded
+  start_move(axis);
+  EXPECT_FALSE(axis.at_rest());
+  run_us(axis, 260000);         // the profile ended, TR[2] not yet over: still settling
+  EXPECT_FALSE(axis.at_rest());
+  run_us(axis, 20000);
+  EXPECT_TRUE(axis.at_rest());
+}
+
 TEST(drive_status, MsZeroTargetTimeSettlesWithTheProfile) {
   Axis axis;
   enable(axis);
