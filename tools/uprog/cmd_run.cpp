@@ -142,8 +142,7 @@ int run(const RunOptions& o) {
   // Without --for, the run ends once the program has ended, nothing is scheduled any more and
   // the axis is at rest (in position, or its motor off): what the motor did is then complete.
   const auto idle = [&] {
-    const int32_t ms = drive.axis().motion_status();
-    return until_idle && !drive.program_running() && next == schedule.size() && (ms == 0 || ms == 3);
+    return until_idle && !drive.program_running() && next == schedule.size() && drive.axis().at_rest();
   };
   while (drive.now_us() - start < duration_us && !idle()) {
     while (next < schedule.size() && schedule[next].at_us <= drive.now_us() - start) {

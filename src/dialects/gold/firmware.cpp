@@ -45,6 +45,9 @@ uint64_t Firmware::cycle_ns() const {
 void Firmware::boot(std::vector<std::string>& messages) {
   axis_ = &runtime_.axis();
   drive_commands_ = std::make_unique<DriveCommands>(*axis_);
+  // SR's program bits (12 running, 29 stopped by an error) are the firmware's to tell.
+  drive_commands_->set_program_state_source(
+      [this] { return ProgramState{program_status() == 1, program_error_ != vm::RunError::None}; });
   recorder_map_.clear();
   ec_ = 0;
   if (!flash_read_) {
