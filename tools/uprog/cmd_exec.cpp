@@ -9,6 +9,7 @@
 #include "bytecode/assembly.h"
 #include "bytecode/image.h"
 #include "commands.h"
+#include "support/diagnostic.h"
 #include "support/files.h"
 #include "vm/machine.h"
 
@@ -28,6 +29,9 @@ class BareHost final : public vm::Host {
   static constexpr vm::CommandStatus kNoDrive = 1;
   uint32_t now_us_ = 0;
 };
+
+// As many as `uprog check` shows of a Gold source (gold::CompileOptions::max_errors).
+constexpr size_t kMaxErrorsShown = 30;
 
 std::string format_value(const bytecode::Global& g, Value v) {
   return g.type == ValueType::Float ? fmt::format("{:g}", v.f) : fmt::format("{}", v.i);
@@ -49,7 +53,11 @@ int run(const std::string& path, const std::string& entry) {
     }
   } else {
     std::vector<Diagnostic> errors;
-    if (!bytecode::assemble(std::string(bytes->begin(), bytes->end()), path, image, errors)) {
+    SourceFile source{path, std::string(bytes->begin(), bytes->end())};
+    if (!bytecode::assemble(source.text, path, image, errors)) {
+      // Any file that is not an image is read as assembly: a binary one gives an error a line.
+      limit_errors(errors, kMaxErrorsShown);
+      attach_source_lines(errors, source);
       fmt::print(stderr, "{}", format_text(errors));
       return 1;
     }

@@ -154,7 +154,7 @@ class Checker {
 
   // A speculative check that still holds: its errors and effects as if checked here.
   void accept(int symbol, CheckedBody& spec) {
-    for (const CapturedError& e : spec.errors) r_.error(e.code, e.offset);
+    for (const CapturedError& e : spec.errors) r_.error(e.code, e.offset, e.name);
     for (LabelSym& l : spec.labels) {
       l.function = symbol;
       syms_.labels.push_back(std::move(l));
@@ -187,9 +187,11 @@ class Checker {
   }
 
  private:
-  void error(Error e, uint32_t offset) {
-    if (capture_) capture_->push_back({e, offset});
-    else r_.error(e, offset);
+  // `name`: what the error is about, quoted after the manual's text. Cold: kept out of the
+  // checking paths it is called from.
+  [[gnu::cold, gnu::noinline]] void error(Error e, uint32_t offset, std::string_view name = {}) {
+    if (capture_) capture_->push_back({e, offset, name});
+    else r_.error(e, offset, name);
   }
 
   // A name whose meaning a later declaration could change (a function, a label): while
@@ -215,12 +217,12 @@ class Checker {
     for (size_t i = from; i < globals.size(); ++i) {
       const VarDecl& d = globals[i];
       if (global_index_.count(d.name) || clashes_with_system(d.name)) {
-        error(Error::NameIsNotDistinct, d.offset);
+        error(Error::NameIsNotDistinct, d.offset, d.name);
         continue;
       }
       words += d.length == 0 ? 1 : d.length;
       if (words > kMaxGlobalWords) {
-        error(Error::OutOfDataMemory, d.offset);
+        error(Error::OutOfDataMemory, d.offset, d.name);
         continue;
       }
       global_index_[d.name] = static_cast<int>(syms_.globals.size());
@@ -243,7 +245,7 @@ class Checker {
       auto it = function_index_.find(f.name);
       if (it == function_index_.end()) {
         if (global_index_.count(f.name) || clashes_with_system(f.name)) {
-          error(Error::NameIsNotDistinct, f.offset);  // "int func / function func(int a)"
+          error(Error::NameIsNotDistinct, f.offset, f.name);  // "int func / function func(int a)"
           return;
         }
         function_index_[f.name] = static_cast<int>(syms_.functions.size());
@@ -259,11 +261,11 @@ class Checker {
       }
       FunctionSym& s = syms_.functions[static_cast<size_t>(it->second)];
       if (!same_signature(*s.def, f)) {
-        error(Error::BadFunctionFormat, f.offset);  // the definition differs from its prototype
+        error(Error::BadFunctionFormat, f.offset, f.name);  // the definition differs from its prototype
         return;
       }
       if (f.has_body && s.has_body) {
-        error(Error::FunctionAlreadyHasBody, f.offset);
+        error(Error::FunctionAlreadyHasBody, f.offset, f.name);
         return;
       }
       if (f.has_body) {
@@ -278,13 +280,13 @@ class Checker {
       const StmtPtr& s = top[i];
       if (s->kind != StmtKind::Label) continue;
       if (top_labels_.count(s->name) || (!s->auto_label && function_index_.count(s->name))) {
-        error(Error::NameIsNotDistinct, s->offset);
+        error(Error::NameIsNotDistinct, s->offset, s->name);
         continue;
       }
       if (s->auto_label) {
         auto it = function_index_.find(s->name);
         if (it != function_index_.end()) {
-          error(Error::NameIsNotDistinct, s->offset);  // both #@AUTO_I1 and function AUTO_I1()
+          error(Error::NameIsNotDistinct, s->offset, s->name);  // both #@AUTO_I1 and function AUTO_I1()
           continue;
         }
       }
@@ -297,7 +299,7 @@ class Checker {
     for (const StmtPtr& s : b) {
       if (s->kind != StmtKind::Label) continue;
       if (local_labels_.count(s->name)) {
-        error(Error::NameIsNotDistinct, s->offset);
+        error(Error::NameIsNotDistinct, s->offset, s->name);
         continue;
       }
       local_labels_[s->name] = static_cast<int>(syms_.labels.size());
@@ -315,16 +317,16 @@ class Checker {
     s.locals.clear();
     auto add_local = [&](std::string_view name, VarType type, uint32_t offset) {
       if (locals_.count(name) || redeclared_.count(name)) {
-        error(Error::NameIsNotDistinct, offset);  // "function func(int a) / int a"
+        error(Error::NameIsNotDistinct, offset, name);  // "function func(int a) / int a"
         return;
       }
       if (clashes_with_system(name)) {
-        error(Error::NameIsNotDistinct, offset);
+        error(Error::NameIsNotDistinct, offset, name);
         return;
       }
       note(name);
       if (function_index_.count(name)) {
-        error(Error::NameIsNotDistinct, offset);
+        error(Error::NameIsNotDistinct, offset, name);
         return;
       }
       if (s.locals.size() == kMaxLocals) {
@@ -343,11 +345,11 @@ class Checker {
         auto it = global_index_.find(d.name);
         const GlobalSym* g = it == global_index_.end() ? nullptr : &syms_.globals[static_cast<size_t>(it->second)];
         if (g == nullptr || g->offset > f.offset || g->type != d.type || g->length != d.length) {
-          error(Error::IllegalGlobal, d.offset);  // not defined before, or another type
+          error(Error::IllegalGlobal, d.offset, d.name);  // not defined before, or another type
           continue;
         }
         if (locals_.count(d.name)) {
-          error(Error::NameIsNotDistinct, d.offset);
+          error(Error::NameIsNotDistinct, d.offset, d.name);
           continue;
         }
         redeclared_.insert(d.name);
@@ -441,7 +443,7 @@ class Checker {
         if (left->kind == ExprKind::Ref && left->has_parens) note(left->name);
         const bool call_first = left->kind == ExprKind::Ref && left->has_parens &&
                                 function_index_.count(left->name) > 0;
-        if (call_first) error(Error::BadFunctionCall, start_of(rhs));  // "[a,b] = f(x) + 5"
+        if (call_first) error(Error::BadFunctionCall, start_of(rhs), left->name);  // "[a,b] = f(x) + 5"
         else if (n > 1) error(Error::SidesMismatch, start_of(rhs));    // "[a,b] = 12 + c"
         else value(rhs);
       }
@@ -456,11 +458,11 @@ class Checker {
       Expr& v = *s.targets[0];
       resolve(v, /*quiet=*/true);
       if (v.ref != RefKind::Local && v.ref != RefKind::Global) {
-        error(Error::VariableIsUndefined, v.offset);
+        error(Error::VariableIsUndefined, v.offset, v.name);
         poison(v.name);  // one error for the loop, not one per use
         v.ref = RefKind::Unresolved;
       } else if (v.has_index || v.has_parens || (v.ref == RefKind::Global && global(v).length > 0)) {
-        error(Error::VariableIsArray, v.offset);  // "for k[10]=1:10"
+        error(Error::VariableIsArray, v.offset, v.name);  // "for k[10]=1:10"
         v.ref = RefKind::Unresolved;
       } else {
         v.type = variable_kind(v);
@@ -492,7 +494,7 @@ class Checker {
         syms_.functions[static_cast<size_t>(function_index_[s.name])].is_auto)
       return;
     const bool known = top_labels_.count(s.name) || function_index_.count(s.name) || any_local_label(s.name);
-    error(known ? Error::BadJumpToLabel : Error::NoSuchFunction, s.offset);
+    error(known ? Error::BadJumpToLabel : Error::NoSuchFunction, s.offset, s.name);
   }
 
   bool any_local_label(std::string_view name) const {
@@ -507,10 +509,12 @@ class Checker {
     if (top_labels_.count(s.name)) return;
     auto it = function_index_.find(s.name);
     if (it != function_index_.end()) {
-      if (syms_.functions[static_cast<size_t>(it->second)].inputs > 0) error(Error::BadFunctionAfterReset, s.offset);
+      if (syms_.functions[static_cast<size_t>(it->second)].inputs > 0)
+        error(Error::BadFunctionAfterReset, s.offset, s.name);
       return;
     }
-    error(any_local_label(s.name) || local_labels_.count(s.name) ? Error::BadJumpToLabel : Error::NoSuchFunction, s.offset);
+    error(any_local_label(s.name) || local_labels_.count(s.name) ? Error::BadJumpToLabel : Error::NoSuchFunction,
+          s.offset, s.name);
   }
 
   // ---- names
@@ -562,17 +566,17 @@ class Checker {
       return;
     }
     note(e.name);  // a function declared later would be this name
-    if (!quiet && !poisoned_.count(e.name)) error(Error::NoSuchVariable, e.offset);
+    if (!quiet && !poisoned_.count(e.name)) error(Error::NoSuchVariable, e.offset, e.name);
   }
 
   // A variable's [index] or (index): one value; a scalar takes only index 0.
   void variable_index(Expr& e, bool is_array) {
     if (e.has_parens && e.args.size() != 1) {
-      error(Error::BadIndexExpression, e.offset);
+      error(Error::BadIndexExpression, e.offset, e.name);
       return;
     }
     if (!e.has_index && !e.has_parens) {
-      if (is_array) error(Error::VariableIsArray, e.offset);  // "arr = 0"
+      if (is_array) error(Error::VariableIsArray, e.offset, e.name);  // "arr = 0"
       return;
     }
     Expr& index = *e.args[0];
@@ -582,29 +586,30 @@ class Checker {
       const bool constant = const_index(index, k);
       // Manual 1.11: a scalar global indexed [0] is the scalar; other constant indices are
       // error 58 (as in the table's example); a computed index is checked when it runs.
-      if ((constant && k != 0) || (!constant && e.ref == RefKind::Local)) error(Error::VariableIsNotArray, e.offset);
+      if ((constant && k != 0) || (!constant && e.ref == RefKind::Local))
+        error(Error::VariableIsNotArray, e.offset, e.name);
     }
   }
 
   void command_use(Expr& e, bool assigned) {
     const CommandInfo& c = *e.command;
     if (c.flags & kNotProgram) {
-      error(Error::CommandNotProgram, e.offset);
+      error(Error::CommandNotProgram, e.offset, e.name);
       return;
     }
     if (assigned && (c.flags & (kNotAssignable | kReadOnly | kAction))) {
-      error(Error::CommandNotAssign, e.offset);  // "BG=10"
+      error(Error::CommandNotAssign, e.offset, e.name);  // "BG=10"
       return;
     }
     if (e.has_parens) {
-      error(Error::BadIndexExpression, e.offset);
+      error(Error::BadIndexExpression, e.offset, e.name);
       return;
     }
     if (c.flags & kIndexed) {
-      if (!e.has_index) error(Error::BadIndexExpression, e.offset);
+      if (!e.has_index) error(Error::BadIndexExpression, e.offset, e.name);
       else value(*e.args[0]);
     } else if (e.has_index) {
-      error(Error::VariableIsNotArray, e.offset);
+      error(Error::VariableIsNotArray, e.offset, e.name);
     }
     e.type = kind_of(c.type);
   }
@@ -614,12 +619,12 @@ class Checker {
     FunctionSym& f = syms_.functions[static_cast<size_t>(e.slot)];
     for (ExprPtr& a : e.args) value(*a);
     if (e.has_index) {
-      error(Error::BadIndexExpression, e.offset);
+      error(Error::BadIndexExpression, e.offset, e.name);
       return;
     }
-    if (e.args.size() != f.inputs) error(Error::BadNumberOfInputs, e.offset);
-    if (wanted > f.outputs) error(Error::TooManyOutputs, e.offset);
-    if (!f.has_body) error(Error::FunctionWithoutBody, e.offset);
+    if (e.args.size() != f.inputs) error(Error::BadNumberOfInputs, e.offset, e.name);
+    if (wanted > f.outputs) error(Error::TooManyOutputs, e.offset, e.name);
+    if (!f.has_body) error(Error::FunctionWithoutBody, e.offset, e.name);
     e.type = f.outputs > 0 ? kind_of(f.def->outputs[0].type) : Kind::None;
     e.int_value = static_cast<int32_t>(wanted);  // nargout of this call
   }
@@ -641,7 +646,7 @@ class Checker {
         break;
       case RefKind::Command: command_use(e, true); break;
       case RefKind::Function:
-      case RefKind::Builtin: error(Error::NoSuchVariable, e.offset); break;
+      case RefKind::Builtin: error(Error::NoSuchVariable, e.offset, e.name); break;
       default: break;
     }
   }
@@ -700,7 +705,7 @@ class Checker {
         const BuiltinInfo& b = *builtin_info(e.builtin);
         for (ExprPtr& a : e.args) value(*a);
         if (!e.has_parens || e.args.size() != 1) {
-          error(e.has_index ? Error::BadIndexExpression : Error::BadNumberOfInputs, e.offset);
+          error(e.has_index ? Error::BadIndexExpression : Error::BadNumberOfInputs, e.offset, e.name);
           return;
         }
         e.type = b.result == BuiltinResult::SameAsInput ? e.args[0]->type : b.kind;
@@ -709,8 +714,8 @@ class Checker {
       }
       case RefKind::Command:
         if (e.command->flags & kAction) {
-          if (e.command->flags & kNotProgram) error(Error::CommandNotProgram, e.offset);
-          else error(Error::ValueIsExpected, e.offset);  // an action has no value
+          if (e.command->flags & kNotProgram) error(Error::CommandNotProgram, e.offset, e.name);
+          else error(Error::ValueIsExpected, e.offset, e.name);  // an action has no value
           return;
         }
         command_use(e, false);

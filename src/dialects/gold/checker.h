@@ -57,6 +57,7 @@ struct KnownGlobal {
 struct CapturedError {
   Error code;
   uint32_t offset;
+  std::string_view name;  // what it is about (a view into the lexer's text), or empty
 };
 
 // What checking one function body found, kept until the driver knows whether it still holds.

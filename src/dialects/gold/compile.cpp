@@ -21,10 +21,12 @@ constexpr size_t kMaxLineLength = 128;
 // Manual 1.1: an interpreter expression holds at most 511 characters.
 constexpr size_t kMaxCommandLine = 511;
 
-void check_line_lengths(const SourceFile& source, Reporter& reporter) {
+// Stops after `limit` + 1: they come in the order of their places, so no later one is shown.
+void check_line_lengths(const SourceFile& source, size_t limit, Reporter& reporter) {
   const std::string& t = source.text;
   int line = 1;
-  for (size_t start = 0; start <= t.size(); ++line) {
+  size_t found = 0;
+  for (size_t start = 0; start <= t.size() && found <= limit; ++line) {
     const void* nl = std::memchr(t.data() + start, '\n', t.size() - start);
     const size_t i = nl == nullptr ? t.size() : static_cast<size_t>(static_cast<const char*>(nl) - t.data());
     size_t end = i;
@@ -32,6 +34,7 @@ void check_line_lengths(const SourceFile& source, Reporter& reporter) {
     if (end - start > kMaxLineLength) {
       Location where{source.name, line, static_cast<int>(kMaxLineLength) + 1};
       reporter.add(make_error(Error::LineIsTooLong, where));
+      ++found;
     }
     start = i + 1;
   }
@@ -65,9 +68,9 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   }
   const std::string& text = preprocess ? pre.text : source.text;
   Locator locator(source.name, text, preprocess ? &pre.map : nullptr);
-  Reporter reporter(locator);
+  Reporter reporter(locator, options.max_errors);
   for (const Diagnostic& d : pre_diags.items()) reporter.add(d);
-  check_line_lengths(source, reporter);
+  check_line_lengths(source, options.max_errors, reporter);
 
   Lexer lexer(text, reporter);
   result.image = compile_program(lexer, reporter, locator, !options.check_only);
@@ -76,7 +79,8 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
     result.image.created_unix_s = options.created_unix_s;
     if (options.optimize && !options.check_only) bytecode::optimize(result.image);
   }
-  result.diagnostics = reporter.finish(options.max_errors);
+  result.diagnostics = reporter.finish();
+  attach_source_lines(result.diagnostics, source);
   if (!result.ok() || options.check_only) result.image = bytecode::Image{};
   return result;
 }
@@ -132,16 +136,18 @@ std::vector<KnownGlobal> known_globals(const bytecode::Image& program) {
 
 CompiledLine compile_line(std::string_view line, const std::vector<KnownGlobal>& known) {
   CompiledLine result;
-  const std::string text(line);
-  Locator locator("<command line>", text, nullptr);
-  Reporter reporter(locator);
+  const SourceFile source{"<command line>", std::string(line)};
+  const std::string& text = source.text;
+  Locator locator(source.name, text, nullptr);
+  Reporter reporter(locator, CompileOptions{}.max_errors);
   if (text.size() > kMaxCommandLine) reporter.error(Error::ClauseIsTooLong, 0);
   Lexer lexer(text, reporter);
   AstArena arena;
   Block block = parse_line(lexer, reporter, arena);
   check_line(block, known, reporter);
   if (!reporter.has_errors()) result.image = generate_line(block, known, locator, reporter, result.values);
-  result.diagnostics = reporter.finish(CompileOptions{}.max_errors);
+  result.diagnostics = reporter.finish();
+  attach_source_lines(result.diagnostics, source);
   if (!result.ok()) {
     result.image = bytecode::Image{};
     result.values.clear();

@@ -45,4 +45,15 @@ Diagnostic make_error(Error e, Location where, std::string detail) {
   return d;
 }
 
+Diagnostic make_error_about(Error e, Location where, std::string_view name) {
+  // Longer than any name the compiler accepts (12, error 11), short enough for one line.
+  constexpr size_t kMaxQuotedName = 40;
+  Diagnostic d = make_error(e, std::move(where));
+  if (name.empty()) return d;
+  d.message += " '";
+  d.message += name.substr(0, kMaxQuotedName);
+  d.message += name.size() > kMaxQuotedName ? "...'" : "'";
+  return d;
+}
+
 }  // namespace uprog::gold

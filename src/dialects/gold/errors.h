@@ -27,5 +27,8 @@ const char* error_text(Error e);
 const char* error_name(Error e);
 
 Diagnostic make_error(Error e, Location where, std::string detail = {});
+// The manual's text and the name the error is about: "No such variable 'spd'" (no name: the
+// text alone). A name longer than a program may hold is cut.
+Diagnostic make_error_about(Error e, Location where, std::string_view name);
 
 }  // namespace uprog::gold

@@ -96,6 +96,8 @@ Token Lexer::make(Tok k, size_t b, size_t n) {
 bool Lexer::newline(size_t at, Token& out) {
   if (at - st_.clause_start > kMaxClause) r_.lex_error(Error::ClauseIsTooLong, st_.clause_start);
   st_.clause_start = static_cast<uint32_t>(at + 1);
+  // A full reporter keeps no more errors: the lines after this one are not read (a binary file).
+  if (r_.full()) st_.pos = static_cast<uint32_t>(s_.size());
   if (st_.last == Tok::Newline) return false;
   out = make(Tok::Newline, at, 0);
   return true;

@@ -138,7 +138,7 @@ ExprPtr Parser::ref_after_name(const Token& name) {
     const Token& open = next();
     e->has_index = true;
     if (at(Tok::RBracket)) {
-      error(Error::BadIndexExpression, open.offset);
+      error(Error::BadIndexExpression, open.offset, e->name);
       return nullptr;
     }
     if (++paren_depth_ > kMaxParenDepth) {
@@ -149,7 +149,7 @@ ExprPtr Parser::ref_after_name(const Token& name) {
     --paren_depth_;
     if (!index) return nullptr;
     if (at(Tok::Comma)) {
-      error(Error::BadIndexExpression, peek().offset);
+      error(Error::BadIndexExpression, peek().offset, e->name);
       return nullptr;
     }
     if (!at(Tok::RBracket)) {
@@ -158,7 +158,7 @@ ExprPtr Parser::ref_after_name(const Token& name) {
     }
     next();
     if (at(Tok::LBracket)) {
-      error(Error::TooManyDimensions, peek().offset);
+      error(Error::TooManyDimensions, peek().offset, e->name);
       return nullptr;
     }
     e->args.push_back(std::move(index));

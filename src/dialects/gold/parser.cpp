@@ -53,15 +53,15 @@ bool Parser::type_keyword(VarType& type) {
 // an auto-routine name; at most 12 characters.
 bool Parser::check_name(const Token& t) {
   if (t.kind != Tok::Ident || text(t).empty() || text(t)[0] == '_') {
-    error(Error::InvalidName, t.offset);
+    error(Error::InvalidName, t.offset, name_of(t));
     return false;
   }
   if (t.kw != Keyword::None || find_auto_routine(text(t)) != nullptr) {
-    error(Error::NameIsKeyword, t.offset);
+    error(Error::NameIsKeyword, t.offset, text(t));
     return false;
   }
   if (text(t).size() > kMaxNameLength) {
-    error(Error::NameIsTooLong, t.offset);
+    error(Error::NameIsTooLong, t.offset, text(t));
     return false;
   }
   return true;
@@ -90,7 +90,7 @@ void Parser::declaration(VarType type, std::vector<VarDecl>& out, bool global_re
       ExprPtr dim = at(Tok::RBracket) ? nullptr : expr();
       int32_t n = 0;
       if (!dim || !const_int(*dim, n) || n < 1) {
-        if (dim || at(Tok::RBracket)) error(Error::BadDimension, open.offset);
+        if (dim || at(Tok::RBracket)) error(Error::BadDimension, open.offset, text(name));
         skip_line();
         return;
       }
@@ -101,12 +101,12 @@ void Parser::declaration(VarType type, std::vector<VarDecl>& out, bool global_re
       }
       next();
       if (at(Tok::LBracket)) {
-        error(Error::TooManyDimensions, peek().offset);
+        error(Error::TooManyDimensions, peek().offset, text(name));
         skip_line();
         return;
       }
       if (local) {
-        error(Error::IllegalLocalArray, name.offset);
+        error(Error::IllegalLocalArray, name.offset, text(name));
         n = 0;
       }
       d.length = n;
@@ -133,7 +133,7 @@ bool Parser::param_list(std::vector<Param>& out, Tok close) {
   while (true) {
     VarType type;
     if (!type_keyword(type)) {
-      error(Error::BadVariableType, peek().offset);
+      error(Error::BadVariableType, peek().offset, name_of(peek()));
       skip_line();
       return false;
     }
@@ -256,19 +256,19 @@ StmtPtr Parser::statement() {
     s->name = text(t);
     s->auto_label = t.kind == Tok::AutoLabel;
     if (s->name.empty() || s->name[0] == '_' || (s->name[0] >= '0' && s->name[0] <= '9')) {
-      error(Error::InvalidName, t.offset);
+      error(Error::InvalidName, t.offset, s->name);
       return nullptr;
     }
     if (!nest_.empty()) {
-      error(Error::LabelInsideBlock, t.offset);
+      error(Error::LabelInsideBlock, t.offset, s->name);
       return nullptr;
     }
     if (s->auto_label && in_function_) {
-      error(Error::AutoRoutineIsLocal, t.offset);
+      error(Error::AutoRoutineIsLocal, t.offset, s->name);
       return nullptr;
     }
     if (s->auto_label && find_auto_routine(s->name) == nullptr) {
-      error(Error::InvalidName, t.offset);
+      error(Error::InvalidName, t.offset, s->name);
       return nullptr;
     }
     finish(*s);
@@ -538,7 +538,7 @@ StmtPtr Parser::for_statement() {
   bool ok = true;
   const Token& name = peek();
   if (name.kind != Tok::Ident || name.kw != Keyword::None) {
-    error(Error::BadFlowControlExpression, name.offset);
+    error(Error::BadFlowControlExpression, name.offset, name_of(name));
     ok = false;
   } else {
     next();
@@ -680,15 +680,15 @@ StmtPtr Parser::goto_or_reset(bool is_goto) {
   const Token& target = peek();
   if (is_goto) {
     if (target.kind != Tok::Label && target.kind != Tok::AutoLabel) {
-      error(Error::BadGoto, target.offset);  // "goto START"
+      error(Error::BadGoto, target.offset, name_of(target));  // "goto START"
       skip_line();
       return nullptr;
     }
     if (std::find(nest_.begin(), nest_.end(), Nest::For) != nest_.end()) {
-      error(Error::BadGoto, k.offset);  // no goto out of a for loop
+      error(Error::BadGoto, k.offset, text(target));  // no goto out of a for loop
     }
   } else if (target.kind != Tok::Ident && target.kind != Tok::Label && target.kind != Tok::AutoLabel) {
-    error(Error::NoSuchFunction, target.offset);
+    error(Error::NoSuchFunction, target.offset, name_of(target));
     skip_line();
     return nullptr;
   }
@@ -696,7 +696,7 @@ StmtPtr Parser::goto_or_reset(bool is_goto) {
   s->name = text(target);
   s->auto_label = target.kind == Tok::AutoLabel;
   if (!is_goto && at(Tok::LParen)) {
-    error(Error::BadFunctionAfterReset, target.offset);  // "reset func(12)"
+    error(Error::BadFunctionAfterReset, target.offset, text(target));  // "reset func(12)"
     skip_line();
     return nullptr;
   }
@@ -753,7 +753,7 @@ void Parser::function_definition(Program& p, FunctionBodySink* on_body) {
   }
   if (ok && at(Tok::LParen)) ok = param_list(f.inputs, Tok::RParen);
   if (ok) statement_end();
-  if (f.is_auto && (!f.inputs.empty() || !f.outputs.empty())) error(Error::AutoRoutineHasArgument, f.offset);
+  if (f.is_auto && (!f.inputs.empty() || !f.outputs.empty())) error(Error::AutoRoutineHasArgument, f.offset, f.name);
 
   // A header followed by another function or the end of the file is a prototype.
   skip_separators();
@@ -773,7 +773,7 @@ void Parser::function_definition(Program& p, FunctionBodySink* on_body) {
     if (at_kw(Keyword::Global)) {
       next();
       if (!type_keyword(type)) {
-        error(Error::BadVariableType, peek().offset);  // "global floa a"
+        error(Error::BadVariableType, peek().offset, name_of(peek()));  // "global floa a"
         skip_line();
         continue;
       }
@@ -795,7 +795,7 @@ void Parser::function_definition(Program& p, FunctionBodySink* on_body) {
     f.end_offset = ret.offset;
     statement_end();
   } else {
-    error(Error::FunctionWithoutReturn, f.offset);
+    error(Error::FunctionWithoutReturn, f.offset, f.name);
     f.end_offset = peek().offset;
   }
   arena_ = kept;

@@ -105,7 +105,12 @@ class Parser {
   void skip_separators() {
     while (at(Tok::Newline) || at(Tok::Semicolon) || at(Tok::Comma)) next();
   }
-  void error(Error e, uint32_t offset) { r_.error(e, offset); }
+  // `name`: what the error is about, quoted after the manual's text.
+  void error(Error e, uint32_t offset, std::string_view name = {}) { r_.error(e, offset, name); }
+  // The name a token spells (a name or a label), or nothing for any other token.
+  std::string_view name_of(const Token& t) const {
+    return t.kind == Tok::Ident || t.kind == Tok::Label || t.kind == Tok::AutoLabel ? text(t) : std::string_view{};
+  }
 
   struct Ahead {
     LexState before;

@@ -473,6 +473,48 @@ catch
 end
 end
 ''', [(4, 'continue', 91), (7, 'continue', 91)])
+# The name a diagnostic is about, quoted after the manual's text ("No such variable 'de'"):
+# (case, line, code) -> name, each the name the case's line uses.
+names = {
+    ('04_bad_index_expression', 4, 4): 'a',
+    ('04_bad_index_expression', 5, 4): 'a',
+    ('05_bad_variable_type_argument', 2, 5): 'long',
+    ('05_bad_variable_type_global', 4, 5): 'floa',
+    ('11_name_is_too_long', 2, 11): 'iuyuafdsf_876234',
+    ('12_no_such_variable', 3, 12): 'de',
+    ('13_too_many_dimensions', 2, 13): 'arr',
+    ('14_bad_number_of_inputs', 4, 14): 'func',
+    ('24_name_is_keyword', 2, 24): 'switch',
+    ('25_name_is_not_distinct_function', 3, 25): 'func',
+    ('25_name_is_not_distinct_local', 3, 25): 'a',
+    ('26_invalid_name_underscore', 2, 26): '_abc',
+    ('28_illegal_global', 4, 28): 'a1',
+    ('30_variable_is_undefined', 4, 30): 'k',
+    ('32_bad_dimension', 2, 32): 'arr',
+    ('32_bad_dimension', 3, 32): 'z',
+    ('33_bad_function_format', 3, 33): 'func',
+    ('43_bad_nesting', 2, 71): 'f',
+    ('50_too_many_outputs', 4, 50): 'func',
+    ('56_no_such_function', 3, 56): 'NOWHERE',
+    ('56_no_such_function', 4, 56): 'nothing',
+    ('57_variable_is_array', 5, 57): 'arr',
+    ('58_variable_is_not_array', 4, 58): 'a1',
+    ('60_illegal_local_array', 3, 60): 'arr',
+    ('61_function_already_has_body', 7, 61): 'func',
+    ('64_expression_is_not_finished', 2, 71): 'f',
+    ('69_auto_routine_has_argument', 2, 69): 'AUTOEXEC',
+    ('70_label_inside_block', 5, 70): 'INNER',
+    ('71_function_without_return', 2, 71): 'f',
+    ('73_bad_function_after_reset', 3, 73): 'func',
+    ('74_bad_jump_to_label', 6, 74): 'func',
+    ('76_function_without_body', 5, 76): 'half',
+    ('77_bad_goto_in_for', 5, 77): 'START',
+    ('77_bad_goto_without_hashes', 3, 77): 'START',
+    ('78_auto_routine_is_local', 4, 78): 'AUTOEXEC',
+    ('79_command_not_program', 3, 79): 'LS',
+    ('82_command_not_assign', 3, 82): 'BG',
+}
+names.update({('46_too_many_errors', 3 + i, 12): 'q%d' % i for i in range(30)})
 for name, (src, expect) in cases.items():
     lines = src.split('\n')
     out = []
@@ -491,5 +533,6 @@ for name, (src, expect) in cases.items():
     with open(name + '.gold', 'w') as f: f.write(src)
     with open(name + '.expected', 'w') as f:
         for line, col, code in out:
-            f.write('%s.gold:%d:%d: error: %s [gold %d]\n' % (name, line, col, texts[code], code))
+            named = " '%s'" % names[(name, line, code)] if (name, line, code) in names else ''
+            f.write('%s.gold:%d:%d: error: %s%s [gold %d]\n' % (name, line, col, texts[code], named, code))
 print(len(cases), 'cases')
