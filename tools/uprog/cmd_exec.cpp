@@ -8,6 +8,7 @@
 
 #include "bytecode/assembly.h"
 #include "bytecode/image.h"
+#include "dialect/loaded_program.h"
 #include "commands.h"
 #include "support/diagnostic.h"
 #include "support/files.h"
@@ -70,21 +71,12 @@ int run(const std::string& path, const std::string& entry) {
   }
 
   BareHost host;
-  vm::Machine machine;
-  vm::MachineConfig config;
-  bytecode::ImageView view;
-  bytecode::load_image(bytes->data(), bytes->size(), view);
-  std::vector<uint64_t> memory((vm::Machine::memory_needed(view, config) + 7) / 8);
-  const vm::LoadStatus loaded =
-      machine.load(bytes->data(), bytes->size(), config, memory.data(), memory.size() * 8, host);
-  if (!loaded.ok()) {
-    fmt::print(stderr, "uprog exec: {}: {} at code word {}\n", path,
-               loaded.load != bytecode::LoadError::Ok ? bytecode::load_error_text(loaded.load)
-               : loaded.no_memory                   ? "not enough memory"
-                                                    : bytecode::verify_error_text(loaded.verify),
-               loaded.pc);
+  const auto program = dialect::LoadedProgram::load(std::move(*bytes), vm::MachineConfig{}, host, &error, false);
+  if (!program) {
+    fmt::print(stderr, "uprog exec: {}: {}\n", path, error);
     return 1;
   }
+  vm::Machine& machine = program->machine();
   machine.start(0, static_cast<uint32_t>(routine));
   vm::SliceResult r{};
   for (;;) {
