@@ -17,6 +17,7 @@
 
 #include "bytecode/opcodes.h"
 #include "support/arith.h"
+#include "vm/budget_count.h"
 #include "vm/machine.h"
 
 namespace uprog::vm {
@@ -107,10 +108,9 @@ SliceResult Machine::execute_loop(Thread& t, Budget budget) {
   const uint32_t* ip = code + t.pc;
   Value* sp = t.sp;
   Value* locals = t.frames[t.frame_count - 1].locals;
-  const uint64_t initial = budget.instructions != 0 ? budget.instructions : UINT64_MAX;
-  uint64_t steps = initial;
-  uint64_t lines = budget.lines != 0 ? budget.lines : UINT64_MAX;
-  uint64_t back_jumps = budget.back_jumps != 0 ? budget.back_jumps : UINT64_MAX;
+  BudgetCount steps = BudgetCount::of(budget.instructions);
+  BudgetCount lines = BudgetCount::of(budget.lines);
+  BudgetCount back_jumps = BudgetCount::of(budget.back_jumps);
   // A call may start a frame at or below this stack position (see enter()).
   const Value* const call_limit = t.stack + (config_.stack - max_depth_);
   uint32_t word = 0;
@@ -122,20 +122,22 @@ SliceResult Machine::execute_loop(Thread& t, Budget budget) {
 #define LOAD() (ip = code + t.pc, sp = t.sp, locals = t.frames[t.frame_count - 1].locals)
 #define DISPATCH()                           \
   do {                                       \
-    if (kCounted && steps-- == 0) goto out_of_budget; \
+    if (kCounted && steps.now-- == 0) goto out_of_budget; \
     word = *ip;                              \
     goto* kDispatch[word & 0xFFu];           \
   } while (0)
-// Every jump goes through here: one going back counts against the slice's back_jumps.
-#define JUMP_TO(target)                                    \
+// Every jump goes through here: one going back counts against the slice's back_jumps. When
+// they run out it goes to `spent`, which continues as the jump's instruction would.
+#define JUMP_OR(target, spent)                             \
   do {                                                     \
     const uint32_t* const to = (target);                   \
-    if (to <= ip && --back_jumps == 0) {                   \
+    if (to <= ip && --back_jumps.now == 0) {               \
       ip = to;                                             \
-      goto out_of_back_jumps;                              \
+      goto spent;                                          \
     }                                                      \
     ip = to;                                               \
   } while (0)
+#define JUMP_TO(target) JUMP_OR(target, out_of_back_jumps)
 #define A() (word >> 8)
 #define IMM() (static_cast<int32_t>(word) >> 8)
 #define B() (ip[1])
@@ -472,10 +474,7 @@ op_RET: {
     ip = code + f.return_pc;
     locals = t.frames[t.frame_count - 1].locals;
   }
-  if (lines == 0) {
-    end = SliceEnd::LineEnd;
-    goto stop;
-  }
+  if (lines.now == 0) goto out_of_lines;
   DISPATCH();
 }
 op_NARGOUT:
@@ -495,14 +494,11 @@ op_RESET:
     goto raise_error;
   }
   LOAD();
-  if (--back_jumps == 0) goto out_of_back_jumps;  // a restart is a loop's iteration too
+  if (--back_jumps.now == 0) goto out_of_back_jumps;  // a restart is a loop's iteration too
   DISPATCH();
 op_EOL:
   ++ip;
-  if (--lines == 0) {
-    end = SliceEnd::LineEnd;
-    goto stop;
-  }
+  if (--lines.now == 0) goto out_of_lines;
   DISPATCH();
 op_RAISE:
   if (!run_error_from_code(A(), error) || error == RunError::None) error = RunError::Raised;
@@ -632,14 +628,11 @@ op_JNGEFLK: JUMP_UNLESS_LOCAL_CONST(>=)
 #undef JUMP_UNLESS_LOCAL_CONST
 // A line that ends by jumping (a loop's step, an if arm's last assignment) stops the slice
 // at the jump's target, as EOL; JMP would.
-#define END_LINE_AND_JUMP()        \
-  {                                \
-    JUMP_TO(code + A());           \
-    if (--lines == 0) {            \
-      end = SliceEnd::LineEnd;     \
-      goto stop;                   \
-    }                              \
-    DISPATCH();                    \
+#define END_LINE_AND_JUMP()                                \
+  {                                                        \
+    JUMP_OR(code + A(), out_of_back_jumps_at_line_end);    \
+    if (--lines.now == 0) goto out_of_lines;               \
+    DISPATCH();                                            \
   }
 op_JMPEOL: END_LINE_AND_JUMP()
 op_INCLJEOL: {
@@ -655,7 +648,7 @@ op_STLJEOL:
 op_RETEOL:
   // The line ends here; the return is the line's last instruction, so a slice whose line
   // budget runs out at this end of line stops after the return, in the caller.
-  --lines;
+  --lines.now;
   goto op_RET;
 op_LDL2:
   sp[0] = locals[A()];
@@ -747,20 +740,37 @@ op_BREAK:
   end = SliceEnd::Breakpoint;
   goto stop;
 
+// A spent 32-bit count takes the next chunk of its budget and the slice goes on as if nothing
+// happened; only when the whole budget is spent does the slice end.
 out_of_budget:
-  steps = 0;
+  if (steps.refill()) DISPATCH();
+  steps.now = 0;
   end = SliceEnd::BudgetSpent;
   goto stop;
 
 out_of_back_jumps:
+  if (back_jumps.refill()) DISPATCH();
   end = SliceEnd::BudgetSpent;
+  goto stop;
+
+out_of_back_jumps_at_line_end:  // a line-ending jump: the line is still to be counted
+  if (!back_jumps.refill()) {
+    end = SliceEnd::BudgetSpent;
+    goto stop;
+  }
+  if (--lines.now == 0) goto out_of_lines;
+  DISPATCH();
+
+out_of_lines:
+  if (lines.refill()) DISPATCH();
+  end = SliceEnd::LineEnd;
   goto stop;
 
 finished:
   SAVE();
   reset_thread(t);
   t.last_error = RunError::None;
-  return {SliceEnd::Finished, kCounted ? initial - steps : 0};
+  return {SliceEnd::Finished, kCounted ? budget.instructions - steps.left() : 0};
 
 raise_error:
   SAVE();
@@ -769,16 +779,17 @@ raise_error:
     detail = 0;
     LOAD();
     // A catch block may lie before its try: catching is a loop's iteration too.
-    if (--back_jumps == 0) goto out_of_back_jumps;
+    if (--back_jumps.now == 0) goto out_of_back_jumps;
     DISPATCH();
   }
-  return {SliceEnd::Error, kCounted ? initial - steps : 0};
+  return {SliceEnd::Error, kCounted ? budget.instructions - steps.left() : 0};
 
 stop:
   SAVE();
-  return {end, kCounted ? initial - steps : 0};
+  return {end, kCounted ? budget.instructions - steps.left() : 0};
 
 #undef JUMP_TO
+#undef JUMP_OR
 #undef SAVE
 #undef LOAD
 #undef DISPATCH
