@@ -44,6 +44,14 @@ bool compare(int32_t how, float a, float b) {
     default: return a >= b;
   }
 }
+// A 64-bit value on the stack or in memory: two words, the low one first (deeper).
+uint64_t read_wide(const Value* at) {
+  return static_cast<uint64_t>(at[0].bits) | (static_cast<uint64_t>(at[1].bits) << 32);
+}
+void write_wide(Value* at, uint64_t v) {
+  at[0].bits = static_cast<uint32_t>(v);
+  at[1].bits = static_cast<uint32_t>(v >> 32);
+}
 bool compare(int32_t how, int32_t a, int32_t b) {
   switch (how) {
     case 0: return a == b;
@@ -179,6 +187,21 @@ SliceResult Machine::execute_loop(Thread& t, Budget budget) {
     sp[-1] = (expr);               \
     ++ip;                          \
     DISPATCH();                    \
+  }
+// A call to the host. Refused, it raises CommandRefused before the instruction has any
+// effect. Done with kCommandEndSlice, the instruction completes and the slice ends as at YIELD.
+#define HOST_CALL(call, effect)                                       \
+  {                                                                   \
+    detail = (call);                                                  \
+    if (detail != kCommandOk) {                                       \
+      if (detail != kCommandEndSlice) FAIL(RunError::CommandRefused); \
+      detail = 0;                                                     \
+      effect;                                                         \
+      end = SliceEnd::Yielded;                                        \
+      goto stop;                                                      \
+    }                                                                 \
+    effect;                                                           \
+    DISPATCH();                                                       \
   }
 
   DISPATCH();
@@ -517,9 +540,11 @@ op_WAIT: {
   end = SliceEnd::Waiting;
   goto stop;
 }
-op_TRY: {
+op_TRY:
+op_TRYALL: {
   if (t.handler_count >= config_.handlers) FAIL(RunError::TryDepth);
-  t.handlers[t.handler_count++] = {A(), t.frame_count, sp, t.locals_top};
+  t.handlers[t.handler_count++] = {A(), t.frame_count, sp, t.locals_top,
+                                   bytecode::word_op(word) == Op::TRYALL};
   ++ip;
   DISPATCH();
 }
@@ -700,38 +725,86 @@ op_MULFLLS: LOCALS_ARITH(float, f, a * b, locals[A()].f)
 
 op_CMDGET: {
   Value v;
-  detail = host_->read(A(), static_cast<int32_t>(B()), v);
-  if (detail != kCommandOk) FAIL(RunError::CommandRefused);
-  *sp++ = v;
-  ip += 2;
-  DISPATCH();
+  HOST_CALL(host_->read(A(), static_cast<int32_t>(B()), v), (*sp++ = v, ip += 2))
 }
 op_CMDGETX: {
   Value v;
-  detail = host_->read(A(), sp[-1].i, v);
-  if (detail != kCommandOk) FAIL(RunError::CommandRefused);
-  sp[-1] = v;
+  HOST_CALL(host_->read(A(), sp[-1].i, v), (sp[-1] = v, ++ip))
+}
+op_CMDSET:
+  HOST_CALL(host_->write(A(), static_cast<int32_t>(B()), sp[-1]), (--sp, ip += 2))
+op_CMDSETX:
+  HOST_CALL(host_->write(A(), sp[-2].i, sp[-1]), (sp -= 2, ++ip))
+op_CMDRUN: {
+  const uint32_t count = B();
+  HOST_CALL(host_->execute(A(), 0, sp - count, count), (sp -= count, ip += 2))
+}
+op_CMDRUNX: {
+  const uint32_t count = B();
+  HOST_CALL(host_->execute(A(), sp[-1 - static_cast<int32_t>(count)].i, sp - count, count),
+            (sp -= count + 1, ip += 2))
+}
+op_MSG: {
+  const uint32_t count = B();
+  const auto thread = static_cast<uint32_t>(&t - threads_);
+  HOST_CALL(host_->message(thread, A(), sp - count, count), (sp -= count, ip += 2))
+}
+
+op_LDM: {
+  const auto address = static_cast<uint32_t>(sp[-1].i);
+  if (address >= memory_words_) FAIL(RunError::BadAddress);
+  sp[-1] = memory_[address];
   ++ip;
   DISPATCH();
 }
-op_CMDSET:
-  detail = host_->write(A(), static_cast<int32_t>(B()), sp[-1]);
-  if (detail != kCommandOk) FAIL(RunError::CommandRefused);
-  --sp;
-  ip += 2;
-  DISPATCH();
-op_CMDSETX:
-  detail = host_->write(A(), sp[-2].i, sp[-1]);
-  if (detail != kCommandOk) FAIL(RunError::CommandRefused);
+op_STM: {
+  const auto address = static_cast<uint32_t>(sp[-2].i);
+  if (address >= memory_words_) FAIL(RunError::BadAddress);
+  memory_[address] = sp[-1];
   sp -= 2;
   ++ip;
   DISPATCH();
-op_CMDRUN: {
-  const uint32_t count = B();
-  detail = host_->execute(A(), 0, sp - count, count);
-  if (detail != kCommandOk) FAIL(RunError::CommandRefused);
-  sp -= count;
-  ip += 2;
+}
+
+op_SEXT: UNARY(Value::of_int(arith::sign_extend(a.i, A())))
+op_ZEXT: UNARY(Value::of_int(arith::zero_extend(a.i, A())))
+op_DIVU:
+  if (sp[-1].i == 0) FAIL(RunError::DivisionByZero);
+  INT_BINARY(arith::unsigned_div(a, b))
+op_REMU:
+  if (sp[-1].i == 0) FAIL(RunError::DivisionByZero);
+  INT_BINARY(arith::unsigned_rem(a, b))
+op_SHRU: INT_BINARY(arith::shift_right_logical(a, b))
+op_CMPU: {
+  // Unsigned order is signed order with the sign bits flipped.
+  const bool r = compare(static_cast<int32_t>(A()), sp[-2].i ^ INT32_MIN, sp[-1].i ^ INT32_MIN);
+  --sp;
+  sp[-1] = Value::of_int(r ? 1 : 0);
+  ++ip;
+  DISPATCH();
+}
+op_I2W:
+  sp[0] = Value::of_int(sp[-1].i < 0 ? -1 : 0);
+  ++sp;
+  ++ip;
+  DISPATCH();
+op_ADDW:
+  write_wide(sp - 4, read_wide(sp - 4) + read_wide(sp - 2));
+  sp -= 2;
+  ++ip;
+  DISPATCH();
+op_SUBW:
+  write_wide(sp - 4, read_wide(sp - 4) - read_wide(sp - 2));
+  sp -= 2;
+  ++ip;
+  DISPATCH();
+op_MULDIV: {
+  if (sp[-1].i == 0) FAIL(RunError::DivisionByZero);
+  int32_t q;
+  if (!arith::mul_div(sp[-3].i, sp[-2].i, sp[-1].i, q)) FAIL(RunError::Overflow);
+  sp -= 2;
+  sp[-1] = Value::of_int(q);
+  ++ip;
   DISPATCH();
 }
 
@@ -801,6 +874,7 @@ stop:
 #undef FLOAT_BINARY
 #undef COMPARE
 #undef UNARY
+#undef HOST_CALL
 }
 
 template SliceResult Machine::execute_loop<true>(Thread& t, Budget budget);
