@@ -144,6 +144,7 @@ std::string disassemble(const Image& image) {
     const uint32_t a = word_a(word);
     if (info.a == Operand::Global && a < image.globals.size()) comment = image.globals[a].name;
     if (info.a == Operand::Routine && a < image.routines.size()) comment = image.routines[a].name;
+    if (info.a == Operand::Text && a < image.texts.size()) comment = quote(image.texts[a]);
     if (info.a == Operand::Const && a < image.constants.size()) {
       const auto& c = image.constants[a];
       comment = c.type == ValueType::Float ? float_text(c.bits)
