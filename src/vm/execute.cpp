@@ -735,14 +735,14 @@ op_CMDSET:
   HOST_CALL(host_->write(A(), static_cast<int32_t>(B()), sp[-1]), (--sp, ip += 2))
 op_CMDSETX:
   HOST_CALL(host_->write(A(), sp[-2].i, sp[-1]), (sp -= 2, ++ip))
-op_CMDRUN: {
-  const uint32_t count = B();
-  HOST_CALL(host_->execute(A(), 0, sp - count, count), (sp -= count, ip += 2))
-}
+op_CMDRUN:
 op_CMDRUNX: {
+  // CMDRUN is CMDRUNX at index 0, with no index on the stack.
   const uint32_t count = B();
-  HOST_CALL(host_->execute(A(), sp[-1 - static_cast<int32_t>(count)].i, sp - count, count),
-            (sp -= count + 1, ip += 2))
+  const bool indexed = bytecode::word_op(word) == Op::CMDRUNX;
+  Value* const args = sp - count;
+  HOST_CALL(host_->execute(A(), indexed ? args[-1].i : 0, args, count),
+            (sp = args - (indexed ? 1 : 0), ip += 2))
 }
 op_MSG: {
   const uint32_t count = B();
