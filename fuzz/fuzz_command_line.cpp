@@ -11,6 +11,7 @@
 #include "bytecode/image.h"
 #include "controller/controller.h"
 #include "dialects/gold/compile.h"
+#include "dialects/gold/dialect.h"
 
 namespace {
 
@@ -33,8 +34,10 @@ const std::vector<uint8_t>& program_image() {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace uprog;
-  controller::Controller drive;
-  if (!drive.download(program_image()).ok || !drive.load_stored_program()) abort();
+  controller::ControllerOptions options;
+  options.dialect = &gold::dialect();
+  controller::Controller drive(options);
+  if (!drive.download(program_image()).ok || !drive.query("CC").empty()) abort();
   std::string_view input(reinterpret_cast<const char*>(data), size);
   // One host line per input line, as a terminal sends them.
   while (!input.empty()) {

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "controller/transcript.h"
+#include "transcript/transcript.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace uprog;
@@ -17,8 +17,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::string directive, duration;
     words >> directive >> duration;
     uint64_t us = 0;
-    if (directive == "wait" && controller::parse_duration_us(duration, us) && us > 2'000'000) return 0;
+    if (directive == "wait" && transcript::parse_duration_us(duration, us) && us > 2'000'000) return 0;
   }
-  (void)controller::run_transcript_text(text, "fuzz.txt", UPROG_FUZZ_EXAMPLES_DIR);
+  (void)transcript::run_transcript_text(text, "fuzz.txt", UPROG_FUZZ_EXAMPLES_DIR);
   return 0;
 }

@@ -1,4 +1,4 @@
-// libFuzzer target: the wire protocol's framing (src/transport). The host's bytes go through a
+// libFuzzer target: the wire protocol's framing (src/dialect, src/transport). The host's bytes go through a
 // LineFramer in one piece and in chunks the input chooses, which must give the same frames, and
 // through a HostSession whose service echoes each line; the drive's answers go back through the
 // host's AnswerReader. Memory must stay bounded by the line limit.
@@ -9,26 +9,34 @@
 #include <string_view>
 #include <vector>
 
+#include "dialect/line_framer.h"
+#include "dialect/semicolon_wire.h"
 #include "transport/answer_reader.h"
 #include "transport/host_session.h"
-#include "transport/line_framer.h"
 
 namespace {
 
-// Answers every line with its own text, and an error for lines starting with '!'.
+// Answers every line with its own text, and an error for lines starting with '!'; its wire is
+// the semicolon wire with the framing the input chose.
 class EchoService final : public uprog::transport::LineService {
  public:
+  explicit EchoService(uprog::dialect::FramerOptions options) : wire_(options) {}
   std::vector<uprog::transport::Reply> handle_line(std::string_view line) override {
     if (!line.empty() && line[0] == '!') return {{std::string(line.substr(1)), 19}};
     return {{std::string(line), 0}};
   }
   void advance(std::uint32_t) override {}
+  const uprog::dialect::WireForm& wire() const override { return wire_; }
+
+ private:
+  uprog::dialect::SemicolonWire wire_;
 };
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace uprog::transport;
+  using uprog::dialect::FramerOptions, uprog::dialect::LineFramer, uprog::dialect::Frame;
   if (size < 2) return 0;
   // Byte 0: options; byte 1: the chunk size for the chunked feed.
   FramerOptions options;
@@ -49,8 +57,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (const Frame& f : a)
     if (f.kind == Frame::Kind::kLine && f.text.size() > options.max_line_length) abort();
 
-  EchoService service;
-  HostSession session(service, options);
+  EchoService service(options);
+  HostSession session(service);
   std::string wire;
   for (size_t at = 0; at < bytes.size(); at += chunk) session.receive(bytes.substr(at, chunk), wire);
   session.disconnect();

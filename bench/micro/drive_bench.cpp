@@ -12,6 +12,7 @@
 
 #include "bytecode/image.h"
 #include "controller/controller.h"
+#include "dialects/gold/dialect.h"
 #include "dialects/gold/compile.h"
 #include "drive/axis.h"
 #include "support/diagnostic.h"
@@ -57,6 +58,12 @@ int32_t query_int(Controller& drive, const char* name) {
   return a.size() == 1 && !a[0].is_error() ? std::atoi(a[0].text.c_str()) : -1;
 }
 
+uprog::controller::ControllerOptions gold_drive() {
+  uprog::controller::ControllerOptions o;
+  o.dialect = &uprog::gold::dialect();
+  return o;
+}
+
 void report(benchmark::State& state, double wall_s, Controller& drive) {
   const double virtual_s = static_cast<double>(state.iterations()) * kVirtualPerIteration_us / 1e6;
   const double cycles = virtual_s * 1e6 / static_cast<double>(drive.axis().period_us());
@@ -66,19 +73,18 @@ void report(benchmark::State& state, double wall_s, Controller& drive) {
 }
 
 void BM_DriveProgram(benchmark::State& state) {
-  Controller drive;  // default options: no state dir, one line per servo cycle
+  Controller drive(gold_drive());  // no state dir, one line per servo cycle
   const uprog::gold::CompileResult compiled = uprog::gold::compile(uprog::SourceFile{"drive_bench.ehl", kMotionProgram});
   if (!compiled.ok()) {
     state.SkipWithError(uprog::format_text(compiled.diagnostics).c_str());
     return;
   }
-  if (!drive.download(uprog::bytecode::encode(compiled.image)).ok || !drive.load_stored_program() ||
-      drive.execute_program("main") != 0) {
+  if (!drive.download(uprog::bytecode::encode(compiled.image)).ok || !drive.start_program("main").empty()) {
     state.SkipWithError("the program does not download or start");
     return;
   }
   drive.advance(200'000);  // enable delay and the first move under way
-  if (drive.program_status() != 1 || !drive.axis().motor_on()) {
+  if (!drive.program_running() || !drive.axis().motor_on()) {
     state.SkipWithError("the program is not running with the motor on after 200 ms");
     return;
   }
@@ -90,7 +96,7 @@ void BM_DriveProgram(benchmark::State& state) {
     drive.advance(kVirtualPerIteration_us);
     const int32_t now = drive.axis().position();
     travel_counts += now > position ? now - position : position - now;
-    if (drive.program_status() != 1 || drive.axis().motor_fault() != 0 || now == position) {
+    if (!drive.program_running() || drive.axis().motor_fault() != 0 || now == position) {
       state.SkipWithError("the program stopped, the drive faulted, or the axis did not move");
       break;
     }
@@ -110,11 +116,11 @@ BENCHMARK(BM_DriveProgram)->Unit(benchmark::kMillisecond);
 
 // The same drive with no program: the motor on, holding position (servo cycles only).
 void BM_DriveIdle(benchmark::State& state) {
-  Controller drive;
+  Controller drive(gold_drive());
   drive.send("UM=5");
   drive.send("MO=1");
   drive.advance(100'000);
-  if (!drive.axis().motor_on() || drive.program_status() != -2) {
+  if (!drive.axis().motor_on() || query_int(drive, "PS") != -2) {
     state.SkipWithError("the motor did not come on, or a program is loaded");
     return;
   }

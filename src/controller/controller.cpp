@@ -1,269 +1,167 @@
-// Controller lifecycle: boot, the program store (download, CC), starting the program, and the
-// Host the VM talks to. Time is in scheduler.cpp, the command line in command_line.cpp.
-#include "controller/controller_impl.h"
+// The drive: axes, flash, virtual time and the firmware's cycle (controller.h). The Drive is the
+// Runtime the firmware borrows; each of its parts has one owner.
+#include "controller/controller.h"
 
-#include <filesystem>
+#include <algorithm>
 
-#include "bytecode/image_view.h"
-#include "dialects/gold/commands.h"
+#include "controller/flash.h"
+#include "drive/axis.h"
 #include "drive/parameter_store.h"
-#include "support/files.h"
-#include "vm/run_error.h"
 
 namespace uprog::controller {
 namespace {
 
-uint16_t command_id(std::string_view name) { return gold::find_command(name)->id; }
+constexpr std::string_view kParametersRecord = "parameters.txt";
 
-// The commands the controller answers itself. Looked up once at start-up rather than behind a
-// function-local static's guard: a program reads a drive command nearly every servo cycle.
-const uint16_t kMi = command_id("MI"), kPs = command_id("PS"), kEc = command_id("EC");
-
-const vm::MachineConfig kProgramConfig{};
-
-std::string program_path(const ControllerOptions& o) { return o.state_dir + "/program.upi"; }
+std::span<const uint8_t> bytes_of(const std::string& text) {
+  return {reinterpret_cast<const uint8_t*>(text.data()), text.size()};
+}
 
 }  // namespace
 
-Controller::Impl::Impl(ControllerOptions opts) : options(std::move(opts)) {
-  if (!options.state_dir.empty()) {
-    std::error_code ec_ignored;
-    std::filesystem::create_directories(options.state_dir, ec_ignored);
-    std::string error;
-    if (auto bytes = read_binary_file(program_path(options), &error)) {
-      const DownloadResult r = verify(*bytes, nullptr);
-      if (r.ok) {
-        stored_image = std::move(*bytes);
-        has_stored = true;
-      } else {
-        boot_messages.push_back("stored program " + program_path(options) + " refused: " + r.error +
-                                "; the drive starts without a program");
-      }
-    }
+class Controller::Drive final : public dialect::Runtime {
+ public:
+  explicit Drive(ControllerOptions options) : options_(std::move(options)), flash_(options_.state_dir) {
+    dialect::FirmwareOptions firmware_options;
+    firmware_options.timing = options_.timing;
+    firmware_options.safe_boot = options_.safe_boot;
+    firmware_ = options_.dialect->make_firmware(*this, firmware_options);
+    reboot();
+    console_ = firmware_->open_session();
   }
-  boot();
-}
 
-void Controller::Impl::log(std::string text) { log_entries.push_back({now_us_, std::move(text)}); }
+  // --- dialect::Runtime ---
+  std::size_t axis_count() const override { return axes_.size(); }
+  drive::Axis& axis(std::size_t index) override { return *axes_.at(index); }
+  dialect::Flash& flash() override { return flash_; }
+  uint64_t now_ns() const override { return now_ns_; }
+  void advance_ns(uint64_t ns) override;
+  void log(std::string text) override { log_.push_back({now_ns_ / 1000, std::move(text)}); }
+  void output(std::string_view text) override { output_.emplace_back(text); }
+  void reboot() override;
+  bool save_axis_parameters(std::string* error) override {
+    return flash_.write(kParametersRecord, bytes_of(drive::serialize_parameters(axis(0).parameters())), error);
+  }
+  std::optional<drive::Parameters> saved_axis_parameters(std::string* error) override;
 
-// Power-up and RS: a fresh axis with the saved parameters, the stored program in RAM, AUTOEXEC.
-void Controller::Impl::boot() {
-  axis = std::make_unique<drive::Axis>();
-  drive_commands = std::make_unique<gold::DriveCommands>(*axis);
-  recorder_map.clear();
-  ec = 0;
+  const ControllerOptions options_;
+  StateFlash flash_;
+  std::vector<std::unique_ptr<drive::Axis>> axes_;
+  std::unique_ptr<dialect::Firmware> firmware_;
+  std::unique_ptr<dialect::Session> console_;  // the drive's own session: send() and transcripts
+  std::vector<std::string> boot_messages_;
+  std::vector<LogEntry> log_;
+  std::vector<std::string> output_;
+
+ private:
+  void run_until(uint64_t target_ns);
+  void run_one_axis_until(uint64_t target_ns);
+  uint64_t axis_period_ns(size_t a) const { return uint64_t{std::max(axes_[a]->period_us(), 1u)} * 1000; }
+  // A firmware's cycle of at least a microsecond: time always moves on.
+  uint64_t cycle_ns() const { return std::max<uint64_t>(firmware_->cycle_ns(), 1000); }
+
+  uint64_t now_ns_ = 0;
+  uint64_t target_ns_ = 0;  // all the time given to advance_ns(), a part of a cycle included
+  std::vector<uint64_t> next_step_ns_;  // per axis, when its next servo cycle is due
+  uint64_t next_cycle_ns_ = 0;          // when the firmware's next cycle is due
+  std::vector<uint32_t> events_;        // per axis, its event bits since the firmware's last cycle
+};
+
+void Controller::Drive::reboot() {
+  axes_.clear();
+  axes_.push_back(std::make_unique<drive::Axis>());
+  events_.assign(axes_.size(), 0);
   std::string error;
-  if (!options.state_dir.empty()) {
-    const std::string path = options.state_dir + "/parameters.txt";
-    if (std::filesystem::exists(path)) {
-      if (auto params = drive::load_parameters(path, &error)) {
-        axis->load_parameters(*params);
-      } else {
-        boot_messages.push_back("saved parameters refused: " + error + "; using defaults");
-      }
-    }
-  } else if (saved_parameters) {
-    if (auto params = drive::parse_parameters(*saved_parameters)) axis->load_parameters(*params);
+  if (auto params = saved_axis_parameters(&error)) {
+    axes_[0]->load_parameters(*params);
+  } else if (!error.empty()) {
+    boot_messages_.push_back("saved parameters refused: " + error + "; using defaults");
   }
-  unload();
-  if (has_stored && load_stored(&error) != 0) boot_messages.push_back(error);
-  if (machine && !options.safe_boot) {
-    if (auto r = autos.routine_of(kAutoExec)) {
-      log("AUTOEXEC started");
-      // AUTOEXEC is the program's entry at power-up, not an interruption: it blocks nothing.
-      start_program(*r, nullptr, 0);
-    }
-  }
+  firmware_->boot(boot_messages_);
+  next_cycle_ns_ = now_ns_ + cycle_ns();
+  next_step_ns_.resize(axes_.size());
+  for (size_t a = 0; a < axes_.size(); ++a) next_step_ns_[a] = now_ns_ + axis_period_ns(a);
 }
 
-DownloadResult Controller::Impl::verify(const std::vector<uint8_t>& bytes, bytecode::Image* decoded) {
-  DownloadResult r;
-  bytecode::ImageView view;
-  const bytecode::LoadError le = bytecode::load_image(bytes.data(), bytes.size(), view);
-  if (le != bytecode::LoadError::Ok) {
-    r.error = std::string("not a valid image: ") + bytecode::load_error_text(le);
-    return r;
-  }
-  // The verifier runs inside Machine::load; the scratch machine is then dropped.
-  std::vector<uint64_t> memory((vm::Machine::memory_needed(view, kProgramConfig) + 7) / 8);
-  vm::Machine scratch;
-  const vm::LoadStatus s =
-      scratch.load(bytes.data(), bytes.size(), kProgramConfig, memory.data(), memory.size() * 8, *this);
-  if (!s.ok()) {
-    if (s.load != bytecode::LoadError::Ok) {
-      r.error = std::string("not a valid image: ") + bytecode::load_error_text(s.load);
-    } else if (s.verify != bytecode::VerifyError::Ok) {
-      r.error = std::string("the verifier refused it: ") + bytecode::verify_error_text(s.verify) +
-                " at code word " + std::to_string(s.pc);
-    } else {
-      r.error = "it needs more memory than the drive has";
-    }
-    return r;
-  }
-  std::string error;
-  if (decoded != nullptr && !bytecode::decode(bytes.data(), bytes.size(), *decoded, error)) {
-    r.error = "not a valid image: " + error;
-    return r;
-  }
-  r.ok = true;
-  return r;
+std::optional<drive::Parameters> Controller::Drive::saved_axis_parameters(std::string* error) {
+  const auto bytes = flash_.read(kParametersRecord, error);
+  if (!bytes) return std::nullopt;
+  return drive::parse_parameters(std::string(bytes->begin(), bytes->end()), error);
 }
 
-DownloadResult Controller::Impl::download(const std::vector<uint8_t>& bytes) {
-  DownloadResult r = verify(bytes, nullptr);
-  if (!r.ok) return r;
-  if (!options.state_dir.empty()) {
-    std::string error;
-    if (!write_file_atomically(program_path(options), bytes.data(), bytes.size(), &error)) {
-      r.ok = false;
-      r.storage_failed = true;
-      r.error = "could not store the program: " + error;
-      return r;
+void Controller::Drive::advance_ns(uint64_t ns) {
+  target_ns_ += ns;
+  run_until(target_ns_);
+}
+
+// Whatever is due next happens next: an axis's servo cycle, the firmware's cycle, or both at the
+// same instant, the axes first. A period is read after the cycle it follows, so a TS changed in
+// a cycle counts from the next one.
+void Controller::Drive::run_until(uint64_t target_ns) {
+  if (axes_.size() == 1) return run_one_axis_until(target_ns);
+  const size_t axes = axes_.size();
+  for (;;) {
+    uint64_t next = next_cycle_ns_;
+    for (size_t a = 0; a < axes; ++a) next = std::min(next, next_step_ns_[a]);
+    if (next > target_ns) return;
+    now_ns_ = next;
+    for (size_t a = 0; a < axes; ++a) {
+      if (next_step_ns_[a] == next) events_[a] |= axes_[a]->step();
+    }
+    if (next_cycle_ns_ == next) {
+      firmware_->cycle(events_);
+      for (uint32_t& e : events_) e = 0;
+      next_cycle_ns_ = next + cycle_ns();
+    }
+    for (size_t a = 0; a < axes; ++a) {
+      if (next_step_ns_[a] == next) next_step_ns_[a] = next + axis_period_ns(a);
     }
   }
-  stored_image = bytes;
-  has_stored = true;
-  log("program downloaded (" + std::to_string(bytes.size()) + " bytes)");
-  return r;
 }
 
-void Controller::Impl::unload() {
-  machine.reset();
-  ram_image.clear();
-  ram_decoded = bytecode::Image{};
-  known_globals.clear();
-  autos.clear();
-  ever_run = false;
-  program_error = vm::RunError::None;
-  program_error_detail = 0;
-  ++program_generation;
-}
-
-int32_t Controller::Impl::load_stored(std::string* error) {
-  if (!has_stored) {
-    if (error) *error = "no program has been downloaded";
-    return kErrorNoStoredProgram;
-  }
-  unload();
-  ram_image = stored_image;
-  std::string why;
-  bytecode::ImageView view;
-  if (!bytecode::decode(ram_image.data(), ram_image.size(), ram_decoded, why) ||
-      bytecode::load_image(ram_image.data(), ram_image.size(), view) != bytecode::LoadError::Ok) {
-    if (error) *error = "stored program refused: " + why;
-    unload();
-    return kErrorStorage;
-  }
-  ram_memory.assign((vm::Machine::memory_needed(view, kProgramConfig) + 7) / 8, 0);
-  machine = std::make_unique<vm::Machine>();
-  const vm::LoadStatus s = machine->load(ram_image.data(), ram_image.size(), kProgramConfig,
-                                         ram_memory.data(), ram_memory.size() * 8, *this);
-  if (!s.ok()) {
-    if (error) *error = "stored program refused by the loader";
-    unload();
-    return kErrorStorage;
-  }
-  known_globals = gold::known_globals(ram_decoded);
-  autos.bind(machine->image());
-  return 0;
-}
-
-int32_t Controller::Impl::start_program(uint32_t routine, const Value* args, uint32_t n) {
-  autos.forget_activity();
-  const vm::RunError e = machine->start(kProgramThread, routine, args, n);
-  if (e != vm::RunError::None) return kErrorBadArguments;
-  ever_run = true;
-  program_error = vm::RunError::None;
-  program_error_detail = 0;
-  return 0;
-}
-
-int32_t Controller::Impl::execute_program(std::string_view name, const std::vector<double>& args) {
-  if (!machine) return kErrorNoProgram;
-  if (program_status() == 1) return kErrorProgramRunning;
-  const int r = ram_decoded.find_routine(std::string(name));
-  if (r < 0) return kErrorNoSuchEntry;
-  const bytecode::Routine& routine = ram_decoded.routines[static_cast<size_t>(r)];
-  if (args.size() != routine.inputs) return kErrorBadArguments;
-  std::vector<Value> values;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const bool is_float = i < routine.locals.size() && routine.locals[i].type == ValueType::Float;
-    if (is_float) {
-      values.push_back(Value::of_float(static_cast<float>(args[i])));
-    } else {
-      if (args[i] != static_cast<double>(static_cast<int64_t>(args[i])) || args[i] > 2147483647.0 ||
-          args[i] < -2147483648.0) {
-        return kErrorBadArguments;
-      }
-      values.push_back(Value::of_int(static_cast<int32_t>(args[i])));
+// The same with one axis, the usual drive: this loop runs every servo cycle, so it keeps what
+// it touches in locals.
+void Controller::Drive::run_one_axis_until(uint64_t target_ns) {
+  drive::Axis& axis = *axes_[0];
+  uint64_t step_due = next_step_ns_[0];
+  for (;;) {
+    const uint64_t next = std::min(next_cycle_ns_, step_due);
+    if (next > target_ns) break;
+    now_ns_ = next;
+    const bool steps = step_due == next;
+    if (steps) events_[0] |= axis.step();
+    if (next_cycle_ns_ == next) {
+      firmware_->cycle(events_);
+      events_[0] = 0;
+      next_cycle_ns_ = next + cycle_ns();
     }
+    if (steps) step_due = next + axis_period_ns(0);
   }
-  if (machine->status(kProgramThread) != vm::ThreadStatus::Idle) machine->kill(kProgramThread);
-  const int32_t code = start_program(static_cast<uint32_t>(r), values.data(),
-                                     static_cast<uint32_t>(values.size()));
-  if (code == 0) log("program started at " + std::string(name));
-  return code;
-}
-
-int32_t Controller::Impl::program_status() const {
-  if (!machine) return -2;
-  if (!ever_run) return -1;
-  switch (machine->status(kProgramThread)) {
-    case vm::ThreadStatus::Running:
-    case vm::ThreadStatus::Waiting: return 1;
-    default: return 0;
-  }
-}
-
-// --- Host ---
-
-vm::CommandStatus Controller::Impl::read(uint32_t command, int32_t index, Value& out) {
-  if (command == kMi || command == kPs || command == kEc) {
-    if (index != 0) return gold::kErrorBadIndex;
-    out = Value::of_int(command == kMi ? static_cast<int32_t>(autos.mask())
-                        : command == kPs ? program_status() : ec);
-    return vm::kCommandOk;
-  }
-  if (command > 0xFFFF) return gold::kErrorBadCommand;
-  const int32_t r = drive_commands->read(static_cast<uint16_t>(command), index, out);
-  return r == gold::kErrorNotHandledHere ? gold::kErrorNoValue : r;
-}
-
-vm::CommandStatus Controller::Impl::write(uint32_t command, int32_t index, Value value) {
-  if (command == kMi) {
-    if (index != 0) return gold::kErrorBadIndex;
-    if (value.i < 0 || value.i > 65535) return gold::kErrorOutOfRange;
-    autos.set_mask(static_cast<uint32_t>(value.i));
-    return vm::kCommandOk;
-  }
-  if (command == kPs || command == kEc) return gold::kErrorReadOnly;
-  if (command > 0xFFFF) return gold::kErrorBadCommand;
-  const int32_t r = drive_commands->write(static_cast<uint16_t>(command), index, value);
-  return r == gold::kErrorNotHandledHere ? gold::kErrorNotAssignable : r;
-}
-
-vm::CommandStatus Controller::Impl::execute(uint32_t command, int32_t index, const Value*, uint32_t) {
-  if (command > 0xFFFF) return gold::kErrorBadCommand;
-  const int32_t r = drive_commands->execute(static_cast<uint16_t>(command), index);
-  // Program control from inside a program or a compiled line is not offered: the command line
-  // handles XQ, HP, XC, KL, CC, LS, SV, LD, RS and DB as text (command_line.cpp).
-  return r == gold::kErrorNotHandledHere ? gold::kErrorNoValue : r;
+  next_step_ns_[0] = step_due;
 }
 
 // --- the public face ---
 
-Controller::Controller(ControllerOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
+Controller::Controller(ControllerOptions options) : drive_(std::make_unique<Drive>(std::move(options))) {}
 Controller::~Controller() = default;
-const std::vector<std::string>& Controller::boot_messages() const { return impl_->boot_messages; }
-std::vector<Answer> Controller::send(std::string_view line) { return impl_->send(line); }
-std::vector<Answer> Controller::query(std::string_view line) { return impl_->send(line, false); }
-DownloadResult Controller::download(const std::vector<uint8_t>& bytes) { return impl_->download(bytes); }
+
+const dialect::Dialect& Controller::dialect() const { return *drive_->options_.dialect; }
+dialect::Firmware& Controller::firmware() { return *drive_->firmware_; }
+const std::vector<std::string>& Controller::boot_messages() const { return drive_->boot_messages_; }
+
+std::vector<Answer> Controller::send(std::string_view line) { return drive_->console_->send(line); }
+std::vector<Answer> Controller::query(std::string_view line) { return drive_->firmware_->query(line); }
+std::unique_ptr<dialect::Session> Controller::open_session() { return drive_->firmware_->open_session(); }
+
+DownloadResult Controller::download(const std::vector<uint8_t>& stored_form) {
+  return drive_->firmware_->download(stored_form);
+}
 
 bool Controller::download_source_file(const std::string& path, std::vector<Diagnostic>& diagnostics) {
-  gold::CompileResult result = gold::compile_file(path);
-  diagnostics = result.diagnostics;
-  if (!result.ok()) return false;
-  const DownloadResult r = impl_->download(bytecode::encode(result.image));
+  dialect::CompileOutput out = dialect().compile_file(path, {});
+  diagnostics = std::move(out.diagnostics);
+  if (!out.ok()) return false;
+  const DownloadResult r = download(out.stored_form);
   if (!r.ok) {
     Diagnostic d;
     d.scheme = "image";
@@ -274,25 +172,32 @@ bool Controller::download_source_file(const std::string& path, std::vector<Diagn
   return r.ok;
 }
 
-bool Controller::load_stored_program(std::string* error) { return impl_->load_stored(error) == 0; }
-int32_t Controller::execute_program(std::string_view name, const std::vector<double>& args) {
-  return impl_->execute_program(name, args);
-}
-void Controller::advance(uint64_t duration_us) { impl_->advance(duration_us); }
-uint64_t Controller::now_us() const { return impl_->now_us_; }
-void Controller::set_input_level(int input, bool high) { impl_->axis->set_input_level(input, high); }
+std::string Controller::start_program(std::string_view entry) { return drive_->firmware_->start(entry); }
+void Controller::reboot() { drive_->reboot(); }
+
+void Controller::advance(uint64_t duration_us) { drive_->advance_ns(duration_us * 1000); }
+void Controller::advance_ns(uint64_t duration_ns) { drive_->advance_ns(duration_ns); }
+uint64_t Controller::now_us() const { return drive_->now_ns() / 1000; }
+uint64_t Controller::now_ns() const { return drive_->now_ns(); }
+void Controller::set_input_level(int input, bool high) { drive_->axis(0).set_input_level(input, high); }
 bool Controller::inject_fault(std::string_view name, bool persistent) {
-  return impl_->axis->inject_fault(name, persistent);
+  return drive_->axis(0).inject_fault(name, persistent);
 }
-drive::Axis& Controller::axis() { return *impl_->axis; }
-int32_t Controller::program_status() const { return impl_->program_status(); }
-int32_t Controller::program_error() const { return static_cast<int32_t>(impl_->program_error); }
-std::string Controller::program_error_text() const {
-  return impl_->program_error == vm::RunError::None ? std::string() : vm::run_error_text(impl_->program_error);
-}
+drive::Axis& Controller::axis() { return drive_->axis(0); }
+
+bool Controller::program_running() const { return drive_->firmware_->running(); }
+int32_t Controller::program_error() const { return drive_->firmware_->program_error(); }
+std::string Controller::program_error_text() const { return drive_->firmware_->program_error_text(); }
+
 std::vector<LogEntry> Controller::take_log() {
   std::vector<LogEntry> out;
-  out.swap(impl_->log_entries);
+  out.swap(drive_->log_);
+  return out;
+}
+
+std::vector<std::string> Controller::take_output() {
+  std::vector<std::string> out;
+  out.swap(drive_->output_);
   return out;
 }
 

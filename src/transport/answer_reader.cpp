@@ -12,16 +12,18 @@ void AnswerReader::feed(std::string_view bytes, std::vector<AnswerEvent>& out) {
     const bool was_after_cr = after_cr_;
     after_cr_ = c == '\r';
     if (c == ';') {
-      out.push_back({false, parse_wire_reply(partial_)});
+      out.push_back({false, dialect::parse_semicolon_answer(partial_)});
       partial_.clear();
     } else if (c == '\r' || c == '\n') {
       if (c == '\n' && was_after_cr) continue;  // the LF of CR LF
-      out.push_back({true, {}});
-      partial_.clear();  // stray text before a line break is not an answer
+      // Text ended by a line break rather than `;` is the drive's own output, not an answer.
+      if (partial_.empty()) out.push_back({true, {}, false});
+      else out.push_back({false, {partial_, 0}, true});
+      partial_.clear();
     } else {
       partial_.push_back(c);
       if (partial_.size() >= kMaxAnswer) {
-        out.push_back({false, parse_wire_reply(partial_)});
+        out.push_back({false, dialect::parse_semicolon_answer(partial_)});
         partial_.clear();
       }
     }

@@ -1,44 +1,44 @@
-// Controller answers to transport replies (controller_service.h).
+// The simulated drive behind the transports (controller_service.h).
 #include "transport/controller_service.h"
 
 namespace uprog::transport {
-
 namespace {
 
 class ControllerChannel final : public LineChannel {
  public:
-  explicit ControllerChannel(controller::Controller& controller) : connection_(controller) {}
+  ControllerChannel(ControllerService& service, std::unique_ptr<dialect::Session> session)
+      : service_(service), session_(std::move(session)) {}
   std::vector<Reply> handle_line(std::string_view line) override {
-    return to_replies(connection_.send(line));
+    std::vector<Reply> replies = session_->send(line);
+    service_.settle();
+    return replies;
   }
 
  private:
-  controller::Connection connection_;
+  ControllerService& service_;
+  std::unique_ptr<dialect::Session> session_;
 };
 
 }  // namespace
 
-std::vector<Reply> to_replies(std::vector<controller::Answer> answers) {
-  std::vector<Reply> replies;
-  for (auto& answer : answers) {
-    std::string_view text = answer.text;
-    // The wire form already marks an error with `?CODE`; "Error: " would say it twice.
-    if (answer.is_error() && text.starts_with("Error: ")) text.remove_prefix(7);
-    replies.push_back({std::string(text), answer.error});
-  }
+std::vector<Reply> ControllerService::handle_line(std::string_view line) {
+  std::vector<Reply> replies = controller_.send(line);
+  settle();
   return replies;
 }
 
-std::vector<Reply> ControllerService::handle_line(std::string_view line) {
-  return to_replies(controller_.send(line));
-}
-
 std::unique_ptr<LineChannel> ControllerService::open_channel() {
-  return std::make_unique<ControllerChannel>(controller_);
+  return std::make_unique<ControllerChannel>(*this, controller_.open_session());
 }
 
 void ControllerService::advance(std::uint32_t us) {
   controller_.advance(us);
+  settle();
+}
+
+void ControllerService::settle() {
+  for (const std::string& text : controller_.take_output()) publish_output(text);
+  if (after_each_) after_each_();
 }
 
 }  // namespace uprog::transport

@@ -1,26 +1,33 @@
-// The adapter that puts the simulated drive's firmware (controller::Controller) behind the
-// transports' LineService interface; each host's lines pass through its own controller::Connection.
+// The adapter that puts the simulated drive (controller::Controller) behind the transports'
+// LineService interface: each host's lines pass through a session of its own, the drive's wire
+// form is the firmware's, and what the drive sends on its own goes to every listener.
 #pragma once
-#include "controller/connection.h"
+#include <functional>
+
 #include "controller/controller.h"
 #include "transport/line_service.h"
 
 namespace uprog::transport {
 
-// The controller's answers as the wire's replies ("Error: " dropped: `?CODE` already says it).
-std::vector<Reply> to_replies(std::vector<controller::Answer> answers);
-
 class ControllerService final : public LineService {
  public:
-  explicit ControllerService(controller::Controller& controller) : controller_(controller) {}
+  // `after_each` (optional) runs after every line and every advance: `uprog sim --log` prints
+  // the firmware's log there.
+  explicit ControllerService(controller::Controller& controller, std::function<void()> after_each = {})
+      : controller_(controller), after_each_(std::move(after_each)) {}
 
   std::vector<Reply> handle_line(std::string_view line) override;
   void advance(std::uint32_t us) override;
-  // Each host gets a controller::Connection: its own download state.
+  // Each host gets a session of its own: its own download state.
   std::unique_ptr<LineChannel> open_channel() override;
+  const dialect::WireForm& wire() const override { return controller_.firmware().wire(); }
+
+  // Passes on what the drive sent on its own since the last call, then runs `after_each`.
+  void settle();
 
  private:
   controller::Controller& controller_;
+  std::function<void()> after_each_;
 };
 
 }  // namespace uprog::transport

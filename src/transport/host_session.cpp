@@ -3,33 +3,40 @@
 
 namespace uprog::transport {
 
-HostSession::HostSession(LineService& service, FramerOptions options)
-    : service_(service), channel_(service.open_channel()), framer_(options) {}
+using dialect::Frame;
+
+HostSession::HostSession(LineService& service)
+    : service_(service), channel_(service.open_channel()), framer_(service.wire().framing()) {}
 
 void HostSession::disconnect() {
   framer_.reset();
   channel_ = service_.open_channel();
 }
 
+void HostSession::deliver_output(std::string_view text, std::string& out) const {
+  service_.wire().write_output(text, out);
+}
+
 void HostSession::receive(std::string_view bytes, std::string& out) {
+  const dialect::WireForm& wire = service_.wire();
   frames_.clear();
   framer_.feed(bytes, frames_);
   for (const Frame& frame : frames_) {
     switch (frame.kind) {
       case Frame::Kind::kLine: {
         const auto replies = channel_ ? channel_->handle_line(frame.text) : service_.handle_line(frame.text);
-        if (replies.empty()) out.push_back(';');
-        for (const Reply& reply : replies) append_wire_reply(reply, out);
+        if (replies.empty()) wire.write_silent_line(out);
+        for (const Reply& reply : replies) wire.write_answer(reply, out);
         break;
       }
       case Frame::Kind::kTooLong:
-        append_wire_reply({"Line too long", kErrorLineTooLong}, out);
+        wire.write_answer({"Line too long", kErrorLineTooLong}, out);
         break;
       case Frame::Kind::kBadCharacter:
-        append_wire_reply({"Bad character", kErrorBadCharacter}, out);
+        wire.write_answer({"Bad character", kErrorBadCharacter}, out);
         break;
       case Frame::Kind::kLineBreak:
-        out += "\r\n";
+        wire.write_line_end(out);
         break;
     }
   }

@@ -1,22 +1,25 @@
 // One host's conversation, free of I/O: bytes from the host in, bytes for the host out. Owns the
-// host's line framer; every line gets at least one answer; CR/LF after a non-blank physical line
-// is answered with CR LF, so a host knows when all answers to the line it typed have come.
+// host's line framer (the drive's framing); every line gets at least one answer; after a
+// non-blank physical line comes the wire's line end, so a host knows when all answers to the
+// line it typed have come.
 #pragma once
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "transport/line_framer.h"
+#include "dialect/line_framer.h"
 #include "transport/line_service.h"
 
 namespace uprog::transport {
 
 class HostSession {
  public:
-  explicit HostSession(LineService& service, FramerOptions options = {});
+  explicit HostSession(LineService& service);
 
   // Appends to `out` everything to send back for `bytes`.
   void receive(std::string_view bytes, std::string& out);
+  // Appends text the drive sent on its own, in the wire's form.
+  void deliver_output(std::string_view text, std::string& out) const;
   // The host went away: any partial line is dropped, and with the channel whatever the service
   // kept for this host (a download in progress); a host that comes back starts afresh.
   void disconnect();
@@ -24,8 +27,8 @@ class HostSession {
  private:
   LineService& service_;
   std::unique_ptr<LineChannel> channel_;  // null when the service keeps nothing per host
-  LineFramer framer_;
-  std::vector<Frame> frames_;
+  dialect::LineFramer framer_;
+  std::vector<dialect::Frame> frames_;
 };
 
 }  // namespace uprog::transport

@@ -18,7 +18,7 @@ namespace {
 
 }  // namespace
 
-PtyServer::PtyServer(boost::asio::io_context& io, LineService& service, FramerOptions options) {
+PtyServer::PtyServer(boost::asio::io_context& io, LineService& service) : service_(service) {
   const int master = posix_openpt(O_RDWR | O_NOCTTY);
   if (master < 0) throw_errno("posix_openpt");
   if (grantpt(master) != 0 || unlockpt(master) != 0) {
@@ -46,12 +46,15 @@ PtyServer::PtyServer(boost::asio::io_context& io, LineService& service, FramerOp
     cfsetospeed(&settings, B115200);
     tcsetattr(slave_fd_, TCSANOW, &settings);
   }
-  session_ = std::make_shared<Session>(boost::asio::posix::stream_descriptor(io, master), service,
-                                       options);
+  session_ = std::make_shared<Session>(boost::asio::posix::stream_descriptor(io, master), service);
   session_->start();
+  output_listener_ = service_.add_output_listener([this](std::string_view text) {
+    if (session_) session_->deliver_output(text);
+  });
 }
 
 PtyServer::~PtyServer() {
+  service_.remove_output_listener(output_listener_);
   stop();
 }
 

@@ -5,7 +5,6 @@
 #include <memory>
 #include <string>
 
-#include "transport/line_framer.h"
 #include "transport/line_service.h"
 #include "transport/stream_session.h"
 
@@ -16,7 +15,7 @@ class PtyServer {
   using Session = StreamSession<boost::asio::posix::stream_descriptor>;
 
   // Opens the pty (throws boost::system::system_error if it cannot).
-  PtyServer(boost::asio::io_context& io, LineService& service, FramerOptions options = {});
+  PtyServer(boost::asio::io_context& io, LineService& service);
   ~PtyServer();
   PtyServer(const PtyServer&) = delete;
   PtyServer& operator=(const PtyServer&) = delete;
@@ -25,6 +24,8 @@ class PtyServer {
   void stop();
 
  private:
+  LineService& service_;
+  std::uint64_t output_listener_ = 0;
   std::shared_ptr<Session> session_;
   std::string slave_path_;
   int slave_fd_ = -1;  // held open so the master never reads EIO between two terminal programs

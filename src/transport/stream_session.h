@@ -17,11 +17,18 @@ inline constexpr std::size_t kMaxQueuedOutput = 256 * 1024;
 template <class Stream>
 class StreamSession : public std::enable_shared_from_this<StreamSession<Stream>> {
  public:
-  StreamSession(Stream stream, LineService& service, FramerOptions options,
-                std::function<void()> on_closed = {})
-      : stream_(std::move(stream)), host_(service, options), on_closed_(std::move(on_closed)) {}
+  StreamSession(Stream stream, LineService& service, std::function<void()> on_closed = {})
+      : stream_(std::move(stream)), host_(service), on_closed_(std::move(on_closed)) {}
 
   void start() { read(); }
+
+  // Text the drive sent on its own: queued behind what is already due to this host. A host
+  // that reads nothing loses what exceeds the output limit rather than growing the server.
+  void deliver_output(std::string_view text) {
+    if (closed_ || queued() >= kMaxQueuedOutput) return;
+    host_.deliver_output(text, pending_);
+    write();
+  }
 
   // Closes the connection at once (server shutdown).
   void close() {

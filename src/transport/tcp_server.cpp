@@ -8,9 +8,14 @@ namespace uprog::transport {
 namespace asio = boost::asio;
 using asio::ip::tcp;
 
-TcpServer::TcpServer(asio::io_context& io, LineService& service, const tcp::endpoint& endpoint,
-                     FramerOptions options)
-    : acceptor_(io), service_(service), options_(options) {
+TcpServer::TcpServer(asio::io_context& io, LineService& service, const tcp::endpoint& endpoint)
+    : acceptor_(io), service_(service) {
+  // What the drive sends on its own reaches every connected host.
+  output_listener_ = service_.add_output_listener([this](std::string_view text) {
+    for (auto& [id, weak] : sessions_) {
+      if (auto session = weak.lock()) session->deliver_output(text);
+    }
+  });
   acceptor_.open(endpoint.protocol());
   acceptor_.set_option(tcp::acceptor::reuse_address(true));
   acceptor_.bind(endpoint);
@@ -25,13 +30,17 @@ void TcpServer::accept() {
       boost::system::error_code ignored;
       socket.set_option(tcp::no_delay(true), ignored);
       const std::uint64_t id = next_id_++;
-      auto session = std::make_shared<Session>(std::move(socket), service_, options_,
+      auto session = std::make_shared<Session>(std::move(socket), service_,
                                                [this, id] { sessions_.erase(id); });
       sessions_.emplace(id, session);
       session->start();
     }
     accept();  // a failed accept (too many files) does not stop the server
   });
+}
+
+TcpServer::~TcpServer() {
+  service_.remove_output_listener(output_listener_);
 }
 
 void TcpServer::stop() {

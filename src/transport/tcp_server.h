@@ -7,7 +7,6 @@
 #include <memory>
 #include <string>
 
-#include "transport/line_framer.h"
 #include "transport/line_service.h"
 #include "transport/stream_session.h"
 
@@ -19,7 +18,11 @@ class TcpServer {
 
   // Binds and listens at once (throws boost::system::system_error if it cannot).
   TcpServer(boost::asio::io_context& io, LineService& service,
-            const boost::asio::ip::tcp::endpoint& endpoint, FramerOptions options = {});
+            const boost::asio::ip::tcp::endpoint& endpoint);
+
+  ~TcpServer();
+  TcpServer(const TcpServer&) = delete;
+  TcpServer& operator=(const TcpServer&) = delete;
 
   boost::asio::ip::tcp::endpoint local_endpoint() const { return acceptor_.local_endpoint(); }
   std::size_t session_count() const { return sessions_.size(); }
@@ -31,7 +34,7 @@ class TcpServer {
 
   boost::asio::ip::tcp::acceptor acceptor_;
   LineService& service_;
-  FramerOptions options_;
+  std::uint64_t output_listener_ = 0;
   std::map<std::uint64_t, std::weak_ptr<Session>> sessions_;
   std::uint64_t next_id_ = 0;
 };

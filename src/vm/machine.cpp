@@ -222,8 +222,16 @@ RunError Machine::interrupt(uint32_t thread, uint32_t routine) {
   if (routine >= routine_count_) return RunError::NoSuchRoutine;
   if (routines_[routine].inputs != 0) return RunError::BadArguments;
   Thread& t = threads_[thread];
-  if (t.status == ThreadStatus::Idle || t.status == ThreadStatus::Error || t.frame_count == 0)
-    return start(thread, routine);
+  if (t.status == ThreadStatus::Error) {
+    // The routine that handles a failure starts afresh, and can still read why (prgerr).
+    const RunError failure = t.last_error;
+    const int32_t detail = t.error_detail;
+    const RunError e = start(thread, routine);
+    t.last_error = failure;
+    t.error_detail = detail;
+    return e;
+  }
+  if (t.status == ThreadStatus::Idle || t.frame_count == 0) return start(thread, routine);
   RunError error = RunError::None;
   if (!enter(t, routine, t.pc, 0, FrameKind::Event, error)) return error;
   t.status = ThreadStatus::Running;

@@ -92,7 +92,7 @@ class Machine {
                  uint32_t arg_count = 0);
   // Enters routine `routine` (no inputs) on top of what the thread is doing; when it returns,
   // the thread continues where it was, as it was (running, waiting or halted). An idle or
-  // failed thread simply starts the routine.
+  // failed thread simply starts the routine; a failed one keeps its last_error() for it.
   RunError interrupt(uint32_t thread, uint32_t routine);
   SliceResult run_slice(uint32_t thread, Budget budget);
 

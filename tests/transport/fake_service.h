@@ -1,12 +1,26 @@
 // A LineService for the transport's tests: echoes a line back, "err N" answers error N, "quiet"
-// answers nothing, "two" answers twice; counts lines and the virtual time it was given.
+// answers nothing, "two" answers twice; counts lines and the virtual time it was given. Its wire
+// is the semicolon wire with Gold's framing (`;`, `**`, 511).
 #pragma once
 #include <charconv>
 #include <cstdint>
 
+#include "dialect/semicolon_wire.h"
 #include "transport/line_service.h"
 
 namespace uprog::transport::testing {
+
+// The semicolon wire with Gold's framing (`;`, `**`, 511), as the fakes speak it.
+inline const dialect::WireForm& semicolon_wire() {
+  static const dialect::SemicolonWire wire = [] {
+    dialect::FramerOptions o;
+    o.max_line_length = 511;
+    o.semicolon_ends_line = true;
+    o.comment_marker = "**";
+    return dialect::SemicolonWire(o);
+  }();
+  return wire;
+}
 
 class FakeService final : public LineService {
  public:
@@ -26,6 +40,9 @@ class FakeService final : public LineService {
     advanced_us += us;
     ++advances;
   }
+  const dialect::WireForm& wire() const override { return semicolon_wire(); }
+  // Sends `text` to every host as the drive's own output.
+  void emit(std::string_view text) { publish_output(text); }
 
   std::uint64_t lines = 0;
   std::uint64_t advanced_us = 0;

@@ -60,6 +60,7 @@ class CountingService final : public LineService {
   };
   std::vector<Reply> handle_line(std::string_view) override { return {{"shared", 0}}; }
   void advance(std::uint32_t) override {}
+  const dialect::WireForm& wire() const override { return testing::semicolon_wire(); }
   std::unique_ptr<LineChannel> open_channel() override {
     ++opened;
     return std::make_unique<Channel>();

@@ -37,6 +37,13 @@ class ServerFixture {
   std::size_t session_count() {
     return on_server([this] { return tcp_->session_count(); });
   }
+  // The drive sends `text` on its own, to every host.
+  void emit(std::string text) {
+    on_server([this, text] {
+      service_.emit(text);
+      return 0;
+    });
+  }
   std::uint64_t lines_handled() {
     return on_server([this] { return service_.lines; });
   }

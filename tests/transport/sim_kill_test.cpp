@@ -13,7 +13,7 @@
 #include <thread>
 
 #include "bytecode/image.h"
-#include "controller/download_protocol.h"
+#include "dialects/gold/download_protocol.h"
 #include "dialects/gold/compile.h"
 #include "sim_process.h"
 #include "support/files.h"
@@ -148,8 +148,8 @@ TEST(transport_sim_kill, SigkillDuringDownloadOrSvNeverLosesOrMixesTheStoredStat
 
   const std::vector<uint8_t> images[2] = {program_image(0), program_image(1)};
   ASSERT_NE(images[0], images[1]);
-  const std::vector<std::string> lines[2] = {controller::download_lines(images[0]),
-                                             controller::download_lines(images[1])};
+  const std::vector<std::string> lines[2] = {gold::download_lines(images[0]),
+                                             gold::download_lines(images[1])};
   const std::string dir = temp_state_dir();
   struct RemoveAtEnd {
     std::string dir;

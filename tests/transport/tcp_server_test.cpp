@@ -22,6 +22,21 @@ TEST(transport_tcp, AnswersALineAndEndsIt) {
   EXPECT_EQ(client.line_answers(), (std::vector<Reply>{{"Failed", 21}}));
 }
 
+TEST(transport_tcp, WhatTheDriveSendsOnItsOwnReachesEveryHostAsALineOfItsOwn) {
+  ServerFixture server;
+  TestClient first(server.port()), second(server.port());
+  ASSERT_TRUE(first.send("a\r\n"));  // both connected before the drive speaks
+  ASSERT_EQ(first.line_answers(), (std::vector<Reply>{{"a", 0}}));
+  ASSERT_TRUE(second.send("b\r\n"));
+  ASSERT_EQ(second.line_answers(), (std::vector<Reply>{{"b", 0}}));
+  server.emit("%P 1 00000000 00000000 hello; world");
+  EXPECT_EQ(first.output_lines(1, 5s), (std::vector<std::string>{"%P 1 00000000 00000000 hello  world"}));
+  EXPECT_EQ(second.output_lines(1, 5s), (std::vector<std::string>{"%P 1 00000000 00000000 hello  world"}));
+  // An answer after it is still an answer to its own line.
+  ASSERT_TRUE(first.send("c\r\n"));
+  EXPECT_EQ(first.line_answers(), (std::vector<Reply>{{"c", 0}}));
+}
+
 TEST(transport_tcp, EightClientsTwoThousandLinesEachAllAnsweredInOrder) {
   constexpr int kClients = 8;
   constexpr int kLines = 2000;

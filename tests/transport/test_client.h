@@ -62,7 +62,7 @@ class TestClient {
                              bool* closed = nullptr) {
     std::vector<Reply> result;
     collect(timeout, closed, [&](const AnswerEvent& event) {
-      if (!event.end_of_line) result.push_back(event.reply);
+      if (!event.end_of_line && !event.output) result.push_back(event.reply);
       return result.size() >= count;
     });
     return result;
@@ -73,8 +73,19 @@ class TestClient {
     std::vector<Reply> result;
     collect(timeout, nullptr, [&](const AnswerEvent& event) {
       if (event.end_of_line) return true;
-      result.push_back(event.reply);
+      if (!event.output) result.push_back(event.reply);
       return false;
+    });
+    return result;
+  }
+
+  // Reads until `count` lines the drive sent on its own have come (answers read meanwhile are
+  // dropped), or the timeout; returns them.
+  std::vector<std::string> output_lines(std::size_t count, std::chrono::milliseconds timeout) {
+    std::vector<std::string> result;
+    collect(timeout, nullptr, [&](const AnswerEvent& event) {
+      if (event.output) result.push_back(event.reply.text);
+      return result.size() >= count;
     });
     return result;
   }

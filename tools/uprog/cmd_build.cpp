@@ -1,54 +1,64 @@
-// `uprog build FILE -o OUT`: compiles a Gold source into a binary image (.upi), or with
-// --emit asm into its uprog assembly text.
+// `uprog build FILE -o OUT`: compiles a source in its dialect into the stored form the drive
+// keeps (Gold: a binary image, .upi), or with --emit asm into the image's uprog assembly text.
 #include <fmt/core.h>
 
 #include <memory>
 #include <string>
 
 #include "bytecode/assembly.h"
-#include "bytecode/image.h"
 #include "commands.h"
+#include "dialect_choice.h"
 #include "huge_heap.h"
-#include "dialects/gold/compile.h"
 #include "support/files.h"
 
 namespace uprog::cli {
 namespace {
 
-void add_build(CLI::App* cmd, Action& action) {
-  auto input = std::make_shared<std::string>();
-  auto output = std::make_shared<std::string>();
-  auto emit = std::make_shared<std::string>("image");
-  cmd->add_option("FILE", *input, "Gold source file")->required();
-  cmd->add_option("-o,--output", *output, "output file (default FILE.upi, or FILE.s with --emit asm)");
-  cmd->add_option("--emit", *emit, "image or asm")->check(CLI::IsMember({"image", "asm"}));
-  cmd->callback([&action, input, output, emit] {
-    action = [input, output, emit] {
-      prepare_heap_for_compiling({*input});
-      const gold::CompileResult r = gold::compile_file(*input);
-      if (!r.diagnostics.empty()) fmt::print(stderr, "{}", format_text(r.diagnostics));
-      if (!r.ok()) return 1;
-      std::string error;
-      bool written = false;
-      if (*emit == "asm") {
-        const std::string text = bytecode::disassemble(r.image);
-        const std::string out = output->empty() ? *input + ".s" : *output;
-        written = write_file_atomically(out, text.data(), text.size(), &error);
-      } else {
-        const auto bytes = bytecode::encode(r.image);
-        const std::string out = output->empty() ? *input + ".upi" : *output;
-        written = write_file_atomically(out, bytes.data(), bytes.size(), &error);
-      }
-      if (!written) {
-        fmt::print(stderr, "uprog build: {}\n", error);
-        return 1;
-      }
-      return 0;
-    };
-  });
+struct BuildOptions {
+  std::string input;
+  std::string output;
+  std::string emit = "image";
+  std::string dialect;
+};
+
+int build(const BuildOptions& o) {
+  const dialect::Dialect* d = choose_dialect(o.dialect, o.input, "build");
+  if (d == nullptr) return 2;
+  prepare_heap_for_compiling({o.input});
+  const dialect::CompileOutput r = d->compile_file(o.input, {});
+  if (!r.diagnostics.empty()) fmt::print(stderr, "{}", format_text(r.diagnostics));
+  if (!r.ok()) return 1;
+  std::string error;
+  bool written = false;
+  if (o.emit == "asm") {
+    if (!r.image) {
+      fmt::print(stderr, "uprog build: the {} compiler makes no image to show as assembly\n", d->name());
+      return 1;
+    }
+    const std::string text = bytecode::disassemble(*r.image);
+    written = write_file_atomically(o.output.empty() ? o.input + ".s" : o.output, text.data(), text.size(), &error);
+  } else {
+    const std::string out = o.output.empty() ? o.input + std::string(d->stored_extension()) : o.output;
+    written = write_file_atomically(out, r.stored_form.data(), r.stored_form.size(), &error);
+  }
+  if (!written) {
+    fmt::print(stderr, "uprog build: {}\n", error);
+    return 1;
+  }
+  return 0;
 }
 
-const Subcommand kBuild("build", "Compile a Gold source into an image", add_build);
+void add_build(CLI::App* cmd, Action& action) {
+  auto o = std::make_shared<BuildOptions>();
+  cmd->add_option("FILE", o->input, "source file")->required();
+  cmd->add_option("-o,--output", o->output, "output file (default FILE plus the stored form's extension, "
+                                            "e.g. FILE.upi, or FILE.s with --emit asm)");
+  cmd->add_option("--emit", o->emit, "image (the stored form) or asm")->check(CLI::IsMember({"image", "asm"}));
+  add_dialect_option(cmd, o->dialect);
+  cmd->callback([&action, o] { action = [o] { return build(*o); }; });
+}
+
+const Subcommand kBuild("build", "Compile a source into the stored form a drive keeps", add_build);
 
 }  // namespace
 }  // namespace uprog::cli

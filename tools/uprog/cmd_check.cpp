@@ -1,5 +1,5 @@
-// `uprog check FILE...`: compiles Gold sources and prints their diagnostics (gcc style or
-// JSON); exit 0 when all are clean, 1 when any has errors.
+// `uprog check FILE...`: compiles sources, each in its dialect, and prints their diagnostics (gcc
+// style or JSON); exit 0 when all are clean, 1 when any has errors.
 #include <fmt/core.h>
 
 #include <memory>
@@ -7,37 +7,45 @@
 #include <vector>
 
 #include "commands.h"
-#include "dialects/gold/compile.h"
+#include "dialect_choice.h"
 #include "huge_heap.h"
 
 namespace uprog::cli {
 namespace {
 
-void add_check(CLI::App* cmd, Action& action) {
-  auto files = std::make_shared<std::vector<std::string>>();
-  auto format = std::make_shared<std::string>("text");
-  cmd->add_option("FILE", *files, "Gold source files")->required();
-  cmd->add_option("--format", *format, "text or json")->check(CLI::IsMember({"text", "json"}));
-  cmd->callback([&action, files, format] {
-    action = [files, format] {
-      std::vector<Diagnostic> all;
-      bool errors = false;
-      prepare_heap_for_compiling(*files);
-      for (const std::string& f : *files) {
-        gold::CompileOptions options;
-        options.check_only = true;  // every diagnostic of a build, without building the image
-        const gold::CompileResult r = gold::compile_file(f, options);
-        errors = errors || !r.ok();
-        all.insert(all.end(), r.diagnostics.begin(), r.diagnostics.end());
-      }
-      if (*format == "json") fmt::print("{}\n", format_json(all));
-      else fmt::print("{}", format_text(all));
-      return errors ? 1 : 0;
-    };
-  });
+struct CheckOptions {
+  std::vector<std::string> files;
+  std::string format = "text";
+  std::string dialect;
+};
+
+int check(const CheckOptions& o) {
+  std::vector<Diagnostic> all;
+  bool errors = false;
+  prepare_heap_for_compiling(o.files);
+  for (const std::string& f : o.files) {
+    const dialect::Dialect* d = choose_dialect(o.dialect, f, "check");
+    if (d == nullptr) return 2;
+    dialect::CompileSettings settings;
+    settings.check_only = true;  // every diagnostic of a build, without building the stored form
+    dialect::CompileOutput r = d->compile_file(f, settings);
+    errors = errors || !r.ok();
+    all.insert(all.end(), r.diagnostics.begin(), r.diagnostics.end());
+  }
+  if (o.format == "json") fmt::print("{}\n", format_json(all));
+  else fmt::print("{}", format_text(all));
+  return errors ? 1 : 0;
 }
 
-const Subcommand kCheck("check", "Compile Gold sources and report diagnostics", add_check);
+void add_check(CLI::App* cmd, Action& action) {
+  auto o = std::make_shared<CheckOptions>();
+  cmd->add_option("FILE", o->files, "source files")->required();
+  cmd->add_option("--format", o->format, "text or json")->check(CLI::IsMember({"text", "json"}));
+  add_dialect_option(cmd, o->dialect);
+  cmd->callback([&action, o] { action = [o] { return check(*o); }; });
+}
+
+const Subcommand kCheck("check", "Compile sources and report diagnostics", add_check);
 
 }  // namespace
 }  // namespace uprog::cli

@@ -1,9 +1,7 @@
-// `uprog download HOST:PORT FILE`: compiles a Gold source (or takes a .upi image) on the host and
-// downloads it into a running drive with the DL lines of docs/protocol.md; `--load` then sends CC.
+// `uprog download HOST:PORT FILE`: compiles a source (or takes a stored form such as a .upi image)
+// on the host and downloads it into a running drive with its dialect's download lines (Gold: the
+// DL lines of docs/protocol.md); `--load` then sends the dialect's load line (Gold: CC).
 #include <fmt/core.h>
-#include <poll.h>
-#include <sys/socket.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <memory>
@@ -12,104 +10,37 @@
 
 #include "bytecode/image.h"
 #include "commands.h"
-#include "controller/download_protocol.h"
-#include "dialects/gold/compile.h"
+#include "dialect_choice.h"
 #include "support/files.h"
-#include "transport/answer_reader.h"
-#include "transport/tcp_connect.h"
-#include "transport/asio.h"
+#include "transport/drive_client.h"
 
 namespace uprog::cli {
 namespace {
 
-namespace asio = boost::asio;
-
 struct DownloadOptions {
   std::string address;
   std::string file;
+  std::string dialect;
   bool load = false;
   double timeout_s = 10.0;
 };
 
-// The image to send: FILE read as is when it ends in .upi, else compiled as Gold.
-std::optional<std::vector<uint8_t>> image_of(const std::string& path) {
-  if (path.ends_with(".upi")) {
+// What to send: FILE read as is when it is a stored form, else compiled in its dialect.
+std::optional<std::vector<uint8_t>> stored_form_of(const std::string& path, const dialect::Dialect& d) {
+  if (path.ends_with(d.stored_extension())) {
     std::string error;
     auto bytes = read_binary_file(path, &error);
     if (!bytes) fmt::print(stderr, "uprog download: {}\n", error);
     return bytes;
   }
-  const gold::CompileResult r = gold::compile_file(path);
+  dialect::CompileOutput r = d.compile_file(path, {});
   if (!r.diagnostics.empty()) fmt::print(stderr, "{}", format_text(r.diagnostics));
   if (!r.ok()) return std::nullopt;
-  return bytecode::encode(r.image);
-}
-
-// A blocking line-at-a-time conversation: send one line, read its answers up to the CR LF.
-class Link {
- public:
-  explicit Link(asio::ip::tcp::socket socket) : socket_(std::move(socket)) {}
-
-  // The answers to `line`; nullopt (with `error` set) when the drive is gone or silent.
-  std::optional<std::vector<transport::Reply>> exchange(const std::string& line,
-                                                        std::chrono::milliseconds timeout,
-                                                        std::string& error) {
-    std::string_view bytes = line;
-    const std::string framed = line + "\r\n";
-    bytes = framed;
-    while (!bytes.empty()) {
-      const ssize_t n = ::send(socket_.native_handle(), bytes.data(), bytes.size(), MSG_NOSIGNAL);
-      if (n <= 0) {
-        error = "the drive closed the connection";
-        return std::nullopt;
-      }
-      bytes.remove_prefix(static_cast<std::size_t>(n));
-    }
-    std::vector<transport::Reply> replies;
-    const auto deadline = std::chrono::steady_clock::now() + timeout;
-    while (true) {
-      for (; next_ < events_.size(); ++next_) {
-        if (events_[next_].end_of_line) {
-          ++next_;
-          return replies;
-        }
-        replies.push_back(events_[next_].reply);
-      }
-      events_.clear();
-      next_ = 0;
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-          deadline - std::chrono::steady_clock::now());
-      pollfd p{socket_.native_handle(), POLLIN, 0};
-      if (::poll(&p, 1, static_cast<int>(std::max<long long>(0, left.count()))) <= 0) {
-        error = "no answer within the timeout";
-        return std::nullopt;
-      }
-      char buffer[4096];
-      const ssize_t n = ::read(socket_.native_handle(), buffer, sizeof buffer);
-      if (n <= 0) {
-        error = "the drive closed the connection";
-        return std::nullopt;
-      }
-      reader_.feed(std::string_view(buffer, static_cast<std::size_t>(n)), events_);
-    }
-  }
-
- private:
-  asio::ip::tcp::socket socket_;
-  transport::AnswerReader reader_;
-  std::vector<transport::AnswerEvent> events_;
-  std::size_t next_ = 0;
-};
-
-bool connect(asio::io_context& io, const std::string& address, asio::ip::tcp::socket& socket) {
-  std::string error;
-  if (transport::connect_tcp(io, address, socket, error)) return true;
-  fmt::print(stderr, "uprog download: {}\n", error);
-  return false;
+  return std::move(r.stored_form);
 }
 
 // Sends `line` and expects no error; prints the drive's error otherwise.
-bool send_expecting_success(Link& link, const std::string& line, std::chrono::milliseconds timeout) {
+bool send_expecting_success(transport::DriveClient& link, const std::string& line, std::chrono::milliseconds timeout) {
   std::string error;
   const auto replies = link.exchange(line, timeout, error);
   if (!replies) {
@@ -127,26 +58,31 @@ bool send_expecting_success(Link& link, const std::string& line, std::chrono::mi
 }
 
 int run_download(const DownloadOptions& options) {
-  const auto image = image_of(options.file);
+  const dialect::Dialect* d = choose_dialect(options.dialect, options.file, "download");
+  if (d == nullptr) return 2;
+  const auto image = stored_form_of(options.file, *d);
   if (!image) return 1;
-  if (image->empty() || image->size() > controller::kDownloadMaxBytes) {
-    fmt::print(stderr, "uprog download: the image has {} bytes; a drive takes 1 to {}\n",
-               image->size(), controller::kDownloadMaxBytes);
+  if (image->empty() || image->size() > d->max_download_bytes()) {
+    fmt::print(stderr, "uprog download: the program has {} bytes; a drive takes 1 to {}\n",
+               image->size(), d->max_download_bytes());
     return 1;
   }
-  asio::io_context io;
-  asio::ip::tcp::socket socket(io);
-  if (!connect(io, options.address, socket)) return 1;
-  Link link(std::move(socket));
+  std::string error;
+  const auto client = transport::DriveClient::connect(options.address, error);
+  if (!client) {
+    fmt::print(stderr, "uprog download: {}\n", error);
+    return 1;
+  }
+  transport::DriveClient& link = *client;
   const auto timeout = std::chrono::milliseconds(static_cast<long long>(options.timeout_s * 1000));
   // One line at a time: a refused chunk stops the transfer at once (the drive dropped it too).
-  for (const std::string& line : controller::download_lines(*image)) {
+  for (const std::string& line : d->download_lines(*image)) {
     if (!send_expecting_success(link, line, timeout)) return 1;
   }
   fmt::print("downloaded {} bytes to {}\n", image->size(), options.address);
-  if (options.load) {
-    if (!send_expecting_success(link, "CC", timeout)) return 1;
-    fmt::print("loaded into RAM (CC)\n");
+  if (options.load && !d->load_line().empty()) {
+    if (!send_expecting_success(link, d->load_line(), timeout)) return 1;
+    fmt::print("loaded into RAM ({})\n", d->load_line());
   }
   return 0;
 }
@@ -154,8 +90,9 @@ int run_download(const DownloadOptions& options) {
 void add_download(CLI::App* cmd, Action& action) {
   auto options = std::make_shared<DownloadOptions>();
   cmd->add_option("ADDRESS", options->address, "HOST:PORT of the drive (uprog sim prints it)")->required();
-  cmd->add_option("FILE", options->file, "Gold source, or a .upi image")->required();
-  cmd->add_flag("--load", options->load, "send CC afterwards: load the program into RAM");
+  cmd->add_option("FILE", options->file, "source, or a stored form such as a .upi image")->required();
+  add_dialect_option(cmd, options->dialect);
+  cmd->add_flag("--load", options->load, "then load the program to run, with the dialect's load command");
   cmd->add_option("--timeout", options->timeout_s, "seconds to wait for each answer (default 10)");
   cmd->callback([&action, options] { action = [options] { return run_download(*options); }; });
 }

@@ -1,5 +1,6 @@
-// `uprog run FILE`: runs a Gold program on a fresh simulated drive in virtual time and prints
-// what happened (auto-routines, errors, final state); --then lines go to the command line after.
+// `uprog run FILE`: runs a program on a fresh simulated drive of its dialect in virtual time and
+// prints what happened (the firmware's log, the drive's output, the final state); --then lines go
+// to the command line after.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -9,10 +10,10 @@
 #include <vector>
 
 #include "commands.h"
-#include "dialects/gold/compile.h"
 #include "controller/controller.h"
-#include "controller/transcript.h"
+#include "dialect_choice.h"
 #include "drive/axis.h"
+#include "transcript/transcript.h"
 #include "support/files.h"
 
 namespace uprog::cli {
@@ -20,6 +21,7 @@ namespace {
 
 struct RunOptions {
   std::string file;
+  std::string dialect;
   std::string entry;
   std::string duration;  // empty: until the program has ended and the axis is still
   std::string limit = "60s";
@@ -54,7 +56,7 @@ bool parse_schedule(const RunOptions& o, std::vector<Scheduled>& out) {
     const size_t eq = s.find('='), at = s.find('@');
     Scheduled e;
     if (eq == std::string::npos || at == std::string::npos || at < eq ||
-        !controller::parse_duration_us(s.substr(at + 1), e.at_us)) {
+        !transcript::parse_duration_us(s.substr(at + 1), e.at_us)) {
       fmt::print(stderr, "uprog run: --input {}: expected N=LEVEL@TIME, e.g. 2=1@500ms\n", s);
       return false;
     }
@@ -70,7 +72,7 @@ bool parse_schedule(const RunOptions& o, std::vector<Scheduled>& out) {
   for (const std::string& s : o.faults) {
     const size_t at = s.find('@');
     Scheduled e;
-    if (at == std::string::npos || !controller::parse_duration_us(s.substr(at + 1), e.at_us)) {
+    if (at == std::string::npos || !transcript::parse_duration_us(s.substr(at + 1), e.at_us)) {
       fmt::print(stderr, "uprog run: --fault {}: expected NAME@TIME, e.g. feedback@1s\n", s);
       return false;
     }
@@ -82,11 +84,13 @@ bool parse_schedule(const RunOptions& o, std::vector<Scheduled>& out) {
 }
 
 std::string shown(const controller::Answer& a) {
-  return a.is_error() ? fmt::format("{} (EC {})", a.text, a.error) : a.text;
+  return a.is_error() ? fmt::format("Error: {} (EC {})", a.text, a.error) : a.text;
 }
 
 int run(const RunOptions& o) {
   controller::ControllerOptions copts;
+  copts.dialect = choose_dialect(o.dialect, o.file, "run");
+  if (copts.dialect == nullptr) return 2;
   if (o.budget == "unlimited") {
     copts.timing.unlimited = true;
   } else {
@@ -100,7 +104,7 @@ int run(const RunOptions& o) {
   uint64_t duration_us = 0;
   const bool until_idle = o.duration.empty();
   const std::string& span = until_idle ? o.limit : o.duration;
-  if (!controller::parse_duration_us(span, duration_us)) {
+  if (!transcript::parse_duration_us(span, duration_us)) {
     fmt::print(stderr, "uprog run: {}: expected a duration such as 500ms or 2s\n", span);
     return 2;
   }
@@ -117,31 +121,8 @@ int run(const RunOptions& o) {
   const bool compiled = drive.download_source_file(o.file, diagnostics);
   if (!diagnostics.empty()) fmt::print(stderr, "{}", format_text(diagnostics));
   if (!compiled) return 1;
-  std::string error;
-  if (!drive.load_stored_program(&error)) {
-    fmt::print(stderr, "uprog run: {}\n", error);
-    return 1;
-  }
-  // Without --entry: main, else AUTOEXEC, else the first function or label of the file.
-  std::vector<std::string> entries = {o.entry};
-  if (o.entry.empty()) {
-    entries = {"main", "AUTOEXEC"};
-    const gold::CompileResult again = gold::compile_file(o.file);
-    for (const bytecode::Routine& r : again.image.routines) {
-      if (r.kind == bytecode::RoutineKind::Function || r.kind == bytecode::RoutineKind::Label) {
-        entries.push_back(r.name);
-        break;
-      }
-    }
-  }
-  int32_t code = -1;
-  for (const std::string& entry : entries) {
-    code = drive.execute_program(entry);
-    if (code == 0) break;
-  }
-  if (code != 0) {
-    fmt::print(stderr, "uprog run: cannot start at '{}' (error {})\n",
-               entries.front().empty() ? "main" : entries.front(), code);
+  if (const std::string why = drive.start_program(o.entry); !why.empty()) {
+    fmt::print(stderr, "uprog run: {}\n", why);
     return 1;
   }
 
@@ -154,6 +135,7 @@ int run(const RunOptions& o) {
       fmt::print("[{:10.3f} ms] {}\n", static_cast<double>(e.time_us) / 1000.0, e.text);
       if (e.text.rfind("run-time error", 0) == 0) run_time_error = true;
     }
+    for (const std::string& text : drive.take_output()) fmt::print("{}", text);
   };
   size_t next = 0;
   const uint64_t start = drive.now_us();
@@ -161,7 +143,7 @@ int run(const RunOptions& o) {
   // the axis is at rest (in position, or its motor off): what the motor did is then complete.
   const auto idle = [&] {
     const int32_t ms = drive.axis().motion_status();
-    return until_idle && drive.program_status() != 1 && next == schedule.size() && (ms == 0 || ms == 3);
+    return until_idle && !drive.program_running() && next == schedule.size() && (ms == 0 || ms == 3);
   };
   while (drive.now_us() - start < duration_us && !idle()) {
     while (next < schedule.size() && schedule[next].at_us <= drive.now_us() - start) {
@@ -187,13 +169,13 @@ int run(const RunOptions& o) {
       csv += "\n";
     }
   }
+  std::string error;
   if (!signals.empty() && !write_file_atomically(o.csv, csv.data(), csv.size(), &error)) {
     fmt::print(stderr, "uprog run: {}\n", error);
     return 2;
   }
-  fmt::print("after {:.3f} ms: PS={} PX={} VX={} MO={} MF={}", static_cast<double>(drive.now_us() - start) / 1000.0,
-             drive.program_status(), drive.axis().position(), drive.axis().velocity(),
-             drive.axis().motor_on() ? 1 : 0, drive.axis().motor_fault());
+  fmt::print("after {:.3f} ms: {}", static_cast<double>(drive.now_us() - start) / 1000.0,
+             drive.firmware().state_summary());
   if (drive.program_error() != 0) fmt::print(" error={} ({})", drive.program_error(), drive.program_error_text());
   fmt::print("\n");
   for (const std::string& line : o.then) {
@@ -205,8 +187,9 @@ int run(const RunOptions& o) {
 
 void add_run(CLI::App* cmd, Action& action) {
   auto o = std::make_shared<RunOptions>();
-  cmd->add_option("FILE", o->file, "Gold source file")->required();
-  cmd->add_option("--entry", o->entry, "function or label to start at (default main, else AUTOEXEC)");
+  cmd->add_option("FILE", o->file, "source file")->required();
+  add_dialect_option(cmd, o->dialect);
+  cmd->add_option("--entry", o->entry, "where to start (a routine of the program; default: where its dialect starts one)");
   cmd->add_option("--for", o->duration,
                   "virtual time to run (default: until the program has ended and the axis is still)");
   cmd->add_option("--limit", o->limit, "without --for, the longest virtual time to run")
@@ -220,7 +203,7 @@ void add_run(CLI::App* cmd, Action& action) {
   cmd->callback([&action, o] { action = [o] { return run(*o); }; });
 }
 
-const Subcommand kRun("run", "Run a Gold program on a fresh simulated drive in virtual time", add_run);
+const Subcommand kRun("run", "Run a program on a fresh simulated drive in virtual time", add_run);
 
 }  // namespace
 }  // namespace uprog::cli

@@ -7,14 +7,13 @@
 #include <optional>
 
 #include "commands.h"
+#include "controller/controller.h"
+#include "dialect_choice.h"
+#include "support/files.h"
+#include "transport/controller_service.h"
 #include "transport/pacer.h"
 #include "transport/pty_server.h"
 #include "transport/tcp_server.h"
-#ifdef UPROG_HAVE_CONTROLLER
-#include "controller/controller.h"
-#include "support/files.h"
-#include "transport/controller_service.h"
-#endif
 
 namespace uprog::cli {
 
@@ -25,17 +24,18 @@ struct SimOptions {
   bool pty = false;
   std::string state_dir;
   std::string program;
+  std::string dialect;
   bool safe_boot = false;
   bool log = false;
 };
 
-#ifdef UPROG_HAVE_CONTROLLER
-
-// Downloads `path` (a .upi image or a Gold source), loads it as CC does and, unless safe boot,
-// starts AUTOEXEC as a power-up would. False with the reasons printed.
+// Downloads `path` (a stored form such as a .upi image, or a source the dialect compiles), then
+// boots the drive as a power-up would: the program loads and, unless safe boot, starts as the
+// dialect starts it at power-up (Gold: AUTOEXEC, when the program has one). False with the
+// reasons printed.
 bool install_program(controller::Controller& drive, const SimOptions& options) {
   const std::string& path = options.program;
-  if (path.ends_with(".upi")) {
+  if (path.ends_with(drive.dialect().stored_extension())) {
     std::string error;
     const auto bytes = read_binary_file(path, &error);
     if (!bytes) {
@@ -54,61 +54,22 @@ bool install_program(controller::Controller& drive, const SimOptions& options) {
       return false;
     }
   }
-  std::string error;
-  if (!drive.load_stored_program(&error)) {
-    fmt::print(stderr, "uprog sim: {}: {}\n", path, error);
-    return false;
+  // As at power-up: the stored program loads and starts where the dialect starts it then.
+  const size_t known = drive.boot_messages().size();
+  drive.reboot();
+  for (size_t i = known; i < drive.boot_messages().size(); ++i) {
+    fmt::print(stderr, "uprog sim: {}: {}\n", path, drive.boot_messages()[i]);
   }
-  if (!options.safe_boot) drive.execute_program("AUTOEXEC");  // no AUTOEXEC: nothing starts
-  return true;
+  return drive.boot_messages().size() == known;
 }
 
-// Passes lines to the drive and, with --log, prints what the firmware did after each step.
-class SimService final : public transport::LineService {
- public:
-  SimService(controller::Controller& drive, bool log) : drive_(drive), inner_(drive), log_(log) {}
-  std::vector<transport::Reply> handle_line(std::string_view line) override {
-    auto replies = inner_.handle_line(line);
-    print_log();
-    return replies;
+// With --log, what the firmware did, printed after each line and each step of time.
+void print_log(controller::Controller& drive) {
+  for (const auto& entry : drive.take_log()) {
+    fmt::print("{:>12} us  {}\n", entry.time_us, entry.text);
+    std::fflush(stdout);
   }
-  void advance(std::uint32_t us) override {
-    inner_.advance(us);
-    print_log();
-  }
-  // Each host keeps its own download state (controller::Connection); the log is printed as for
-  // any line.
-  std::unique_ptr<transport::LineChannel> open_channel() override {
-    return std::make_unique<Channel>(*this, inner_.open_channel());
-  }
-
- private:
-  class Channel final : public transport::LineChannel {
-   public:
-    Channel(SimService& owner, std::unique_ptr<transport::LineChannel> inner)
-        : owner_(owner), inner_(std::move(inner)) {}
-    std::vector<transport::Reply> handle_line(std::string_view line) override {
-      auto replies = inner_->handle_line(line);
-      owner_.print_log();
-      return replies;
-    }
-
-   private:
-    SimService& owner_;
-    std::unique_ptr<transport::LineChannel> inner_;
-  };
-
-  void print_log() {
-    if (!log_) return;
-    for (const auto& entry : drive_.take_log()) {
-      fmt::print("{:>12} us  {}\n", entry.time_us, entry.text);
-      std::fflush(stdout);
-    }
-  }
-  controller::Controller& drive_;
-  transport::ControllerService inner_;
-  bool log_;
-};
+}
 
 int run_sim(const SimOptions& options) {
   namespace asio = boost::asio;
@@ -121,13 +82,17 @@ int run_sim(const SimOptions& options) {
     return 2;
   }
   controller::ControllerOptions controller_options;
+  controller_options.dialect = choose_dialect(options.dialect, options.program, "sim");
+  if (controller_options.dialect == nullptr) return 2;
   controller_options.state_dir = options.state_dir;
   controller_options.safe_boot = options.safe_boot;
   controller::Controller drive(controller_options);
   for (const auto& message : drive.boot_messages()) fmt::print(stderr, "uprog sim: {}\n", message);
   if (!options.program.empty() && !install_program(drive, options)) return 1;
 
-  SimService service(drive, options.log);
+  transport::ControllerService service(drive, [&drive, &options] {
+    if (options.log) print_log(drive);
+  });
   asio::io_context io;
   std::unique_ptr<transport::TcpServer> tcp;
   std::unique_ptr<transport::PtyServer> pty;
@@ -164,14 +129,6 @@ int run_sim(const SimOptions& options) {
   return 0;
 }
 
-#else
-
-int run_sim(const SimOptions&) {
-  fmt::print(stderr, "uprog sim: this build has no controller (src/controller)\n");
-  return 1;
-}
-
-#endif
 
 void add_sim(CLI::App* cmd, Action& action) {
   auto options = std::make_shared<SimOptions>();
@@ -179,7 +136,8 @@ void add_sim(CLI::App* cmd, Action& action) {
                   "HOST:PORT to listen on (default 127.0.0.1:5025; port 0 picks a free one)");
   cmd->add_flag("--pty", options->pty, "also open a pseudo-terminal and print its path");
   cmd->add_option("--state", options->state_dir, "folder for the stored program and parameters");
-  cmd->add_option("--program", options->program, "Gold source or .upi image to download and load");
+  cmd->add_option("--program", options->program, "source or stored form (.upi) to download and load");
+  add_dialect_option(cmd, options->dialect);
   cmd->add_flag("--safe-boot", options->safe_boot, "boot without running AUTOEXEC");
   cmd->add_flag("--log", options->log, "print what the firmware does (auto-routines, errors)");
   cmd->callback([&action, options] { action = [options] { return run_sim(*options); }; });

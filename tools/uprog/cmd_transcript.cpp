@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "commands.h"
-#include "controller/transcript.h"
+#include "dialect_choice.h"
+#include "dialects/registry.h"
+#include "transcript/transcript.h"
 
 namespace uprog::cli {
 namespace {
@@ -15,13 +17,17 @@ namespace {
 void add_transcript(CLI::App* cmd, Action& action) {
   auto files = std::make_shared<std::vector<std::string>>();
   auto quiet = std::make_shared<bool>(false);
+  auto dialect_name = std::make_shared<std::string>();
   cmd->add_option("FILE", *files, "transcript files (shared/spec/transcript.md)")->required();
   cmd->add_flag("-q,--quiet", *quiet, "print only mismatches");
-  cmd->callback([&action, files, quiet] {
-    action = [files, quiet] {
+  cmd->add_option("--dialect", *dialect_name, "the dialect of transcripts without a `dialect` line (default: `uprog dialects` lists it first)");
+  cmd->callback([&action, files, quiet, dialect_name] {
+    action = [files, quiet, dialect_name] {
+      const dialect::Dialect* d = &dialects::default_dialect();
+      if (!dialect_name->empty() && (d = choose_dialect(*dialect_name, "", "transcript")) == nullptr) return 2;
       int failed = 0, checks = 0;
       for (const std::string& path : *files) {
-        const controller::TranscriptResult r = controller::run_transcript_file(path);
+        const transcript::TranscriptResult r = transcript::run_transcript_file(path, {}, d);
         checks += r.checks;
         for (const std::string& f : r.failures) fmt::print("{}\n", f);
         if (!r.ok) ++failed;

@@ -30,6 +30,7 @@ std::vector<const Subcommand*> subcommands_for(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   CLI::App app{"uprog: servo-drive user programs — compilers, VM and simulated drive"};
+  app.set_version_flag("--version", "uprog " UPROG_VERSION);
   app.require_subcommand(1);
   uprog::cli::Action action;
   for (const uprog::cli::Subcommand* s : uprog::cli::subcommands_for(argc, argv))

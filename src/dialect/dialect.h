@@ -1,0 +1,65 @@
+// What a dialect offers: its name and file extensions, its compiler (source file → the stored
+// form the drive keeps, with diagnostics), its registered error tables, and its firmware. The
+// one list of dialects is src/dialects/registry.cpp; nothing registers itself.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "bytecode/image.h"
+#include "dialect/firmware.h"
+#include "dialect/runtime.h"
+#include "support/diagnostic.h"
+
+namespace uprog::dialect {
+
+// One registered code of a list (a compile diagnostic, an interpreter error).
+struct ErrorInfo {
+  int32_t code;
+  std::string_view name;
+  std::string_view text;
+};
+
+struct CompileSettings {
+  bool check_only = false;      // diagnostics only (`uprog check`): no stored form is built
+  uint64_t created_unix_s = 0;  // stored where the form has a date; 0 keeps builds reproducible
+};
+
+struct CompileOutput {
+  std::vector<uint8_t> stored_form;    // what is downloaded and stored; empty on errors
+  std::optional<bytecode::Image> image;  // the image it loads into, where the compiler has it
+  std::vector<Diagnostic> diagnostics;
+  bool ok() const {
+    for (const Diagnostic& d : diagnostics)
+      if (d.severity == Severity::Error) return false;
+    return true;
+  }
+};
+
+class Dialect {
+ public:
+  virtual ~Dialect() = default;
+  virtual std::string_view name() const = 0;         // "gold": what --dialect and `dialect` take
+  virtual std::string_view description() const = 0;  // one line for `uprog dialects`
+  // Source extensions, with the dot (".ehl"); the first is the usual one.
+  virtual std::span<const std::string_view> source_extensions() const = 0;
+  // The extension of the stored form as `uprog build` writes it (".upi").
+  virtual std::string_view stored_extension() const = 0;
+  virtual CompileOutput compile_file(const std::string& path, const CompileSettings& settings) const = 0;
+  virtual std::span<const ErrorInfo> diagnostic_codes() const = 0;
+  virtual std::span<const ErrorInfo> interpreter_errors() const = 0;
+  virtual std::unique_ptr<Firmware> make_firmware(Runtime& runtime, const FirmwareOptions& options) const = 0;
+
+  // The host's side: the command lines that download a stored form into a running drive, and
+  // the one that then loads it to run ("" when storing is enough).
+  virtual std::vector<std::string> download_lines(const std::vector<uint8_t>& stored_form) const = 0;
+  virtual std::string load_line() const = 0;
+  // The largest stored form a drive takes over the wire.
+  virtual std::size_t max_download_bytes() const = 0;
+};
+
+}  // namespace uprog::dialect

@@ -1,0 +1,86 @@
+// A dialect's side of a drive: what the controller calls. It loads the stored form of a program
+// into a verified image, answers host lines, runs its threads and events once per cycle in its
+// own schedule, and tells the host and the debugger what each thread is doing.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "dialect/answer.h"
+#include "dialect/scheduling/whole_lines.h"
+#include "dialect/wire_form.h"
+#include "vm/machine.h"
+
+namespace uprog::dialect {
+
+// How much of the program runs in each cycle, where a dialect lets the user choose (Gold: source
+// lines per background slice; `uprog run --budget`). A dialect with a fixed schedule ignores it.
+using Timing = scheduling::LineTiming;
+
+struct FirmwareOptions {
+  Timing timing;
+  bool safe_boot = false;  // boot without starting the program (Gold: no AUTOEXEC)
+};
+
+// The result of giving the drive a program's stored form.
+struct DownloadResult {
+  bool ok = false;
+  std::string error;            // why it was refused; the stored program is then unchanged
+  bool storage_failed = false;  // it was sound, but the flash could not take it
+};
+
+// One thread of the program, for the host and the debugger.
+struct ThreadInfo {
+  uint32_t thread = 0;
+  std::string name;  // "program", "task 2", "PLC62"
+  vm::ThreadStatus status = vm::ThreadStatus::Idle;
+  std::string where;  // "file.ehl:12", or "" when idle
+  int32_t error = 0;  // the last run-time error (vm RunError), 0 for none
+};
+
+// One host's conversation with the drive: what belongs to that host alone (a download in
+// progress, a host level) lives here and dies with the connection.
+class Session {
+ public:
+  virtual ~Session() = default;
+  // One host line as the wire framed it (a transcript's `>` line may hold several expressions);
+  // the answers in order. It takes the virtual time the drive's line handling takes.
+  virtual std::vector<Answer> send(std::string_view line) = 0;
+};
+
+class Firmware {
+ public:
+  virtual ~Firmware() = default;
+
+  virtual const WireForm& wire() const = 0;
+  // Power-up and reset, after the controller has made fresh axes: read the stored program,
+  // load it and start what starts at power-up. Problems go to `messages`.
+  virtual void boot(std::vector<std::string>& messages) = 0;
+  // How often cycle() runs; the controller steps the axes on their own periods in between.
+  virtual uint64_t cycle_ns() const = 0;
+  // One cycle of the program's schedule. `drive_events` are the axes' event bits
+  // (drive/events.h) since the last cycle, one word per axis.
+  virtual void cycle(const std::vector<uint32_t>& drive_events) = 0;
+
+  virtual std::unique_ptr<Session> open_session() = 0;
+  // As a session's send(), but taking no virtual time: for recorders and tools sampling the drive.
+  virtual std::vector<Answer> query(std::string_view line) = 0;
+
+  // Stores a program's stored form (checked first); it runs once loaded.
+  virtual DownloadResult download(const std::vector<uint8_t>& stored_form) = 0;
+  // Loads the stored program and starts it as `uprog run` does: at `entry`, or where the
+  // dialect starts a program when `entry` is empty. "" on success, else why not.
+  virtual std::string start(std::string_view entry) = 0;
+  // True while any thread of the program runs or waits.
+  virtual bool running() const = 0;
+  // The program's last run-time error (vm RunError), 0 for none, and its text.
+  virtual int32_t program_error() const = 0;
+  virtual std::string program_error_text() const = 0;
+  // The drive's state in the dialect's own words, for the last line of `uprog run`.
+  virtual std::string state_summary() const = 0;
+  virtual std::vector<ThreadInfo> threads() const = 0;
+};
+
+}  // namespace uprog::dialect

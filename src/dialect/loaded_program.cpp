@@ -1,0 +1,43 @@
+// Loading an image into a machine (loaded_program.h).
+#include "dialect/loaded_program.h"
+
+#include "bytecode/image_view.h"
+
+namespace uprog::dialect {
+
+std::unique_ptr<LoadedProgram> LoadedProgram::load(std::vector<uint8_t> bytes, const vm::MachineConfig& config,
+                                                   vm::Host& host, std::string* error, bool decode) {
+  auto fail = [error](std::string why) {
+    if (error) *error = std::move(why);
+    return nullptr;
+  };
+  std::unique_ptr<LoadedProgram> p(new LoadedProgram());
+  p->bytes_ = std::move(bytes);
+  bytecode::ImageView view;
+  if (const auto le = bytecode::load_image(p->bytes_.data(), p->bytes_.size(), view); le != bytecode::LoadError::Ok) {
+    return fail(std::string("not a valid image: ") + bytecode::load_error_text(le));
+  }
+  p->memory_.assign((vm::Machine::memory_needed(view, config) + 7) / 8, 0);
+  const vm::LoadStatus s =
+      p->machine_.load(p->bytes_.data(), p->bytes_.size(), config, p->memory_.data(), p->memory_.size() * 8, host);
+  if (!s.ok()) {
+    if (s.load != bytecode::LoadError::Ok) return fail(std::string("not a valid image: ") + bytecode::load_error_text(s.load));
+    if (s.verify != bytecode::VerifyError::Ok) {
+      return fail(std::string("the verifier refused it: ") + bytecode::verify_error_text(s.verify) + " at code word " +
+                  std::to_string(s.pc));
+    }
+    return fail("it needs more memory than the drive has");
+  }
+  std::string why;
+  if (decode && !bytecode::decode(p->bytes_.data(), p->bytes_.size(), p->image_, why)) {
+    return fail("not a valid image: " + why);
+  }
+  return p;
+}
+
+std::string LoadedProgram::where(uint32_t pc) const {
+  if (const bytecode::LineEntry* line = image_.line_at(pc)) return line->file + ":" + std::to_string(line->line);
+  return "code word " + std::to_string(pc);
+}
+
+}  // namespace uprog::dialect

@@ -1,0 +1,292 @@
+// Cyclic tasks: ticks run the due real-time tasks in period order within their line budgets;
+// the background slice runs the init task, then the restarting background loop, on what is left.
+#include "dialect/scheduling/cyclic_tasks.h"
+
+#include "dialect/scheduling/line_step.h"
+
+namespace uprog::scheduling {
+
+namespace {
+
+constexpr uint64_t kSecondNs = 1'000'000'000;
+
+// A line is counted when it ends, or when the run ends inside it; a line that stops at a wait,
+// a yield or a breakpoint is counted by the step that finishes it. A step cut by the back-jump
+// cap counts too, so that a line that never ends still spends the budget.
+uint64_t lines_of(vm::SliceEnd end) {
+  switch (end) {
+    case vm::SliceEnd::LineEnd:
+    case vm::SliceEnd::Finished:
+    case vm::SliceEnd::Error:
+    case vm::SliceEnd::BudgetSpent:
+      return 1;
+    default:
+      return 0;
+  }
+}
+
+bool can_step(vm::ThreadStatus status) {
+  return status == vm::ThreadStatus::Running || status == vm::ThreadStatus::Waiting;
+}
+
+}  // namespace
+
+bool CyclicTasks::add_task(uint32_t thread, uint32_t routine, uint64_t period_ns) {
+  const uint64_t tick_ns = config_.tick_ns;
+  if (started_ || task_count_ == kMaxTasks || tick_ns == 0 || config_.line_ns == 0) return false;
+  if (period_ns == 0 || period_ns % tick_ns != 0) return false;
+  uint32_t at = task_count_;
+  while (at > 0 && tasks_[at - 1].stats.period_ns > period_ns) {
+    tasks_[at] = tasks_[at - 1];
+    --at;
+  }
+  Task& task = tasks_[at];
+  task = Task{};
+  task.routine = routine;
+  task.period_ticks = period_ns / tick_ns;
+  task.stats.thread = thread;
+  task.stats.period_ns = period_ns;
+  task.stats.budget_lines = period_ns / config_.line_ns;
+  ++task_count_;
+  return true;
+}
+
+bool CyclicTasks::set_init(uint32_t thread, uint32_t routine) {
+  if (started_) return false;
+  init_ = {thread, routine};
+  return true;
+}
+
+bool CyclicTasks::set_background(uint32_t thread, uint32_t routine) {
+  if (started_) return false;
+  main_ = {thread, routine};
+  return true;
+}
+
+void CyclicTasks::clear() {
+  if (started_) return;
+  task_count_ = 0;
+  init_ = {};
+  main_ = {};
+}
+
+void CyclicTasks::reset_statistics() {
+  for (uint32_t i = 0; i < task_count_; ++i) {
+    CyclicTaskStats& s = tasks_[i].stats;
+    s.runs = s.last_run_lines = s.largest_run_lines = s.overruns = 0;
+  }
+  loops_this_second_ = loops_last_second_ = 0;
+}
+
+bool CyclicTasks::threads_valid(const vm::Machine& machine) const {
+  const auto fits = [&](uint32_t thread) {
+    return thread < machine.thread_count() && thread < kMaxThreads;
+  };
+  uint32_t used = 0;
+  for (uint32_t i = 0; i < task_count_; ++i) {
+    const uint32_t thread = tasks_[i].stats.thread;
+    if (!fits(thread) || ((used >> thread) & 1u)) return false;
+    used |= 1u << thread;
+  }
+  // The init and background programs may share a thread: one ends before the other starts.
+  const auto free = [&](const Program& p) {
+    return !p.set() || (fits(p.thread) && ((used >> p.thread) & 1u) == 0);
+  };
+  return free(init_) && free(main_);
+}
+
+// Each routine starts on its thread (exists, takes no inputs, its locals fit), so that a run's
+// start later cannot fail.
+bool CyclicTasks::routines_start(vm::Machine& machine) const {
+  const auto starts = [&](uint32_t thread, uint32_t routine) {
+    const bool ok = machine.start(thread, routine) == vm::RunError::None;
+    machine.kill(thread);
+    return ok;
+  };
+  for (uint32_t i = 0; i < task_count_; ++i) {
+    if (!starts(tasks_[i].stats.thread, tasks_[i].routine)) return false;
+  }
+  if (init_.set() && !starts(init_.thread, init_.routine)) return false;
+  return !main_.set() || starts(main_.thread, main_.routine);
+}
+
+bool CyclicTasks::start(vm::Machine& machine, uint64_t now_ns) {
+  stop(machine);
+  if (!machine.loaded() || !threads_valid(machine) || !routines_start(machine)) return false;
+  started_ = true;
+  init_done_ = !init_.set();
+  start_ns_ = now_ns;
+  next_tick_ = 1;
+  first_rt_tick_ = 1;
+  accrued_ns_ = now_ns;
+  accrued_remainder_ns_ = 0;
+  credit_lines_ = 0;
+  rt_lines_ = 0;
+  second_end_ns_ = now_ns + kSecondNs;
+  reset_statistics();
+  for (uint32_t i = 0; i < task_count_; ++i) {
+    tasks_[i].state = RunState::Ready;
+    tasks_[i].run_lines = 0;
+  }
+  if (init_.set()) {
+    machine.start(init_.thread, init_.routine);
+  } else if (main_.set()) {
+    machine.start(main_.thread, main_.routine);
+  }
+  return true;
+}
+
+void CyclicTasks::stop(vm::Machine& machine) {
+  for (uint32_t i = 0; i < task_count_; ++i) machine.kill(tasks_[i].stats.thread);
+  if (init_.set()) machine.kill(init_.thread);
+  if (main_.set()) machine.kill(main_.thread);
+  started_ = false;
+}
+
+Report CyclicTasks::run(vm::Machine& machine, uint64_t now_ns) {
+  Report report;
+  if (!started_) return report;
+  while (start_ns_ + next_tick_ * config_.tick_ns <= now_ns) {
+    const uint64_t tick = next_tick_++;
+    if (init_done_ && tick >= first_rt_tick_ && run_tick(machine, tick, report) == Flow::EndCall)
+      return report;
+  }
+  run_background(machine, now_ns, report);
+  return report;
+}
+
+CyclicTasks::Step CyclicTasks::step(vm::Machine& machine, uint32_t thread, Report& report) {
+  running_ = thread;
+  charged_ = 0;
+  const LineStep s = step_lines(machine, thread, 1, config_.back_jump_cap);
+  running_ = kNoThread;
+  if (s.ran) report.mark_ran(thread);
+  if (s.end == vm::SliceEnd::Error) report.add(thread, ThreadEvent::Error);
+  if (s.end == vm::SliceEnd::Breakpoint) report.add(thread, ThreadEvent::Breakpoint);
+  return {s.end, lines_of(s.end) + charged_};
+}
+
+CyclicTasks::Flow CyclicTasks::run_tick(vm::Machine& machine, uint64_t tick, Report& report) {
+  for (uint32_t i = 0; i < task_count_; ++i) {
+    Task& task = tasks_[i];
+    if ((tick - first_rt_tick_) % task.period_ticks != 0) continue;
+    if (run_task(machine, task, report) == Flow::EndCall) return Flow::EndCall;
+  }
+  return Flow::Continue;
+}
+
+CyclicTasks::Flow CyclicTasks::run_task(vm::Machine& machine, Task& task, Report& report) {
+  const uint32_t thread = task.stats.thread;
+  if (task.state == RunState::Stopped) return Flow::Continue;
+  if (task.state == RunState::Ready) {
+    machine.start(thread, task.routine);  // start() proved that it starts
+    task.state = RunState::InRun;
+    task.run_lines = 0;
+  }
+  for (;;) {
+    const vm::ThreadStatus status = machine.status(thread);
+    if (status == vm::ThreadStatus::Idle || status == vm::ThreadStatus::Error) {
+      task.state = RunState::Ready;  // killed from outside: the next period starts afresh
+      return Flow::Continue;
+    }
+    if (!can_step(status)) return Flow::Continue;  // halted, at a breakpoint: until resumed
+    if (task.run_lines >= task.stats.budget_lines) return overrun(machine, task, report);
+    const Step s = step(machine, thread, report);
+    task.run_lines += s.cost;
+    rt_lines_ += s.cost;
+    switch (s.end) {
+      case vm::SliceEnd::LineEnd:
+      case vm::SliceEnd::BudgetSpent:
+        continue;  // the run goes on; the next turn of the loop checks its budget
+      case vm::SliceEnd::Finished:
+        if (task.run_lines > task.stats.budget_lines) return overrun(machine, task, report);
+        task.state = RunState::Ready;
+        ++task.stats.runs;
+        task.stats.last_run_lines = task.run_lines;
+        if (task.run_lines > task.stats.largest_run_lines)
+          task.stats.largest_run_lines = task.run_lines;
+        return Flow::Continue;
+      case vm::SliceEnd::Error:
+        task.state = RunState::Stopped;
+        return Flow::EndCall;
+      default:
+        return Flow::Continue;  // a wait, a yield, a breakpoint: the run pauses
+    }
+  }
+}
+
+CyclicTasks::Flow CyclicTasks::overrun(vm::Machine& machine, Task& task, Report& report) {
+  machine.halt(task.stats.thread);  // where it stands, for the debugger
+  task.state = RunState::Stopped;
+  ++task.stats.overruns;
+  if (task.run_lines > task.stats.largest_run_lines) task.stats.largest_run_lines = task.run_lines;
+  report.add(task.stats.thread, ThreadEvent::Overrun);
+  return Flow::EndCall;
+}
+
+void CyclicTasks::accrue(uint64_t now_ns) {
+  if (now_ns > accrued_ns_) {
+    const uint64_t time_ns = accrued_remainder_ns_ + (now_ns - accrued_ns_);
+    credit_lines_ += static_cast<int64_t>(time_ns / config_.line_ns);
+    accrued_remainder_ns_ = time_ns % config_.line_ns;
+    accrued_ns_ = now_ns;
+  }
+  credit_lines_ -= static_cast<int64_t>(rt_lines_);
+  rt_lines_ = 0;
+}
+
+void CyclicTasks::run_background(vm::Machine& machine, uint64_t now_ns, Report& report) {
+  accrue(now_ns);
+  if (!init_done_) {
+    run_init(machine, report);
+  } else {
+    run_main(machine, report);
+  }
+  if (credit_lines_ > 0) credit_lines_ = 0;  // the CPU idled: unused lines are lost
+  latch_seconds(now_ns);
+}
+
+void CyclicTasks::run_init(vm::Machine& machine, Report& report) {
+  while (credit_lines_ > 0 && can_step(machine.status(init_.thread))) {
+    const Step s = step(machine, init_.thread, report);
+    credit_lines_ -= static_cast<int64_t>(s.cost);
+    if (s.end != vm::SliceEnd::LineEnd && s.end != vm::SliceEnd::BudgetSpent) break;
+  }
+  // Out of lines, waiting, halted or failed: not done yet. Idle: it finished (or was killed).
+  if (machine.status(init_.thread) != vm::ThreadStatus::Idle) return;
+  report.add(init_.thread, ThreadEvent::Finished);
+  init_done_ = true;
+  // The real-time tasks and the background begin together; the rest of this slice is lost.
+  first_rt_tick_ = next_tick_;
+  if (main_.set()) machine.start(main_.thread, main_.routine);
+}
+
+void CyclicTasks::run_main(vm::Machine& machine, Report& report) {
+  if (!main_.set()) return;
+  // A thread that cannot run (halted, stopped, killed) ends the slice at its first step.
+  while (credit_lines_ > 0) {
+    const Step s = step(machine, main_.thread, report);
+    credit_lines_ -= static_cast<int64_t>(s.cost);
+    switch (s.end) {
+      case vm::SliceEnd::LineEnd:
+      case vm::SliceEnd::BudgetSpent:
+        break;
+      case vm::SliceEnd::Finished:
+        ++loops_this_second_;
+        machine.start(main_.thread, main_.routine);  // at its top again
+        break;
+      default:
+        return;  // a wait, a yield, a breakpoint, an error, not running: the slice ends
+    }
+  }
+}
+
+void CyclicTasks::latch_seconds(uint64_t now_ns) {
+  while (now_ns >= second_end_ns_) {
+    loops_last_second_ = loops_this_second_;
+    loops_this_second_ = 0;
+    second_end_ns_ += kSecondNs;
+  }
+}
+
+}  // namespace uprog::scheduling

@@ -1,0 +1,32 @@
+// One step of a thread that counts source lines: the unit of a turn (PDL, Akribis) and of a
+// cyclic task's line budget (ST). Shared by the policies that give threads lines one at a time.
+#pragma once
+#include <cstdint>
+
+#include "dialect/scheduling/report.h"
+#include "vm/machine.h"
+
+namespace uprog::scheduling {
+
+// An instruction budget that never stops a slice: set only so that the machine reports how
+// many instructions ran (a waiting thread whose time has not come runs none).
+constexpr uint64_t kCountOnly = uint64_t{1} << 62;
+
+struct LineStep {
+  vm::SliceEnd end = vm::SliceEnd::NotRunning;
+  // False when nothing executed: the thread could not run, or its timed wait is not over.
+  bool ran = false;
+};
+
+// Runs `thread` through `lines` line ends (or to its end, a wait, a yield, a breakpoint, an
+// uncaught error, or `back_jump_cap` jumps back, whichever comes first). A thread that is not
+// running or waiting is left alone. The bare end of a program (a RET leaving the outermost
+// frame, or an EXIT, where a line would start) is no line of its own: it runs with the line
+// before it, so a thread ends in the step of its last line (a fresh start of an empty routine
+// ends in a step of its own).
+LineStep step_lines(vm::Machine& machine, uint32_t thread, uint64_t lines, uint64_t back_jump_cap);
+
+// Adds what a step ended with to the report: Finished, Error or Breakpoint; and that it ran.
+void report_step(Report& report, uint32_t thread, const LineStep& step);
+
+}  // namespace uprog::scheduling

@@ -1,0 +1,143 @@
+// The Gold command line: a host line split into expressions, each compiled with
+// gold::compile_line into a tiny image and run to its end on a machine of its own, which sees
+// the loaded program's globals (copied in before, and back after).
+#include <algorithm>
+
+#include "dialects/gold/firmware.h"
+#include "dialects/gold/number_format.h"
+#include "vm/run_error.h"
+
+namespace uprog::gold {
+
+using dialect::Answer;
+
+namespace {
+
+// A command line is one statement list; it may not wait, so a small budget is plenty and a
+// runaway line (a loop typed at the prompt) ends with an error instead of hanging the drive.
+constexpr uint64_t kLineInstructionBudget = 1'000'000;
+
+vm::MachineConfig line_config() {
+  vm::MachineConfig c;
+  c.threads = 1;
+  c.locals = 64;
+  c.breakpoints = 0;
+  return c;
+}
+
+}  // namespace
+
+Answer Firmware::error_answer(int32_t code, std::string why) {
+  ec_ = code;
+  return Answer{std::move(why), code};
+}
+
+void Firmware::spend_expression_time() { runtime_.advance_ns(cycle_ns()); }
+
+std::vector<Answer> Firmware::send(std::string_view text, bool takes_time) {
+  return send_line(text, takes_time, nullptr);
+}
+
+std::vector<Answer> Firmware::send_line(std::string_view text, bool takes_time, DownloadReceiver* download) {
+  std::vector<Answer> answers;
+  for (const dialect::Frame& frame : dialect::frame_text(text, wire_.framing())) {
+    if (frame.kind == dialect::Frame::Kind::kTooLong) {
+      answers.push_back(error_answer(kErrorSyntax, "Command syntax error: the expression is longer than " +
+                                                       std::to_string(wire_.framing().max_line_length) +
+                                                       " characters"));
+    } else if (frame.kind == dialect::Frame::Kind::kBadCharacter) {
+      answers.push_back(error_answer(kErrorSyntax, "Command syntax error: a character that is not printable ASCII"));
+    } else if (download != nullptr && DownloadReceiver::is_download_command(frame.text)) {
+      download_expression(frame.text, *download, answers);
+    } else {
+      expression(frame.text, answers);
+    }
+    // The drive answers from its background loop: every expression takes one servo cycle.
+    if (takes_time) spend_expression_time();
+  }
+  return answers;
+}
+
+void Firmware::download_expression(std::string_view expression, DownloadReceiver& download,
+                                   std::vector<Answer>& answers) {
+  std::vector<uint8_t> image;
+  if (auto error = download.handle(expression, image)) {
+    answers.push_back(error_answer(error->error, std::move(error->text)));
+    return;
+  }
+  if (image.empty()) return;  // BEGIN, a chunk or ABORT: nothing more to do
+  // The image's CRC and the verifier are checked before anything is stored.
+  const dialect::DownloadResult r = this->download(image);
+  if (!r.ok) answers.push_back(error_answer(r.storage_failed ? kErrorStorage : kErrorDownloadRefused, r.error));
+}
+
+void Firmware::expression(std::string_view text, std::vector<Answer>& answers) {
+  if (program_control(std::string(text), answers)) return;
+  run_line(std::string(text), answers);
+}
+
+void Firmware::run_line(const std::string& text, std::vector<Answer>& answers) {
+  const gold::CompiledLine line = compile_line(text, known_globals_);
+  if (!line.ok()) {
+    std::string why = "Command syntax error";
+    if (!line.diagnostics.empty()) {
+      const Diagnostic& d = line.diagnostics.front();
+      why += ": " + d.message + " [gold " + std::to_string(d.code) + "]";
+    }
+    answers.push_back(error_answer(kErrorSyntax, why));
+    return;
+  }
+  std::string why;
+  const auto loaded = dialect::LoadedProgram::load(bytecode::encode(line.image), line_config(), *this, &why, false);
+  if (!loaded) {
+    answers.push_back(error_answer(kErrorSyntax, "Command syntax error: the line's image is unsound: " + why));
+    return;
+  }
+  vm::Machine& m = loaded->machine();
+  // The program's globals come first in the line's image, in the same order.
+  const uint32_t shared = static_cast<uint32_t>(known_globals_.size());
+  auto copy_globals = [&](const vm::Machine& from, vm::Machine& to) {
+    for (uint32_t g = 0; g < shared; ++g) {
+      const uint32_t length = std::max<int32_t>(known_globals_[g].length, 1);
+      for (uint32_t i = 0; i < length; ++i) {
+        Value v;
+        if (from.read_global(g, i, v)) to.write_global(g, i, v);
+      }
+    }
+  };
+  const uint32_t generation = program_generation_;
+  if (program_) copy_globals(program_->machine(), m);
+  m.start(0, 0);
+  const vm::SliceResult r = m.run_slice(0, vm::Budget::of_instructions(kLineInstructionBudget));
+  // Whatever the line assigned before it ended stays assigned, unless the program was replaced.
+  if (program_ && generation == program_generation_) copy_globals(m, program_->machine());
+  if (r.end == vm::SliceEnd::Error) {
+    const vm::RunError e = m.last_error(0);
+    if (e == vm::RunError::CommandRefused) {
+      // The drive's own refusal: its code, and what it means.
+      const int32_t code = m.error_detail(0);
+      const char* meaning = interpreter_error_text(code);
+      answers.push_back(error_answer(code, meaning != nullptr ? meaning : "drive error " + std::to_string(code)));
+    } else {
+      answers.push_back(error_answer(kErrorRunTimeBase + static_cast<int32_t>(e), vm::run_error_text(e)));
+    }
+    return;
+  }
+  if (r.end != vm::SliceEnd::Finished) {
+    answers.push_back(error_answer(kErrorLineDidNotFinish, "the line did not finish (it waited or ran too long)"));
+    return;
+  }
+  for (const gold::LineValue& v : line.values) {
+    Value value;
+    m.read_global(v.value_global, 0, value);
+    bool is_float = v.kind == gold::Kind::Float;
+    if (v.kind == gold::Kind::Dynamic && v.tag_global >= 0) {
+      Value tag;
+      m.read_global(static_cast<uint32_t>(v.tag_global), 0, tag);
+      is_float = tag.i == 1;
+    }
+    answers.push_back(Answer{is_float ? format_gold_float(value.f) : format_gold_int(value.i), 0});
+  }
+}
+
+}  // namespace uprog::gold

@@ -1,0 +1,39 @@
+// The one display rule of docs/dialects/gold-command-line.md; the manual's examples that it
+// does not reproduce are listed there.
+#include "dialects/gold/number_format.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace uprog::gold {
+
+std::string format_gold_int(int32_t value) { return std::to_string(value); }
+
+std::string format_gold_float(float value) {
+  const double v = value;
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buffer[64];
+  const double magnitude = std::fabs(v);
+  if (magnitude >= 1e7) {
+    // Mantissa with six decimals, then "e" and the exponent in (at least) two digits.
+    int exponent = static_cast<int>(std::floor(std::log10(magnitude)));
+    double mantissa = v / std::pow(10.0, exponent);
+    // Rounding to six decimals may carry into a new digit (9.9999996 -> 10.000000).
+    if (std::fabs(std::round(mantissa * 1e6) / 1e6) >= 10.0) {
+      mantissa /= 10.0;
+      ++exponent;
+    }
+    std::snprintf(buffer, sizeof buffer, "%.6fe%s%02d", mantissa, exponent < 0 ? "-" : "",
+                  exponent < 0 ? -exponent : exponent);
+    return buffer;
+  }
+  if (v == std::floor(v)) {
+    std::snprintf(buffer, sizeof buffer, "%.1f", v);
+  } else {
+    std::snprintf(buffer, sizeof buffer, "%.6f", v);
+  }
+  return buffer;
+}
+
+}  // namespace uprog::gold

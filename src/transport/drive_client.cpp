@@ -1,0 +1,76 @@
+// The host's TCP client to a drive (drive_client.h).
+#include "transport/drive_client.h"
+
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <algorithm>
+
+#include "transport/tcp_connect.h"
+
+namespace uprog::transport {
+
+std::unique_ptr<DriveClient> DriveClient::connect(const std::string& address, std::string& error) {
+  std::unique_ptr<DriveClient> client(new DriveClient());
+  if (!connect_tcp(client->io_, address, client->socket_, error)) return nullptr;
+  return client;
+}
+
+bool DriveClient::send_line(std::string_view line) {
+  std::string framed(line);
+  framed += "\r\n";
+  std::string_view bytes = framed;
+  while (!bytes.empty()) {
+    const ssize_t n = ::send(socket_.native_handle(), bytes.data(), bytes.size(), MSG_NOSIGNAL);
+    if (n <= 0) return false;
+    bytes.remove_prefix(static_cast<std::size_t>(n));
+  }
+  return true;
+}
+
+DriveClient::Wait DriveClient::read_answers(std::chrono::milliseconds timeout, bool until_line_end,
+                                            const std::function<void(const Reply&)>& on_answer,
+                                            const std::function<void(const std::string&)>& on_output) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (true) {
+    for (; next_ < events_.size(); ++next_) {
+      const AnswerEvent& event = events_[next_];
+      if (event.output) {
+        if (on_output) on_output(event.reply.text);
+      } else if (!event.end_of_line) {
+        on_answer(event.reply);
+      } else if (until_line_end) {
+        ++next_;
+        return Wait::kLineDone;
+      }
+    }
+    events_.clear();
+    next_ = 0;
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    pollfd p{socket_.native_handle(), POLLIN, 0};
+    if (::poll(&p, 1, static_cast<int>(std::max<long long>(0, left.count()))) <= 0) return Wait::kTimeout;
+    char buffer[8192];
+    const ssize_t n = ::read(socket_.native_handle(), buffer, sizeof buffer);
+    if (n <= 0) return Wait::kClosed;
+    reader_.feed(std::string_view(buffer, static_cast<std::size_t>(n)), events_);
+  }
+}
+
+std::optional<std::vector<Reply>> DriveClient::exchange(std::string_view line, std::chrono::milliseconds timeout,
+                                                        std::string& error) {
+  if (!send_line(line)) {
+    error = "the drive closed the connection";
+    return std::nullopt;
+  }
+  std::vector<Reply> replies;
+  switch (read_answers(timeout, true, [&](const Reply& r) { replies.push_back(r); })) {
+    case Wait::kLineDone: return replies;
+    case Wait::kTimeout: error = "no answer within the timeout"; return std::nullopt;
+    case Wait::kClosed: error = "the drive closed the connection"; return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+}  // namespace uprog::transport

@@ -1,0 +1,47 @@
+// A host's connection to a drive over TCP (a `uprog sim`, or anything speaking the semicolon wire
+// of docs/protocol.md): send a line, read its answers up to the line's end mark. The one client
+// `uprog term`, `uprog download` and the tests' host scripts share.
+#pragma once
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "transport/answer_reader.h"
+#include "transport/asio.h"
+
+namespace uprog::transport {
+
+class DriveClient {
+ public:
+  enum class Wait { kLineDone, kTimeout, kClosed };
+
+  // Connects to "HOST:PORT" or "[V6]:PORT"; nullptr with `error` set when it cannot.
+  static std::unique_ptr<DriveClient> connect(const std::string& address, std::string& error);
+
+  // Sends `line` and CR LF; false when the drive has gone.
+  bool send_line(std::string_view line);
+  // Hands each answer to `on_answer` as it comes, until the answers to one line have all come
+  // (`until_line_end`), or until nothing more arrives within `timeout`. Lines the drive sends on
+  // its own go to `on_output` (dropped without one).
+  Wait read_answers(std::chrono::milliseconds timeout, bool until_line_end,
+                    const std::function<void(const Reply&)>& on_answer,
+                    const std::function<void(const std::string&)>& on_output = {});
+  // One line and all its answers; nullopt with `error` set when the drive is gone or silent.
+  std::optional<std::vector<Reply>> exchange(std::string_view line, std::chrono::milliseconds timeout,
+                                             std::string& error);
+
+ private:
+  DriveClient() : socket_(io_) {}
+
+  boost::asio::io_context io_;
+  boost::asio::ip::tcp::socket socket_;
+  AnswerReader reader_;
+  std::vector<AnswerEvent> events_;
+  std::size_t next_ = 0;
+};
+
+}  // namespace uprog::transport
