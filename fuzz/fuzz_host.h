@@ -1,5 +1,6 @@
-// A fake vm::Host for the fuzz targets: deterministic answers, some commands refused, and a
-// clock that moves on every call, so waits end and the refusal paths run.
+// A fake vm::Host for the fuzz targets: deterministic answers, some commands refused, some
+// ending the slice, messages taken, and a clock that moves on every call, so waits end and the
+// refusal and end-of-slice paths run.
 #pragma once
 #include <cstdint>
 
@@ -18,13 +19,20 @@ class FuzzHost final : public vm::Host {
     ++now;
     return (command + static_cast<uint32_t>(index) + value.bits) % 13 == 5 ? 33 : vm::kCommandOk;
   }
-  vm::CommandStatus execute(uint32_t command, int32_t, const Value*, uint32_t arg_count) override {
+  vm::CommandStatus execute(uint32_t command, int32_t index, const Value*, uint32_t arg_count) override {
     ++now;
-    return (command + arg_count) % 7 == 3 ? 19 : vm::kCommandOk;
+    if ((command + arg_count) % 7 == 3) return 19;
+    return static_cast<uint32_t>(index) % 5 == 4 ? vm::kCommandEndSlice : vm::kCommandOk;
+  }
+  vm::CommandStatus message(uint32_t, uint32_t text, const Value* args, uint32_t count) override {
+    ++now;
+    for (uint32_t i = 0; i < count; ++i) checksum ^= args[i].bits;  // reads every argument
+    return text % 3 == 1 ? 27 : text % 3 == 2 ? vm::kCommandEndSlice : vm::kCommandOk;
   }
   uint32_t now_us() override { return now += 97; }
 
   uint32_t now = 0;
+  uint32_t checksum = 0;
   ~FuzzHost() = default;
 };
 

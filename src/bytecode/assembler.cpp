@@ -1,6 +1,7 @@
 // Reads uprog assembly (docs/assembly.md) into an Image. Two steps: parse every line, recording
 // labels and names; then resolve label and name operands and sort the line table.
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -196,6 +197,12 @@ class Assembler {
     int64_t n = 0;
     if (d == ".source") {
       if (want(ts, 2, d.c_str())) image_.source_name = ts[1].text;
+    } else if (d == ".dialect") {
+      if (want(ts, 2, d.c_str())) image_.dialect = ts[1].text;
+    } else if (d == ".text") {
+      if (want(ts, 2, d.c_str())) image_.texts.push_back(ts[1].text);
+    } else if (d == ".task") {
+      task(ts);
     } else if (d == ".created") {
       if (want(ts, 2, d.c_str()) && number(ts[1], n, 0, INT64_MAX))
         image_.created_unix_s = static_cast<uint64_t>(n);
@@ -279,6 +286,30 @@ class Assembler {
     if (!keyed(ts[5], "entry", entry)) return;
     image_.routines.push_back(r);
     routine_entries_.push_back({entry.text, line_, entry.column});
+  }
+
+  // .task ROUTINE number=N period_ns=P priority=K start_at_reset=0|1
+  void task(const std::vector<Token>& ts) {
+    if (!want(ts, 6, ".task")) return;
+    Task t;
+    Token v;
+    int64_t n = 0;
+    if (!keyed(ts[2], "number", v) || !number(v, n, 0, UINT32_MAX)) return;
+    t.number = static_cast<uint32_t>(n);
+    if (!keyed(ts[3], "period_ns", v) || !number(v, n, 0, UINT32_MAX)) return;
+    t.period_ns = static_cast<uint32_t>(n);
+    if (!keyed(ts[4], "priority", v) || !number(v, n, 0, UINT32_MAX)) return;
+    t.priority = static_cast<uint32_t>(n);
+    if (!keyed(ts[5], "start_at_reset", v) || !number(v, n, 0, 1)) return;
+    t.starts_at_reset = n == 1;
+    const Token& r = ts[1];
+    if (!r.quoted && !r.text.empty() && std::isdigit(static_cast<unsigned char>(r.text[0]))) {
+      if (!number(r, n, 0, UINT32_MAX)) return;
+      t.routine = static_cast<uint32_t>(n);
+    } else {
+      task_routines_.push_back({r.text, line_, r.column, image_.tasks.size()});
+    }
+    image_.tasks.push_back(t);
   }
 
   void line_directive(const std::vector<Token>& ts) {
@@ -379,6 +410,15 @@ class Assembler {
       }
       image_.routines[i].entry = entry;
     }
+    for (const TaskName& t : task_routines_) {
+      uint32_t routine = 0;
+      if (!lookup(Operand::Routine, t.name, routine)) {
+        line_ = t.line;
+        error(t.column, fmt::format("unknown routine '{}'", t.name));
+        continue;
+      }
+      image_.tasks[t.task].routine = routine;
+    }
     for (auto& r : image_.routines) {
       if (r.inputs + static_cast<uint64_t>(r.outputs) > r.locals.size()) {
         line_ = 0;
@@ -391,6 +431,11 @@ class Assembler {
     std::string label;
     int line, column;
   };
+  struct TaskName {
+    std::string name;
+    int line, column;
+    size_t task;
+  };
   std::string file_;
   Image& image_;
   std::vector<Diagnostic>& errors_;
@@ -398,6 +443,7 @@ class Assembler {
   std::map<std::string, uint32_t> labels_;
   std::vector<Fixup> fixups_;
   std::vector<Entry> routine_entries_;
+  std::vector<TaskName> task_routines_;
 };
 
 }  // namespace

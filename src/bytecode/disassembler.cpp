@@ -78,8 +78,11 @@ std::string disassemble(const Image& image) {
   };
 
   std::string out = "; uprog assembly\n";
-  out += fmt::format(".source {}\n.created {}\n", quote(image.source_name), image.created_unix_s);
+  out += fmt::format(".source {}\n.created {}\n.dialect {}\n", quote(image.source_name),
+                     image.created_unix_s, quote(image.dialect));
   for (const auto& s : image.info) out += fmt::format(".info {}\n", quote(s));
+  for (size_t i = 0; i < image.texts.size(); ++i)
+    out += fmt::format(".text {}  ; t{}\n", quote(image.texts[i]), i);
   for (size_t i = 0; i < image.constants.size(); ++i) {
     const auto& c = image.constants[i];
     const std::string value = c.type == ValueType::Float
@@ -98,6 +101,12 @@ std::string disassemble(const Image& image) {
     for (const auto& l : r.locals) out += fmt::format(".local {} {}\n", type_name(l.type), quote(l.name));
   }
   for (const auto& e : image.events) out += fmt::format(".event {} {}\n", e.event, e.routine);
+  for (const auto& t : image.tasks) {
+    out += fmt::format(".task {} number={} period_ns={} priority={} start_at_reset={}", t.routine,
+                       t.number, t.period_ns, t.priority, t.starts_at_reset ? 1 : 0);
+    if (t.routine < image.routines.size()) out += "  ; " + quote(image.routines[t.routine].name);
+    out += "\n";
+  }
 
   size_t next_line = 0;
   // Line records not at an instruction start keep their explicit offset.
@@ -135,6 +144,7 @@ std::string disassemble(const Image& image) {
     const uint32_t a = word_a(word);
     if (info.a == Operand::Global && a < image.globals.size()) comment = image.globals[a].name;
     if (info.a == Operand::Routine && a < image.routines.size()) comment = image.routines[a].name;
+    if (info.a == Operand::Text && a < image.texts.size()) comment = quote(image.texts[a]);
     if (info.a == Operand::Const && a < image.constants.size()) {
       const auto& c = image.constants[a];
       comment = c.type == ValueType::Float ? float_text(c.bits)

@@ -6,13 +6,14 @@
 namespace uprog::bytecode {
 
 constexpr uint8_t kMagic[4] = {'U', 'P', 'R', 'G'};
-constexpr uint16_t kFormatVersion = 1;
-constexpr uint32_t kHeaderSize = 32;
+constexpr uint16_t kFormatVersion = 2;  // 2: the dialect, texts and tasks
+constexpr uint32_t kHeaderSize = 36;
 constexpr uint32_t kCrcStart = 16;  // the CRC covers every byte from here to total_size
 constexpr uint32_t kSectionEntrySize = 16;
 
 // Header: magic[4], u16 version, u16 header_size, u32 total_size, u32 crc32,
-//         u64 created_unix_s, u32 source_name (string), u32 section_count.
+//         u64 created_unix_s, u32 source_name (string), u32 section_count,
+//         u32 dialect (string: the name of the dialect whose compiler made the image).
 // Section entry: u32 kind, u32 offset, u32 size (bytes), u32 count (records).
 enum class Section : uint32_t {
   Strings = 1,    // NUL-terminated strings; other records refer to them by byte offset
@@ -24,8 +25,10 @@ enum class Section : uint32_t {
   Events = 7,     // EventRecord
   Info = 8,       // u32 string offsets: information strings ("key=value")
   Lines = 9,      // LineRecord, sorted by code offset
+  Texts = 10,     // u32 string offsets: the texts MSG sends (formats) and commands may name
+  Tasks = 11,     // TaskRecord: how a dialect's scheduler runs the task routines
 };
-constexpr uint32_t kSectionKinds = 9;
+constexpr uint32_t kSectionKinds = 11;
 
 enum class RoutineKind : uint32_t { Function = 0, Label = 1, AutoRoutine = 2, Task = 3 };
 constexpr uint32_t kRoutineKinds = 4;
@@ -61,5 +64,16 @@ struct LineRecord {
   uint32_t file;  // string
   uint32_t line;
 };
+// A routine that a dialect's scheduler runs as a task. The VM does not read these: it runs
+// whatever routine it is told to; the firmware reads them to know what to start when.
+struct TaskRecord {
+  uint32_t routine;
+  uint32_t number;     // the dialect's task number (PDL's #task/n, Akribis' AProgTask[n])
+  uint32_t period_ns;  // a cyclic task's period (ST's PLC62: 62 500); 0 when not cyclic
+  uint32_t priority;   // the dialect's meaning (a rate, an order); 0 when it has none
+  uint32_t flags;      // kTaskStartsAtReset; no other bit is defined
+};
+constexpr uint32_t kTaskStartsAtReset = 1u;  // started when the drive resets or boots
+constexpr uint32_t kTaskFlags = kTaskStartsAtReset;
 
 }  // namespace uprog::bytecode

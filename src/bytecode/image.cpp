@@ -71,6 +71,7 @@ const LineEntry* Image::line_at(uint32_t pc) const {
 std::vector<uint8_t> encode(const Image& image) {
   StringTable strings;
   const uint32_t source_name = strings.intern(image.source_name);
+  const uint32_t dialect = strings.intern(image.dialect);
 
   // Each section's records as words, in Section order.
   std::vector<std::pair<Section, std::vector<uint32_t>>> sections;
@@ -129,6 +130,19 @@ std::vector<uint8_t> encode(const Image& image) {
     }
     counts.push_back(static_cast<uint32_t>(image.lines.size()));
   }
+  {
+    auto& w = add(Section::Texts);
+    for (const auto& s : image.texts) w.push_back(strings.intern(s));
+    counts.push_back(static_cast<uint32_t>(image.texts.size()));
+  }
+  {
+    auto& w = add(Section::Tasks);
+    for (const auto& t : image.tasks) {
+      w.push_back(t.routine); w.push_back(t.number); w.push_back(t.period_ns);
+      w.push_back(t.priority); w.push_back(t.starts_at_reset ? kTaskStartsAtReset : 0u);
+    }
+    counts.push_back(static_cast<uint32_t>(image.tasks.size()));
+  }
 
   const auto section_count = static_cast<uint32_t>(sections.size() + 1);  // + strings
   Writer out;
@@ -141,6 +155,7 @@ std::vector<uint8_t> encode(const Image& image) {
   out.u32(static_cast<uint32_t>(image.created_unix_s >> 32));
   out.u32(source_name);
   out.u32(section_count);
+  out.u32(dialect);
 
   size_t offset = kHeaderSize + static_cast<size_t>(section_count) * kSectionEntrySize;
   for (size_t i = 0; i < sections.size(); ++i) {
@@ -177,6 +192,7 @@ bool decode(const uint8_t* bytes, size_t size, Image& out, std::string& error) {
   out = Image{};
   out.created_unix_s = view.created_unix_s;
   out.source_name = view.string(view.source_name);
+  out.dialect = view.dialect_name();
   out.code.resize(view.code.size());
   for (uint32_t i = 0; i < view.code.size(); ++i) out.code[i] = view.code[i];
   for (uint32_t i = 0; i < view.constants.size(); ++i) {
@@ -203,6 +219,12 @@ bool decode(const uint8_t* bytes, size_t size, Image& out, std::string& error) {
   for (uint32_t i = 0; i < view.lines.size(); ++i) {
     const auto l = view.lines[i];
     out.lines.push_back({l.code, view.string(l.file), l.line});
+  }
+  for (uint32_t i = 0; i < view.texts.size(); ++i) out.texts.emplace_back(view.text(i));
+  for (uint32_t i = 0; i < view.tasks.size(); ++i) {
+    const auto t = view.tasks[i];
+    out.tasks.push_back({t.routine, t.number, t.period_ns, t.priority,
+                         (t.flags & kTaskStartsAtReset) != 0});
   }
   return true;
 }

@@ -52,9 +52,20 @@ struct LineEntry {
   bool operator==(const LineEntry&) const = default;
 };
 
+// A task routine and how the dialect's scheduler runs it (format.h, TaskRecord).
+struct Task {
+  uint32_t routine = 0;
+  uint32_t number = 0;
+  uint32_t period_ns = 0;
+  uint32_t priority = 0;
+  bool starts_at_reset = false;
+  bool operator==(const Task&) const = default;
+};
+
 struct Image {
   uint64_t created_unix_s = 0;
   std::string source_name;
+  std::string dialect;  // the compiler's dialect ("gold", ...); "" for hand-made images
   std::vector<uint32_t> code;
   std::vector<Constant> constants;
   std::vector<Global> globals;
@@ -62,6 +73,8 @@ struct Image {
   std::vector<Event> events;
   std::vector<std::string> info;
   std::vector<LineEntry> lines;
+  std::vector<std::string> texts;  // what MSG sends, by index
+  std::vector<Task> tasks;
   bool operator==(const Image&) const = default;
 
   // -1 when there is none.

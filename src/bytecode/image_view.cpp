@@ -25,6 +25,8 @@ constexpr uint32_t record_size(Section s) {
     case Section::Events: return sizeof(EventRecord);
     case Section::Info: return 4;
     case Section::Lines: return sizeof(LineRecord);
+    case Section::Texts: return 4;
+    case Section::Tasks: return sizeof(TaskRecord);
   }
   return 0;
 }
@@ -70,6 +72,7 @@ LoadError load_image(const uint8_t* bytes, size_t size, ImageView& out) {
                        (static_cast<uint64_t>(read_u32(bytes + 20)) << 32);
   out.source_name = read_u32(bytes + 24);
   const uint32_t sections = read_u32(bytes + 28);
+  out.dialect = read_u32(bytes + 32);
   if (sections > kSectionKinds || kHeaderSize + static_cast<size_t>(sections) * kSectionEntrySize > size)
     return LoadError::BadSectionTable;
 
@@ -99,6 +102,8 @@ LoadError load_image(const uint8_t* bytes, size_t size, ImageView& out) {
       case Section::Events: out.events = {data, count}; break;
       case Section::Info: out.info = {data, count}; break;
       case Section::Lines: out.lines = {data, count}; break;
+      case Section::Texts: out.texts = {data, count}; break;
+      case Section::Tasks: out.tasks = {data, count}; break;
     }
   }
   // Every string must end inside the blob: then any offset below its size is a valid string.
@@ -106,7 +111,7 @@ LoadError load_image(const uint8_t* bytes, size_t size, ImageView& out) {
 
   const auto str_ok = [&](uint32_t offset) { return offset < out.strings_size; };
   const auto type_ok = [](uint32_t t) { return t <= 1; };
-  if (!str_ok(out.source_name)) return LoadError::BadString;
+  if (!str_ok(out.source_name) || !str_ok(out.dialect)) return LoadError::BadString;
   for (uint32_t i = 0; i < out.constants.size(); ++i)
     if (!type_ok(out.constants[i].type)) return LoadError::BadRecord;
   for (uint32_t i = 0; i < out.globals.size(); ++i) {
@@ -130,6 +135,12 @@ LoadError load_image(const uint8_t* bytes, size_t size, ImageView& out) {
     if (out.events[i].routine >= out.routines.size()) return LoadError::BadRecord;
   for (uint32_t i = 0; i < out.info.size(); ++i)
     if (!str_ok(out.info[i])) return LoadError::BadString;
+  for (uint32_t i = 0; i < out.texts.size(); ++i)
+    if (!str_ok(out.texts[i])) return LoadError::BadString;
+  for (uint32_t i = 0; i < out.tasks.size(); ++i) {
+    const TaskRecord t = out.tasks[i];
+    if (t.routine >= out.routines.size() || (t.flags & ~kTaskFlags) != 0) return LoadError::BadRecord;
+  }
   for (uint32_t i = 0; i < out.lines.size(); ++i) {
     const LineRecord l = out.lines[i];
     if (!str_ok(l.file)) return LoadError::BadString;

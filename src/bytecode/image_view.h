@@ -45,6 +45,7 @@ class RecordView {
 struct ImageView {
   uint64_t created_unix_s = 0;
   uint32_t source_name = 0;
+  uint32_t dialect = 0;
   const char* strings = nullptr;
   uint32_t strings_size = 0;
   RecordView<uint32_t> code;
@@ -55,11 +56,17 @@ struct ImageView {
   RecordView<EventRecord> events;
   RecordView<uint32_t> info;
   RecordView<LineRecord> lines;
+  RecordView<uint32_t> texts;
+  RecordView<TaskRecord> tasks;
 
   // A string offset that load_image() has checked; "" for an offset out of range.
   const char* string(uint32_t offset) const {
     return offset < strings_size ? strings + offset : "";
   }
+  // The name of the dialect that made the image ("gold", ...); "" for hand-made images.
+  const char* dialect_name() const { return string(dialect); }
+  // Text `i` (what MSG i sends); "" when there is none.
+  const char* text(uint32_t i) const { return i < texts.size() ? string(texts[i]) : ""; }
 };
 
 // Checks and maps `size` bytes. The bytes must outlive the view.

@@ -8,7 +8,7 @@ namespace uprog::bytecode {
 
 enum class Operand : uint8_t {
   None, Imm, Const, Local, Global, Routine, Target, Count, Command, Unit, LocalPair, LocalImm,
-  LocalConst
+  LocalConst, Width, Text
 };
 
 // The packed B operands of the fused local comparisons (LocalConst packs like LocalPair).
@@ -60,6 +60,12 @@ static_assert(kOpCount <= 256, "an opcode is one byte");
 constexpr const OpInfo& op_info(Op op) { return kOpInfo[static_cast<uint8_t>(op)]; }
 constexpr const char* op_name(Op op) { return kOpNames[static_cast<uint8_t>(op)]; }
 constexpr uint32_t op_length(Op op) { return op_info(op).b == Operand::None ? 1u : 2u; }
+// The instructions whose A is a catch block rather than a jump.
+constexpr bool enters_try(Op op) { return op == Op::TRY || op == Op::TRYALL; }
+// The instructions that pop B values for the host (and CMDRUNX an index below them).
+constexpr bool pops_host_arguments(Op op) {
+  return op == Op::CMDRUN || op == Op::CMDRUNX || op == Op::MSG;
+}
 
 // The A field: 24 bits, sign-extended for immediates.
 constexpr int32_t kImmMin = -(1 << 23);

@@ -232,7 +232,7 @@ void thread_jumps(std::vector<uint32_t>& code) {
   };
   for (uint32_t pc = 0; pc < code.size(); pc += op_length(word_op(code[pc]))) {
     const Op op = word_op(code[pc]);
-    if (op_info(op).a != Operand::Target || op == Op::TRY) continue;
+    if (op_info(op).a != Operand::Target || enters_try(op)) continue;
     const uint32_t target = final_target(word_a(code[pc]));
     if (op == Op::JMPEOL && target < code.size() && word_op(code[target]) == Op::RET) {
       code[pc] = make_word(Op::RETEOL, 0);

@@ -82,9 +82,16 @@ class Verifier {
         case Operand::Unit:
           if (a == 0) return fail(VerifyError::BadOperand, pc);
           break;
+        case Operand::Width:
+          if (a == 0 || a > 31) return fail(VerifyError::BadOperand, pc);
+          break;
+        case Operand::Text:
+          if (a >= image_.texts.size()) return fail(VerifyError::BadOperand, pc);
+          break;
         default: break;
       }
-      if (word_op(word) == Op::CMPD && a > 5) return fail(VerifyError::BadOperand, pc);
+      if ((word_op(word) == Op::CMPD || word_op(word) == Op::CMPU) && a > 5)
+        return fail(VerifyError::BadOperand, pc);
       if (info.b == Operand::Const && image_.code[pc + 1] >= image_.constants.size())
         return fail(VerifyError::BadConstant, pc);
       if (info.b == Operand::LocalConst &&
@@ -96,7 +103,7 @@ class Verifier {
       }
       if (word_op(word) == Op::REMLK && image_.code[pc + 1] == 0)
         return fail(VerifyError::BadOperand, pc);
-      if (word_op(word) == Op::CMDRUN && image_.code[pc + 1] > limits_.max_stack)
+      if (pops_host_arguments(word_op(word)) && image_.code[pc + 1] > limits_.max_stack)
         return fail(VerifyError::BadOperand, pc);
     }
     return {};
@@ -143,8 +150,8 @@ class Verifier {
     if (op == Op::CALL) {
       pop = static_cast<int32_t>(image_.routines[a].inputs);
       push = static_cast<int32_t>(image_.code[pc + 1]);
-    } else if (op == Op::CMDRUN) {
-      pop = static_cast<int32_t>(image_.code[pc + 1]);
+    } else if (pops_host_arguments(op)) {
+      pop = static_cast<int32_t>(image_.code[pc + 1]) + (op == Op::CMDRUNX ? 1 : 0);
     }
     if (depth < pop) return fail(VerifyError::StackUnderflow, pc);
     const int32_t after = depth - pop + push;
@@ -156,7 +163,7 @@ class Verifier {
     switch (info.flow) {
       case Flow::Next:
       case Flow::Call:
-        if (op == Op::TRY) {
+        if (enters_try(op)) {
           if (VerifyResult r = reach(a, after, locals, pc); !r.ok()) return r;
         }
         return reach(next, after, locals, pc);

@@ -61,6 +61,36 @@ inline PromotedProduct promoting_mul(int32_t a, int32_t b) {
   return {true, 0, static_cast<float>(p)};
 }
 
+// The low `bits` (1..31) of a, sign- or zero-extended: stores of 8- and 16-bit variables.
+inline int32_t sign_extend(int32_t a, uint32_t bits) {
+  const uint32_t shift = 32 - bits;
+  return static_cast<int32_t>(static_cast<uint32_t>(a) << shift) >> shift;
+}
+inline int32_t zero_extend(int32_t a, uint32_t bits) {
+  return static_cast<int32_t>(static_cast<uint32_t>(a) & ((1u << bits) - 1u));
+}
+
+// The words as unsigned numbers. The caller checks b != 0 for the division.
+inline int32_t unsigned_div(int32_t a, int32_t b) {
+  return static_cast<int32_t>(static_cast<uint32_t>(a) / static_cast<uint32_t>(b));
+}
+inline int32_t unsigned_rem(int32_t a, int32_t b) {
+  return static_cast<int32_t>(static_cast<uint32_t>(a) % static_cast<uint32_t>(b));
+}
+inline int32_t shift_right_logical(int32_t a, int32_t n) {
+  if (n < 0 || n > 31) return 0;
+  return static_cast<int32_t>(static_cast<uint32_t>(a) >> n);
+}
+
+// a * b / c with the exact 64-bit product, truncating toward zero (ST's MULDIV). False when
+// the quotient is no int32. The caller checks c != 0.
+inline bool mul_div(int32_t a, int32_t b, int32_t c, int32_t& out) {
+  const int64_t q = static_cast<int64_t>(a) * static_cast<int64_t>(b) / c;
+  if (q < INT32_MIN || q > INT32_MAX) return false;
+  out = static_cast<int32_t>(q);
+  return true;
+}
+
 inline int32_t sign_of(float v) { return v > 0.0f ? 1 : (v < 0.0f ? -1 : 0); }
 inline int32_t sign_of(int32_t v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
 

@@ -17,6 +17,7 @@
 
 #include "bytecode/opcodes.h"
 #include "support/arith.h"
+#include "vm/budget_count.h"
 #include "vm/machine.h"
 
 namespace uprog::vm {
@@ -42,6 +43,14 @@ bool compare(int32_t how, float a, float b) {
     case 4: return a > b;
     default: return a >= b;
   }
+}
+// A 64-bit value on the stack or in memory: two words, the low one first (deeper).
+uint64_t read_wide(const Value* at) {
+  return static_cast<uint64_t>(at[0].bits) | (static_cast<uint64_t>(at[1].bits) << 32);
+}
+void write_wide(Value* at, uint64_t v) {
+  at[0].bits = static_cast<uint32_t>(v);
+  at[1].bits = static_cast<uint32_t>(v >> 32);
 }
 bool compare(int32_t how, int32_t a, int32_t b) {
   switch (how) {
@@ -107,10 +116,9 @@ SliceResult Machine::execute_loop(Thread& t, Budget budget) {
   const uint32_t* ip = code + t.pc;
   Value* sp = t.sp;
   Value* locals = t.frames[t.frame_count - 1].locals;
-  const uint64_t initial = budget.instructions != 0 ? budget.instructions : UINT64_MAX;
-  uint64_t steps = initial;
-  uint64_t lines = budget.lines != 0 ? budget.lines : UINT64_MAX;
-  uint64_t back_jumps = budget.back_jumps != 0 ? budget.back_jumps : UINT64_MAX;
+  BudgetCount steps = BudgetCount::of(budget.instructions);
+  BudgetCount lines = BudgetCount::of(budget.lines);
+  BudgetCount back_jumps = BudgetCount::of(budget.back_jumps);
   // A call may start a frame at or below this stack position (see enter()).
   const Value* const call_limit = t.stack + (config_.stack - max_depth_);
   uint32_t word = 0;
@@ -122,20 +130,22 @@ SliceResult Machine::execute_loop(Thread& t, Budget budget) {
 #define LOAD() (ip = code + t.pc, sp = t.sp, locals = t.frames[t.frame_count - 1].locals)
 #define DISPATCH()                           \
   do {                                       \
-    if (kCounted && steps-- == 0) goto out_of_budget; \
+    if (kCounted && steps.now-- == 0) goto out_of_budget; \
     word = *ip;                              \
     goto* kDispatch[word & 0xFFu];           \
   } while (0)
-// Every jump goes through here: one going back counts against the slice's back_jumps.
-#define JUMP_TO(target)                                    \
+// Every jump goes through here: one going back counts against the slice's back_jumps. When
+// they run out it goes to `spent`, which continues as the jump's instruction would.
+#define JUMP_OR(target, spent)                             \
   do {                                                     \
     const uint32_t* const to = (target);                   \
-    if (to <= ip && --back_jumps == 0) {                   \
+    if (to <= ip && --back_jumps.now == 0) {               \
       ip = to;                                             \
-      goto out_of_back_jumps;                              \
+      goto spent;                                          \
     }                                                      \
     ip = to;                                               \
   } while (0)
+#define JUMP_TO(target) JUMP_OR(target, out_of_back_jumps)
 #define A() (word >> 8)
 #define IMM() (static_cast<int32_t>(word) >> 8)
 #define B() (ip[1])
@@ -177,6 +187,21 @@ SliceResult Machine::execute_loop(Thread& t, Budget budget) {
     sp[-1] = (expr);               \
     ++ip;                          \
     DISPATCH();                    \
+  }
+// A call to the host. Refused, it raises CommandRefused before the instruction has any
+// effect. Done with kCommandEndSlice, the instruction completes and the slice ends as at YIELD.
+#define HOST_CALL(call, effect)                                       \
+  {                                                                   \
+    detail = (call);                                                  \
+    if (detail != kCommandOk) {                                       \
+      if (detail != kCommandEndSlice) FAIL(RunError::CommandRefused); \
+      detail = 0;                                                     \
+      effect;                                                         \
+      end = SliceEnd::Yielded;                                        \
+      goto stop;                                                      \
+    }                                                                 \
+    effect;                                                           \
+    DISPATCH();                                                       \
   }
 
   DISPATCH();
@@ -472,10 +497,7 @@ op_RET: {
     ip = code + f.return_pc;
     locals = t.frames[t.frame_count - 1].locals;
   }
-  if (lines == 0) {
-    end = SliceEnd::LineEnd;
-    goto stop;
-  }
+  if (lines.now == 0) goto out_of_lines;
   DISPATCH();
 }
 op_NARGOUT:
@@ -495,14 +517,11 @@ op_RESET:
     goto raise_error;
   }
   LOAD();
-  if (--back_jumps == 0) goto out_of_back_jumps;  // a restart is a loop's iteration too
+  if (--back_jumps.now == 0) goto out_of_back_jumps;  // a restart is a loop's iteration too
   DISPATCH();
 op_EOL:
   ++ip;
-  if (--lines == 0) {
-    end = SliceEnd::LineEnd;
-    goto stop;
-  }
+  if (--lines.now == 0) goto out_of_lines;
   DISPATCH();
 op_RAISE:
   if (!run_error_from_code(A(), error) || error == RunError::None) error = RunError::Raised;
@@ -521,9 +540,11 @@ op_WAIT: {
   end = SliceEnd::Waiting;
   goto stop;
 }
-op_TRY: {
+op_TRY:
+op_TRYALL: {
   if (t.handler_count >= config_.handlers) FAIL(RunError::TryDepth);
-  t.handlers[t.handler_count++] = {A(), t.frame_count, sp, t.locals_top};
+  t.handlers[t.handler_count++] = {A(), t.frame_count, sp, t.locals_top,
+                                   bytecode::word_op(word) == Op::TRYALL};
   ++ip;
   DISPATCH();
 }
@@ -632,14 +653,11 @@ op_JNGEFLK: JUMP_UNLESS_LOCAL_CONST(>=)
 #undef JUMP_UNLESS_LOCAL_CONST
 // A line that ends by jumping (a loop's step, an if arm's last assignment) stops the slice
 // at the jump's target, as EOL; JMP would.
-#define END_LINE_AND_JUMP()        \
-  {                                \
-    JUMP_TO(code + A());           \
-    if (--lines == 0) {            \
-      end = SliceEnd::LineEnd;     \
-      goto stop;                   \
-    }                              \
-    DISPATCH();                    \
+#define END_LINE_AND_JUMP()                                \
+  {                                                        \
+    JUMP_OR(code + A(), out_of_back_jumps_at_line_end);    \
+    if (--lines.now == 0) goto out_of_lines;               \
+    DISPATCH();                                            \
   }
 op_JMPEOL: END_LINE_AND_JUMP()
 op_INCLJEOL: {
@@ -655,7 +673,7 @@ op_STLJEOL:
 op_RETEOL:
   // The line ends here; the return is the line's last instruction, so a slice whose line
   // budget runs out at this end of line stops after the return, in the caller.
-  --lines;
+  --lines.now;
   goto op_RET;
 op_LDL2:
   sp[0] = locals[A()];
@@ -707,38 +725,86 @@ op_MULFLLS: LOCALS_ARITH(float, f, a * b, locals[A()].f)
 
 op_CMDGET: {
   Value v;
-  detail = host_->read(A(), static_cast<int32_t>(B()), v);
-  if (detail != kCommandOk) FAIL(RunError::CommandRefused);
-  *sp++ = v;
-  ip += 2;
-  DISPATCH();
+  HOST_CALL(host_->read(A(), static_cast<int32_t>(B()), v), (*sp++ = v, ip += 2))
 }
 op_CMDGETX: {
   Value v;
-  detail = host_->read(A(), sp[-1].i, v);
-  if (detail != kCommandOk) FAIL(RunError::CommandRefused);
-  sp[-1] = v;
+  HOST_CALL(host_->read(A(), sp[-1].i, v), (sp[-1] = v, ++ip))
+}
+op_CMDSET:
+  HOST_CALL(host_->write(A(), static_cast<int32_t>(B()), sp[-1]), (--sp, ip += 2))
+op_CMDSETX:
+  HOST_CALL(host_->write(A(), sp[-2].i, sp[-1]), (sp -= 2, ++ip))
+op_CMDRUN:
+op_CMDRUNX: {
+  // CMDRUN is CMDRUNX at index 0, with no index on the stack.
+  const uint32_t count = B();
+  const bool indexed = bytecode::word_op(word) == Op::CMDRUNX;
+  Value* const args = sp - count;
+  HOST_CALL(host_->execute(A(), indexed ? args[-1].i : 0, args, count),
+            (sp = args - (indexed ? 1 : 0), ip += 2))
+}
+op_MSG: {
+  const uint32_t count = B();
+  const auto thread = static_cast<uint32_t>(&t - threads_);
+  HOST_CALL(host_->message(thread, A(), sp - count, count), (sp -= count, ip += 2))
+}
+
+op_LDM: {
+  const auto address = static_cast<uint32_t>(sp[-1].i);
+  if (address >= memory_words_) FAIL(RunError::BadAddress);
+  sp[-1] = memory_[address];
   ++ip;
   DISPATCH();
 }
-op_CMDSET:
-  detail = host_->write(A(), static_cast<int32_t>(B()), sp[-1]);
-  if (detail != kCommandOk) FAIL(RunError::CommandRefused);
-  --sp;
-  ip += 2;
-  DISPATCH();
-op_CMDSETX:
-  detail = host_->write(A(), sp[-2].i, sp[-1]);
-  if (detail != kCommandOk) FAIL(RunError::CommandRefused);
+op_STM: {
+  const auto address = static_cast<uint32_t>(sp[-2].i);
+  if (address >= memory_words_) FAIL(RunError::BadAddress);
+  memory_[address] = sp[-1];
   sp -= 2;
   ++ip;
   DISPATCH();
-op_CMDRUN: {
-  const uint32_t count = B();
-  detail = host_->execute(A(), 0, sp - count, count);
-  if (detail != kCommandOk) FAIL(RunError::CommandRefused);
-  sp -= count;
-  ip += 2;
+}
+
+op_SEXT: UNARY(Value::of_int(arith::sign_extend(a.i, A())))
+op_ZEXT: UNARY(Value::of_int(arith::zero_extend(a.i, A())))
+op_DIVU:
+  if (sp[-1].i == 0) FAIL(RunError::DivisionByZero);
+  INT_BINARY(arith::unsigned_div(a, b))
+op_REMU:
+  if (sp[-1].i == 0) FAIL(RunError::DivisionByZero);
+  INT_BINARY(arith::unsigned_rem(a, b))
+op_SHRU: INT_BINARY(arith::shift_right_logical(a, b))
+op_CMPU: {
+  // Unsigned order is signed order with the sign bits flipped.
+  const bool r = compare(static_cast<int32_t>(A()), sp[-2].i ^ INT32_MIN, sp[-1].i ^ INT32_MIN);
+  --sp;
+  sp[-1] = Value::of_int(r ? 1 : 0);
+  ++ip;
+  DISPATCH();
+}
+op_I2W:
+  sp[0] = Value::of_int(sp[-1].i < 0 ? -1 : 0);
+  ++sp;
+  ++ip;
+  DISPATCH();
+op_ADDW:
+  write_wide(sp - 4, read_wide(sp - 4) + read_wide(sp - 2));
+  sp -= 2;
+  ++ip;
+  DISPATCH();
+op_SUBW:
+  write_wide(sp - 4, read_wide(sp - 4) - read_wide(sp - 2));
+  sp -= 2;
+  ++ip;
+  DISPATCH();
+op_MULDIV: {
+  if (sp[-1].i == 0) FAIL(RunError::DivisionByZero);
+  int32_t q;
+  if (!arith::mul_div(sp[-3].i, sp[-2].i, sp[-1].i, q)) FAIL(RunError::Overflow);
+  sp -= 2;
+  sp[-1] = Value::of_int(q);
+  ++ip;
   DISPATCH();
 }
 
@@ -747,20 +813,37 @@ op_BREAK:
   end = SliceEnd::Breakpoint;
   goto stop;
 
+// A spent 32-bit count takes the next chunk of its budget and the slice goes on as if nothing
+// happened; only when the whole budget is spent does the slice end.
 out_of_budget:
-  steps = 0;
+  if (steps.refill()) DISPATCH();
+  steps.now = 0;
   end = SliceEnd::BudgetSpent;
   goto stop;
 
 out_of_back_jumps:
+  if (back_jumps.refill()) DISPATCH();
   end = SliceEnd::BudgetSpent;
+  goto stop;
+
+out_of_back_jumps_at_line_end:  // a line-ending jump: the line is still to be counted
+  if (!back_jumps.refill()) {
+    end = SliceEnd::BudgetSpent;
+    goto stop;
+  }
+  if (--lines.now == 0) goto out_of_lines;
+  DISPATCH();
+
+out_of_lines:
+  if (lines.refill()) DISPATCH();
+  end = SliceEnd::LineEnd;
   goto stop;
 
 finished:
   SAVE();
   reset_thread(t);
   t.last_error = RunError::None;
-  return {SliceEnd::Finished, kCounted ? initial - steps : 0};
+  return {SliceEnd::Finished, kCounted ? budget.instructions - steps.left() : 0};
 
 raise_error:
   SAVE();
@@ -769,16 +852,17 @@ raise_error:
     detail = 0;
     LOAD();
     // A catch block may lie before its try: catching is a loop's iteration too.
-    if (--back_jumps == 0) goto out_of_back_jumps;
+    if (--back_jumps.now == 0) goto out_of_back_jumps;
     DISPATCH();
   }
-  return {SliceEnd::Error, kCounted ? initial - steps : 0};
+  return {SliceEnd::Error, kCounted ? budget.instructions - steps.left() : 0};
 
 stop:
   SAVE();
-  return {end, kCounted ? initial - steps : 0};
+  return {end, kCounted ? budget.instructions - steps.left() : 0};
 
 #undef JUMP_TO
+#undef JUMP_OR
 #undef SAVE
 #undef LOAD
 #undef DISPATCH
@@ -790,6 +874,7 @@ stop:
 #undef FLOAT_BINARY
 #undef COMPARE
 #undef UNARY
+#undef HOST_CALL
 }
 
 template SliceResult Machine::execute_loop<true>(Thread& t, Budget budget);

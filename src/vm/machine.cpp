@@ -114,7 +114,13 @@ LoadStatus Machine::load(const uint8_t* bytes, size_t size, const MachineConfig&
   }
   global_count_ = view.globals.size();
   globals_ = a.take<GlobalSlot>(global_count_);
-  Value* cells = a.take<Value>(global_cells(view));
+  if (global_cells(view) > UINT32_MAX) {  // more than LDM can address (and than any drive has)
+    status.no_memory = true;
+    return status;
+  }
+  memory_words_ = static_cast<uint32_t>(global_cells(view));
+  Value* cells = a.take<Value>(memory_words_);
+  memory_ = cells;
   for (uint32_t i = 0; i < global_count_; ++i) {
     const uint32_t length = view.globals[i].length;
     globals_[i] = {cells, length};
@@ -291,6 +297,18 @@ bool Machine::write_global(uint32_t global, uint32_t element, Value value) {
   return true;
 }
 
+bool Machine::read_memory(uint32_t address, Value& out) const {
+  if (!loaded_ || address >= memory_words_) return false;
+  out = memory_[address];
+  return true;
+}
+
+bool Machine::write_memory(uint32_t address, Value value) {
+  if (!loaded_ || address >= memory_words_) return false;
+  memory_[address] = value;
+  return true;
+}
+
 bool Machine::read_local(uint32_t thread, uint32_t depth, uint32_t local, Value& out) const {
   if (thread >= thread_count_ || depth >= threads_[thread].frame_count) return false;
   const Thread& t = threads_[thread];
@@ -341,9 +359,9 @@ bool Machine::raise(Thread& t, RunError error, int32_t detail) {
   t.error_detail = detail;
   if (t.handler_count > 0) {
     const Handler& h = t.handlers[t.handler_count - 1];
-    // A try block does not catch errors of an event routine entered on top of it.
+    // A TRY block does not catch errors of an event routine entered on top of it; TRYALL does.
     bool event_between = false;
-    for (uint32_t i = h.frame_count; i < t.frame_count; ++i)
+    for (uint32_t i = h.frame_count; i < t.frame_count && !h.catches_events; ++i)
       event_between = event_between || t.frames[i].kind == FrameKind::Event;
     if (!event_between) {
       t.handler_count--;

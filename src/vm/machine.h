@@ -112,6 +112,11 @@ class Machine {
   // Globals, checked: false when the index or element is out of range.
   bool read_global(uint32_t global, uint32_t element, Value& out) const;
   bool write_global(uint32_t global, uint32_t element, Value value);
+  // The data memory: every global's words in table order, global 0's element 0 at address 0,
+  // as LDM and STM see it. Checked: false when the address is past the last word.
+  uint32_t memory_words() const { return memory_words_; }
+  bool read_memory(uint32_t address, Value& out) const;
+  bool write_memory(uint32_t address, Value value);
   // Locals of a frame, for the debugger.
   bool read_local(uint32_t thread, uint32_t depth, uint32_t local, Value& out) const;
 
@@ -146,6 +151,7 @@ class Machine {
     uint32_t frame_count;
     Value* sp;
     Value* locals_top;
+    bool catches_events;  // TRYALL: the errors of event routines entered above it too
   };
   struct Breakpoint {
     uint32_t pc;
@@ -194,6 +200,8 @@ class Machine {
   uint32_t routine_count_ = 0;
   GlobalSlot* globals_ = nullptr;
   uint32_t global_count_ = 0;
+  Value* memory_ = nullptr;  // the globals' words, one block
+  uint32_t memory_words_ = 0;
   Thread* threads_ = nullptr;
   uint32_t thread_count_ = 0;
   uint32_t max_depth_ = 0;  // the deepest any frame's expression stack goes (from the verifier)

@@ -60,7 +60,9 @@ TEST(Loader, RefusesForeignBytes) {
 
 TEST(Loader, RefusesOtherVersions) {
   auto b = encode(small_image());
-  b[4] = 2;
+  b[4] = static_cast<uint8_t>(kFormatVersion + 1);
+  EXPECT_EQ(load(b), LoadError::BadVersion);
+  b[4] = 1;  // version 1 had no dialect, texts or tasks
   EXPECT_EQ(load(b), LoadError::BadVersion);
 }
 
@@ -129,6 +131,62 @@ TEST(Loader, RefusesRecordsOutOfRange) {
   EXPECT_EQ(load(encode(image)), LoadError::Ok);
   image.lines = {{1, "a", 2}, {0, "a", 1}};  // not sorted
   EXPECT_EQ(load(encode(image)), LoadError::BadRecord);
+}
+
+// The word at `index` of the first record of section `kind`.
+size_t record_word(const std::vector<uint8_t>& b, Section kind, uint32_t index) {
+  uint32_t offset;
+  std::memcpy(&offset, b.data() + section_entry(b, kind) + 4, 4);
+  return offset + index * 4;
+}
+
+void put_word(std::vector<uint8_t>& b, size_t at, uint32_t value) {
+  std::memcpy(b.data() + at, &value, 4);
+  fix_crc(b);
+}
+
+TEST(Loader, ReadsTheDialectTextsAndTasks) {
+  Image image = small_image();
+  image.dialect = "pdl";
+  image.texts = {"x=%d", ""};
+  image.tasks = {{0, 1, 62500, 3, true}};
+  const auto b = encode(image);
+  ImageView view;
+  ASSERT_EQ(load_image(b.data(), b.size(), view), LoadError::Ok);
+  EXPECT_STREQ(view.dialect_name(), "pdl");
+  ASSERT_EQ(view.texts.size(), 2u);
+  EXPECT_STREQ(view.text(0), "x=%d");
+  EXPECT_STREQ(view.text(1), "");
+  EXPECT_STREQ(view.text(2), "");  // past the table
+  ASSERT_EQ(view.tasks.size(), 1u);
+  const TaskRecord t = view.tasks[0];
+  EXPECT_EQ(t.routine, 0u);
+  EXPECT_EQ(t.number, 1u);
+  EXPECT_EQ(t.period_ns, 62500u);
+  EXPECT_EQ(t.priority, 3u);
+  EXPECT_EQ(t.flags, kTaskStartsAtReset);
+}
+
+TEST(Loader, RefusesABadDialectOrText) {
+  auto b = encode(small_image());
+  put_word(b, 32, 0x7FFFFFFF);  // the dialect's string offset
+  EXPECT_EQ(load(b), LoadError::BadString);
+  Image image = small_image();
+  image.texts = {"t"};
+  b = encode(image);
+  put_word(b, record_word(b, Section::Texts, 0), 0x7FFFFFFF);
+  EXPECT_EQ(load(b), LoadError::BadString);
+}
+
+TEST(Loader, RefusesBadTaskRecords) {
+  Image image = small_image();
+  image.tasks = {{1, 0, 0, 0, false}};  // no routine 1
+  EXPECT_EQ(load(encode(image)), LoadError::BadRecord);
+  image.tasks = {{0, 0, 0, 0, false}};
+  auto b = encode(image);
+  ASSERT_EQ(load(b), LoadError::Ok);
+  put_word(b, record_word(b, Section::Tasks, 4), 2);  // a flag no version defines
+  EXPECT_EQ(load(b), LoadError::BadRecord);
 }
 
 TEST(Loader, SurvivesRandomBytes) {

@@ -8,6 +8,7 @@
 
 #include "bytecode/assembly.h"
 #include "bytecode/image.h"
+#include "bytecode/opcodes.h"
 #include "testlib/test_files.h"
 
 namespace uprog::bytecode {
@@ -71,6 +72,51 @@ TEST(RoundTrip, EveryPartOfAnImage) {
   const std::string text = disassemble(decoded);
   ASSERT_TRUE(assemble(text, "t", again, errors)) << format_text(errors) << text;
   EXPECT_EQ(again, image) << text;
+}
+
+TEST(RoundTrip, DialectTextsAndTasks) {
+  Image image;
+  image.dialect = "st";
+  image.code = {make_word(Op::RET, 0)};
+  image.routines = {{"PLCINIT", RoutineKind::Task, 0, 0, {}, 0},
+                    {"PLC62", RoutineKind::Task, 0, 0, {}, 0}};
+  image.texts = {"x=%d\n", "quote \" and \\", ""};
+  // 62.5 us exactly; a period past 4 s still fits; the last task names no routine of its own.
+  image.tasks = {{0, 0, 0, 0, true}, {1, 62, 62500, 256, false}, {1, 7, UINT32_MAX, 1, true}};
+  const auto bytes = encode(image);
+  Image decoded;
+  std::string error;
+  ASSERT_TRUE(decode(bytes.data(), bytes.size(), decoded, error)) << error;
+  EXPECT_EQ(decoded, image);
+  const std::string text = disassemble(decoded);
+  EXPECT_NE(text.find(".dialect \"st\""), std::string::npos) << text;
+  EXPECT_NE(text.find(".task 1 number=62 period_ns=62500 priority=256 start_at_reset=0"),
+            std::string::npos) << text;
+  Image again;
+  std::vector<Diagnostic> errors;
+  ASSERT_TRUE(assemble(text, "t", again, errors)) << format_text(errors) << text;
+  EXPECT_EQ(again, image) << text;
+}
+
+TEST(Assembler, TasksNameTheirRoutine) {
+  Image image;
+  std::vector<Diagnostic> errors;
+  ASSERT_TRUE(assemble(".task \"b\" number=2 period_ns=1000000 priority=4 start_at_reset=1\n"
+                       ".routine task \"a\" in=0 out=0 entry=m\n"
+                       ".routine task \"b\" in=0 out=0 entry=m\nm:\n  RET\n",
+                       "t", image, errors))
+      << format_text(errors);
+  ASSERT_EQ(image.tasks.size(), 1u);
+  EXPECT_EQ(image.tasks[0], (Task{1, 2, 1000000, 4, true}));
+  EXPECT_FALSE(assemble(".task nope number=0 period_ns=0 priority=0 start_at_reset=0\n"
+                        ".task 0 number=0 period_ns=0 priority=0 start_at_reset=2\n"
+                        ".task 0 number=0 period=0 priority=0 start_at_reset=0\n"
+                        ".routine task \"a\" in=0 out=0 entry=m\nm:\n  RET\n",
+                        "bad.s", image, errors));
+  ASSERT_EQ(errors.size(), 3u) << format_text(errors);
+  EXPECT_NE(errors[0].message.find("unknown routine 'nope'"), std::string::npos);
+  EXPECT_EQ(errors[1].where.line, 2);
+  EXPECT_EQ(errors[2].where.line, 3);
 }
 
 TEST(Assembler, ReportsErrorsWithTheirPlace) {

@@ -38,6 +38,8 @@ const std::map<int32_t, const char*> kNotFromAHostLine = {
     {112, "a line's image always has its one routine"},
     {113, "no event enters a line's machine"},
     {114, "no Gold statement raises an error"},
+    {115, "Gold has no pointers: its code generator emits no LDM or STM"},
+    {116, "Gold has no MULDIV: its code generator emits none"},
 };
 
 class ErrorTranscript : public ::testing::TestWithParam<fs::path> {};

@@ -9,6 +9,10 @@
 //   ; expect NAME = VALUE         a global (NAME[i] for an element); VALUE int, or float with '.'
 //   ; expect clock = N            the virtual time at the end, in µs
 //   ; expect runs = N             how often the host's action command ran
+//   ; expect action index = N     the index of the last action command
+//   ; expect slices = N           how many slices it took to the end
+//   ; expect messages = N         how many messages the program sent
+//   ; expect message K = T A...   message K (from 0) sent text T with int arguments A...
 // Also checks that the cases together use every opcode but BREAK (tested in machine_test.cpp),
 // and that every run-time error of src/vm/run_errors.def is produced by a case.
 #include <gtest/gtest.h>
@@ -95,6 +99,21 @@ TEST_P(VmCase, RunsAsExpected) {
       EXPECT_EQ(p.host.clock_us, std::stoul(m[1]));
     } else if (std::regex_match(line, m, std::regex(R"(; expect runs = (\d+)\s*)"))) {
       EXPECT_EQ(p.host.runs, std::stoi(m[1]));
+    } else if (std::regex_match(line, m, std::regex(R"(; expect action index = (-?\d+)\s*)"))) {
+      EXPECT_EQ(p.host.action_index, std::stoi(m[1]));
+    } else if (std::regex_match(line, m, std::regex(R"(; expect slices = (\d+)\s*)"))) {
+      EXPECT_EQ(p.slices, std::stoull(m[1]));
+    } else if (std::regex_match(line, m, std::regex(R"(; expect messages = (\d+)\s*)"))) {
+      EXPECT_EQ(p.host.message_count, std::stoul(m[1]));
+    } else if (std::regex_match(line, m,
+                                std::regex(R"(; expect message (\d+) = (\d+)((?: -?\d+)*)\s*)"))) {
+      const size_t k = std::stoul(m[1]);
+      ASSERT_LT(k, std::min(p.host.message_count, ScriptedHost::kKeptMessages)) << line;
+      EXPECT_EQ(p.host.messages[k].text, std::stoul(m[2])) << line;
+      std::vector<int32_t> args;
+      std::istringstream words(m[3].str());
+      for (int32_t a; words >> a;) args.push_back(a);
+      EXPECT_EQ(p.host.messages[k].arguments(), args) << line;
     } else if (std::regex_match(
                    line, m, std::regex(R"(; expect (\w+)(?:\[(\d+)\])? = (-?[0-9.eE+-]+|nan)\s*)"))) {
       const uint32_t element = m[2].matched ? static_cast<uint32_t>(std::stoul(m[2])) : 0;

@@ -194,6 +194,76 @@ bad:
   EXPECT_EQ(p.global("caught").i, 0);
 }
 
+// The same program with TRYALL: its catch block runs, and the event frame is dropped.
+TEST(Machine, TryAllCatchesAnEventsError) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.global int "caught" 1
+.routine function "main" in=0 out=0 entry=main
+.routine auto "bad" in=0 out=0 entry=bad
+main:
+  TRYALL handler
+spin:
+  YIELD
+  JMP spin
+handler:
+  ERRCODE
+  STG caught
+  RET
+bad:
+  PUSHI 1
+  PUSHI 0
+  DIVI
+  POP
+  RET
+)"));
+  p.machine.start(0, 0);
+  p.machine.run_slice(0, Budget::unlimited());
+  p.machine.interrupt(0, 1);
+  EXPECT_EQ(p.machine.frame_count(0), 2u);
+  EXPECT_EQ(p.machine.run_slice(0, Budget::unlimited()).end, SliceEnd::Finished);
+  EXPECT_EQ(p.global("caught").i, static_cast<int32_t>(vm::RunError::DivisionByZero));
+}
+
+TEST(Machine, UnsignedAndWideDivisionsCheckTheirDivisor) {
+  for (const char* division : {"DIVU", "REMU", "MULDIV"}) {
+    LoadedProgram p;
+    ASSERT_TRUE(p.load(std::string(".routine function \"main\" in=0 out=0 entry=main\nmain:\n"
+                                   "  PUSHI 7\n  PUSHI 7\n  PUSHI 0\n  ") +
+                       division + (std::string(division) == "MULDIV" ? "\n" : "\n  POP\n") +
+                       "  POP\n  RET\n"));
+    p.machine.start(0, 0);
+    EXPECT_EQ(p.run_to_end().end, SliceEnd::Error) << division;
+    EXPECT_EQ(p.machine.last_error(0), vm::RunError::DivisionByZero) << division;
+  }
+}
+
+TEST(Machine, DataMemoryIsCheckedFromInsideAndOutside) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.global int "a" 2
+.global float "f" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  PUSHI -1
+  PUSHI 9
+  STM
+  RET
+)"));
+  EXPECT_EQ(p.machine.memory_words(), 3u);
+  EXPECT_TRUE(p.machine.write_memory(2, Value::of_float(2.5f)));
+  EXPECT_EQ(p.global("f").f, 2.5f);
+  EXPECT_TRUE(p.machine.write_global(0, 1, Value::of_int(8)));
+  Value v;
+  ASSERT_TRUE(p.machine.read_memory(1, v));
+  EXPECT_EQ(v.i, 8);
+  EXPECT_FALSE(p.machine.read_memory(3, v));
+  EXPECT_FALSE(p.machine.write_memory(UINT32_MAX, v));
+  p.machine.start(0, 0);  // a negative address is no address
+  EXPECT_EQ(p.run_to_end().end, SliceEnd::Error);
+  EXPECT_EQ(p.machine.last_error(0), vm::RunError::BadAddress);
+}
+
 TEST(Machine, DebuggerReadsLocalsAndFrames) {
   LoadedProgram p;
   ASSERT_TRUE(p.load(R"(

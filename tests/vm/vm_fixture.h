@@ -12,30 +12,66 @@
 namespace uprog::test {
 
 // Command 1: ten read/write registers. Command 2: always refused with code 21.
-// Command 3: an action that counts its runs and sums its arguments into register 0.
+// Command 3: an action that counts its runs, keeps its index and sums its arguments into
+// register 0. Command 4: as 1 and 3 together, but every call ends the slice.
+// The first kKeptMessages messages are kept (without allocating: the VM's no-allocation test
+// runs through this host), all are counted, each answered with message_status.
 class ScriptedHost final : public vm::Host {
  public:
+  static constexpr uint32_t kKeptMessages = 16;
+  static constexpr uint32_t kKeptArgs = 16;
+  struct Message {
+    uint32_t thread = 0;
+    uint32_t text = 0;
+    uint32_t count = 0;  // arguments sent; the first kKeptArgs are kept
+    int32_t args[kKeptArgs] = {};
+    std::vector<int32_t> arguments() const {
+      return std::vector<int32_t>(args, args + (count < kKeptArgs ? count : kKeptArgs));
+    }
+  };
+
   vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override {
-    if (command != 1 || index < 0 || index >= 10) return command == 2 ? 21 : 22;
+    if ((command != 1 && command != 4) || index < 0 || index >= 10) return command == 2 ? 21 : 22;
     out = registers[index];
-    return vm::kCommandOk;
+    return done(command);
   }
   vm::CommandStatus write(uint32_t command, int32_t index, Value value) override {
-    if (command != 1 || index < 0 || index >= 10) return command == 2 ? 21 : 22;
+    if ((command != 1 && command != 4) || index < 0 || index >= 10) return command == 2 ? 21 : 22;
     registers[index] = value;
-    return vm::kCommandOk;
+    return done(command);
   }
-  vm::CommandStatus execute(uint32_t command, int32_t, const Value* args, uint32_t n) override {
-    if (command != 3) return 21;
+  vm::CommandStatus execute(uint32_t command, int32_t index, const Value* args, uint32_t n) override {
+    if (command != 3 && command != 4) return 21;
     ++runs;
+    action_index = index;
     for (uint32_t i = 0; i < n; ++i) registers[0].i += args[i].i;
-    return vm::kCommandOk;
+    return done(command);
+  }
+  vm::CommandStatus message(uint32_t thread, uint32_t text, const Value* args, uint32_t n) override {
+    if (message_count < kKeptMessages) {
+      Message& m = messages[message_count];
+      m.thread = thread;
+      m.text = text;
+      m.count = n;
+      for (uint32_t i = 0; i < n && i < kKeptArgs; ++i) m.args[i] = args[i].i;
+    }
+    ++message_count;
+    return message_status;
   }
   uint32_t now_us() override { return clock_us; }
 
   Value registers[10] = {};
   int runs = 0;
+  int32_t action_index = -1;
+  Message messages[kKeptMessages];
+  uint32_t message_count = 0;
+  vm::CommandStatus message_status = vm::kCommandOk;
   uint32_t clock_us = 0;
+
+ private:
+  static vm::CommandStatus done(uint32_t command) {
+    return command == 4 ? vm::kCommandEndSlice : vm::kCommandOk;
+  }
 };
 
 struct LoadedProgram {
@@ -45,6 +81,7 @@ struct LoadedProgram {
   ScriptedHost host;
   vm::Machine machine;
   vm::LoadStatus status;
+  uint64_t slices = 0;  // run by run_to_end()
 
   // Assembles and loads; ADD_FAILURE on assembly errors.
   bool load(const std::string& text, vm::MachineConfig config = {}) {
@@ -65,6 +102,7 @@ struct LoadedProgram {
   vm::SliceResult run_to_end(uint32_t thread = 0, uint64_t max_slices = 1000000) {
     vm::SliceResult r{};
     for (uint64_t i = 0; i < max_slices; ++i) {
+      ++slices;
       r = machine.run_slice(thread, vm::Budget::unlimited());
       if (r.end == vm::SliceEnd::Waiting) host.clock_us += 100;
       if (r.end != vm::SliceEnd::Waiting && r.end != vm::SliceEnd::Yielded &&

@@ -954,6 +954,7 @@ bytecode::Image generate_program(const Program& program, const Symbols& symbols,
   if (!ok) reporter.error(Error::InternalCompilerError, 0);
   if (img.code.size() + body_words > bytecode::kOperandMax) reporter.error(Error::CompiledCodeTooLong, 0);
   renumber_constants(img, constants);
+  img.dialect = "gold";
   img.info.push_back("dialect=gold");
   return img;
 }
@@ -994,6 +995,7 @@ bytecode::Image generate_line(const Block& block, const std::vector<KnownGlobal>
   img.routines.push_back(std::move(r));
   if (!gen.finish()) reporter.error(Error::InternalCompilerError, 0);
   img.constants = std::move(constants.constants);
+  img.dialect = "gold";
   img.info.push_back("dialect=gold");
   return img;
 }
