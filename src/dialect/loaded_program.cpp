@@ -6,7 +6,8 @@
 namespace uprog::dialect {
 
 std::unique_ptr<LoadedProgram> LoadedProgram::load(std::vector<uint8_t> bytes, const vm::MachineConfig& config,
-                                                   vm::Host& host, std::string* error, bool decode) {
+                                                   vm::Host& host, std::string* error, bool decode,
+                                                   std::string_view dialect) {
   auto fail = [error](std::string why) {
     if (error) *error = std::move(why);
     return nullptr;
@@ -16,6 +17,11 @@ std::unique_ptr<LoadedProgram> LoadedProgram::load(std::vector<uint8_t> bytes, c
   bytecode::ImageView view;
   if (const auto le = bytecode::load_image(p->bytes_.data(), p->bytes_.size(), view); le != bytecode::LoadError::Ok) {
     return fail(std::string("not a valid image: ") + bytecode::load_error_text(le));
+  }
+  const std::string_view made_for = view.dialect_name();
+  if (!dialect.empty() && !made_for.empty() && made_for != dialect) {
+    return fail("the program is for the " + std::string(made_for) + " dialect; this drive runs " +
+                std::string(dialect));
   }
   p->memory_.assign((vm::Machine::memory_needed(view, config) + 7) / 8, 0);
   const vm::LoadStatus s =

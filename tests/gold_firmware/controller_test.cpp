@@ -74,6 +74,39 @@ TEST(controller, GarbageAndHugeLinesAreRefusedWithoutHarm) {
   EXPECT_EQ(ps(c), -1);
 }
 
+// The image names the dialect whose compiler made it: a Gold drive takes Gold's and hand-made
+// ones, and refuses another dialect's, at download and at boot, keeping what it had.
+TEST(controller, AnotherDialectsProgramIsRefused) {
+  const std::string dir = temp_dir("foreign");
+  SourceFile source{"test.ehl", "int v\nfunction main()\nv = 5\nreturn\n"};
+  gold::CompileResult compiled = gold::compile(source);
+  ASSERT_TRUE(compiled.ok());
+  ASSERT_EQ(compiled.image.dialect, "gold");
+  bytecode::Image foreign = compiled.image;
+  foreign.dialect = "pdl";
+  const std::vector<uint8_t> foreign_bytes = bytecode::encode(foreign);
+  {
+    ControllerOptions o = gold_options();
+    o.state_dir = dir;
+    Controller c(o);
+    ASSERT_TRUE(c.download(bytecode::encode(compiled.image)).ok);
+    const DownloadResult r = c.download(foreign_bytes);
+    EXPECT_FALSE(r.ok);
+    EXPECT_EQ(r.error, "the program is for the pdl dialect; this drive runs gold");
+    EXPECT_EQ(read_binary_file(dir + "/program.upi"), bytecode::encode(compiled.image));
+    bytecode::Image hand_made = compiled.image;
+    hand_made.dialect.clear();
+    EXPECT_TRUE(c.download(bytecode::encode(hand_made)).ok);
+  }
+  ASSERT_TRUE(write_file_atomically(dir + "/program.upi", foreign_bytes.data(), foreign_bytes.size()));
+  ControllerOptions o = gold_options();
+  o.state_dir = dir;
+  Controller c(o);
+  ASSERT_EQ(c.boot_messages().size(), 1u);
+  EXPECT_NE(c.boot_messages()[0].find("the program is for the pdl dialect"), std::string::npos) << c.boot_messages()[0];
+  EXPECT_EQ(ps(c), -2);
+}
+
 TEST(controller, ADriveRefusalSaysWhatWentWrong) {
   Controller c(gold_options());
   const std::vector<Answer> a = c.send("AC=-5");  // AC takes positive values only

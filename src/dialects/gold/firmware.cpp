@@ -20,6 +20,7 @@ const uint16_t kMi = command_id("MI"), kPs = command_id("PS"), kEc = command_id(
 
 const vm::MachineConfig kProgramConfig{};
 constexpr std::string_view kProgramRecord = "program.upi";
+constexpr std::string_view kDialectName = "gold";  // what the Gold compiler writes into its images
 
 }  // namespace
 
@@ -78,7 +79,7 @@ void Firmware::boot(std::vector<std::string>& messages) {
 dialect::DownloadResult Firmware::verify(const std::vector<uint8_t>& bytes) {
   dialect::DownloadResult r;
   // The verifier runs inside the load; the scratch program is then dropped.
-  if (!dialect::LoadedProgram::load(bytes, kProgramConfig, *this, &r.error, false)) return r;
+  if (!dialect::LoadedProgram::load(bytes, kProgramConfig, *this, &r.error, false, kDialectName)) return r;
   r.ok = true;
   return r;
 }
@@ -115,7 +116,7 @@ int32_t Firmware::load_stored(std::string* error) {
   }
   unload();
   std::string why;
-  program_ = dialect::LoadedProgram::load(*stored_, kProgramConfig, *this, &why);
+  program_ = dialect::LoadedProgram::load(*stored_, kProgramConfig, *this, &why, true, kDialectName);
   if (!program_) {
     if (error) *error = "stored program refused: " + why;
     unload();
