@@ -188,6 +188,12 @@ void Axis::start_profile(const Profile& profile, bool stopping) {
 }
 
 Status Axis::begin() {
+  const Status status = begin_motion();
+  if (status == Status::kOk) recorder_.on_begin();
+  return status;
+}
+
+Status Axis::begin_motion() {
   if (!motor_on_) return Status::kMotorOff;
   if (params_.unit_mode == 1) return Status::kModeNotSupported;
   if (pending_ == Pending::kPt) {
@@ -660,6 +666,7 @@ uint32_t Axis::step() {
   events |= pending_events_;
   pending_events_ = 0;
   last_events_ = events;
+  if (recorder_.active()) recorder_.on_cycle(*this);
   return events;
 }
 

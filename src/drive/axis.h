@@ -12,6 +12,7 @@
 #include "drive/motor_model.h"
 #include "drive/parameters.h"
 #include "drive/profile.h"
+#include "drive/recorder.h"
 #include "drive/pt_table.h"
 #include "drive/servo_loop.h"
 #include "drive/smoothing.h"
@@ -84,7 +85,7 @@ class Axis {
   int32_t pt_index() const;                         // the executing point, else the start
   PtTable& pt_table() { return pt_; }               // QP, MP
   const PtTable& pt_table() const { return pt_; }
-  Status begin();  // BG
+  Status begin();  // BG (the recorder's begin-of-motion trigger sees it)
   // ST (and the motion side of KL): the profiler decelerates to a stop with SD; the motor stays
   // on and holds where it stops. Nothing happens at rest.
   void stop();
@@ -150,6 +151,10 @@ class Axis {
   uint32_t period_us() const { return static_cast<uint32_t>(params_.servo_period_us); }
   uint64_t cycle_count() const { return cycles_; }
 
+  // --- the recorder (recorder.h): it samples after each step while active ---
+  Recorder& recorder() { return recorder_; }
+  const Recorder& recorder() const { return recorder_; }
+
   const MotorModel& motor_model() const { return motor_; }
   const MotorState& motor_state() const { return motor_state_; }
   double reference_position_exact() const { return ref_.position_counts; }
@@ -161,6 +166,7 @@ class Axis {
   bool modulo_active() const;
   void latch_fault(uint32_t bits);
   void motor_off();
+  Status begin_motion();
   void start_profile(const Profile& profile, bool stopping);
   void stop_with(double decel_counts_per_s2);
   uint32_t scan_inputs();
@@ -252,6 +258,7 @@ class Axis {
 
   uint32_t time_us_ = 0;
   uint64_t cycles_ = 0;
+  Recorder recorder_;
 };
 
 }  // namespace uprog::drive

@@ -1,0 +1,283 @@
+// The recorder's states, trigger and sampling (recorder.h). The pre-trigger share is a ring in the
+// first part of the memory; the trigger sample and those after it follow it in order.
+#include "drive/recorder.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <charconv>
+#include <cstring>
+
+#include "drive/axis.h"
+#include "drive/inputs.h"
+
+namespace uprog::drive {
+namespace {
+
+constexpr std::array kSignals{
+    SignalInfo{Signal::kPosition, "position", "counts", false},
+    SignalInfo{Signal::kVelocity, "velocity", "counts/s", false},
+    SignalInfo{Signal::kPositionError, "position_error", "counts", false},
+    SignalInfo{Signal::kReferencePosition, "reference_position", "counts", false},
+    SignalInfo{Signal::kReferenceVelocity, "reference_velocity", "counts/s", false},
+    SignalInfo{Signal::kCurrentCommand, "current_command", "A", true},
+    SignalInfo{Signal::kActiveCurrent, "active_current", "A", true},
+    SignalInfo{Signal::kInputPort, "input_port", "", false},
+    SignalInfo{Signal::kOutputPort, "output_port", "", false},
+    SignalInfo{Signal::kMotionStatus, "motion_status", "", false},
+    SignalInfo{Signal::kAuxPosition, "aux_position", "counts", false},
+};
+
+uint32_t int_bits(int32_t v) { return static_cast<uint32_t>(v); }
+uint32_t float_bits(float v) { return std::bit_cast<uint32_t>(v); }
+
+double value_of(uint32_t bits, bool is_float) {
+  return is_float ? static_cast<double>(std::bit_cast<float>(bits)) : static_cast<double>(static_cast<int32_t>(bits));
+}
+
+std::string number_text(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+}  // namespace
+
+std::span<const SignalInfo> all_signals() { return kSignals; }
+const SignalInfo& signal_info(Signal signal) { return kSignals[static_cast<size_t>(signal)]; }
+
+const SignalInfo* find_signal(std::string_view name) {
+  for (const SignalInfo& s : kSignals)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+Channel signal_channel(Signal signal, std::string name) {
+  const SignalInfo& info = signal_info(signal);
+  Channel c;
+  c.name = std::move(name);
+  c.unit = std::string(info.unit);
+  c.signal = signal;
+  c.is_float = info.is_float;
+  return c;
+}
+
+std::optional<Channel> global_channel(const ProgramWords& words, std::string_view text, std::string* why) {
+  std::string_view name = text;
+  uint32_t element = 0;
+  if (const size_t open = text.find('['); open != std::string_view::npos) {
+    const std::string_view digits = text.substr(open + 1, text.size() - open - 2);
+    const auto [p, e] = std::from_chars(digits.data(), digits.data() + digits.size(), element);
+    if (text.back() != ']' || digits.empty() || e != std::errc() || p != digits.data() + digits.size()) {
+      if (why) *why = "'" + std::string(text) + "': expected name[index] with a number";
+      return std::nullopt;
+    }
+    name = text.substr(0, open);
+  }
+  const std::optional<ProgramWords::Word> word = words.find_global(name, element);
+  if (!word) {
+    if (why) *why = "'" + std::string(text) + "' is no signal and no global of the program";
+    return std::nullopt;
+  }
+  Channel c;
+  c.name = std::string(text);
+  c.is_global = true;
+  c.address = word->address;
+  c.is_float = word->is_float;
+  return c;
+}
+
+std::string Trigger::describe() const {
+  switch (kind) {
+    case TriggerKind::kImmediate: return "immediate";
+    case TriggerKind::kBeginMotion: return "begin";
+    case TriggerKind::kRising: return "rising " + source.name + " " + number_text(level);
+    case TriggerKind::kFalling: return "falling " + source.name + " " + number_text(level);
+    case TriggerKind::kWindowLeave:
+      return "leave " + source.name + " " + number_text(low) + " " + number_text(level);
+    case TriggerKind::kWindowEnter:
+      return "enter " + source.name + " " + number_text(low) + " " + number_text(level);
+    case TriggerKind::kInput:
+      return "input mask " + std::to_string(input_mask) + " polarity " + std::to_string(input_polarity);
+  }
+  return "?";
+}
+
+bool Recorder::arm(const RecorderSettings& settings, std::string* why) {
+  auto refuse = [&](const char* text) {
+    if (why) *why = text;
+    return false;
+  };
+  if (settings.channels.empty()) return refuse("the recorder needs at least one channel");
+  if (settings.channels.size() > kMaxRecorderChannels) return refuse("the recorder takes at most 16 channels");
+  if (settings.length < 1) return refuse("the recording length is at least one sample");
+  if (settings.gap_cycles < 1) return refuse("the gap is at least one servo cycle");
+  if (settings.pretrigger_percent > 100) return refuse("the pre-trigger share is 0..100 percent");
+  if (size_t{settings.length} * settings.channels.size() > kMaxRecorderWords)
+    return refuse("the recording does not fit the recorder's memory (4194304 words)");
+  settings_ = settings;
+  memory_.assign(size_t{settings.length} * settings.channels.size(), 0);
+  pre_ = static_cast<uint32_t>(uint64_t{settings.length} * settings.pretrigger_percent / 100);
+  if (pre_ >= settings.length) pre_ = settings.length - 1;  // the trigger sample needs its slot
+  pre_taken_ = 0;
+  post_taken_ = 0;
+  phase_ = 0;  // the first cycle after arming takes a sample
+  begun_ = false;
+  fired_ = false;
+  has_previous_ = false;
+  previous_condition_ = false;
+  trigger_time_us_ = 0;
+  state_ = pre_ == 0 ? RecorderState::kWaiting : RecorderState::kArmed;
+  return true;
+}
+
+void Recorder::kill() {
+  if (active()) invalidate();
+}
+
+void Recorder::invalidate() {
+  state_ = RecorderState::kIdle;
+  memory_.clear();
+  memory_.shrink_to_fit();
+}
+
+uint32_t Recorder::samples_recorded() const {
+  switch (state_) {
+    case RecorderState::kIdle: return 0;
+    case RecorderState::kArmed:
+    case RecorderState::kWaiting: return static_cast<uint32_t>(std::min<uint64_t>(pre_taken_, pre_));
+    case RecorderState::kTriggered:
+    case RecorderState::kDone: return static_cast<uint32_t>(std::min<uint64_t>(pre_taken_, pre_)) + post_taken_;
+  }
+  return 0;
+}
+
+uint32_t Recorder::read_bits(const Channel& c, const Axis& axis) const {
+  if (c.is_global) {
+    uint32_t bits = 0;
+    return words_ != nullptr && words_->read_word(c.address, bits) ? bits : 0u;
+  }
+  switch (c.signal) {
+    case Signal::kPosition: return int_bits(axis.position());
+    case Signal::kVelocity: return int_bits(axis.velocity());
+    case Signal::kPositionError: return int_bits(axis.position_error());
+    case Signal::kReferencePosition: return int_bits(axis.reference_position());
+    case Signal::kReferenceVelocity: return int_bits(axis.reference_velocity());
+    case Signal::kCurrentCommand: return float_bits(axis.current_command());
+    case Signal::kActiveCurrent: return float_bits(static_cast<float>(axis.motor_state().current_a));
+    case Signal::kInputPort: return axis.input_port();
+    case Signal::kOutputPort: return axis.output_port();
+    case Signal::kMotionStatus: return int_bits(axis.motion_status());
+    case Signal::kAuxPosition: return int_bits(axis.aux_position());
+  }
+  return 0;
+}
+
+double Recorder::read_value(const Channel& c, const Axis& axis) const {
+  return value_of(read_bits(c, axis), c.is_float);
+}
+
+// Every cycle, armed or waiting: edges are judged against the previous cycle's value, so an edge
+// that happens while the pre-trigger share is still being recorded is missed (manual 7.4.5).
+bool Recorder::trigger_fired(const Axis& axis) {
+  const Trigger& t = settings_.trigger;
+  bool fired = false;
+  switch (t.kind) {
+    case TriggerKind::kImmediate: fired = true; break;
+    case TriggerKind::kBeginMotion: fired = begun_; break;
+    case TriggerKind::kRising:
+    case TriggerKind::kFalling: {
+      const double v = read_value(t.source, axis);
+      if (has_previous_) {
+        fired = t.kind == TriggerKind::kRising ? previous_ < t.level && v >= t.level
+                                               : previous_ > t.level && v <= t.level;
+      }
+      previous_ = v;
+      has_previous_ = true;
+      break;
+    }
+    case TriggerKind::kWindowLeave:
+    case TriggerKind::kWindowEnter:
+    case TriggerKind::kInput: {
+      bool condition = false;
+      if (t.kind == TriggerKind::kInput) {
+        uint32_t active = 0;
+        for (int n = 1; n <= kInputCount; ++n)
+          if (axis.input_active(n)) active |= 1u << (n - 1);
+        condition = (active & t.input_mask) == (t.input_polarity & t.input_mask);
+      } else {
+        const double v = read_value(t.source, axis);
+        const bool inside = v >= t.low && v <= t.level;
+        condition = t.kind == TriggerKind::kWindowEnter ? inside : !inside;
+      }
+      fired = has_previous_ && condition && !previous_condition_;
+      previous_condition_ = condition;
+      has_previous_ = true;
+      break;
+    }
+  }
+  begun_ = false;
+  return fired && state_ == RecorderState::kWaiting;
+}
+
+void Recorder::take_sample(const Axis& axis) {
+  const size_t n = settings_.channels.size();
+  size_t slot = 0;
+  if (state_ == RecorderState::kTriggered) {
+    slot = pre_ + post_taken_;
+  } else {
+    slot = static_cast<size_t>(pre_taken_ % pre_);
+  }
+  uint32_t* out = memory_.data() + slot * n;
+  for (size_t c = 0; c < n; ++c) out[c] = read_bits(settings_.channels[c], axis);
+  if (state_ == RecorderState::kTriggered) {
+    if (++post_taken_ == settings_.length - pre_) state_ = RecorderState::kDone;
+  } else if (++pre_taken_ == pre_) {
+    state_ = RecorderState::kWaiting;
+  }
+}
+
+void Recorder::on_cycle(const Axis& axis) {
+  if (!fired_ && trigger_fired(axis)) fired_ = true;
+  if (phase_ != 0) {
+    --phase_;
+    return;
+  }
+  phase_ = settings_.gap_cycles - 1;
+  if (fired_ && state_ == RecorderState::kWaiting) {
+    state_ = RecorderState::kTriggered;
+    trigger_time_us_ = axis.time_us();
+  }
+  if (state_ == RecorderState::kWaiting && pre_ == 0) return;  // nothing before the trigger to keep
+  take_sample(axis);
+}
+
+std::optional<Recording> Recorder::recording(uint32_t servo_period_us) const {
+  if (state_ != RecorderState::kTriggered && state_ != RecorderState::kDone) return std::nullopt;
+  Recording r;
+  r.sample_period_us = servo_period_us * settings_.gap_cycles;
+  r.trigger = settings_.trigger.describe();
+  r.pretrigger_percent = settings_.pretrigger_percent;
+  const uint32_t before = static_cast<uint32_t>(std::min<uint64_t>(pre_taken_, pre_));
+  r.trigger_index = before;
+  r.trigger_time_us = trigger_time_us_;
+  const size_t n = settings_.channels.size();
+  r.channels.resize(n);
+  for (size_t c = 0; c < n; ++c) {
+    const Channel& ch = settings_.channels[c];
+    RecordedChannel& out = r.channels[c];
+    out.name = ch.name;
+    out.unit = ch.unit;
+    out.is_float = ch.is_float;
+    out.values.reserve(before + post_taken_);
+    // The ring's oldest sample first: it sits where the next one would have gone.
+    for (uint32_t i = 0; i < before; ++i) {
+      const size_t slot = static_cast<size_t>((pre_taken_ - before + i) % pre_);
+      out.values.push_back(value_of(memory_[slot * n + c], ch.is_float));
+    }
+    for (uint32_t i = 0; i < post_taken_; ++i) out.values.push_back(value_of(memory_[(pre_ + i) * n + c], ch.is_float));
+  }
+  return r;
+}
+
+}  // namespace uprog::drive
