@@ -19,7 +19,7 @@ std::span<const uint8_t> bytes_of(const std::string& text) {
 
 }  // namespace
 
-class Controller::Drive final : public dialect::Runtime {
+class Controller::Drive final : public dialect::Runtime, public drive::ProgramWords {
  public:
   explicit Drive(ControllerOptions options) : options_(std::move(options)), flash_(options_.state_dir) {
     dialect::FirmwareOptions firmware_options;
@@ -43,6 +43,10 @@ class Controller::Drive final : public dialect::Runtime {
     return flash_.write(kParametersRecord, bytes_of(drive::serialize_parameters(axis(0).parameters())), error);
   }
   std::optional<drive::Parameters> saved_axis_parameters(std::string* error) override;
+
+  // --- drive::ProgramWords: the program in RAM, for the recorder's global channels ---
+  std::optional<Word> find_global(std::string_view name, uint32_t element) const override;
+  bool read_word(uint32_t address, uint32_t& bits) const override;
 
   const ControllerOptions options_;
   StateFlash flash_;
@@ -70,6 +74,7 @@ class Controller::Drive final : public dialect::Runtime {
 void Controller::Drive::reboot() {
   axes_.clear();
   axes_.push_back(std::make_unique<drive::Axis>());
+  axes_[0]->recorder().set_program_words(this);
   events_.assign(axes_.size(), 0);
   std::string error;
   if (auto params = saved_axis_parameters(&error)) {
@@ -87,6 +92,29 @@ std::optional<drive::Parameters> Controller::Drive::saved_axis_parameters(std::s
   const auto bytes = flash_.read(kParametersRecord, error);
   if (!bytes) return std::nullopt;
   return drive::parse_parameters(std::string(bytes->begin(), bytes->end()), error);
+}
+
+std::optional<drive::ProgramWords::Word> Controller::Drive::find_global(std::string_view name,
+                                                                      uint32_t element) const {
+  const dialect::LoadedProgram* program = firmware_->loaded_program();
+  if (program == nullptr) return std::nullopt;
+  uint32_t address = 0;  // the globals' words lie in table order (architecture.md, "The data memory")
+  for (const bytecode::Global& g : program->image().globals) {
+    if (g.name == name) {
+      if (element >= g.length) return std::nullopt;
+      return Word{address + element, g.type == ValueType::Float};
+    }
+    address += g.length;
+  }
+  return std::nullopt;
+}
+
+bool Controller::Drive::read_word(uint32_t address, uint32_t& bits) const {
+  const dialect::LoadedProgram* program = firmware_->loaded_program();
+  Value v;
+  if (program == nullptr || !program->machine().read_memory(address, v)) return false;
+  bits = static_cast<uint32_t>(v.i);
+  return true;
 }
 
 void Controller::Drive::advance_ns(uint64_t ns) {
@@ -184,6 +212,15 @@ bool Controller::inject_fault(std::string_view name, bool persistent) {
   return drive_->axis(0).inject_fault(name, persistent);
 }
 drive::Axis& Controller::axis() { return drive_->axis(0); }
+drive::Recorder& Controller::recorder() { return drive_->axis(0).recorder(); }
+
+std::optional<drive::Channel> Controller::recorder_channel(std::string_view name, std::string* why) {
+  if (const std::optional<drive::Signal> s = drive_->firmware_->recorder_signal(name)) {
+    return drive::signal_channel(*s, std::string(name));
+  }
+  if (const drive::SignalInfo* info = drive::find_signal(name)) return drive::signal_channel(info->signal, std::string(name));
+  return drive::global_channel(*drive_, name, why);
+}
 
 bool Controller::program_running() const { return drive_->firmware_->running(); }
 int32_t Controller::program_error() const { return drive_->firmware_->program_error(); }

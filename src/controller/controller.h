@@ -5,11 +5,13 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "dialect/dialect.h"
+#include "drive/recorder.h"
 #include "support/diagnostic.h"
 
 namespace uprog::drive {
@@ -75,6 +77,10 @@ class Controller {
   // Latches a drive fault by name (drive/faults.h); false when the name is unknown.
   bool inject_fault(std::string_view name, bool persistent = false);
   drive::Axis& axis();
+  // The first axis's recorder, and a channel for it by name: the dialect's name of a signal
+  // (Gold's PX), a neutral one (drive/recorder.h), or a global of the program ("cnt", "arr[2]").
+  drive::Recorder& recorder();
+  std::optional<drive::Channel> recorder_channel(std::string_view name, std::string* why);
 
   // --- state ---
   bool program_running() const;

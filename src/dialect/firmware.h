@@ -4,13 +4,16 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "dialect/answer.h"
+#include "dialect/loaded_program.h"
 #include "dialect/scheduling/whole_lines.h"
 #include "dialect/wire_form.h"
+#include "drive/recorder.h"
 #include "vm/machine.h"
 
 namespace uprog::dialect {
@@ -81,6 +84,15 @@ class Firmware {
   // The drive's state in the dialect's own words, for the last line of `uprog run`.
   virtual std::string state_summary() const = 0;
   virtual std::vector<ThreadInfo> threads() const = 0;
+
+  // --- for the recorder (drive/recorder.h); defaults for a dialect that has not said ---
+  // The program in RAM, whose globals the recorder's channels may read; null for none.
+  virtual const LoadedProgram* loaded_program() const { return nullptr; }
+  // The dialect's own name of an axis signal ("PX" for Gold); nullopt: not one of its names.
+  virtual std::optional<drive::Signal> recorder_signal(std::string_view name) const {
+    (void)name;
+    return std::nullopt;
+  }
 };
 
 }  // namespace uprog::dialect

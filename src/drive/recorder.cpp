@@ -217,7 +217,7 @@ bool Recorder::trigger_fired(const Axis& axis) {
     }
   }
   begun_ = false;
-  return fired && state_ == RecorderState::kWaiting;
+  return fired && (state_ == RecorderState::kWaiting || (state_ == RecorderState::kArmed && settings_.early_trigger));
 }
 
 void Recorder::take_sample(const Axis& axis) {
@@ -244,7 +244,8 @@ void Recorder::on_cycle(const Axis& axis) {
     return;
   }
   phase_ = settings_.gap_cycles - 1;
-  if (fired_ && state_ == RecorderState::kWaiting) {
+  if (fired_ && (state_ == RecorderState::kWaiting || state_ == RecorderState::kArmed)) {
+    if (state_ == RecorderState::kArmed) pre_ = static_cast<uint32_t>(pre_taken_);  // in order from slot 0
     state_ = RecorderState::kTriggered;
     trigger_time_us_ = axis.time_us();
   }

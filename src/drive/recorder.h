@@ -95,6 +95,9 @@ struct RecorderSettings {
   uint32_t length = 1024;   // samples per channel
   uint32_t pretrigger_percent = 0;
   Trigger trigger;
+  // A trigger before the pre-trigger share is full is taken with the samples there are (the
+  // share shrinks, the length stays); without it, it is missed, as Elmo's recorder misses it.
+  bool early_trigger = false;
 };
 
 constexpr size_t kMaxRecorderChannels = 16;

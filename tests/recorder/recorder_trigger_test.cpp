@@ -117,6 +117,21 @@ TEST(recorder_trigger, BeginOfMotionBeforeThePretriggerIsFullIsMissed) {
   EXPECT_EQ(b.axis.recorder().state(), RecorderState::kIdle);
 }
 
+TEST(recorder_trigger, AnEarlyTriggerTakesTheSamplesThereAreWhenAllowed) {
+  Bench b;
+  RecorderSettings s = profile_settings(100, 50, 1, TriggerKind::kBeginMotion);
+  s.early_trigger = true;
+  ASSERT_TRUE(b.axis.recorder().arm(s, nullptr));
+  b.steps(10);
+  b.begin(100000);
+  EXPECT_EQ(b.until_done(1000), 90);  // the length stays: 10 before, the trigger sample, 89 after
+  const std::optional<Recording> r = b.axis.recorder().recording(50);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->samples(), 100u);
+  EXPECT_EQ(r->trigger_index, 10u);
+  for (int j = 0; j < 90; ++j) EXPECT_NEAR(r->channels[0].values[10 + j], analytic_position(1 + j), 1.0);
+}
+
 // The trigger sample is the first at or past the level; the sample before it lies below.
 TEST(recorder_trigger, RisingLevelOnTheReferenceVelocity) {
   Bench b;

@@ -13,6 +13,9 @@
 #include "controller/controller.h"
 #include "dialect_choice.h"
 #include "drive/axis.h"
+#include "drive/recording_csv.h"
+#include "plot_recording.h"
+#include "transcript/recording_options.h"
 #include "transcript/transcript.h"
 #include "support/files.h"
 
@@ -29,7 +32,14 @@ struct RunOptions {
   std::vector<std::string> inputs;  // N=LEVEL@TIME
   std::vector<std::string> faults;  // NAME@TIME
   std::string record;               // PX,VX,myvar
+  std::string trigger = "immediate";
+  std::string pretrigger = "0";
+  std::string length;               // empty: the whole run (immediate, no pre-trigger) or 1000
+  std::string gap = "1";
   std::string csv;
+  std::string plot;
+  std::string expect;
+  std::vector<std::string> tolerances;  // CH=VALUE
   std::vector<std::string> then;
 };
 
@@ -39,17 +49,6 @@ struct Scheduled {
   bool level = false;
   std::string fault;  // empty for an input
 };
-
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  size_t start = 0;
-  for (;;) {
-    const size_t p = s.find(sep, start);
-    out.push_back(s.substr(start, p == std::string::npos ? std::string::npos : p - start));
-    if (p == std::string::npos) return out;
-    start = p + 1;
-  }
-}
 
 bool parse_schedule(const RunOptions& o, std::vector<Scheduled>& out) {
   for (const std::string& s : o.inputs) {
@@ -87,6 +86,69 @@ std::string shown(const controller::Answer& a) {
   return a.is_error() ? fmt::format("Error: {} (EC {})", a.text, a.error) : a.text;
 }
 
+// Arms the drive's recorder for --record before any time passes; "" or why not.
+std::string arm_recorder(controller::Controller& drive, const RunOptions& o, uint64_t duration_us, bool& length_given) {
+  transcript::RecordRequest request;
+  request.channels = o.record;
+  request.trigger = o.trigger;
+  request.early_trigger = true;  // a BG right after the start still gets its recording
+  if (!transcript::parse_count(o.pretrigger, 100, request.pretrigger_percent)) return "--pretrigger takes 0..100";
+  if (!transcript::parse_count(o.gap, 1u << 20, request.gap_cycles) || request.gap_cycles == 0)
+    return "--gap takes a number of servo cycles, 1 or more";
+  length_given = !o.length.empty();
+  if (length_given) {
+    if (!transcript::parse_count(o.length, UINT32_MAX, request.length) || request.length == 0)
+      return "--length takes a number of samples, 1 or more";
+  } else if (o.trigger == "immediate" && request.pretrigger_percent == 0) {
+    // The whole run, as far as the recorder's memory goes.
+    const uint64_t cycles = duration_us / std::max<uint64_t>(drive.axis().period_us(), 1) / request.gap_cycles + 1;
+    const size_t channels = static_cast<size_t>(std::count(o.record.begin(), o.record.end(), ',') + 1);
+    request.length = static_cast<uint32_t>(std::min<uint64_t>(cycles, drive::kMaxRecorderWords / channels));
+  }
+  drive::RecorderSettings settings;
+  if (std::string why = transcript::recorder_settings(drive, request, settings); !why.empty()) return "--record: " + why;
+  std::string why;
+  if (!drive.recorder().arm(settings, &why)) return "--record: " + why;
+  return {};
+}
+
+// After the run: the recording to --csv, --plot and --expect; 0, or the exit code.
+int finish_recording(controller::Controller& drive, const RunOptions& o, const std::vector<drive::Tolerance>& tolerances) {
+  const std::optional<drive::Recording> r = drive.recorder().recording(drive.axis().period_us());
+  if (!r) {
+    fmt::print(stderr, "uprog run: the recorder was never triggered ({}), nothing recorded\n", o.trigger);
+    return 4;
+  }
+  std::string error;
+  if (!o.csv.empty()) {
+    const std::string csv = drive::write_recording_csv(*r);
+    if (!write_file_atomically(o.csv, csv.data(), csv.size(), &error)) {
+      fmt::print(stderr, "uprog run: {}\n", error);
+      return 2;
+    }
+  }
+  if (!o.plot.empty()) {
+    if (!plot_recording(*r, o.file, o.plot, &error)) {
+      fmt::print(stderr, "uprog run: {}\n", error);
+      return 2;
+    }
+    fmt::print("plot: {}\n", o.plot);
+  }
+  if (o.expect.empty()) return 0;
+  const std::optional<std::string> text = read_text_file(o.expect, &error);
+  const std::optional<drive::Recording> expected = text ? drive::read_recording_csv(*text, &error) : std::nullopt;
+  if (!expected) {
+    fmt::print(stderr, "uprog run: --expect {}: {}\n", o.expect, error);
+    return 2;
+  }
+  if (const std::optional<drive::Difference> d = drive::compare(*r, *expected, tolerances)) {
+    fmt::print(stderr, "uprog run: the recording differs from {}: {}\n", o.expect, d->text);
+    return 5;
+  }
+  fmt::print("recording matches {} ({} samples)\n", o.expect, r->samples());
+  return 0;
+}
+
 int run(const RunOptions& o) {
   controller::ControllerOptions copts;
   copts.dialect = choose_dialect(o.dialect, o.file, "run");
@@ -110,10 +172,19 @@ int run(const RunOptions& o) {
   }
   std::vector<Scheduled> schedule;
   if (!parse_schedule(o, schedule)) return 2;
-  const std::vector<std::string> signals = o.record.empty() ? std::vector<std::string>{} : split(o.record, ',');
-  if (!signals.empty() && o.csv.empty()) {
-    fmt::print(stderr, "uprog run: --record needs --csv OUT\n");
+  const bool recording = !o.record.empty();
+  if (recording && o.csv.empty() && o.plot.empty() && o.expect.empty()) {
+    fmt::print(stderr, "uprog run: --record needs --csv OUT, --plot FILE.png or --expect REFERENCE.csv\n");
     return 2;
+  }
+  std::vector<drive::Tolerance> tolerances;
+  for (const std::string& t : o.tolerances) {
+    drive::Tolerance tol;
+    if (!transcript::parse_tolerance(t, tol)) {
+      fmt::print(stderr, "uprog run: --tolerance {}: expected CHANNEL=VALUE, e.g. PX=2\n", t);
+      return 2;
+    }
+    tolerances.push_back(tol);
   }
 
   controller::Controller drive(copts);
@@ -126,9 +197,15 @@ int run(const RunOptions& o) {
     return 1;
   }
 
-  std::string csv;
-  if (!signals.empty()) csv = "time_us," + o.record + "\n";
   const uint64_t period = drive.axis().period_us();
+  bool length_given = false;
+  if (recording) {
+    const std::string why = arm_recorder(drive, o, duration_us, length_given);
+    if (!why.empty()) {
+      fmt::print(stderr, "uprog run: {}\n", why);
+      return 2;
+    }
+  }
   bool run_time_error = false;
   auto print_log = [&] {
     for (const controller::LogEntry& e : drive.take_log()) {
@@ -142,7 +219,10 @@ int run(const RunOptions& o) {
   // Without --for, the run ends once the program has ended, nothing is scheduled any more and
   // the axis is at rest (in position, or its motor off): what the motor did is then complete.
   const auto idle = [&] {
-    return until_idle && !drive.program_running() && next == schedule.size() && drive.axis().at_rest();
+    // A recording of a given length goes on after the trigger until it is complete.
+    const bool recording_on = length_given && drive.recorder().state() == drive::RecorderState::kTriggered;
+    return until_idle && !drive.program_running() && next == schedule.size() && drive.axis().at_rest() &&
+           !recording_on;
   };
   while (drive.now_us() - start < duration_us && !idle()) {
     while (next < schedule.size() && schedule[next].at_us <= drive.now_us() - start) {
@@ -157,22 +237,11 @@ int run(const RunOptions& o) {
         return 2;
       }
     }
-    drive.advance(signals.empty() ? std::min<uint64_t>(period * 20, duration_us - (drive.now_us() - start)) : period);
+    drive.advance(std::min<uint64_t>(period * 20, duration_us - (drive.now_us() - start)));
     print_log();
-    if (!signals.empty()) {
-      csv += std::to_string(drive.now_us() - start);
-      for (const std::string& s : signals) {
-        const std::vector<controller::Answer> a = drive.query(s);
-        csv += "," + (a.size() == 1 && !a[0].is_error() ? a[0].text : std::string());
-      }
-      csv += "\n";
-    }
   }
-  std::string error;
-  if (!signals.empty() && !write_file_atomically(o.csv, csv.data(), csv.size(), &error)) {
-    fmt::print(stderr, "uprog run: {}\n", error);
-    return 2;
-  }
+  int recording_result = 0;
+  if (recording) recording_result = finish_recording(drive, o, tolerances);
   fmt::print("after {:.3f} ms: {}", static_cast<double>(drive.now_us() - start) / 1000.0,
              drive.firmware().state_summary());
   if (drive.program_error() != 0) fmt::print(" error={} ({})", drive.program_error(), drive.program_error_text());
@@ -181,6 +250,7 @@ int run(const RunOptions& o) {
     for (const controller::Answer& a : drive.send(line)) fmt::print("{}\n", shown(a));
   }
   print_log();
+  if (recording_result != 0) return recording_result;
   return run_time_error ? 3 : 0;
 }
 
@@ -196,8 +266,17 @@ void add_run(CLI::App* cmd, Action& action) {
   cmd->add_option("--budget", o->budget, "source lines per servo cycle, or 'unlimited' (default 1)");
   cmd->add_option("--input", o->inputs, "N=LEVEL@TIME: set digital input N at TIME");
   cmd->add_option("--fault", o->faults, "NAME@TIME: latch a drive fault at TIME");
-  cmd->add_option("--record", o->record, "comma-separated signals to sample every servo cycle (PX,VX,myvar)");
-  cmd->add_option("--csv", o->csv, "where --record writes its samples");
+  cmd->add_option("--record", o->record, "comma-separated channels for the drive's recorder: signals and globals (PX,VX,myvar)");
+  cmd->add_option("--trigger", o->trigger,
+                  "immediate, begin, rising:CH:LEVEL, falling:CH:LEVEL, leave:CH:LOW:HIGH, enter:CH:LOW:HIGH, input:N:rise|fall")
+      ->capture_default_str();
+  cmd->add_option("--pretrigger", o->pretrigger, "percent of the recording before the trigger")->capture_default_str();
+  cmd->add_option("--length", o->length, "samples per channel (default: the whole run with an immediate trigger, else 1000)");
+  cmd->add_option("--gap", o->gap, "servo cycles between samples")->capture_default_str();
+  cmd->add_option("--csv", o->csv, "where the recording goes (docs/recorder.md, \"The CSV file\")");
+  cmd->add_option("--plot", o->plot, "draw the recording: FILE.png or FILE.svg");
+  cmd->add_option("--expect", o->expect, "a reference recording (CSV): the run fails where this one differs");
+  cmd->add_option("--tolerance", o->tolerances, "CHANNEL=VALUE: how far --expect lets a channel differ");
   cmd->add_option("--then", o->then, "a command line sent after the run; its answers are printed");
   cmd->callback([&action, o] { action = [o] { return run(*o); }; });
 }

@@ -18,6 +18,7 @@
 #include "dialects/gold/download_receiver.h"
 #include "dialects/gold/drive_commands.h"
 #include "dialects/gold/interpreter_errors.h"
+#include "dialects/gold/recorder_signals.h"
 #include "vm/machine.h"
 
 namespace uprog::gold {
@@ -46,6 +47,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::string program_error_text() const override;
   std::string state_summary() const override;
   std::vector<dialect::ThreadInfo> threads() const override;
+  const dialect::LoadedProgram* loaded_program() const override { return program_.get(); }
+  std::optional<drive::Signal> recorder_signal(std::string_view n) const override { return gold::recorder_signal(n); }
 
   // --- vm::Host: drive commands, plus MI, PS and EC that the firmware keeps ---
   vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override;
