@@ -238,7 +238,10 @@ void Recorder::take_sample(const Axis& axis) {
 }
 
 void Recorder::on_cycle(const Axis& axis) {
-  if (!fired_ && trigger_fired(axis)) fired_ = true;
+  if (!fired_ && trigger_fired(axis)) {
+    fired_ = true;
+    if (pre_ == 0) phase_ = 0;  // no earlier samples to keep in step with: the trigger cycle is one
+  }
   if (phase_ != 0) {
     --phase_;
     return;

@@ -2,7 +2,13 @@
 #include "transcript/recording_options.h"
 
 #include <charconv>
+#include <filesystem>
+#include <sstream>
 #include <vector>
+
+#include "drive/axis.h"
+#include "drive/recording_csv.h"
+#include "support/files.h"
 
 namespace uprog::transcript {
 namespace {
@@ -90,6 +96,50 @@ bool parse_tolerance(const std::string& text, drive::Tolerance& out) {
 bool parse_count(const std::string& text, uint32_t max, uint32_t& out) {
   const auto [p, e] = std::from_chars(text.data(), text.data() + text.size(), out);
   return !text.empty() && e == std::errc() && p == text.data() + text.size() && out <= max;
+}
+
+std::string record_directive(controller::Controller& drive, const std::string& arg) {
+  std::istringstream words(arg);
+  RecordRequest request;
+  request.early_trigger = true;
+  if (!(words >> request.channels)) return "expected 'record CHANNELS [trigger=SPEC] [pretrigger=P] [length=N] [gap=N]'";
+  for (std::string w; words >> w;) {
+    const size_t eq = w.find('=');
+    const std::string key = w.substr(0, eq), value = eq == std::string::npos ? std::string() : w.substr(eq + 1);
+    bool ok = true;
+    if (key == "trigger") request.trigger = value;
+    else if (key == "pretrigger") ok = parse_count(value, 100, request.pretrigger_percent);
+    else if (key == "length") ok = parse_count(value, UINT32_MAX, request.length) && request.length > 0;
+    else if (key == "gap") ok = parse_count(value, 1u << 20, request.gap_cycles) && request.gap_cycles > 0;
+    else return "unknown setting '" + w + "' (trigger=, pretrigger=, length=, gap=)";
+    if (!ok || value.empty()) return "'" + w + "' needs a whole number in range";
+  }
+  drive::RecorderSettings settings;
+  if (std::string why = recorder_settings(drive, request, settings); !why.empty()) return why;
+  std::string why;
+  return drive.recorder().arm(settings, &why) ? std::string() : why;
+}
+
+std::string expect_directive(controller::Controller& drive, const std::string& arg, const std::string& base_dir) {
+  std::istringstream words(arg);
+  std::string file;
+  if (!(words >> file)) return "needs a recording's CSV file: 'expect FILE.csv [CH=TOLERANCE ...]'";
+  std::vector<drive::Tolerance> tolerances;
+  for (std::string w; words >> w;) {
+    drive::Tolerance t;
+    if (!parse_tolerance(w, t)) return file + ": '" + w + "' is no CHANNEL=TOLERANCE";
+    tolerances.push_back(t);
+  }
+  const std::filesystem::path path =
+      std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : std::filesystem::path(base_dir) / file;
+  std::string error;
+  const std::optional<std::string> text = read_text_file(path.string(), &error);
+  const std::optional<drive::Recording> expected = text ? drive::read_recording_csv(*text, &error) : std::nullopt;
+  if (!expected) return file + ": " + error;
+  const std::optional<drive::Recording> actual = drive.recorder().recording(drive.axis().period_us());
+  if (!actual) return file + ": the recorder has not been triggered (is a 'record' line before it?)";
+  const std::optional<drive::Difference> d = drive::compare(*actual, *expected, tolerances);
+  return d ? file + ": " + d->text : std::string();
 }
 
 }  // namespace uprog::transcript

@@ -23,6 +23,13 @@ struct RecordRequest {
 // "" when `out` holds the settings, else why not ("no channel 'PQ': …", "trigger 'x': …").
 std::string recorder_settings(controller::Controller& drive, const RecordRequest& request,
                               drive::RecorderSettings& out);
+// A transcript's `record CHANNELS [trigger=SPEC] [pretrigger=P] [length=N] [gap=N]`: arms the
+// recorder; "" or why not.
+std::string record_directive(controller::Controller& drive, const std::string& arg);
+// A transcript's `expect FILE.csv [CH=TOLERANCE ...]`: the recorder's recording against the file
+// (relative to `base_dir`); "" when they agree, else "FILE: the first difference".
+std::string expect_directive(controller::Controller& drive, const std::string& arg, const std::string& base_dir);
+
 // "CH=VALUE"; false when it is not.
 bool parse_tolerance(const std::string& text, drive::Tolerance& out);
 // A whole number 0..max from text; false when it is not.

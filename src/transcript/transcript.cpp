@@ -1,5 +1,5 @@
 // The transcript runner; the directives are those of shared/spec/transcript.md and
-// docs/transcripts.md (output, quiet, program-error).
+// docs/transcripts.md (output, quiet, program-error, record, expect).
 #include "transcript/transcript.h"
 
 #include <cctype>
@@ -12,6 +12,7 @@
 #include "dialects/registry.h"
 #include "drive/axis.h"
 #include "support/files.h"
+#include "transcript/recording_options.h"
 
 namespace uprog::transcript {
 
@@ -177,6 +178,11 @@ class Runner {
       double offset = 0;
       if (!parse_number(arg, offset)) fail(number, "index needs 'index OFFSET' in motor counts");
       else drive().axis().place_index_pulse(offset);
+    } else if (directive == "record") {
+      if (const std::string why = record_directive(drive(), arg); !why.empty()) fail(number, "record: " + why);
+    } else if (directive == "expect") {
+      ++result_.checks;
+      if (const std::string why = expect_directive(drive(), arg, base_dir_); !why.empty()) fail(number, "expect " + why);
     } else if (directive == "fault") {
       if (!drive().inject_fault(arg)) fail(number, "no fault named '" + arg + "'");
     } else if (directive == "program-error") {
