@@ -128,6 +128,7 @@ class Recorder {
 
   // The program words global channels read; null: they read 0.
   void set_program_words(const ProgramWords* words) { words_ = words; }
+  const ProgramWords* program_words() const { return words_; }
   // A BG was performed; the next cycle sees it.
   void on_begin() { begun_ = true; }
   // After each servo step while active(): evaluate the trigger, take a sample every gap cycles.

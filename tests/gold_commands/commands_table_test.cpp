@@ -19,7 +19,8 @@ const char* const kSpecCommands[] = {
 // Issue 12's list (docs/dialects/gold.md, "Commands from the reference"), with IQ and HX that
 // host drivers send.
 const char* const kReferenceCommands[] = {"HM", "CA", "QP", "TR", "TI", "WS", "EO", "LL", "HL", "FP",
-                                          "FV", "VR", "SN", "MP", "PT", "PY", "PM", "IQ", "HX"};
+                                          "FV", "VR", "SN", "MP", "PT", "PY", "PM", "IQ", "HX",
+                                          "RC", "RP"};  // issue 17: the recorder's
 
 const CommandInfo& get(const char* name) {
   const CommandInfo* c = find_command(name);

@@ -67,7 +67,8 @@ const std::map<std::string, Sample> kWritable{
     {"TM", {0, false, 100, 100}},      {"TS", {0, false, 100, 100}},
     {"UI", {24, false, -17, -17}},     {"UF", {1, true, 1.5, 1.5}},
     {"RV", {8, false, 3, 3}},          {"RL", {0, false, 500, 500}},
-    {"RG", {0, false, 4, 4}},          {"RR", {0, false, 1, 1}},
+    {"RG", {0, false, 4, 4}},          {"RR", {0, false, 0, -1}},  // RR=0 kills; no valid data
+    {"RC", {0, false, 5, 5}},          {"RP", {2, false, 20, 20}},
     {"HM", {2, false, 1234, 1234}},    {"CA", {19, false, 4, 4}},
     {"QP", {10, false, -5, -5}},       {"TR", {1, false, 50, 50}},
     {"EO", {0, false, 0, 0}},          {"LL", {2, false, -3000000, -3000000}},
@@ -113,7 +114,7 @@ TEST(gold_commands_mapping, EveryCommandIsReadWrittenOrExecuted) {
       EXPECT_EQ(v.i, static_cast<int32_t>(s.read_back)) << c.name;
     }
   }
-  EXPECT_EQ(served, 62);
+  EXPECT_EQ(served, 64);  // with the recorder's RC and RP (issue 17)
   // The actions the drive serves.
   EXPECT_EQ(f.commands.execute(id("ST"), 0), kDriveOk);
   f.write_int("UM", 5);

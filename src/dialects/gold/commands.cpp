@@ -82,10 +82,10 @@ constexpr std::array kCommands{
     CommandInfo{"LS", 50, kI, kHostAct, 0, 0, 0, 0, "list the program (host only)"},
     CommandInfo{"EC", 51, kI, kR, 0, 0, 0, kIntMax, "code of the interpreter's last error"},
     CommandInfo{"DB", 52, kI, kHostAct, 0, 0, 0, 0, "DB##RV[n]=name: map a user variable to a recorder signal"},
-    CommandInfo{"RV", 53, kI, kIx, 1, 8, 0, 1023, "recorder signal n"},
+    CommandInfo{"RV", 53, kI, kIx, 1, 8, 0, 1023, "recorder: the signal RC's bit n-1 records (recorder_signals.cpp)"},
     CommandInfo{"RL", 54, kI, 0, 0, 0, 1, 65536, "recorder length, samples"},
-    CommandInfo{"RG", 55, kI, 0, 0, 0, 1, 65535, "recorder gap, servo cycles"},
-    CommandInfo{"RR", 56, kI, 0, 0, 0, 0, 1, "recorder: 1 starts a recording"},
+    CommandInfo{"RG", 55, kI, 0, 0, 0, 1, 4096, "recorder gap, time quanta (RP[0])"},
+    CommandInfo{"RR", 56, kI, 0, 0, 0, -1, 3, "recorder: -1 invalidate, 0 kill, 1 on BG, 2 now, 3 on RP's trigger; reads its status"},
     // From the Elmo reference (docs/dialects/gold.md)
     CommandInfo{"HM", 57, kI, kIx, 1, 7, kIntMin, kIntMax, "homing: [1] arm, [2] value, [3] event, [4] action, [5] PX, [6] output, [7] capture"},
     CommandInfo{"CA", 58, kI, kIx | kMotorOffOnly, 1, 50, kIntMin, kIntMax, "commutation and feedback set-up; CA[18] counts per revolution"},
@@ -106,6 +106,8 @@ constexpr std::array kCommands{
     CommandInfo{"PM", 73, kI, 0, 0, 0, 0, 1, "profiler mode in UM=2: 1 ramps to JV, 0 steps"},
     CommandInfo{"IQ", 74, kF, kR, 0, 0, -1e6, 1e6, "active (torque) current, A"},
     CommandInfo{"HX", 75, kI, 0, 0, 0, 0, 1, "hexadecimal answers: 1 on, 0 off"},
+    CommandInfo{"RC", 76, kI, 0, 0, 0, 0, 255, "recorder: bit n-1 records RV[n]"},
+    CommandInfo{"RP", 77, kI, kIx, 0, 9, kIntMin, kIntMax, "recorder: [0] quantum, [1] trigger signal, [2] pre-trigger %, [3] trigger type, [4] [5] levels, [6] [7] input polarity and mask, [8] [9] upload range"},
 };
 
 // find_command(id) indexes the table directly: row i must hold id i + 1.

@@ -15,7 +15,7 @@ enum Id : uint16_t {
   MO = 1, SO, UM, PA, PR, SP, AC, DC, SD, SF, JV, BG, ST, TC, PX, VX, PE, DV, MS, ER, VH, VL, XM,
   KP, KI, KV, CL, PL, IL, IP, IB, OP, OB, MF, SR, TM, TS, UI, UF, SV, LD, RS, MI, XQ, HP, XC, KL,
   PS, CC, LS, EC, DB, RV, RL, RG, RR,
-  HM, CA, QP, TR, TI, WS, EO, LL, HL, FP, FV, VR, SN, MP, PT, PY, PM, IQ, HX,
+  HM, CA, QP, TR, TI, WS, EO, LL, HL, FP, FV, VR, SN, MP, PT, PY, PM, IQ, HX, RC, RP,
 };
 
 bool from_reference(uint16_t id) { return id >= HM; }
@@ -89,6 +89,7 @@ int32_t DriveCommands::read(uint16_t id, int32_t index, Value& out) {
   const CommandInfo* info = nullptr;
   if (const int32_t e = check(id, index, info)) return e;
   if (info->flags & kAction) return kErrorNoValue;
+  if (RecorderCommands::serves(id)) return recorder_.read(id, index, out);
   if (from_reference(id)) return read_reference(id, index, out);
   const drive::Parameters& p = axis_.parameters();
   auto i = [&](int32_t v) { out = Value::of_int(v); return kDriveOk; };
@@ -131,10 +132,6 @@ int32_t DriveCommands::read(uint16_t id, int32_t index, Value& out) {
     case TS: return i(p.servo_period_us);
     case UI: return i(p.user_ints[slot(index)]);
     case UF: return f(p.user_floats[slot(index)]);
-    case RV: return i(recorder_.signals[slot(index)]);
-    case RL: return i(recorder_.length);
-    case RG: return i(recorder_.gap_cycles);
-    case RR: return i(recorder_.start);
     default: return kErrorBadCommand;
   }
 }
@@ -146,6 +143,7 @@ int32_t DriveCommands::write(uint16_t id, int32_t index, Value value) {
   if (info->flags & kReadOnly) return kErrorReadOnly;
   if (!in_range(*info, value)) return kErrorOutOfRange;
   if ((info->flags & kMotorOffOnly) && axis_.motor_on()) return kErrorMotorMustBeOff;
+  if (RecorderCommands::serves(id)) return recorder_.write(id, index, value);
   if (from_reference(id)) return write_reference(id, index, value);
   drive::Parameters& p = axis_.parameters();
   const int32_t v = value.i;
@@ -178,17 +176,13 @@ int32_t DriveCommands::write(uint16_t id, int32_t index, Value value) {
     case TS: return error_for(axis_.set_period_us(v));
     case UI: p.user_ints[slot(index)] = v; break;
     case UF: p.user_floats[slot(index)] = value.f; break;
-    case RV: recorder_.signals[slot(index)] = v; break;
-    case RL: recorder_.length = v; break;
-    case RG: recorder_.gap_cycles = v; break;
-    case RR: recorder_.start = v; break;
     default: return kErrorBadCommand;
   }
   return kDriveOk;
 }
 
 uint32_t DriveCommands::status_register() const {
-  uint32_t sr = axis_.status_register();
+  uint32_t sr = axis_.status_register() | recorder_.status_bits();
   if (program_state_) {
     const ProgramState state = program_state_();
     if (state.running) sr |= drive::kSrProgramRunning;

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "dialects/gold/commands.h"
+#include "dialects/gold/recorder_commands.h"
 #include "drive/axis.h"
 #include "support/value.h"
 
@@ -39,14 +40,6 @@ enum DriveError : int32_t {
 // RS, DB) are the controller's.
 bool handled_by_drive(uint16_t id);
 
-// Recorder settings (RV, RL, RG, RR) are kept here until a recorder takes them over.
-struct RecorderSettings {
-  std::array<int32_t, 8> signals{};
-  int32_t length = 1024;
-  int32_t gap_cycles = 1;
-  int32_t start = 0;
-};
-
 // What SR reports of the user program (bits 12 and 29); the program's host knows it.
 struct ProgramState {
   bool running = false;  // SR bit 12
@@ -61,7 +54,7 @@ inline constexpr int32_t kTemperature_c = 25;  // TI[n]: no thermal model, ambie
 
 class DriveCommands {
  public:
-  explicit DriveCommands(drive::Axis& axis) : axis_(axis) {}
+  explicit DriveCommands(drive::Axis& axis) : axis_(axis), recorder_(axis) {}
 
   // SR's program bits come from here; without a source they read 0.
   void set_program_state_source(ProgramStateSource source) { program_state_ = std::move(source); }
@@ -79,14 +72,15 @@ class DriveCommands {
   int32_t write(uint16_t id, int32_t index, Value value);
   int32_t execute(uint16_t id, int32_t index);
 
-  const RecorderSettings& recorder() const { return recorder_; }
+  // RV, RC, RL, RG, RP, RR (recorder_commands.h); DB##RV[n] maps its variables.
+  RecorderCommands& recorder() { return recorder_; }
 
  private:
   int32_t read_reference(uint16_t id, int32_t index, Value& out);
   int32_t write_reference(uint16_t id, int32_t index, Value value);
 
   drive::Axis& axis_;
-  RecorderSettings recorder_;
+  RecorderCommands recorder_;
   ProgramStateSource program_state_;
   int32_t echo_ = 1;  // EO: a real drive echoes until the host sends EO=0
   int32_t hex_ = 0;   // HX

@@ -207,6 +207,7 @@ int32_t Firmware::map_recorder(const std::string& text) {
     if (g.name != name) continue;
     if (element < 0 || element >= std::max<int32_t>(g.length, 1)) return kErrorBadIndex;
     recorder_map_[n] = text.substr(close + 2);
+    drive_commands_->recorder().map_variable(n, text.substr(close + 2));
     return 0;
   }
   return kErrorNoSuchVariable;
