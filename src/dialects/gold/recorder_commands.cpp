@@ -13,7 +13,7 @@
 namespace uprog::gold {
 namespace {
 
-// Ids of commands.cpp (recorder_commands_test checks them against the names).
+// Ids of commands.cpp (gold_recorder_commands_test checks them against the names).
 enum Id : uint16_t { RV = 53, RL = 54, RG = 55, RR = 56, RC = 76, RP = 77 };
 
 constexpr int32_t kErrorOutOfRange = 21;       // as drive_commands.h's
