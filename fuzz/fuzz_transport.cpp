@@ -1,7 +1,7 @@
 // libFuzzer target: the wire protocol's framing (src/dialect, src/transport). The host's bytes go through a
 // LineFramer in one piece and in chunks the input chooses, which must give the same frames, and
 // through a HostSession whose service echoes each line; the drive's answers go back through the
-// host's AnswerReader. Memory must stay bounded by the line limit.
+// host's EchoFilter and AnswerReader. Memory must stay bounded by the line limit.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -12,15 +12,33 @@
 #include "dialect/line_framer.h"
 #include "dialect/semicolon_wire.h"
 #include "transport/answer_reader.h"
+#include "transport/echo_filter.h"
 #include "transport/host_session.h"
 
 namespace {
+
+// The semicolon wire, echoing every byte as a real Elmo drive does while EO=1 when `echo` is set.
+class EchoingWire final : public uprog::dialect::WireForm {
+ public:
+  EchoingWire(uprog::dialect::FramerOptions options, bool echo) : plain_(options), echo_(echo) {}
+  uprog::dialect::FramerOptions framing() const override { return plain_.framing(); }
+  void write_answer(const uprog::dialect::Answer& a, std::string& out) const override { plain_.write_answer(a, out); }
+  void write_silent_line(std::string& out) const override { plain_.write_silent_line(out); }
+  void write_line_end(std::string& out) const override { plain_.write_line_end(out); }
+  void write_output(std::string_view text, std::string& out) const override { plain_.write_output(text, out); }
+  void write_echo(std::string_view bytes, std::string& out) const override { out += bytes; }
+  bool echoes() const override { return echo_; }
+
+ private:
+  uprog::dialect::SemicolonWire plain_;
+  bool echo_;
+};
 
 // Answers every line with its own text, and an error for lines starting with '!'; its wire is
 // the semicolon wire with the framing the input chose.
 class EchoService final : public uprog::transport::LineService {
  public:
-  explicit EchoService(uprog::dialect::FramerOptions options) : wire_(options) {}
+  EchoService(uprog::dialect::FramerOptions options, bool echo) : wire_(options, echo) {}
   std::vector<uprog::transport::Reply> handle_line(std::string_view line) override {
     if (!line.empty() && line[0] == '!') return {{std::string(line.substr(1)), 19}};
     return {{std::string(line), 0}};
@@ -29,7 +47,7 @@ class EchoService final : public uprog::transport::LineService {
   const uprog::dialect::WireForm& wire() const override { return wire_; }
 
  private:
-  uprog::dialect::SemicolonWire wire_;
+  EchoingWire wire_;
 };
 
 }  // namespace
@@ -38,12 +56,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace uprog::transport;
   using uprog::dialect::FramerOptions, uprog::dialect::LineFramer, uprog::dialect::Frame;
   if (size < 2) return 0;
-  // Byte 0: options; byte 1: the chunk size for the chunked feed.
+  // Byte 0: options; byte 1: empty expressions answered (bit 7), an echoing drive (bit 6), the
+  // chunk size for the chunked feed (the rest).
   FramerOptions options;
   options.max_line_length = 1 + (data[0] & 0x3f) * 8;
   options.semicolon_ends_line = (data[0] & 0x40) == 0;
   if (data[0] & 0x80) options.comment_marker = "";
-  const size_t chunk = 1 + data[1] % 17;
+  options.answer_empty_expressions = (data[1] & 0x80) != 0;
+  const bool echo = (data[1] & 0x40) != 0;
+  const size_t chunk = 1 + (data[1] & 0x3f) % 17;
   const std::string_view bytes(reinterpret_cast<const char*>(data + 2), size - 2);
 
   LineFramer whole(options), pieces(options);
@@ -57,15 +78,22 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (const Frame& f : a)
     if (f.kind == Frame::Kind::kLine && f.text.size() > options.max_line_length) abort();
 
-  EchoService service(options);
+  EchoService service(options, echo);
   HostSession session(service);
   std::string wire;
   for (size_t at = 0; at < bytes.size(); at += chunk) session.receive(bytes.substr(at, chunk), wire);
   session.disconnect();
 
+  // The host takes what would be the echo out, in the same chunks; it never adds a byte.
+  EchoFilter filter;
+  filter.expect(bytes, ";\r\n");
+  std::string answers;
+  for (size_t at = 0; at < wire.size(); at += chunk) filter.feed(std::string_view(wire).substr(at, chunk), answers);
+  if (answers.size() > wire.size()) abort();
+
   AnswerReader reader;
   std::vector<AnswerEvent> events;
-  reader.feed(wire, events);
+  reader.feed(answers, events);
   reader.feed(bytes, events);  // and whatever a confused drive might send
   return 0;
 }

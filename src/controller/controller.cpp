@@ -25,6 +25,7 @@ class Controller::Drive final : public dialect::Runtime, public drive::ProgramWo
     dialect::FirmwareOptions firmware_options;
     firmware_options.timing = options_.timing;
     firmware_options.safe_boot = options_.safe_boot;
+    firmware_options.wire_style = options_.wire_style;
     firmware_ = options_.dialect->make_firmware(*this, firmware_options);
     reboot();
     console_ = firmware_->open_session();

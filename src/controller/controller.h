@@ -32,6 +32,7 @@ struct ControllerOptions {
   std::string state_dir;
   bool safe_boot = false;  // boot without starting the program
   Timing timing;
+  dialect::WireStyle wire_style = dialect::WireStyle::kDrive;  // what the transports speak
 };
 
 class Controller {

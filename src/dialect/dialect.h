@@ -58,6 +58,10 @@ class Dialect {
   // the one that then loads it to run ("" when storing is enough).
   virtual std::vector<std::string> download_lines(const std::vector<uint8_t>& stored_form) const = 0;
   virtual std::string load_line() const = 0;
+  // How the drive splits a host's lines into expressions when it answers each of them once and
+  // marks no line end (Gold's drive form): a host counts its answers with it. nullopt (the
+  // default): the drive ends the answers to each line with the wire's line end.
+  virtual std::optional<FramerOptions> host_framing() const { return std::nullopt; }
   // The largest stored form a drive takes over the wire.
   virtual std::size_t max_download_bytes() const = 0;
 };

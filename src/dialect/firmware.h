@@ -25,6 +25,7 @@ using Timing = scheduling::LineTiming;
 struct FirmwareOptions {
   Timing timing;
   bool safe_boot = false;  // boot without starting the program (Gold: no AUTOEXEC)
+  WireStyle wire_style = WireStyle::kDrive;
 };
 
 // The result of giving the drive a program's stored form.

@@ -33,11 +33,15 @@ void LineFramer::reset() {
   bad_character_ = false;
   in_comment_ = false;
   physical_line_has_content_ = false;
+  after_cr_ = false;
   marker_matched_ = 0;
 }
 
 void LineFramer::feed(std::string_view bytes, std::vector<Frame>& out) {
   for (const char c : bytes) {
+    const bool lf_of_cr_lf = c == '\n' && after_cr_;
+    after_cr_ = c == '\r';
+    if (lf_of_cr_lf && options_.answer_empty_expressions) continue;
     if (c == '\r' || c == '\n') {
       end_expression(out);
       in_comment_ = false;
@@ -104,7 +108,7 @@ void LineFramer::end_expression(std::vector<Frame>& out) {
     out.push_back({Frame::Kind::kTooLong, {}});
   } else if (bad_character_) {
     out.push_back({Frame::Kind::kBadCharacter, {}});
-  } else if (const auto text = trim(line_); !text.empty()) {
+  } else if (const auto text = trim(line_); !text.empty() || (options_.answer_empty_expressions && !in_comment_)) {
     out.push_back({Frame::Kind::kLine, std::string(text)});
   }
   line_.clear();

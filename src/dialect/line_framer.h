@@ -16,6 +16,9 @@ struct FramerOptions {
   std::size_t max_line_length = 255;    // characters of one line, comments excluded
   bool semicolon_ends_line = false;     // `;` ends a line, as CR and LF do
   std::string_view comment_marker = "";  // the rest of the physical line is ignored; "" for none
+  // An empty expression ended by `;`, CR or a lone LF is a line of its own (kLine with no text), as
+  // a real Elmo drive answers it; LF right after CR ends nothing. False: blank lines are dropped.
+  bool answer_empty_expressions = false;
 };
 
 // One thing the framer recognised in the byte stream.
@@ -55,6 +58,7 @@ class LineFramer {
   bool bad_character_ = false;
   bool in_comment_ = false;
   bool physical_line_has_content_ = false;
+  bool after_cr_ = false;
   std::size_t marker_matched_ = 0;  // characters of the comment marker seen at the end of line_
 };
 

@@ -2,6 +2,7 @@
 // answers, the end of a typed line and unsolicited output are written back. The transports ask
 // the controller's firmware for its WireForm and know no dialect's syntax.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -22,6 +23,22 @@ class WireForm {
   virtual void write_line_end(std::string& out) const = 0;
   // Appends text the drive sends on its own (a program's message); it starts and ends a line.
   virtual void write_output(std::string_view text, std::string& out) const = 0;
+  // Appends what the drive sends back the moment it receives `bytes` (a real Elmo drive echoes
+  // every character while EO=1); nothing by default.
+  virtual void write_echo(std::string_view bytes, std::string& out) const {
+    (void)bytes;
+    (void)out;
+  }
+  // True while write_echo() may append something, so the transport hands it bytes one by one.
+  virtual bool echoes() const { return false; }
+  // The answer to a line the framer refused before any command line saw it (too long, a bad
+  // byte); `standard` is the transport's own (docs/protocol.md: 900, 901).
+  virtual Answer framing_error(const Answer& standard) const { return standard; }
 };
+
+// Which of a drive's wire forms a firmware speaks, where its dialect has two: the bytes the
+// vendor's drive sends (the default: host software written for the real drive runs unchanged),
+// or uprog's readable form (error texts, a line end after each typed line) for people and tests.
+enum class WireStyle : std::uint8_t { kDrive, kReadable };
 
 }  // namespace uprog::dialect

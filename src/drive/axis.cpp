@@ -84,6 +84,11 @@ Status Axis::set_motor_on(bool on) {
   motor_on_ = true;
   servo_ready_ = false;
   enable_elapsed_us_ = 0;
+  // A program may set a target and begin during the enable delay (manual 2.18: MO=1, PR=..., BG):
+  // that target is relative to where the motor is now, and it survives the loop closing.
+  target_internal_ = raw_.position_counts;
+  pa_counts_ = internal_to_user(target_internal_);
+  target_set_while_enabling_ = false;
   return Status::kOk;
 }
 
@@ -136,6 +141,7 @@ int32_t Axis::internal_to_user(double internal) const {
 
 void Axis::set_absolute_target(int32_t target_counts) {
   pa_counts_ = target_counts;
+  if (motor_on_ && !servo_ready_) target_set_while_enabling_ = true;
   pending_ = Pending::kMove;
   if (modulo_active()) {
     // Go the shortest way round to the equivalent of the target.
@@ -152,6 +158,7 @@ void Axis::set_absolute_target(int32_t target_counts) {
 void Axis::set_relative_move(int32_t distance_counts) {
   pr_counts_ = distance_counts;
   pending_ = Pending::kMove;
+  if (motor_on_ && !servo_ready_) target_set_while_enabling_ = true;
   target_internal_ += distance_counts;
 }
 
@@ -639,8 +646,10 @@ uint32_t Axis::step() {
       smooth_position_.reset(1, raw_.position_counts);
       smooth_velocity_.reset(1, 0.0);
       smooth_accel_.reset(1, 0.0);
-      target_internal_ = raw_.position_counts;
-      pa_counts_ = internal_to_user(target_internal_);
+      if (!target_set_while_enabling_ && !moving_) {
+        target_internal_ = raw_.position_counts;
+        pa_counts_ = internal_to_user(target_internal_);
+      }
     }
   }
 

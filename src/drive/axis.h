@@ -193,6 +193,7 @@ class Axis {
 
   bool motor_on_ = false;
   bool servo_ready_ = false;
+  bool target_set_while_enabling_ = false;  // PA or PR came during the enable delay
   uint32_t enable_elapsed_us_ = 0;
   uint32_t fault_bits_ = 0;
   uint32_t fault_causes_ = 0;

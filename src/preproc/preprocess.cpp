@@ -192,7 +192,8 @@ class Preprocessor {
       return false;
     }
     if (!valid_name(w.text)) {
-      report(PreprocError::InvalidIdentifier, here(w.at));
+      report(PreprocError::InvalidIdentifier, here(w.at),
+             {{here(w.at), "'" + std::string(w.text) + "': a name starts with a letter and holds letters, digits and '_'"}});
       return false;
     }
     return true;
@@ -230,7 +231,9 @@ class Preprocessor {
   void run_undef(std::string_view args, size_t from, const Location& at) {
     const Word name = word_at(args, from);
     if (!check_name(name, at)) return;
-    if (!macros_.undefine(name.text)) return report(PreprocError::NotDefined, here(name.at));
+    if (!macros_.undefine(name.text)) {
+      return report(PreprocError::NotDefined, here(name.at), {{here(name.at), "'" + std::string(name.text) + "' is not defined"}});
+    }
     expander_.forget_failures();
   }
 

@@ -17,9 +17,18 @@ std::unique_ptr<DriveClient> DriveClient::connect(const std::string& address, st
   return client;
 }
 
+void DriveClient::count_answers(const dialect::FramerOptions& framing) { framing_ = framing; }
+
 bool DriveClient::send_line(std::string_view line) {
   std::string framed(line);
-  framed += "\r\n";
+  framed += framing_ ? "\r" : "\r\n";
+  answered_ = 0;
+  if (framing_) {
+    expected_ = dialect::frame_text(line, *framing_).size();
+    // A comment alone gets no answer and changes nothing; its echo would only be noise.
+    if (expected_ == 0) return true;
+    echo_.expect(framed, framing_->semicolon_ends_line ? ";\r\n" : "\r\n");
+  }
   std::string_view bytes = framed;
   while (!bytes.empty()) {
     const ssize_t n = ::send(socket_.native_handle(), bytes.data(), bytes.size(), MSG_NOSIGNAL);
@@ -33,6 +42,8 @@ DriveClient::Wait DriveClient::read_answers(std::chrono::milliseconds timeout, b
                                             const std::function<void(const Reply&)>& on_answer,
                                             const std::function<void(const std::string&)>& on_output) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
+  // Counting, a line without expressions (a comment) has nothing to wait for.
+  if (until_line_end && framing_ && expected_ == 0) return Wait::kLineDone;
   while (true) {
     for (; next_ < events_.size(); ++next_) {
       const AnswerEvent& event = events_[next_];
@@ -40,7 +51,16 @@ DriveClient::Wait DriveClient::read_answers(std::chrono::milliseconds timeout, b
         if (on_output) on_output(event.reply.text);
       } else if (!event.end_of_line) {
         on_answer(event.reply);
+        ++answered_;
+        if (framing_ && expected_ > 0 && --expected_ == 0 && until_line_end) {
+          ++next_;
+          return Wait::kLineDone;
+        }
+      } else if (framing_ && answered_ == 0) {
+        // A line end before any answer to this line closed the line before (a drive that marks
+        // line ends as well as answering each expression).
       } else if (until_line_end) {
+        expected_ = 0;
         ++next_;
         return Wait::kLineDone;
       }
@@ -54,7 +74,9 @@ DriveClient::Wait DriveClient::read_answers(std::chrono::milliseconds timeout, b
     char buffer[8192];
     const ssize_t n = ::read(socket_.native_handle(), buffer, sizeof buffer);
     if (n <= 0) return Wait::kClosed;
-    reader_.feed(std::string_view(buffer, static_cast<std::size_t>(n)), events_);
+    std::string answers;
+    echo_.feed(std::string_view(buffer, static_cast<std::size_t>(n)), answers);
+    reader_.feed(answers, events_);
   }
 }
 

@@ -10,8 +10,10 @@
 #include <string_view>
 #include <vector>
 
+#include "dialect/line_framer.h"
 #include "transport/answer_reader.h"
 #include "transport/asio.h"
+#include "transport/echo_filter.h"
 
 namespace uprog::transport {
 
@@ -22,7 +24,11 @@ class DriveClient {
   // Connects to "HOST:PORT" or "[V6]:PORT"; nullptr with `error` set when it cannot.
   static std::unique_ptr<DriveClient> connect(const std::string& address, std::string& error);
 
-  // Sends `line` and CR LF; false when the drive has gone.
+  // For a drive that marks no line ends (Gold's drive form): lines end with CR, each line's
+  // answers are counted by splitting it as `framing` says, and an echo is taken out of them.
+  void count_answers(const dialect::FramerOptions& framing);
+  // Sends `line` and CR LF (CR alone when counting, and nothing for a line of comments alone);
+  // false when the drive has gone.
   bool send_line(std::string_view line);
   // Hands each answer to `on_answer` as it comes, until the answers to one line have all come
   // (`until_line_end`), or until nothing more arrives within `timeout`. Lines the drive sends on
@@ -42,6 +48,10 @@ class DriveClient {
   AnswerReader reader_;
   std::vector<AnswerEvent> events_;
   std::size_t next_ = 0;
+  std::optional<dialect::FramerOptions> framing_;  // set: answers are counted
+  EchoFilter echo_;
+  std::size_t expected_ = 0;  // answers the line sent last still has to get, when counting
+  std::size_t answered_ = 0;  // answers it got so far
 };
 
 }  // namespace uprog::transport

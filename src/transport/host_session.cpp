@@ -18,6 +18,15 @@ void HostSession::deliver_output(std::string_view text, std::string& out) const 
 }
 
 void HostSession::receive(std::string_view bytes, std::string& out) {
+  // A drive that echoes sends each byte back before it answers the line the byte ends.
+  if (!service_.wire().echoes()) return take(bytes, out);
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
+    service_.wire().write_echo(bytes.substr(i, 1), out);
+    take(bytes.substr(i, 1), out);
+  }
+}
+
+void HostSession::take(std::string_view bytes, std::string& out) {
   const dialect::WireForm& wire = service_.wire();
   frames_.clear();
   framer_.feed(bytes, frames_);
@@ -30,10 +39,10 @@ void HostSession::receive(std::string_view bytes, std::string& out) {
         break;
       }
       case Frame::Kind::kTooLong:
-        wire.write_answer({"Line too long", kErrorLineTooLong}, out);
+        wire.write_answer(wire.framing_error({"Line too long", kErrorLineTooLong}), out);
         break;
       case Frame::Kind::kBadCharacter:
-        wire.write_answer({"Bad character", kErrorBadCharacter}, out);
+        wire.write_answer(wire.framing_error({"Bad character", kErrorBadCharacter}), out);
         break;
       case Frame::Kind::kLineBreak:
         wire.write_line_end(out);

@@ -25,6 +25,8 @@ class HostSession {
   void disconnect();
 
  private:
+  void take(std::string_view bytes, std::string& out);
+
   LineService& service_;
   std::unique_ptr<LineChannel> channel_;  // null when the service keeps nothing per host
   dialect::LineFramer framer_;

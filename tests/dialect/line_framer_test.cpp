@@ -161,5 +161,25 @@ TEST(transport_framer, RandomBytesNeverCrashAndStayBounded) {
   }
 }
 
+// A real Elmo drive answers every terminator (MAN-SIMSW 3.1: CR or `;` ends a command), an empty
+// expression too; CR LF is one terminator, a comment line no expression.
+FramerOptions drive_options() {
+  FramerOptions o = semicolon_options();
+  o.answer_empty_expressions = true;
+  return o;
+}
+
+TEST(transport_framer, DriveFormAnswersEmptyExpressions) {
+  EXPECT_EQ(frame(";", drive_options()), (std::vector<Frame>{line("")}));
+  EXPECT_EQ(frame("\r", drive_options()), (std::vector<Frame>{line("")}));
+  EXPECT_EQ(frame("PX;\r", drive_options()), (std::vector<Frame>{line("PX"), line(""), kBreak}));
+  EXPECT_EQ(frame("PX\r\nMO\r\n", drive_options()), (std::vector<Frame>{line("PX"), kBreak, line("MO"), kBreak}));
+  EXPECT_EQ(frame("\n\n", drive_options()), (std::vector<Frame>{line(""), line("")}));
+  EXPECT_EQ(frame("  ;", drive_options()), (std::vector<Frame>{line("")}));
+  EXPECT_EQ(frame("** a comment\r", drive_options()), (std::vector<Frame>{kBreak}));
+  // Without the option the same bytes give no empty lines.
+  EXPECT_EQ(frame("PX;\r"), (std::vector<Frame>{line("PX"), kBreak}));
+}
+
 }  // namespace
 }  // namespace uprog::dialect

@@ -165,6 +165,46 @@ TEST(transport_sim, TermInPipeMode) {
   EXPECT_NE(output.find("cannot connect"), std::string::npos);
 }
 
+// The drive form, as the SimplIQ software manual describes it (MAN-SIMSW 3.1, 3.2): every byte
+// echoed while EO=1, before the answer to the expression it ends; a value `VALUE;`, an error its
+// EC code as one byte and `?;`; an empty expression answered `;`; nothing between lines.
+TEST(transport_sim, DriveFormByteForByte) {
+  SimProcess sim({"--listen", "127.0.0.1:0", "--safe-boot", "--wire", "drive"});
+  TestClient client(sim.port);
+  ASSERT_TRUE(client.send("PX=7;PX-3\r3+4\rAC=-5\r\rEO=0\rPX;MO\rAC=-5\rEC\r"));
+  const std::string expected =
+      "PX=7;;PX-3\r4;"      // echo, answer, echo, answer
+      "3+4\r7;"
+      "AC=-5\r\x15?;"       // 21: out of the command's range
+      "\r;"                 // an empty line gets the empty answer
+      "EO=0\r;"             // still echoed: the echo was on when its bytes came
+      "7;0;"                // no echo from here on
+      "\x15?;"
+      "21;";                // EC names the last error
+  EXPECT_EQ(client.raw(expected.size(), 5s), expected);
+  EXPECT_EQ(client.raw(1, 300ms), "");  // no line end, no prompt
+  // A line too long for the drive is a syntax error (19) there, and the drive goes on.
+  ASSERT_TRUE(client.send(std::string(600, '1') + "\rPX\r"));
+  EXPECT_EQ(client.raw(5, 5s), "\x13?;7;");
+}
+
+TEST(transport_sim, TermAndDownloadSpeakTheDriveForm) {
+  SimProcess sim({"--listen", "127.0.0.1:0", "--safe-boot", "--wire", "drive"});
+  const std::string address = "127.0.0.1:" + std::to_string(sim.port);
+  int status = 0;
+  // Echo on at first, then off: the answers are the same; the error gets the dialect's text.
+  const auto output = run_shell("printf 'PX=7; PX-3\\nAC=-5\\n** a comment\\nEO=0\\nVR\\nPX;PX+1\\n' | " +
+                                    std::string(UPROG_BINARY) + " term " + address,
+                                &status);
+  EXPECT_EQ(WEXITSTATUS(status), 0) << output;
+  EXPECT_EQ(output, "4\n?21 Value out of the command's range\nuprog simulated Gold drive 1.0\n7\n8\n");
+  const auto download = run_shell(std::string(UPROG_BINARY) + " download " + address + " " + kCounterProgram +
+                                      " --load 2>&1",
+                                  &status);
+  EXPECT_EQ(WEXITSTATUS(status), 0) << download;
+  EXPECT_NE(download.find("loaded into RAM (CC)"), std::string::npos) << download;
+}
+
 TEST(transport_sim, DownloadOverTheWireWithUprogDownload) {
   char pattern[] = "/tmp/uprog_sim_download_XXXXXX";
   ASSERT_NE(::mkdtemp(pattern), nullptr);

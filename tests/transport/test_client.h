@@ -97,6 +97,24 @@ class TestClient {
     return closed;
   }
 
+ // The raw bytes the drive sends, until `count` have come or the timeout passes (no framing:
+  // for byte-exact tests of a wire form).
+  std::string raw(std::size_t count, std::chrono::milliseconds timeout) {
+    std::string out;
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    while (out.size() < count) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+          deadline - std::chrono::steady_clock::now());
+      pollfd p{fd_, POLLIN, 0};
+      if (left.count() <= 0 || ::poll(&p, 1, static_cast<int>(left.count())) <= 0) break;
+      char buffer[8192];
+      const ssize_t n = ::read(fd_, buffer, std::min(sizeof buffer, count - out.size()));
+      if (n <= 0) break;
+      out.append(buffer, static_cast<std::size_t>(n));
+    }
+    return out;
+  }
+
  private:
   template <class Done>
   void collect(std::chrono::milliseconds timeout, bool* closed, Done done) {

@@ -12,7 +12,7 @@
 #include "commands.h"
 #include "dialect_choice.h"
 #include "support/files.h"
-#include "transport/drive_client.h"
+#include "drive_link.h"
 
 namespace uprog::cli {
 namespace {
@@ -40,7 +40,8 @@ std::optional<std::vector<uint8_t>> stored_form_of(const std::string& path, cons
 }
 
 // Sends `line` and expects no error; prints the drive's error otherwise.
-bool send_expecting_success(transport::DriveClient& link, const std::string& line, std::chrono::milliseconds timeout) {
+bool send_expecting_success(transport::DriveClient& link, const dialect::Dialect& d, const std::string& line,
+                            std::chrono::milliseconds timeout) {
   std::string error;
   const auto replies = link.exchange(line, timeout, error);
   if (!replies) {
@@ -50,8 +51,7 @@ bool send_expecting_success(transport::DriveClient& link, const std::string& lin
   for (const transport::Reply& r : *replies) {
     if (r.error == 0) continue;
     const std::string shown = line.size() > 40 ? line.substr(0, 40) + "..." : line;
-    fmt::print(stderr, "uprog download: the drive answered {} with ?{}{}{}\n", shown, r.error,
-               r.text.empty() ? "" : " ", r.text);
+    fmt::print(stderr, "uprog download: the drive answered {} with {}\n", shown, shown_error(d, r));
     return false;
   }
   return true;
@@ -68,7 +68,7 @@ int run_download(const DownloadOptions& options) {
     return 1;
   }
   std::string error;
-  const auto client = transport::DriveClient::connect(options.address, error);
+  const auto client = connect_to_drive(options.address, *d, error);
   if (!client) {
     fmt::print(stderr, "uprog download: {}\n", error);
     return 1;
@@ -77,11 +77,11 @@ int run_download(const DownloadOptions& options) {
   const auto timeout = std::chrono::milliseconds(static_cast<long long>(options.timeout_s * 1000));
   // One line at a time: a refused chunk stops the transfer at once (the drive dropped it too).
   for (const std::string& line : d->download_lines(*image)) {
-    if (!send_expecting_success(link, line, timeout)) return 1;
+    if (!send_expecting_success(link, *d, line, timeout)) return 1;
   }
   fmt::print("downloaded {} bytes to {}\n", image->size(), options.address);
   if (options.load && !d->load_line().empty()) {
-    if (!send_expecting_success(link, d->load_line(), timeout)) return 1;
+    if (!send_expecting_success(link, *d, d->load_line(), timeout)) return 1;
     fmt::print("loaded into RAM ({})\n", d->load_line());
   }
   return 0;

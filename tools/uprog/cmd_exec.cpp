@@ -12,22 +12,31 @@
 #include "commands.h"
 #include "support/diagnostic.h"
 #include "support/files.h"
+#include "support/format_message.h"
 #include "vm/machine.h"
 
 namespace uprog::cli {
 namespace {
 
-// A host without a drive: commands are refused, time advances only by waits.
+// A host without a drive: commands are refused, time advances only by waits, messages are
+// printed on a line of their own.
 class BareHost final : public vm::Host {
  public:
+  explicit BareHost(const std::vector<std::string>& texts) : texts_(texts) {}
   vm::CommandStatus read(uint32_t, int32_t, Value&) override { return kNoDrive; }
   vm::CommandStatus write(uint32_t, int32_t, Value) override { return kNoDrive; }
   vm::CommandStatus execute(uint32_t, int32_t, const Value*, uint32_t) override { return kNoDrive; }
+  vm::CommandStatus message(uint32_t, uint32_t text, const Value* args, uint32_t count) override {
+    if (text >= texts_.size()) return kNoDrive;  // the verifier keeps this from happening
+    fmt::print("{}\n", format_message(texts_[text], args, count));
+    return vm::kCommandOk;
+  }
   uint32_t now_us() override { return now_us_; }
   void advance_to(uint32_t t) { now_us_ = t; }
 
  private:
   static constexpr vm::CommandStatus kNoDrive = 1;
+  const std::vector<std::string>& texts_;
   uint32_t now_us_ = 0;
 };
 
@@ -70,7 +79,7 @@ int run(const std::string& path, const std::string& entry) {
     return 1;
   }
 
-  BareHost host;
+  BareHost host(image.texts);
   const auto program = dialect::LoadedProgram::load(std::move(*bytes), vm::MachineConfig{}, host, &error, false);
   if (!program) {
     fmt::print(stderr, "uprog exec: {}: {}\n", path, error);

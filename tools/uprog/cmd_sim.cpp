@@ -26,6 +26,7 @@ struct SimOptions {
   std::string program;
   std::string dialect;
   bool safe_boot = false;
+  std::string wire = "drive";
   bool log = false;
 };
 
@@ -86,6 +87,7 @@ int run_sim(const SimOptions& options) {
   if (controller_options.dialect == nullptr) return 2;
   controller_options.state_dir = options.state_dir;
   controller_options.safe_boot = options.safe_boot;
+  controller_options.wire_style = options.wire == "readable" ? dialect::WireStyle::kReadable : dialect::WireStyle::kDrive;
   controller::Controller drive(controller_options);
   for (const auto& message : drive.boot_messages()) fmt::print(stderr, "uprog sim: {}\n", message);
   if (!options.program.empty() && !install_program(drive, options)) return 1;
@@ -139,6 +141,10 @@ void add_sim(CLI::App* cmd, Action& action) {
   cmd->add_option("--program", options->program, "source or stored form (.upi) to download and load");
   add_dialect_option(cmd, options->dialect);
   cmd->add_flag("--safe-boot", options->safe_boot, "boot without running AUTOEXEC");
+  cmd->add_option("--wire", options->wire,
+                  "drive: the bytes the vendor's drive sends (default); readable: error texts and a "
+                  "line end after each line (docs/protocol.md)")
+      ->check(CLI::IsMember({"drive", "readable"}));
   cmd->add_flag("--log", options->log, "print what the firmware does (auto-routines, errors)");
   cmd->callback([&action, options] { action = [options] { return run_sim(*options); }; });
 }

@@ -7,7 +7,8 @@
 #include <cstdlib>
 
 #include "commands.h"
-#include "transport/drive_client.h"
+#include "dialect_choice.h"
+#include "drive_link.h"
 #include "transport/line_editor.h"
 
 namespace uprog::cli {
@@ -18,23 +19,27 @@ using transport::DriveClient;
 
 struct TermOptions {
   std::string address;
+  std::string dialect;
   double timeout_s = 5.0;
   bool fail_on_error = false;
 };
 
 int run_term(const TermOptions& options) {
+  const dialect::Dialect* d = choose_dialect(options.dialect, "", "term");
+  if (d == nullptr) return 2;
   std::string error;
-  const auto connection = DriveClient::connect(options.address, error);
+  const auto connection = connect_to_drive(options.address, *d, error);
   if (!connection) {
     fmt::print(stderr, "uprog term: {}\n", error);
     return 1;
   }
   int errors = 0;
-  // Each answer on a line of its own; errors as the wire writes them, `?CODE TEXT`.
-  const auto print = [&errors](const transport::Reply& reply) {
+  // Each answer on a line of its own; errors as `?CODE TEXT`, with the dialect's text for a code
+  // that came without one.
+  const auto print = [&errors, d](const transport::Reply& reply) {
     if (reply.error != 0) {
       ++errors;
-      fmt::print("?{}{}{}\n", reply.error, reply.text.empty() ? "" : " ", reply.text);
+      fmt::print("{}\n", shown_error(*d, reply));
     } else if (!reply.text.empty()) {
       fmt::print("{}\n", reply.text);
     }
@@ -81,6 +86,7 @@ void add_term(CLI::App* cmd, Action& action) {
   auto options = std::make_shared<TermOptions>();
   cmd->add_option("ADDRESS", options->address, "HOST:PORT of the drive (uprog sim prints it)")
       ->required();
+  add_dialect_option(cmd, options->dialect);
   cmd->add_option("--timeout", options->timeout_s, "seconds to wait for a line's answers (default 5)");
   cmd->add_flag("--fail-on-error", options->fail_on_error,
                 "exit with status 4 if any answer was an error");

@@ -40,10 +40,11 @@ std::vector<Answer> Firmware::send(std::string_view text, bool takes_time) {
 
 std::vector<Answer> Firmware::send_line(std::string_view text, bool takes_time, DownloadReceiver* download) {
   std::vector<Answer> answers;
-  for (const dialect::Frame& frame : dialect::frame_text(text, wire_.framing())) {
+  const dialect::FramerOptions framing = command_line_framing();
+  for (const dialect::Frame& frame : dialect::frame_text(text, framing)) {
     if (frame.kind == dialect::Frame::Kind::kTooLong) {
       answers.push_back(error_answer(kErrorSyntax, "Command syntax error: the expression is longer than " +
-                                                       std::to_string(wire_.framing().max_line_length) +
+                                                       std::to_string(framing.max_line_length) +
                                                        " characters"));
     } else if (frame.kind == dialect::Frame::Kind::kBadCharacter) {
       answers.push_back(error_answer(kErrorSyntax, "Command syntax error: a character that is not printable ASCII"));
@@ -73,6 +74,11 @@ void Firmware::download_expression(std::string_view expression, DownloadReceiver
 
 void Firmware::expression(std::string_view text, std::vector<Answer>& answers) {
   if (program_control(std::string(text), answers)) return;
+  // A command that answers text (VR) is no expression: its text is the answer.
+  if (const CommandInfo* c = find_command(text); c != nullptr && (c->flags & kText) != 0) {
+    if (auto answer = drive_commands_->text(c->id)) answers.push_back(Answer{std::move(*answer), 0});
+    return;
+  }
   run_line(std::string(text), answers);
 }
 

@@ -63,6 +63,11 @@ class GoldDialect final : public dialect::Dialect {
     return gold::download_lines(stored_form);
   }
   std::string load_line() const override { return "CC"; }
+  std::optional<dialect::FramerOptions> host_framing() const override {
+    dialect::FramerOptions framing = command_line_framing();
+    framing.answer_empty_expressions = true;  // the drive form answers `PX;` CR twice
+    return framing;
+  }
   std::size_t max_download_bytes() const override { return kDownloadMaxBytes; }
 };
 

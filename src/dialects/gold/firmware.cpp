@@ -33,7 +33,7 @@ dialect::FramerOptions command_line_framing() {
 }
 
 Firmware::Firmware(dialect::Runtime& runtime, const dialect::FirmwareOptions& options)
-    : runtime_(runtime), options_(options), wire_(command_line_framing()), schedule_(options.timing),
+    : runtime_(runtime), options_(options), wire_(options.wire_style, command_line_framing(), [this] { return drive_commands_ && drive_commands_->echo(); }), schedule_(options.timing),
       slice_budget_(schedule_.budget()) {}
 
 uint64_t Firmware::cycle_ns() const {

@@ -12,11 +12,11 @@
 #include "dialect/firmware.h"
 #include "dialect/loaded_program.h"
 #include "dialect/runtime.h"
-#include "dialect/semicolon_wire.h"
 #include "dialects/gold/auto_routines.h"
 #include "dialects/gold/compile.h"
 #include "dialects/gold/download_receiver.h"
 #include "dialects/gold/drive_commands.h"
+#include "dialects/gold/elmo_wire.h"
 #include "dialects/gold/interpreter_errors.h"
 #include "dialects/gold/recorder_signals.h"
 #include "vm/machine.h"
@@ -95,7 +95,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
 
   dialect::Runtime& runtime_;
   dialect::FirmwareOptions options_;
-  dialect::SemicolonWire wire_;
+  ElmoWire wire_;
   scheduling::WholeLines schedule_;
   vm::Budget slice_budget_;  // the whole-lines policy's, worked out once
   drive::Axis* axis_ = nullptr;  // the runtime's axis since the last boot

@@ -199,6 +199,14 @@ void Lexer::continuation() {
   if (k >= n) r_.lex_error(Error::ExpressionNotFinished, static_cast<uint32_t>(b));
 }
 
+constexpr size_t kMaxFractionDigits = 12;
+
+// True when a run of decimal digits, read as an integer, is above 2147483647.
+static bool digits_exceed_long(std::string_view digits) {
+  while (digits.size() > 1 && digits.front() == '0') digits.remove_prefix(1);
+  return digits.size() > 10 || (digits.size() == 10 && digits > "2147483647");
+}
+
 Token Lexer::number() {
   size_t i = st_.pos;
   const size_t b = i;
@@ -226,8 +234,13 @@ Token Lexer::number() {
   // "1:" and "a.b" are not floats; a dot followed by a second dot starts "...".
   if (i < n && s_[i] == '.' && s_.substr(i, 3) != "...") {
     is_float = true;
-    ++i;
+    const size_t point = i++;
     while (i < n && is_digit(s_[i])) ++i;
+    // Manual 1.3.2, "Number Overflow": the integer left of the point must fit a long; right of it,
+    // 13 digits are an error and 12 are not (1.7 computes sin(0.523598775598)): docs/dialects/gold.md.
+    if (digits_exceed_long(s_.substr(b, point - b)) || i - point - 1 > kMaxFractionDigits) {
+      r_.lex_error(Error::BadFormat, static_cast<uint32_t>(b));
+    }
   }
   if (i < n && (s_[i] == 'e' || s_[i] == 'E')) {
     size_t k = i + 1;

@@ -111,10 +111,13 @@ bool Firmware::program_control(const std::string& text, std::vector<Answer>& ans
     return true;
   }
   if (word == "KL") {
+    // "Halt program execution and stop the motor" (docs/dialects/gold.md, KL): the program ends
+    // and the motion decelerates as ST stops it; the motor stays on.
     if (!program_) return fail(kErrorNoProgram, "no program is loaded"), true;
     machine()->kill(kProgramThread);
     autos_.forget_activity();
-    log("program killed");
+    runtime_.axis().stop();
+    log("program killed, motion stopped");
     return true;
   }
   if (word == "CC") {
