@@ -46,6 +46,9 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::string program_error_text() const override;
   std::string state_summary() const override;
   std::vector<dialect::ThreadInfo> threads() const override;
+  dialect::LoadedProgram* debug_program() override { return program_.get(); }
+  dialect::Evaluation evaluate(uint32_t thread, uint32_t depth, std::string_view expression) override;  // debug_hooks.cpp
+  std::string start_with_arguments(std::string_view entry, const std::vector<double>& args) override;
 
   // --- vm::Host: drive commands, plus MI, PS and EC that the firmware keeps ---
   vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override;
