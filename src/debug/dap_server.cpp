@@ -14,6 +14,10 @@ namespace {
 // DAP thread ids start at 1; the VM's threads at 0.
 int64_t thread_id(uint32_t thread) { return int64_t{thread} + 1; }
 
+// A program's output or a request's own text may hold bytes that are not UTF-8: they go out
+// replaced rather than ending the session.
+std::string dumped(const nlohmann::json& m) { return m.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace); }
+
 }  // namespace
 
 DapServer::DapServer(DapOptions options, std::function<void(const std::string&)> send)
@@ -83,7 +87,7 @@ void DapServer::respond(const json& request, json body) {
             {"success", true},
             {"command", request["command"]}};
   if (!body.empty()) m["body"] = std::move(body);
-  send_(frame_message(m.dump()));
+  send_(frame_message(dumped(m)));
 }
 
 void DapServer::fail(const json& request, const std::string& message) {
@@ -94,13 +98,13 @@ void DapServer::fail(const json& request, const std::string& message) {
             {"command", request.value("command", "")},
             {"message", message},
             {"body", {{"error", {{"id", 1}, {"format", message}}}}}};
-  send_(frame_message(m.dump()));
+  send_(frame_message(dumped(m)));
 }
 
 void DapServer::event(const std::string& name, json body) {
   json m = {{"seq", seq_++}, {"type", "event"}, {"event", name}};
   if (!body.empty()) m["body"] = std::move(body);
-  send_(frame_message(m.dump()));
+  send_(frame_message(dumped(m)));
 }
 
 void DapServer::initialize(const json& r) {

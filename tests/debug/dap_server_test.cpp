@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <random>
 
 #include "debug/dap_framing.h"
 #include "debug/dap_server.h"
@@ -30,7 +31,8 @@ struct Client {
 
   std::vector<json> request(const std::string& command, json arguments = json::object()) {
     out.clear();
-    server.handle(json{{"seq", seq++}, {"type", "request"}, {"command", command}, {"arguments", arguments}}.dump());
+    const json r = {{"seq", seq++}, {"type", "request"}, {"command", command}, {"arguments", arguments}};
+    server.handle(r.dump(-1, ' ', false, json::error_handler_t::replace));
     return out;
   }
   // Lets the program run until it stops or ends: the events that came.
@@ -348,6 +350,46 @@ TEST(DapFraming, MessagesInPiecesAndBadHeaders) {
   huge.feed("Content-Length: 99999999999\r\n\r\n");
   EXPECT_EQ(huge.next(), std::nullopt);
   EXPECT_FALSE(huge.error().empty());
+}
+
+}  // namespace
+}  // namespace uprog::debug
+
+namespace uprog::debug {
+namespace {
+
+// Requests of every command with arguments of every shape, and bytes that are not UTF-8: each
+// gets an answer or an error event, and the session goes on answering.
+TEST(DapServer, ArbitraryRequestsNeverEndTheSession) {
+  const std::vector<std::string> commands = {
+      "initialize", "launch", "setBreakpoints", "setFunctionBreakpoints", "setExceptionBreakpoints",
+      "configurationDone", "threads", "stackTrace", "scopes", "variables", "setVariable", "evaluate",
+      "continue", "next", "stepIn", "stepOut", "pause", "attach", "bogus"};
+  const std::vector<json> values = {nullptr, 0, -1, 99999999999, 2.5, "x", "\xff\xfe", json::array(),
+                                    json::array({1, "a"}), json::object(), true,
+                                    {{"line", "a"}}, {{"path", kScenario}}, json::array({{{"line", -3}}})};
+  const std::vector<std::string> keys = {"program", "source", "breakpoints", "lines", "threadId", "frameId",
+                                         "variablesReference", "name", "value", "expression", "context",
+                                         "filters", "inputs", "args", "stopOnEntry", "levels", "startFrame"};
+  std::mt19937 random(16);
+  Client c;
+  c.start(json::object(), {11});
+  c.run();
+  for (int i = 0; i < 3000; ++i) {
+    json args = json::object();
+    const int n = static_cast<int>(random() % 4);
+    for (int k = 0; k < n; ++k) args[keys[random() % keys.size()]] = values[random() % values.size()];
+    const auto out = c.request(commands[random() % commands.size()], args);
+    ASSERT_FALSE(out.empty()) << i;
+    c.run();
+  }
+  c.out.clear();
+  c.server.handle("\xff\xfe{");
+  c.server.handle(R"({"seq": 1, "type": "request", "command": 7})");
+  EXPECT_EQ(c.out.size(), 2u);
+  const auto out = c.request("threads");
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0]["success"]);
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <csignal>
+
 #include <cerrno>
 #include <chrono>
 
@@ -44,6 +46,7 @@ const dialect::Dialect* dialect_for(const std::string& name, const std::string& 
 
 // Serves one client on `in` and `out` until it disconnects or closes its end.
 int serve(int in, int out) {
+  std::signal(SIGPIPE, SIG_IGN);  // a client gone mid-answer ends the session, not the process
   bool broken = false;
   debug::DapServer server({dialect_for}, [&](const std::string& m) { broken = broken || !write_all(out, m); });
   debug::DapReader reader;
