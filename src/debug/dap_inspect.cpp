@@ -26,7 +26,8 @@ uint32_t DapServer::reference(Reference r) {
 std::pair<uint32_t, uint32_t> DapServer::frame_of(const json& frame_id) const {
   if (frame_id.is_number_integer() && frame_id.get<int64_t>() > 0) {
     const int64_t id = frame_id.get<int64_t>() - 1;
-    return {static_cast<uint32_t>(id / kFramesPerThread), static_cast<uint32_t>(id % kFramesPerThread)};
+    return {static_cast<uint32_t>(id / kFramesPerThread),
+            static_cast<uint32_t>(id % kFramesPerThread)};
   }
   return {debugger_->last_stop().thread, 0};
 }
@@ -47,7 +48,8 @@ void DapServer::stack_trace(const json& r) {
               {"line", f.line},
               {"column", 1}};
     if (!f.file.empty()) {
-      j["source"] = {{"name", std::filesystem::path(f.file).filename().string()}, {"path", absolute(f.file)}};
+      j["source"] = {{"name", std::filesystem::path(f.file).filename().string()},
+                     {"path", absolute(f.file)}};
     }
     out.push_back(std::move(j));
   }
@@ -57,36 +59,54 @@ void DapServer::stack_trace(const json& r) {
 void DapServer::scopes(const json& r) {
   const auto [thread, depth] = frame_of(r.at("arguments").at("frameId"));
   json out = json::array();
-  out.push_back({{"name", "Locals"}, {"presentationHint", "locals"}, {"expensive", false},
+  out.push_back({{"name", "Locals"},
+                 {"presentationHint", "locals"},
+                 {"expensive", false},
                  {"variablesReference", reference({Reference::Kind::Locals, thread, depth, 0})}});
-  out.push_back({{"name", "Globals"}, {"expensive", false},
+  out.push_back({{"name", "Globals"},
+                 {"expensive", false},
                  {"variablesReference", reference({Reference::Kind::Globals, thread, depth, 0})}});
-  out.push_back({{"name", "Drive"}, {"presentationHint", "registers"}, {"expensive", false},
+  out.push_back({{"name", "Drive"},
+                 {"presentationHint", "registers"},
+                 {"expensive", false},
                  {"variablesReference", reference({Reference::Kind::Signals, thread, depth, 0})}});
   respond(r, {{"scopes", out}});
 }
 
 void DapServer::variables(const json& r) {
   const int64_t ref = r.at("arguments").at("variablesReference").get<int64_t>();
-  if (ref < 1 || static_cast<size_t>(ref) > references_.size()) return fail(r, "no such variablesReference");
+  if (ref < 1 || static_cast<size_t>(ref) > references_.size())
+    return fail(r, "no such variablesReference");
   const Reference at = references_[static_cast<size_t>(ref - 1)];
   std::vector<Variable> vars;
   switch (at.kind) {
-    case Reference::Kind::Locals: vars = debugger_->locals(at.thread, at.depth); break;
-    case Reference::Kind::Globals: vars = debugger_->globals(); break;
-    case Reference::Kind::Signals: vars = debugger_->signals(); break;
-    case Reference::Kind::Elements: vars = debugger_->elements(at.global); break;
+    case Reference::Kind::Locals:
+      vars = debugger_->locals(at.thread, at.depth);
+      break;
+    case Reference::Kind::Globals:
+      vars = debugger_->globals();
+      break;
+    case Reference::Kind::Signals:
+      vars = debugger_->signals();
+      break;
+    case Reference::Kind::Elements:
+      vars = debugger_->elements(at.global);
+      break;
   }
   json out = json::array();
   for (const Variable& v : vars) {
     uint32_t children = 0;
     if (v.elements > 0) {
       const int g = debugger_->find_global(v.name);
-      if (g >= 0) children = reference({Reference::Kind::Elements, at.thread, at.depth, static_cast<uint32_t>(g)});
+      if (g >= 0)
+        children =
+            reference({Reference::Kind::Elements, at.thread, at.depth, static_cast<uint32_t>(g)});
     }
-    json j = {{"name", v.name}, {"value", v.value}, {"type", v.type}, {"variablesReference", children}};
+    json j = {
+        {"name", v.name}, {"value", v.value}, {"type", v.type}, {"variablesReference", children}};
     if (children != 0) j["indexedVariables"] = v.elements;
-    if (at.kind == Reference::Kind::Signals) j["presentationHint"] = {{"attributes", json::array({"readOnly"})}};
+    if (at.kind == Reference::Kind::Signals)
+      j["presentationHint"] = {{"attributes", json::array({"readOnly"})}};
     out.push_back(std::move(j));
   }
   respond(r, {{"variables", out}});
@@ -95,12 +115,15 @@ void DapServer::variables(const json& r) {
 void DapServer::set_variable(const json& r) {
   const json& args = r.at("arguments");
   const int64_t ref = args.at("variablesReference").get<int64_t>();
-  if (ref < 1 || static_cast<size_t>(ref) > references_.size()) return fail(r, "no such variablesReference");
+  if (ref < 1 || static_cast<size_t>(ref) > references_.size())
+    return fail(r, "no such variablesReference");
   const Reference at = references_[static_cast<size_t>(ref - 1)];
   const std::string name = args.at("name"), value = args.at("value");
   SetResult result;
   switch (at.kind) {
-    case Reference::Kind::Locals: result = debugger_->set_local(at.thread, at.depth, name, value); break;
+    case Reference::Kind::Locals:
+      result = debugger_->set_local(at.thread, at.depth, name, value);
+      break;
     case Reference::Kind::Globals: {
       const int g = debugger_->find_global(name);
       result = g < 0 ? SetResult{false, {}, "no global named '" + name + "'"}
@@ -118,7 +141,8 @@ void DapServer::set_variable(const json& r) {
       result = debugger_->set_global(at.global, element, value);
       break;
     }
-    case Reference::Kind::Signals: return fail(r, "the drive's signals are read-only");
+    case Reference::Kind::Signals:
+      return fail(r, "the drive's signals are read-only");
   }
   if (!result.ok) return fail(r, result.error);
   respond(r, {{"value", result.value}});
@@ -131,12 +155,14 @@ void DapServer::evaluate(const json& r) {
   if (context == "repl") {
     // The drive's command line, as a terminal would send the line. Stopped, it takes no time.
     const bool stopped = debugger_->state() == RunState::Stopped;
-    const std::vector<controller::Answer> answers = stopped ? drive_->query(expression) : drive_->send(expression);
+    const std::vector<controller::Answer> answers =
+        stopped ? drive_->query(expression) : drive_->send(expression);
     debugger_->program_changed();
     std::string result;
     for (const controller::Answer& a : answers) {
       if (!result.empty()) result += "\n";
-      result += a.is_error() ? "Error: " + a.text + " (EC " + std::to_string(a.error) + ")" : a.text;
+      result +=
+          a.is_error() ? "Error: " + a.text + " (EC " + std::to_string(a.error) + ")" : a.text;
     }
     return respond(r, {{"result", result}, {"variablesReference", 0}});
   }

@@ -16,7 +16,9 @@ int64_t thread_id(uint32_t thread) { return int64_t{thread} + 1; }
 
 // A program's output or a request's own text may hold bytes that are not UTF-8: they go out
 // replaced rather than ending the session.
-std::string dumped(const nlohmann::json& m) { return m.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace); }
+std::string dumped(const nlohmann::json& m) {
+  return m.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
 
 }  // namespace
 
@@ -30,12 +32,14 @@ void DapServer::handle(const std::string& message) {
   try {
     request = json::parse(message);
   } catch (const json::exception& e) {
-    event("output", {{"category", "stderr"}, {"output", std::string("not a JSON message: ") + e.what() + "\n"}});
+    event("output", {{"category", "stderr"},
+                     {"output", std::string("not a JSON message: ") + e.what() + "\n"}});
     return;
   }
-  if (!request.is_object() || request.value("type", "") != "request" || !request.contains("command") ||
-      !request["command"].is_string()) {
-    event("output", {{"category", "stderr"}, {"output", "a message that is not a request was ignored\n"}});
+  if (!request.is_object() || request.value("type", "") != "request" ||
+      !request.contains("command") || !request["command"].is_string()) {
+    event("output",
+          {{"category", "stderr"}, {"output", "a message that is not a request was ignored\n"}});
     return;
   }
   try {
@@ -54,8 +58,9 @@ void DapServer::dispatch(const json& r) {
   if (command == "disconnect") return end(r, false);
   if (command == "terminate") return end(r, true);
   if (!debugger_) {
-    if (command == "setBreakpoints" || command == "setFunctionBreakpoints" || command == "setExceptionBreakpoints" ||
-        command == "configurationDone" || command == "threads") {
+    if (command == "setBreakpoints" || command == "setFunctionBreakpoints" ||
+        command == "setExceptionBreakpoints" || command == "configurationDone" ||
+        command == "threads") {
       // Before a launch there is nothing to set them in; a client that sends them early is told so.
       return fail(r, "no program: launch first");
     }
@@ -76,7 +81,8 @@ void DapServer::dispatch(const json& r) {
   if (command == "stepIn") return step(r, StepKind::In);
   if (command == "stepOut") return step(r, StepKind::Out);
   if (command == "pause") return pause(r);
-  if (command == "attach") return fail(r, "attach to a running `uprog sim` is not offered yet: use launch");
+  if (command == "attach")
+    return fail(r, "attach to a running `uprog sim` is not offered yet: use launch");
   fail(r, "unknown request '" + command + "'");
 }
 
@@ -108,17 +114,21 @@ void DapServer::event(const std::string& name, json body) {
 }
 
 void DapServer::initialize(const json& r) {
-  respond(r, {{"supportsConfigurationDoneRequest", true},
-              {"supportsFunctionBreakpoints", true},
-              {"supportsConditionalBreakpoints", true},
-              {"supportsHitConditionalBreakpoints", true},
-              {"supportsLogPoints", true},
-              {"supportsSetVariable", true},
-              {"supportsEvaluateForHovers", true},
-              {"supportsTerminateRequest", true},
-              {"exceptionBreakpointFilters",
-               json::array({{{"filter", "error"}, {"label", "Run-time errors"}, {"default", false},
-                             {"description", "Stop where a run-time error that no try block catches happens"}}})}});
+  respond(r,
+          {{"supportsConfigurationDoneRequest", true},
+           {"supportsFunctionBreakpoints", true},
+           {"supportsConditionalBreakpoints", true},
+           {"supportsHitConditionalBreakpoints", true},
+           {"supportsLogPoints", true},
+           {"supportsSetVariable", true},
+           {"supportsEvaluateForHovers", true},
+           {"supportsTerminateRequest", true},
+           {"exceptionBreakpointFilters",
+            json::array({{{"filter", "error"},
+                          {"label", "Run-time errors"},
+                          {"default", false},
+                          {"description",
+                           "Stop where a run-time error that no try block catches happens"}}})}});
 }
 
 void DapServer::launch(const json& r) {
@@ -142,7 +152,8 @@ void DapServer::launch(const json& r) {
   auto drive = std::make_unique<controller::Controller>(o);
   std::vector<Diagnostic> diagnostics;
   const bool compiled = drive->download_source_file(program, diagnostics);
-  if (!diagnostics.empty()) event("output", {{"category", "stderr"}, {"output", format_text(diagnostics)}});
+  if (!diagnostics.empty())
+    event("output", {{"category", "stderr"}, {"output", format_text(diagnostics)}});
   if (!compiled) return fail(r, "the program did not compile: " + program);
   if (const std::string why = drive->firmware().start_with_arguments(entry, entry_args);
       !why.empty()) {
@@ -245,7 +256,8 @@ void DapServer::step(const json& r, std::optional<StepKind> kind) {
   references_.clear();
   stop_reported_ = false;
   if (kind) {
-    debugger_->step(static_cast<uint32_t>(std::max<int64_t>(id - 1, 0)), *kind, args.value("singleThread", false));
+    debugger_->step(static_cast<uint32_t>(std::max<int64_t>(id - 1, 0)), *kind,
+                    args.value("singleThread", false));
     respond(r);
   } else {
     debugger_->resume();
@@ -277,7 +289,8 @@ bool DapServer::running() const { return running_program(); }
 bool DapServer::poll(uint64_t budget_ns) {
   if (!running_program()) return false;
   // Inputs change when virtual time reaches them: a run stops short of the next one.
-  while (next_input_ < inputs_.size() && inputs_[next_input_].at_us <= drive_->now_us() - start_us_) {
+  while (next_input_ < inputs_.size() &&
+         inputs_[next_input_].at_us <= drive_->now_us() - start_us_) {
     drive_->set_input_level(inputs_[next_input_].input, inputs_[next_input_].level);
     ++next_input_;
   }
@@ -294,11 +307,15 @@ bool DapServer::poll(uint64_t budget_ns) {
 void DapServer::flush_output() {
   if (!drive_) return;
   for (const controller::LogEntry& e : drive_->take_log()) {
-    event("output", {{"category", "console"}, {"output", fmt::format("[{:.3f} ms] {}\n", static_cast<double>(e.time_us) / 1000.0, e.text)}});
+    event("output", {{"category", "console"},
+                     {"output", fmt::format("[{:.3f} ms] {}\n",
+                                            static_cast<double>(e.time_us) / 1000.0, e.text)}});
   }
-  for (const std::string& text : drive_->take_output()) event("output", {{"category", "stdout"}, {"output", text}});
+  for (const std::string& text : drive_->take_output())
+    event("output", {{"category", "stdout"}, {"output", text}});
   if (debugger_) {
-    for (const std::string& m : debugger_->take_messages()) event("output", {{"category", "console"}, {"output", m + "\n"}});
+    for (const std::string& m : debugger_->take_messages())
+      event("output", {{"category", "console"}, {"output", m + "\n"}});
   }
 }
 
@@ -309,7 +326,9 @@ void DapServer::report() {
   if (debugger_->state() == RunState::Stopped && !stop_reported_) {
     stop_reported_ = true;
     const Stop& s = debugger_->last_stop();
-    json body = {{"reason", stop_reason_name(s.reason)}, {"threadId", thread_id(s.thread)}, {"allThreadsStopped", true}};
+    json body = {{"reason", stop_reason_name(s.reason)},
+                 {"threadId", thread_id(s.thread)},
+                 {"allThreadsStopped", true}};
     if (!s.description.empty()) {
       body["description"] = s.description;
       body["text"] = s.description;

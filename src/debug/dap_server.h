@@ -20,7 +20,8 @@ namespace uprog::debug {
 struct DapOptions {
   // The dialect of a launch: by `name` when given, else by the program's extension; nullptr with
   // `error` set when there is none (the tools' registry lives above this library).
-  std::function<const dialect::Dialect*(const std::string& name, const std::string& path, std::string& error)>
+  std::function<const dialect::Dialect*(const std::string& name, const std::string& path,
+                                        std::string& error)>
       choose_dialect;
 };
 
@@ -36,7 +37,7 @@ class DapServer {
   // False when nothing runs: the server only waits for requests.
   bool poll(uint64_t budget_ns);
   bool running() const;
-  bool done() const { return done_; }      // disconnected: the tool stops
+  bool done() const { return done_; }          // disconnected: the tool stops
   bool realtime() const { return realtime_; }  // the launch asked to pace virtual time to the wall
 
  private:
@@ -89,7 +90,8 @@ class DapServer {
   uint64_t start_us_ = 0;
   std::vector<InputChange> inputs_;
   size_t next_input_ = 0;
-  std::vector<Reference> references_;  // variablesReference n is references_[n - 1], until the program runs on
+  std::vector<Reference>
+      references_;  // variablesReference n is references_[n - 1], until the program runs on
 };
 
 }  // namespace uprog::debug

@@ -11,12 +11,18 @@ namespace uprog::debug {
 
 const char* stop_reason_name(StopReason reason) {
   switch (reason) {
-    case StopReason::Entry: return "entry";
-    case StopReason::Breakpoint: return "breakpoint";
-    case StopReason::FunctionBreakpoint: return "function breakpoint";
-    case StopReason::Step: return "step";
-    case StopReason::Pause: return "pause";
-    case StopReason::Exception: return "exception";
+    case StopReason::Entry:
+      return "entry";
+    case StopReason::Breakpoint:
+      return "breakpoint";
+    case StopReason::FunctionBreakpoint:
+      return "function breakpoint";
+    case StopReason::Step:
+      return "step";
+    case StopReason::Pause:
+      return "pause";
+    case StopReason::Exception:
+      return "exception";
   }
   return "pause";
 }
@@ -83,9 +89,10 @@ Debugger::Armed Debugger::make_breakpoint(std::string file, const BreakpointSpec
   return b;
 }
 
-std::vector<BreakpointState> Debugger::set_line_breakpoints(const std::string& file,
-                                                            const std::vector<BreakpointSpec>& specs) {
-  std::erase_if(breakpoints_, [&](const Armed& b) { return b.spec.function.empty() && b.file == file; });
+std::vector<BreakpointState> Debugger::set_line_breakpoints(
+    const std::string& file, const std::vector<BreakpointSpec>& specs) {
+  std::erase_if(breakpoints_,
+                [&](const Armed& b) { return b.spec.function.empty() && b.file == file; });
   std::vector<BreakpointState> out;
   for (const BreakpointSpec& spec : specs) {
     breakpoints_.push_back(make_breakpoint(file, spec));
@@ -95,7 +102,8 @@ std::vector<BreakpointState> Debugger::set_line_breakpoints(const std::string& f
   return out;
 }
 
-std::vector<BreakpointState> Debugger::set_function_breakpoints(const std::vector<BreakpointSpec>& specs) {
+std::vector<BreakpointState> Debugger::set_function_breakpoints(
+    const std::vector<BreakpointSpec>& specs) {
   std::erase_if(breakpoints_, [](const Armed& b) { return !b.spec.function.empty(); });
   for (const BreakpointSpec& spec : specs) breakpoints_.push_back(make_breakpoint({}, spec));
   arm();
@@ -130,7 +138,8 @@ void Debugger::arm() {
 
 // --- execution ---
 
-void Debugger::stop(StopReason reason, uint32_t thread, std::string description, std::vector<uint32_t> ids) {
+void Debugger::stop(StopReason reason, uint32_t thread, std::string description,
+                    std::vector<uint32_t> ids) {
   state_ = RunState::Stopped;
   stop_ = Stop{reason, thread, std::move(description), std::move(ids)};
   stepping_.reset();
@@ -147,7 +156,9 @@ void Debugger::stop(StopReason reason, uint32_t thread, std::string description,
   }
 }
 
-void Debugger::stop_at_entry() { stop(StopReason::Entry, threads().empty() ? 0 : threads().front().thread); }
+void Debugger::stop_at_entry() {
+  stop(StopReason::Entry, threads().empty() ? 0 : threads().front().thread);
+}
 
 void Debugger::pause() {
   if (state_ != RunState::Running) return;
@@ -162,8 +173,10 @@ void Debugger::start_running(std::optional<uint32_t> only_thread) {
   vm::Machine& m = p->machine();
   std::vector<uint32_t> still_halted;
   for (uint32_t t : halted_) {
-    if (only_thread && t != *only_thread) still_halted.push_back(t);
-    else m.resume(t);
+    if (only_thread && t != *only_thread)
+      still_halted.push_back(t);
+    else
+      m.resume(t);
   }
   halted_ = std::move(still_halted);
   for (const dialect::ThreadInfo& t : drive_.firmware().threads()) {
@@ -221,7 +234,8 @@ uint64_t Debugger::step_slice() {
       if (at_trap(t)) return 0;
       continue;
     }
-    if (r.end == vm::SliceEnd::Error || r.end == vm::SliceEnd::Finished || r.end == vm::SliceEnd::NotRunning) {
+    if (r.end == vm::SliceEnd::Error || r.end == vm::SliceEnd::Finished ||
+        r.end == vm::SliceEnd::NotRunning) {
       stepping_.reset();  // the thread has ended: what follows is the program's end or an exception
       after_cycle();
       return 0;
@@ -229,7 +243,8 @@ uint64_t Debugger::step_slice() {
     break;  // a line end, a wait, or halted: time passes
   }
   // One cycle with the stepping thread held: the others, the axes and the timers go on.
-  const bool hold = m.status(t) == vm::ThreadStatus::Running || m.status(t) == vm::ThreadStatus::Waiting;
+  const bool hold =
+      m.status(t) == vm::ThreadStatus::Running || m.status(t) == vm::ThreadStatus::Waiting;
   if (hold) m.halt(t);
   const uint64_t ns = advance_one_cycle();
   if (hold) m.resume(t);
@@ -291,9 +306,12 @@ bool Debugger::step_done(uint32_t thread) const {
   if (depth == 0 || (depth == stepping_->depth && pc == stepping_->pc)) return false;
   if (!is_line_start(program()->image(), pc)) return false;
   switch (stepping_->kind) {
-    case StepKind::In: return true;
-    case StepKind::Over: return depth <= stepping_->depth;
-    case StepKind::Out: return depth < stepping_->depth;
+    case StepKind::In:
+      return true;
+    case StepKind::Over:
+      return depth <= stepping_->depth;
+    case StepKind::Out:
+      return depth < stepping_->depth;
   }
   return false;
 }
@@ -309,7 +327,8 @@ bool Debugger::at_trap(uint32_t thread) {
       const dialect::Evaluation e = evaluate(thread, 0, b.spec.condition);
       if (!e.ok) {
         // A condition that cannot be evaluated stops, saying why, rather than passing silently.
-        stop(StopReason::Breakpoint, thread, "the condition '" + b.spec.condition + "' failed: " + e.error, {b.id});
+        stop(StopReason::Breakpoint, thread,
+             "the condition '" + b.spec.condition + "' failed: " + e.error, {b.id});
         return true;
       }
       if (!e.is_true) continue;
@@ -323,7 +342,8 @@ bool Debugger::at_trap(uint32_t thread) {
     is_function = is_function || !b.spec.function.empty();
   }
   if (!hit.empty()) {
-    stop(is_function ? StopReason::FunctionBreakpoint : StopReason::Breakpoint, thread, {}, std::move(hit));
+    stop(is_function ? StopReason::FunctionBreakpoint : StopReason::Breakpoint, thread, {},
+         std::move(hit));
     return true;
   }
   if (stepping_ && stepping_->thread == thread && step_done(thread)) {

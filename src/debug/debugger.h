@@ -16,18 +16,18 @@
 namespace uprog::debug {
 
 struct BreakpointSpec {
-  uint32_t line = 0;         // a source line; for a function breakpoint unused
-  std::string function;      // a routine's name; for a line breakpoint empty
-  std::string condition;     // an expression in the program's dialect; empty: always
+  uint32_t line = 0;          // a source line; for a function breakpoint unused
+  std::string function;       // a routine's name; for a line breakpoint empty
+  std::string condition;      // an expression in the program's dialect; empty: always
   std::string hit_condition;  // hit_condition.h
-  std::string log_message;   // non-empty: log this ({expr} replaced) instead of stopping
+  std::string log_message;    // non-empty: log this ({expr} replaced) instead of stopping
 };
 
 struct BreakpointState {
   uint32_t id = 0;
   bool verified = false;
-  std::string file;  // the line table's name of the file, when verified
-  uint32_t line = 0;  // where it stands (a line without code moves to the next one with code)
+  std::string file;     // the line table's name of the file, when verified
+  uint32_t line = 0;    // where it stands (a line without code moves to the next one with code)
   std::string message;  // why it is not verified
 };
 
@@ -39,7 +39,7 @@ const char* stop_reason_name(StopReason reason);
 struct Stop {
   StopReason reason = StopReason::Pause;
   uint32_t thread = 0;
-  std::string description;  // the run-time error, for an exception
+  std::string description;            // the run-time error, for an exception
   std::vector<uint32_t> breakpoints;  // the ids of the breakpoints hit
 };
 
@@ -73,7 +73,8 @@ class Debugger {
   explicit Debugger(controller::Controller& drive);
 
   // --- breakpoints: each call replaces that file's (or all function) breakpoints ---
-  std::vector<BreakpointState> set_line_breakpoints(const std::string& file, const std::vector<BreakpointSpec>& specs);
+  std::vector<BreakpointState> set_line_breakpoints(const std::string& file,
+                                                    const std::vector<BreakpointSpec>& specs);
   std::vector<BreakpointState> set_function_breakpoints(const std::vector<BreakpointSpec>& specs);
   void set_break_on_error(bool on) { break_on_error_ = on; }
   void clear_breakpoints();
@@ -104,7 +105,8 @@ class Debugger {
   // The drive's signals: position, velocity, status words (read only).
   std::vector<Variable> signals() const;
   int find_global(const std::string& name) const;
-  SetResult set_local(uint32_t thread, uint32_t depth, const std::string& name, const std::string& text);
+  SetResult set_local(uint32_t thread, uint32_t depth, const std::string& name,
+                      const std::string& text);
   SetResult set_global(uint32_t global, uint32_t element, const std::string& text);
   // In the program's dialect (the firmware's evaluate()); a dialect without one gets a variable
   // looked up by name.
@@ -148,7 +150,8 @@ class Debugger {
   // A line that never ends (a hand-made image's loop) still lets time pass.
   static constexpr uint32_t kStepInstructionsPerCycle = 100'000;
   std::string interpolate(uint32_t thread, const std::string& message);
-  void stop(StopReason reason, uint32_t thread, std::string description = {}, std::vector<uint32_t> ids = {});
+  void stop(StopReason reason, uint32_t thread, std::string description = {},
+            std::vector<uint32_t> ids = {});
   void start_running(std::optional<uint32_t> only_thread);
   std::vector<BreakpointState> states_of(bool functions) const;
 
@@ -159,7 +162,7 @@ class Debugger {
   std::optional<Stepping> stepping_;
   RunState state_ = RunState::Running;
   Stop stop_;
-  std::vector<uint32_t> halted_;   // threads the debugger halted, to resume
+  std::vector<uint32_t> halted_;     // threads the debugger halted, to resume
   std::vector<uint8_t> seen_error_;  // per thread: its error has been reported
   dialect::LoadedProgram* armed_for_ = nullptr;
   std::set<uint32_t> armed_pcs_;

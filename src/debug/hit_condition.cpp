@@ -7,10 +7,14 @@ namespace uprog::debug {
 
 bool HitCondition::met(uint64_t hits) const {
   switch (kind) {
-    case Kind::Always: return true;
-    case Kind::Equal: return hits == n;
-    case Kind::Multiple: return hits % n == 0;
-    case Kind::AtLeast: return hits >= n;
+    case Kind::Always:
+      return true;
+    case Kind::Equal:
+      return hits == n;
+    case Kind::Multiple:
+      return hits % n == 0;
+    case Kind::AtLeast:
+      return hits >= n;
   }
   return true;
 }

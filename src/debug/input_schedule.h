@@ -15,6 +15,7 @@ struct InputChange {
 };
 
 // Sorted by time; nullopt with `error` set when an item is not N=LEVEL@TIME (N 1..6, LEVEL 0|1).
-std::optional<std::vector<InputChange>> parse_input_changes(const std::vector<std::string>& items, std::string* error);
+std::optional<std::vector<InputChange>> parse_input_changes(const std::vector<std::string>& items,
+                                                            std::string* error);
 
 }  // namespace uprog::debug

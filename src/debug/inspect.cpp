@@ -48,7 +48,8 @@ std::vector<Variable> Debugger::locals(uint32_t thread, uint32_t depth) const {
   for (uint32_t i = 0; i < r.locals.size(); ++i) {
     Value v;
     if (!m.read_local(thread, depth, i, v)) continue;
-    out.push_back({r.locals[i].name, show_value(v, r.locals[i].type), type_name(r.locals[i].type), 0});
+    out.push_back(
+        {r.locals[i].name, show_value(v, r.locals[i].type), type_name(r.locals[i].type), 0});
   }
   return out;
 }
@@ -108,7 +109,8 @@ int Debugger::find_global(const std::string& name) const {
   return p == nullptr ? -1 : p->image().find_global(name);
 }
 
-SetResult Debugger::set_local(uint32_t thread, uint32_t depth, const std::string& name, const std::string& text) {
+SetResult Debugger::set_local(uint32_t thread, uint32_t depth, const std::string& name,
+                              const std::string& text) {
   SetResult out;
   dialect::LoadedProgram* p = program();
   if (p == nullptr || depth >= p->machine().frame_count(thread)) {
@@ -121,7 +123,8 @@ SetResult Debugger::set_local(uint32_t thread, uint32_t depth, const std::string
     if (r.locals[i].name != name) continue;
     const auto v = parse_value(text, r.locals[i].type);
     if (!v) {
-      out.error = "'" + text + "' is not " + (r.locals[i].type == ValueType::Int ? "an int" : "a float");
+      out.error =
+          "'" + text + "' is not " + (r.locals[i].type == ValueType::Int ? "an int" : "a float");
       return out;
     }
     m.write_local(thread, depth, i, *v);
@@ -151,13 +154,15 @@ SetResult Debugger::set_global(uint32_t global, uint32_t element, const std::str
   return {true, show_value(*v, type), {}};
 }
 
-dialect::Evaluation Debugger::evaluate(uint32_t thread, uint32_t depth, const std::string& expression) {
+dialect::Evaluation Debugger::evaluate(uint32_t thread, uint32_t depth,
+                                       const std::string& expression) {
   dialect::Evaluation e = drive_.firmware().evaluate(thread, depth, expression);
   if (e.ok || program() == nullptr) return e;
   // Without the dialect's evaluator (or where it refused), a variable's name still answers.
   for (const std::vector<Variable>& scope : {locals(thread, depth), globals()}) {
     for (const Variable& v : scope) {
-      if (v.name == expression && v.elements == 0) return {true, v.value, v.value != "0" && v.value != "0.0", {}};
+      if (v.name == expression && v.elements == 0)
+        return {true, v.value, v.value != "0" && v.value != "0.0", {}};
     }
   }
   return e;

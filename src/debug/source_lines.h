@@ -21,7 +21,8 @@ struct LinePlace {
 // that names files relative to another directory, the same file name.
 bool same_file(std::string_view a, std::string_view b);
 // The first code word of `line` in `file`, or of the nearest later line with code.
-std::optional<LinePlace> resolve_line(const bytecode::Image& image, std::string_view file, uint32_t line);
+std::optional<LinePlace> resolve_line(const bytecode::Image& image, std::string_view file,
+                                      uint32_t line);
 bool is_line_start(const bytecode::Image& image, uint32_t pc);
 
 }  // namespace uprog::debug

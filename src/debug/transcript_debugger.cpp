@@ -23,8 +23,8 @@ bool split_place(const std::string& text, std::string& file, uint32_t& line) {
 
 }  // namespace
 
-bool TranscriptDebugger::directive(controller::Controller& drive, const std::string& name, const std::string& arg,
-                                   std::string& failure) {
+bool TranscriptDebugger::directive(controller::Controller& drive, const std::string& name,
+                                   const std::string& arg, std::string& failure) {
   if (name != "debug") return false;
   std::istringstream in(arg);
   std::string verb, rest;
@@ -61,7 +61,9 @@ std::string TranscriptDebugger::command(controller::Controller& drive, const std
     return debugger_->state() == RunState::Stopped ? "" : "debug pause: the program did not stop";
   }
   if (verb == "step") {
-    const StepKind kind = rest == "in" ? StepKind::In : rest == "out" ? StepKind::Out : StepKind::Over;
+    const StepKind kind = rest == "in"    ? StepKind::In
+                          : rest == "out" ? StepKind::Out
+                                          : StepKind::Over;
     if (rest != "in" && rest != "out" && rest != "over") return "debug step needs in, over or out";
     debugger_->step(debugger_->last_stop().thread, kind);
     debugger_->run(uint64_t{1'000'000'000});  // a step ends within a second of virtual time here
@@ -79,9 +81,10 @@ std::string TranscriptDebugger::check_stopped(const std::string& rest) {
   if (debugger_->state() != RunState::Stopped) return "expected the program stopped, it is not";
   const std::string reason = stop_reason_name(debugger_->last_stop().reason);
   const auto frames = debugger_->stack(debugger_->last_stop().thread);
-  const std::string where = frames.empty() ? "(no frame)"
-                                           : std::filesystem::path(frames[0].file).filename().string() + ":" +
-                                                 std::to_string(frames[0].line);
+  const std::string where = frames.empty()
+                                ? "(no frame)"
+                                : std::filesystem::path(frames[0].file).filename().string() + ":" +
+                                      std::to_string(frames[0].line);
   const std::string got = reason + " " + where;
   return got == rest ? "" : "expected stopped " + rest + ", got " + got;
 }

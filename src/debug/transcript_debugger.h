@@ -17,7 +17,8 @@ class TranscriptDebugger final : public transcript::Extension {
   bool holds_time() const override { return debugger_ != nullptr; }
 
  private:
-  std::string command(controller::Controller& drive, const std::string& verb, const std::string& rest);
+  std::string command(controller::Controller& drive, const std::string& verb,
+                      const std::string& rest);
   std::string check_stopped(const std::string& rest);
 
   std::unique_ptr<Debugger> debugger_;

@@ -30,8 +30,10 @@ std::optional<Value> parse_value(std::string_view text, ValueType type) {
       base = 16;
     }
     int64_t magnitude = 0;
-    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), magnitude, base);
-    if (digits.empty() || ec != std::errc() || end != digits.data() + digits.size()) return std::nullopt;
+    const auto [end, ec] =
+        std::from_chars(digits.data(), digits.data() + digits.size(), magnitude, base);
+    if (digits.empty() || ec != std::errc() || end != digits.data() + digits.size())
+      return std::nullopt;
     const int64_t value = negative ? -magnitude : magnitude;
     if (value < INT32_MIN || value > INT32_MAX) return std::nullopt;
     n = static_cast<int32_t>(value);

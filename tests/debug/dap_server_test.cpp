@@ -1,12 +1,13 @@
 // The DAP server's protocol: framed requests in, and the ordered responses and events out, as
 // the Debug Adapter Protocol specifies them. Deterministic, because virtual time is.
+#include "debug/dap_server.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 #include <random>
 
 #include "debug/dap_framing.h"
-#include "debug/dap_server.h"
 #include "dialects/gold/dialect.h"
 
 namespace uprog::debug {
@@ -18,11 +19,12 @@ const std::string kScenario = UPROG_SOURCE_DIR "/tests/debug/programs/scenario.e
 struct Client {
   std::vector<json> out;
   DapReader reader;
-  DapServer server{{[](const std::string& name, const std::string&, std::string& error) -> const dialect::Dialect* {
-                      if (name.empty() || name == "gold") return &gold::dialect();
-                      error = "no dialect named '" + name + "'";
-                      return nullptr;
-                    }},
+  DapServer server{{[](const std::string& name, const std::string&,
+                       std::string& error) -> const dialect::Dialect* {
+                     if (name.empty() || name == "gold") return &gold::dialect();
+                     error = "no dialect named '" + name + "'";
+                     return nullptr;
+                   }},
                    [this](const std::string& framed) {
                      reader.feed(framed);
                      while (auto body = reader.next()) out.push_back(json::parse(*body));
@@ -31,7 +33,8 @@ struct Client {
 
   std::vector<json> request(const std::string& command, json arguments = json::object()) {
     out.clear();
-    const json r = {{"seq", seq++}, {"type", "request"}, {"command", command}, {"arguments", arguments}};
+    const json r = {
+        {"seq", seq++}, {"type", "request"}, {"command", command}, {"arguments", arguments}};
     server.handle(r.dump(-1, ' ', false, json::error_handler_t::replace));
     return out;
   }
@@ -50,13 +53,16 @@ struct Client {
     json bps = json::array();
     for (uint32_t l : lines) bps.push_back({{"line", l}});
     request("setBreakpoints", {{"source", {{"path", kScenario}}}, {"breakpoints", bps}});
-    request("setExceptionBreakpoints", {{"filters", errors ? json::array({"error"}) : json::array()}});
+    request("setExceptionBreakpoints",
+            {{"filters", errors ? json::array({"error"}) : json::array()}});
     return request("configurationDone");
   }
   json frame_variables(int64_t frame_id, const std::string& scope) {
     const auto scopes = request("scopes", {{"frameId", frame_id}});
     for (const json& s : scopes.at(0)["body"]["scopes"]) {
-      if (s["name"] == scope) return request("variables", {{"variablesReference", s["variablesReference"]}}).at(0)["body"]["variables"];
+      if (s["name"] == scope)
+        return request("variables", {{"variablesReference", s["variablesReference"]}})
+            .at(0)["body"]["variables"];
     }
     return json::array();
   }
@@ -65,13 +71,16 @@ struct Client {
       if (v["name"] == name) return v["value"];
     return "<none>";
   }
-  json top_frame() { return request("stackTrace", {{"threadId", 1}}).at(0)["body"]["stackFrames"].at(0); }
+  json top_frame() {
+    return request("stackTrace", {{"threadId", 1}}).at(0)["body"]["stackFrames"].at(0);
+  }
 };
 
 std::vector<std::string> kinds(const std::vector<json>& messages) {
   std::vector<std::string> out;
-  for (const json& m : messages) out.push_back(m["type"] == "event" ? "event " + m["event"].get<std::string>()
-                                                                     : "response " + m["command"].get<std::string>());
+  for (const json& m : messages)
+    out.push_back(m["type"] == "event" ? "event " + m["event"].get<std::string>()
+                                       : "response " + m["command"].get<std::string>());
   return out;
 }
 
@@ -83,8 +92,8 @@ TEST(DapServer, InitializeAnswersTheCapabilities) {
   EXPECT_EQ(r["request_seq"], 1);
   EXPECT_TRUE(r["success"]);
   for (const char* cap : {"supportsConfigurationDoneRequest", "supportsFunctionBreakpoints",
-                          "supportsConditionalBreakpoints", "supportsHitConditionalBreakpoints", "supportsLogPoints",
-                          "supportsSetVariable", "supportsTerminateRequest"}) {
+                          "supportsConditionalBreakpoints", "supportsHitConditionalBreakpoints",
+                          "supportsLogPoints", "supportsSetVariable", "supportsTerminateRequest"}) {
     EXPECT_TRUE(r["body"][cap]) << cap;
   }
   EXPECT_EQ(r["body"]["exceptionBreakpointFilters"][0]["filter"], "error");
@@ -95,13 +104,15 @@ TEST(DapServer, LaunchThenInitializedThenBreakpointStop) {
   c.request("initialize");
   auto out = c.request("launch", {{"program", kScenario}});
   // The drive's log follows: the program downloaded and started.
-  EXPECT_EQ(kinds(out), (std::vector<std::string>{"response launch", "event initialized", "event thread",
-                                                  "event output", "event output"}));
-  EXPECT_NE(out[4]["body"]["output"].get<std::string>().find("program started at main"), std::string::npos);
+  EXPECT_EQ(kinds(out), (std::vector<std::string>{"response launch", "event initialized",
+                                                  "event thread", "event output", "event output"}));
+  EXPECT_NE(out[4]["body"]["output"].get<std::string>().find("program started at main"),
+            std::string::npos);
   EXPECT_TRUE(out[0]["success"]);
   EXPECT_EQ(out[2]["body"]["reason"], "started");
   EXPECT_EQ(out[2]["body"]["threadId"], 1);
-  out = c.request("setBreakpoints", {{"source", {{"path", kScenario}}}, {"breakpoints", {{{"line", 19}}, {{"line", 16}}}}});
+  out = c.request("setBreakpoints", {{"source", {{"path", kScenario}}},
+                                     {"breakpoints", {{{"line", 19}}, {{"line", 16}}}}});
   ASSERT_EQ(kinds(out), std::vector<std::string>{"response setBreakpoints"});
   const json bps = out[0]["body"]["breakpoints"];
   ASSERT_EQ(bps.size(), 2u);
@@ -167,13 +178,15 @@ TEST(DapServer, EvaluateInTheDialectAndOnTheCommandLine) {
   c.start(json::object(), {19});
   c.run();
   const int64_t add = c.top_frame()["id"];
-  auto out = c.request("evaluate", {{"expression", "a + b * 10"}, {"frameId", add}, {"context", "hover"}});
+  auto out =
+      c.request("evaluate", {{"expression", "a + b * 10"}, {"frameId", add}, {"context", "hover"}});
   EXPECT_EQ(out.at(0)["body"]["result"], "10");
   out = c.request("evaluate", {{"expression", "a +"}, {"frameId", add}, {"context", "watch"}});
   EXPECT_FALSE(out.at(0)["success"]);
   // repl: a line of the drive's command line (Gold's), where the program's globals are known
   out = c.request("evaluate", {{"expression", "divisor*2; PS"}, {"context", "repl"}});
-  EXPECT_EQ(out.at(0)["body"]["result"], "8\n0");  // PS is 0: the program does not run while stopped
+  EXPECT_EQ(out.at(0)["body"]["result"],
+            "8\n0");  // PS is 0: the program does not run while stopped
 }
 
 TEST(DapServer, SetVariableAndTheProgramUsesIt) {
@@ -183,18 +196,25 @@ TEST(DapServer, SetVariableAndTheProgramUsesIt) {
   const int64_t main = c.top_frame()["id"];
   const auto scopes = c.request("scopes", {{"frameId", main}}).at(0)["body"]["scopes"];
   const json globals = scopes[1]["variablesReference"];
-  auto out = c.request("setVariable", {{"variablesReference", globals}, {"name", "divisor"}, {"value", "8"}});
+  auto out = c.request("setVariable",
+                       {{"variablesReference", globals}, {"name", "divisor"}, {"value", "8"}});
   EXPECT_TRUE(out.at(0)["success"]);
   EXPECT_EQ(out[0]["body"]["value"], "8");
-  out = c.request("setVariable", {{"variablesReference", globals}, {"name", "divisor"}, {"value", "x"}});
+  out = c.request("setVariable",
+                  {{"variablesReference", globals}, {"name", "divisor"}, {"value", "x"}});
   EXPECT_FALSE(out.at(0)["success"]);
-  out = c.request("setVariable", {{"variablesReference", scopes[2]["variablesReference"]}, {"name", "position"}, {"value", "1"}});
+  out = c.request("setVariable", {{"variablesReference", scopes[2]["variablesReference"]},
+                                  {"name", "position"},
+                                  {"value", "1"}});
   EXPECT_FALSE(out.at(0)["success"]);  // the drive's signals are read-only
   c.request("continue", {{"threadId", 1}});
   out = c.run();
-  EXPECT_EQ(kinds(out), (std::vector<std::string>{"event output", "event thread", "event exited", "event terminated"}));
+  EXPECT_EQ(kinds(out), (std::vector<std::string>{"event output", "event thread", "event exited",
+                                                  "event terminated"}));
   EXPECT_EQ(out[2]["body"]["exitCode"], 0);
-  EXPECT_EQ(c.request("evaluate", {{"expression", "ratio"}, {"context", "repl"}}).at(0)["body"]["result"], "12.0");  // Gold's form of a whole float
+  EXPECT_EQ(
+      c.request("evaluate", {{"expression", "ratio"}, {"context", "repl"}}).at(0)["body"]["result"],
+      "12.0");  // Gold's form of a whole float
 }
 
 TEST(DapServer, StepsAndStopOnEntry) {
@@ -209,8 +229,9 @@ TEST(DapServer, StepsAndStopOnEntry) {
     int line;
     const char* routine;
   };
-  for (const Step& s : {Step{"next", 10, "main"}, Step{"next", 11, "main"}, Step{"stepIn", 18, "add"},
-                        Step{"next", 19, "add"}, Step{"stepOut", 12, "main"}}) {
+  for (const Step& s :
+       {Step{"next", 10, "main"}, Step{"next", 11, "main"}, Step{"stepIn", 18, "add"},
+        Step{"next", 19, "add"}, Step{"stepOut", 12, "main"}}) {
     out = c.request(s.request, {{"threadId", 1}});
     ASSERT_EQ(kinds(out), std::vector<std::string>{std::string("response ") + s.request});
     out = c.run();
@@ -229,12 +250,12 @@ TEST(DapServer, ConditionsHitCountsAndLogPoints) {
   Client c;
   c.request("initialize");
   c.request("launch", {{"program", kScenario}});
-  auto out = c.request("setBreakpoints",
-                       {{"source", {{"path", kScenario}}},
-                        {"breakpoints", {{{"line", 11}, {"hitCondition", "%2"}},
-                                         {{"line", 19}, {"logMessage", "c is {c}"}},
-                                         {{"line", 13}, {"condition", "total == 15"}},
-                                         {{"line", 18}, {"hitCondition", "bad"}}}}});
+  auto out = c.request("setBreakpoints", {{"source", {{"path", kScenario}}},
+                                          {"breakpoints",
+                                           {{{"line", 11}, {"hitCondition", "%2"}},
+                                            {{"line", 19}, {"logMessage", "c is {c}"}},
+                                            {{"line", 13}, {"condition", "total == 15"}},
+                                            {{"line", 18}, {"hitCondition", "bad"}}}}});
   const json bps = out.at(0)["body"]["breakpoints"];
   EXPECT_FALSE(bps[3]["verified"]);
   EXPECT_TRUE(bps[3].contains("message"));
@@ -248,24 +269,32 @@ TEST(DapServer, ConditionsHitCountsAndLogPoints) {
         const std::string text = m["body"]["output"];
         seen.push_back("output " + (text[0] == '[' ? text.substr(text.find(']') + 2) : text));
       }
-      if (m["event"] == "stopped") seen.push_back("stopped " + std::to_string(c.top_frame()["line"].get<int>()));
+      if (m["event"] == "stopped")
+        seen.push_back("stopped " + std::to_string(c.top_frame()["line"].get<int>()));
       if (m["event"] == "terminated") seen.push_back("terminated");
     }
     if (!seen.empty() && seen.back() == "terminated") break;
     c.request("continue", {{"threadId", 1}});
   }
   const std::vector<std::string> expected = {
-      "output c is 1\n", "stopped 11",  // the 2nd hit of line 11: i = 2, before its call
-      "output c is 3\n", "output c is 6\n", "stopped 11", "output c is 10\n", "output c is 15\n",
+      "output c is 1\n",
+      "stopped 11",  // the 2nd hit of line 11: i = 2, before its call
+      "output c is 3\n",
+      "output c is 6\n",
+      "stopped 11",
+      "output c is 10\n",
+      "output c is 15\n",
       "stopped 13",  // total == 15 there
-      "output program finished\n", "terminated"};
+      "output program finished\n",
+      "terminated"};
   EXPECT_EQ(seen, expected);
 }
 
 TEST(DapServer, FunctionBreakpointAndBreakOnError) {
   Client c;
   c.start(json::object(), {}, true);
-  auto out = c.request("setFunctionBreakpoints", {{"breakpoints", {{{"name", "add"}}, {{"name", "nothere"}}}}});
+  auto out = c.request("setFunctionBreakpoints",
+                       {{"breakpoints", {{{"name", "add"}}, {{"name", "nothere"}}}}});
   EXPECT_TRUE(out.at(0)["body"]["breakpoints"][0]["verified"]);
   EXPECT_FALSE(out[0]["body"]["breakpoints"][1]["verified"]);
   out = c.run();
@@ -309,7 +338,8 @@ TEST(DapServer, BadRequestsGetErrorsAndTheSessionGoesOn) {
   EXPECT_FALSE(out.at(0)["success"]);
   out = c.request("launch", {{"program", kScenario}, {"inputs", {"9=1@1ms"}}});
   EXPECT_FALSE(out.at(0)["success"]);
-  out = c.request("launch", {{"program", kScenario}, {"stopOnEntry", "yes"}});  // a string, not a bool
+  out = c.request("launch",
+                  {{"program", kScenario}, {"stopOnEntry", "yes"}});  // a string, not a bool
   EXPECT_FALSE(out.at(0)["success"]);
   out = c.request("frobnicate");
   EXPECT_FALSE(out.at(0)["success"]);
@@ -361,16 +391,56 @@ namespace {
 // Requests of every command with arguments of every shape, and bytes that are not UTF-8: each
 // gets an answer or an error event, and the session goes on answering.
 TEST(DapServer, ArbitraryRequestsNeverEndTheSession) {
-  const std::vector<std::string> commands = {
-      "initialize", "launch", "setBreakpoints", "setFunctionBreakpoints", "setExceptionBreakpoints",
-      "configurationDone", "threads", "stackTrace", "scopes", "variables", "setVariable", "evaluate",
-      "continue", "next", "stepIn", "stepOut", "pause", "attach", "bogus"};
-  const std::vector<json> values = {nullptr, 0, -1, 99999999999, 2.5, "x", "\xff\xfe", json::array(),
-                                    json::array({1, "a"}), json::object(), true,
-                                    {{"line", "a"}}, {{"path", kScenario}}, json::array({{{"line", -3}}})};
-  const std::vector<std::string> keys = {"program", "source", "breakpoints", "lines", "threadId", "frameId",
-                                         "variablesReference", "name", "value", "expression", "context",
-                                         "filters", "inputs", "args", "stopOnEntry", "levels", "startFrame"};
+  const std::vector<std::string> commands = {"initialize",
+                                             "launch",
+                                             "setBreakpoints",
+                                             "setFunctionBreakpoints",
+                                             "setExceptionBreakpoints",
+                                             "configurationDone",
+                                             "threads",
+                                             "stackTrace",
+                                             "scopes",
+                                             "variables",
+                                             "setVariable",
+                                             "evaluate",
+                                             "continue",
+                                             "next",
+                                             "stepIn",
+                                             "stepOut",
+                                             "pause",
+                                             "attach",
+                                             "bogus"};
+  const std::vector<json> values = {nullptr,
+                                    0,
+                                    -1,
+                                    99999999999,
+                                    2.5,
+                                    "x",
+                                    "\xff\xfe",
+                                    json::array(),
+                                    json::array({1, "a"}),
+                                    json::object(),
+                                    true,
+                                    {{"line", "a"}},
+                                    {{"path", kScenario}},
+                                    json::array({{{"line", -3}}})};
+  const std::vector<std::string> keys = {"program",
+                                         "source",
+                                         "breakpoints",
+                                         "lines",
+                                         "threadId",
+                                         "frameId",
+                                         "variablesReference",
+                                         "name",
+                                         "value",
+                                         "expression",
+                                         "context",
+                                         "filters",
+                                         "inputs",
+                                         "args",
+                                         "stopOnEntry",
+                                         "levels",
+                                         "startFrame"};
   std::mt19937 random(16);
   Client c;
   c.start(json::object(), {11});
@@ -378,7 +448,8 @@ TEST(DapServer, ArbitraryRequestsNeverEndTheSession) {
   for (int i = 0; i < 3000; ++i) {
     json args = json::object();
     const int n = static_cast<int>(random() % 4);
-    for (int k = 0; k < n; ++k) args[keys[random() % keys.size()]] = values[random() % values.size()];
+    for (int k = 0; k < n; ++k)
+      args[keys[random() % keys.size()]] = values[random() % values.size()];
     const auto out = c.request(commands[random() % commands.size()], args);
     ASSERT_FALSE(out.empty()) << i;
     c.run();

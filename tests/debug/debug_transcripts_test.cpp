@@ -15,7 +15,8 @@ TEST(DebugTranscripts, EveryOnePasses) {
     if (entry.path().extension() != ".txt") continue;
     ++files;
     TranscriptDebugger extension;
-    const transcript::TranscriptResult r = transcript::run_transcript_file(entry.path().string(), {}, nullptr, &extension);
+    const transcript::TranscriptResult r =
+        transcript::run_transcript_file(entry.path().string(), {}, nullptr, &extension);
     EXPECT_TRUE(r.ok) << entry.path();
     EXPECT_GT(r.checks, 0) << entry.path();
     for (const std::string& f : r.failures) ADD_FAILURE() << f;

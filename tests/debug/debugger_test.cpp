@@ -1,9 +1,10 @@
 // The drive-side debugger on a Gold program (tests/debug/programs/scenario.ehl): line and
 // function breakpoints, conditions and hit counts, stepping by source line, frames, locals,
 // globals, signals, setting a variable, break on a run-time error, and time standing still.
+#include "debug/debugger.h"
+
 #include <gtest/gtest.h>
 
-#include "debug/debugger.h"
 #include "dialects/gold/dialect.h"
 
 namespace uprog::debug {
@@ -12,7 +13,8 @@ namespace {
 const std::string kScenario = UPROG_SOURCE_DIR "/tests/debug/programs/scenario.ehl";
 constexpr uint64_t kSecond = 1'000'000'000;
 
-BreakpointSpec at(uint32_t line, std::string condition = {}, std::string hit = {}, std::string log = {}) {
+BreakpointSpec at(uint32_t line, std::string condition = {}, std::string hit = {},
+                  std::string log = {}) {
   BreakpointSpec b;
   b.line = line;
   b.condition = std::move(condition);
@@ -116,7 +118,8 @@ TEST(Debugger, HitConditionsCountHits) {
     std::string hit;
     std::vector<std::string> stops;  // i at each stop
   };
-  for (const Case& c : {Case{"3", {"3"}}, Case{"==2", {"2"}}, Case{"%2", {"2", "4"}}, Case{">=4", {"4", "5"}}}) {
+  for (const Case& c :
+       {Case{"3", {"3"}}, Case{"==2", {"2"}}, Case{"%2", {"2", "4"}}, Case{">=4", {"4", "5"}}}) {
     Session s;
     s.debugger.set_line_breakpoints(kScenario, {at(11, {}, c.hit)});
     std::vector<std::string> stops;
@@ -147,7 +150,8 @@ TEST(Debugger, ALogMessageLogsInsteadOfStopping) {
   s.debugger.set_line_breakpoints(kScenario, {at(19, {}, {}, "c={c} total={total}")});
   EXPECT_EQ(s.run(), RunState::Ended);
   EXPECT_EQ(s.debugger.take_messages(),
-            (std::vector<std::string>{"c=1 total=0", "c=3 total=1", "c=6 total=3", "c=10 total=6", "c=15 total=10"}));
+            (std::vector<std::string>{"c=1 total=0", "c=3 total=1", "c=6 total=3", "c=10 total=6",
+                                      "c=15 total=10"}));
 }
 
 TEST(Debugger, FunctionBreakpointStopsAtItsFirstLine) {

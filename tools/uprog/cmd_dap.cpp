@@ -5,10 +5,9 @@
 #include <poll.h>
 #include <unistd.h>
 
-#include <csignal>
-
 #include <cerrno>
 #include <chrono>
+#include <csignal>
 
 #include "commands.h"
 #include "debug/dap_framing.h"
@@ -34,7 +33,8 @@ bool write_all(int fd, const std::string& bytes) {
   return true;
 }
 
-const dialect::Dialect* dialect_for(const std::string& name, const std::string& path, std::string& error) {
+const dialect::Dialect* dialect_for(const std::string& name, const std::string& path,
+                                    std::string& error) {
   if (!name.empty()) {
     const dialect::Dialect* d = dialects::find(name);
     if (d == nullptr) error = "no dialect named '" + name + "' (uprog dialects lists them)";
@@ -48,7 +48,8 @@ const dialect::Dialect* dialect_for(const std::string& name, const std::string& 
 int serve(int in, int out) {
   std::signal(SIGPIPE, SIG_IGN);  // a client gone mid-answer ends the session, not the process
   bool broken = false;
-  debug::DapServer server({dialect_for}, [&](const std::string& m) { broken = broken || !write_all(out, m); });
+  debug::DapServer server({dialect_for},
+                          [&](const std::string& m) { broken = broken || !write_all(out, m); });
   debug::DapReader reader;
   char buffer[65536];
   auto last = std::chrono::steady_clock::now();
@@ -70,7 +71,8 @@ int serve(int in, int out) {
     }
     if (server.running()) {
       const auto now = std::chrono::steady_clock::now();
-      const auto wall_ns = static_cast<uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(now - last).count());
+      const auto wall_ns = static_cast<uint64_t>(
+          std::chrono::duration_cast<std::chrono::nanoseconds>(now - last).count());
       last = now;
       server.poll(server.realtime() ? wall_ns : kSliceNs);
     } else {
@@ -100,7 +102,8 @@ int listen_and_serve(const std::string& where) {
     return 1;
   }
   const auto local = acceptor.local_endpoint();
-  fmt::print(stderr, "uprog dap: listening on tcp {}:{}\n", local.address().to_string(), local.port());
+  fmt::print(stderr, "uprog dap: listening on tcp {}:{}\n", local.address().to_string(),
+             local.port());
   asio::ip::tcp::socket socket(io);
   acceptor.accept(socket, ec);
   if (ec) {
@@ -112,14 +115,19 @@ int listen_and_serve(const std::string& where) {
 
 void add_options(CLI::App* cmd, Action& action) {
   auto listen = std::make_shared<std::string>();
-  cmd->add_option("--listen", *listen, "HOST:PORT: serve one client over TCP instead of stdin/stdout (port 0 picks one)");
+  cmd->add_option(
+      "--listen", *listen,
+      "HOST:PORT: serve one client over TCP instead of stdin/stdout (port 0 picks one)");
   cmd->callback([&action, listen] {
-    action = [listen] { return listen->empty() ? serve(STDIN_FILENO, STDOUT_FILENO) : listen_and_serve(*listen); };
+    action = [listen] {
+      return listen->empty() ? serve(STDIN_FILENO, STDOUT_FILENO) : listen_and_serve(*listen);
+    };
   });
 }
 
-const Subcommand kDap{"dap", "Debug a program in an editor: a Debug Adapter Protocol server (docs/debugging.md)",
-                      add_options};
+const Subcommand kDap{
+    "dap", "Debug a program in an editor: a Debug Adapter Protocol server (docs/debugging.md)",
+    add_options};
 
 }  // namespace
 }  // namespace uprog::cli

@@ -23,7 +23,8 @@ vm::MachineConfig evaluation_config() {
 
 // The frame's locals seen as globals after the program's own: the line compiler knows globals
 // only. A local hides a global of its name, as in the function's body.
-std::vector<KnownGlobal> names_in_scope(std::vector<KnownGlobal> globals, const bytecode::Routine* routine) {
+std::vector<KnownGlobal> names_in_scope(std::vector<KnownGlobal> globals,
+                                        const bytecode::Routine* routine) {
   if (routine == nullptr) return globals;
   for (const bytecode::Local& l : routine->locals) {
     for (KnownGlobal& g : globals)
@@ -38,7 +39,8 @@ std::vector<KnownGlobal> names_in_scope(std::vector<KnownGlobal> globals, const 
 
 }  // namespace
 
-dialect::Evaluation Firmware::evaluate(uint32_t thread, uint32_t depth, std::string_view expression) {
+dialect::Evaluation Firmware::evaluate(uint32_t thread, uint32_t depth,
+                                       std::string_view expression) {
   dialect::Evaluation out;
   if (!program_) {
     out.error = "no program is loaded";
@@ -46,7 +48,8 @@ dialect::Evaluation Firmware::evaluate(uint32_t thread, uint32_t depth, std::str
   }
   vm::Machine& pm = program_->machine();
   const bytecode::Routine* routine = nullptr;
-  if (depth < pm.frame_count(thread)) routine = &program_->image().routines[pm.frame(thread, depth).routine];
+  if (depth < pm.frame_count(thread))
+    routine = &program_->image().routines[pm.frame(thread, depth).routine];
   const std::vector<KnownGlobal> known = names_in_scope(known_globals_, routine);
   const CompiledLine line = compile_line(expression, known);
   if (!line.ok()) {
@@ -54,7 +57,8 @@ dialect::Evaluation Firmware::evaluate(uint32_t thread, uint32_t depth, std::str
     return out;
   }
   std::string why;
-  const auto loaded = dialect::LoadedProgram::load(bytecode::encode(line.image), evaluation_config(), *this, &why, false);
+  const auto loaded = dialect::LoadedProgram::load(bytecode::encode(line.image),
+                                                   evaluation_config(), *this, &why, false);
   if (!loaded) {
     out.error = "the expression's image is unsound: " + why;
     return out;
@@ -82,9 +86,11 @@ dialect::Evaluation Firmware::evaluate(uint32_t thread, uint32_t depth, std::str
   };
   exchange(true);
   m.start(0, 0);
-  const vm::SliceResult r = m.run_slice(0, vm::Budget::of_instructions(kEvaluationInstructionBudget));
+  const vm::SliceResult r =
+      m.run_slice(0, vm::Budget::of_instructions(kEvaluationInstructionBudget));
   if (r.end != vm::SliceEnd::Finished) {
-    out.error = r.end == vm::SliceEnd::Error ? vm::run_error_text(m.last_error(0)) : "the expression did not finish";
+    out.error = r.end == vm::SliceEnd::Error ? vm::run_error_text(m.last_error(0))
+                                             : "the expression did not finish";
     return out;
   }
   exchange(false);
@@ -105,13 +111,15 @@ dialect::Evaluation Firmware::evaluate(uint32_t thread, uint32_t depth, std::str
   return out;
 }
 
-std::string Firmware::start_with_arguments(std::string_view entry, const std::vector<double>& args) {
+std::string Firmware::start_with_arguments(std::string_view entry,
+                                           const std::vector<double>& args) {
   if (args.empty()) return start(entry);
   std::string error;
   if (load_stored(&error) != 0) return error;
   const std::string name = entry.empty() ? "main" : std::string(entry);
   const int32_t code = execute_program(name, args);
-  return code == 0 ? std::string() : "cannot start at '" + name + "' (error " + std::to_string(code) + ")";
+  return code == 0 ? std::string()
+                   : "cannot start at '" + name + "' (error " + std::to_string(code) + ")";
 }
 
 }  // namespace uprog::gold
