@@ -93,12 +93,11 @@ std::vector<BreakpointState> Debugger::set_line_breakpoints(
     const std::string& file, const std::vector<BreakpointSpec>& specs) {
   std::erase_if(breakpoints_,
                 [&](const Armed& b) { return b.spec.function.empty() && b.file == file; });
-  std::vector<BreakpointState> out;
-  for (const BreakpointSpec& spec : specs) {
-    breakpoints_.push_back(make_breakpoint(file, spec));
-    out.push_back(breakpoints_.back().state);
-  }
+  for (const BreakpointSpec& spec : specs) breakpoints_.push_back(make_breakpoint(file, spec));
   arm();
+  std::vector<BreakpointState> out;
+  for (size_t i = breakpoints_.size() - specs.size(); i < breakpoints_.size(); ++i)
+    out.push_back(breakpoints_[i].state);
   return out;
 }
 
@@ -134,6 +133,13 @@ void Debugger::arm() {
   armed_pcs_.clear();
   for (uint32_t pc : wanted)
     if (m.set_breakpoint(pc)) armed_pcs_.insert(pc);
+  // The machine's table is full: what did not fit is said to be unverified, not kept quiet.
+  for (Armed& b : breakpoints_) {
+    if (!b.pc || armed_pcs_.contains(*b.pc)) continue;
+    b.pc.reset();
+    b.state.verified = false;
+    b.state.message = "the program's breakpoint table is full";
+  }
 }
 
 // --- execution ---

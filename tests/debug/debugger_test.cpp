@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "dialects/gold/dialect.h"
 
 namespace uprog::debug {
@@ -259,6 +261,35 @@ TEST(Debugger, PauseStopsEveryThreadWhereItStands) {
   EXPECT_EQ(s.debugger.last_stop().reason, StopReason::Pause);
   EXPECT_EQ(s.debugger.threads().at(0).status, vm::ThreadStatus::Halted);
   EXPECT_EQ(s.go(), RunState::Ended);
+}
+
+TEST(Debugger, BreakpointsBeyondTheMachinesTableAreUnverified) {
+  // A program of 30 lines with code; Gold's machine keeps 16 breakpoints.
+  const std::string path = testing::TempDir() + "/thirty_lines.ehl";
+  {
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fputs("int n\nfunction main()\n", f);
+    for (int i = 0; i < 30; ++i) std::fputs("n = n + 1\n", f);
+    std::fputs("return\n", f);
+    std::fclose(f);
+  }
+  Session s(path);
+  std::vector<BreakpointSpec> specs;
+  for (uint32_t line = 3; line < 33; ++line) specs.push_back(at(line));
+  const auto states = s.debugger.set_line_breakpoints(path, specs);
+  ASSERT_EQ(states.size(), 30u);
+  size_t verified = 0;
+  for (const BreakpointState& b : states) {
+    if (b.verified)
+      ++verified;
+    else
+      EXPECT_EQ(b.message, "the program's breakpoint table is full");
+  }
+  EXPECT_EQ(verified, 16u);
+  // The ones set stop the program, line by line.
+  ASSERT_EQ(s.run(), RunState::Stopped);
+  EXPECT_EQ(s.line(), 3u);
 }
 
 TEST(Debugger, SignalsShowTheDrive) {
