@@ -158,13 +158,21 @@ void DapServer::evaluate(const json& r) {
     const std::vector<controller::Answer> answers =
         stopped ? drive_->query(expression) : drive_->send(expression);
     debugger_->program_changed();
+    const bool resumed = stopped && debugger_->resumed_elsewhere();
     std::string result;
     for (const controller::Answer& a : answers) {
       if (!result.empty()) result += "\n";
       result +=
           a.is_error() ? "Error: " + a.text + " (EC " + std::to_string(a.error) + ")" : a.text;
     }
-    return respond(r, {{"result", result}, {"variablesReference", 0}});
+    respond(r, {{"result", result}, {"variablesReference", 0}});
+    if (resumed) {
+      // The program goes on without a continue request: the client is told (DAP's continued).
+      references_.clear();
+      stop_reported_ = false;
+      event("continued", {{"threadId", 1}, {"allThreadsContinued", true}});
+    }
+    return;
   }
   const auto [thread, depth] = frame_of(args.value("frameId", json()));
   const dialect::Evaluation e = debugger_->evaluate(thread, depth, expression);

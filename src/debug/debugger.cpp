@@ -191,6 +191,19 @@ void Debugger::start_running(std::optional<uint32_t> only_thread) {
   }
 }
 
+bool Debugger::resumed_elsewhere() {
+  dialect::LoadedProgram* p = program();
+  if (state_ != RunState::Stopped || p == nullptr) return false;
+  for (const dialect::ThreadInfo& t : drive_.firmware().threads()) {
+    const vm::ThreadStatus s = p->machine().status(t.thread);
+    if (s == vm::ThreadStatus::Running || s == vm::ThreadStatus::Waiting) {
+      resume();
+      return true;
+    }
+  }
+  return false;
+}
+
 void Debugger::resume() {
   stepping_.reset();
   start_running(std::nullopt);

@@ -88,6 +88,9 @@ class Debugger {
   void step(uint32_t thread, StepKind kind, bool single_thread = false);
   // Stop now, where every thread stands.
   void pause();
+  // While stopped: true when a thread runs again, resumed by other means than this debugger (a
+  // line typed at the drive's command line: Gold's XC, DB##GO); the debugger then runs on too.
+  bool resumed_elsewhere();
   // Lets the drive run, cycle by cycle, until the program stops or ends or `budget_ns` of
   // virtual time has passed.
   RunState run(uint64_t budget_ns);

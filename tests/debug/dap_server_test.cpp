@@ -325,6 +325,27 @@ TEST(DapServer, PauseStopsARunningProgram) {
   EXPECT_EQ(out[1]["body"]["reason"], "pause");
 }
 
+TEST(DapServer, ALineThatResumesTheProgramSendsContinued) {
+  Client c;
+  c.start(json::object(), {19});
+  c.run();
+  // A line that does not resume it: no event.
+  auto out = c.request("evaluate", {{"expression", "PS"}, {"context", "repl"}});
+  EXPECT_EQ(kinds(out), std::vector<std::string>{"response evaluate"});
+  // Gold's XC, typed at the drive's command line, continues the program: the client is told.
+  c.request("setBreakpoints", {{"source", {{"path", kScenario}}}, {"breakpoints", json::array()}});
+  out = c.request("evaluate", {{"expression", "XC"}, {"context", "repl"}});
+  ASSERT_GE(out.size(), 2u);
+  EXPECT_EQ(kinds(out)[0], "response evaluate");
+  EXPECT_EQ(kinds(out)[1], "event continued");
+  EXPECT_EQ(out[1]["body"]["allThreadsContinued"], true);
+  // Stepping is refused now: it runs.
+  EXPECT_FALSE(c.request("next", {{"threadId", 1}}).at(0)["success"]);
+  out = c.run();
+  ASSERT_FALSE(out.empty());
+  EXPECT_EQ(out.back()["event"], "terminated");
+}
+
 TEST(DapServer, BadRequestsGetErrorsAndTheSessionGoesOn) {
   Client c;
   auto out = c.request("setBreakpoints", {{"source", {{"path", kScenario}}}});
