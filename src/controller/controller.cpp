@@ -37,6 +37,9 @@ class Controller::Drive final : public dialect::Runtime, public drive::ProgramWo
   dialect::Flash& flash() override { return flash_; }
   uint64_t now_ns() const override { return now_ns_; }
   void advance_ns(uint64_t ns) override;
+  // From the time given so far to the firmware's next cycle (0 when a reboot made it due already:
+  // run_until() then runs it).
+  uint64_t until_next_cycle_ns() const { return next_cycle_ns_ > target_ns_ ? next_cycle_ns_ - target_ns_ : 0; }
   void log(std::string text) override { log_.push_back({now_ns_ / 1000, std::move(text)}); }
   void output(std::string_view text) override { output_.emplace_back(text); }
   void reboot() override;
@@ -206,6 +209,7 @@ void Controller::reboot() { drive_->reboot(); }
 
 void Controller::advance(uint64_t duration_us) { drive_->advance_ns(duration_us * 1000); }
 void Controller::advance_ns(uint64_t duration_ns) { drive_->advance_ns(duration_ns); }
+uint64_t Controller::ns_to_next_cycle() const { return drive_->until_next_cycle_ns(); }
 uint64_t Controller::now_us() const { return drive_->now_ns() / 1000; }
 uint64_t Controller::now_ns() const { return drive_->now_ns(); }
 void Controller::set_input_level(int input, bool high) { drive_->axis(0).set_input_level(input, high); }

@@ -72,6 +72,9 @@ class Controller {
   // Lets virtual time pass: the axes step on their servo periods, the firmware's cycle on its.
   void advance(uint64_t duration_us);
   void advance_ns(uint64_t duration_ns);
+  // How long until the firmware's next cycle: advance_ns() by it runs that cycle and no more (the
+  // debugger: a program that stops in that cycle stops with time standing at it).
+  uint64_t ns_to_next_cycle() const;
   uint64_t now_us() const;
   uint64_t now_ns() const;
   void set_input_level(int input, bool high);

@@ -44,6 +44,15 @@ struct ThreadInfo {
   int32_t error = 0;  // the last run-time error (vm RunError), 0 for none
 };
 
+// What an expression evaluated for the debugger gave: its value in the dialect's own words, and
+// whether it counts as true (a breakpoint's condition), or why it could not be evaluated.
+struct Evaluation {
+  bool ok = false;
+  std::string value;  // the value as the dialect shows it ("7", "2.5"), several joined by ", "
+  bool is_true = false;
+  std::string error;  // why not, when !ok
+};
+
 // One host's conversation with the drive: what belongs to that host alone (a download in
 // progress, a host level) lives here and dies with the connection.
 class Session {
@@ -93,6 +102,19 @@ class Firmware {
   virtual std::optional<drive::Signal> recorder_signal(std::string_view name) const {
     (void)name;
     return std::nullopt;
+  }
+
+  // --- for the debugger (src/debug); the defaults offer nothing, so a dialect adds them as it can ---
+  // The program in RAM (its machine and hosted image: line table, locals), or nullptr.
+  virtual LoadedProgram* debug_program() { return nullptr; }
+  // An expression in the dialect's syntax, seeing the locals of frame `depth` (0 innermost) of
+  // `thread` and the globals; what it assigns stays assigned. It takes no virtual time.
+  virtual Evaluation evaluate(uint32_t /*thread*/, uint32_t /*depth*/, std::string_view /*expression*/) {
+    return {false, {}, false, "this dialect evaluates no expressions for the debugger"};
+  }
+  // As start(), with inputs for the entry routine (the debugger's `args`): "" or why not.
+  virtual std::string start_with_arguments(std::string_view entry, const std::vector<double>& args) {
+    return args.empty() ? start(entry) : "this dialect starts a program without arguments";
   }
 };
 

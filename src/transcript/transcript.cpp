@@ -47,9 +47,10 @@ struct Pending {
 
 class Runner {
  public:
-  Runner(std::string name, std::string base_dir, const controller::Timing& timing, const dialect::Dialect* d)
+  Runner(std::string name, std::string base_dir, const controller::Timing& timing, const dialect::Dialect* d,
+         Extension* extension)
       : name_(std::move(name)), base_dir_(std::move(base_dir)), timing_(timing),
-        dialect_(d != nullptr ? d : &dialects::default_dialect()) {}
+        dialect_(d != nullptr ? d : &dialects::default_dialect()), extension_(extension) {}
 
   TranscriptResult run(const std::string& text) {
     size_t start = 0;
@@ -149,7 +150,8 @@ class Runner {
       p.line = number;
       p.sent = sent;
       drive();
-      p.answers = host_->send(sent);  // as a host sends it: DL lines too
+      // As a host sends it (DL lines too), or taking no time while an extension holds it.
+      p.answers = extension_ != nullptr && extension_->holds_time() ? drive_->query(sent) : host_->send(sent);
       collect_output();
       pending_ = std::move(p);
       return;
@@ -167,6 +169,7 @@ class Runner {
     } else if (directive == "wait") {
       uint64_t us = 0;
       if (!parse_duration_us(arg, us)) fail(number, "wait needs a duration such as 500ms, 2s or 10us");
+      else if (extension_ != nullptr) extension_->wait(drive(), us);
       else drive().advance(us);
       collect_output();
     } else if (directive == "input") {
@@ -194,6 +197,10 @@ class Runner {
       else if (drive().program_error() != code) {
         fail(number, "expected program error " + arg + ", got " + std::to_string(drive().program_error()));
       }
+    } else if (std::string why; extension_ != nullptr && extension_->directive(drive(), directive, arg, why)) {
+      ++result_.checks;
+      if (!why.empty()) fail(number, why);
+      collect_output();
     } else {
       fail(number, "unknown directive '" + directive + "'");
     }
@@ -313,6 +320,7 @@ class Runner {
   std::string name_, base_dir_;
   controller::Timing timing_;
   const dialect::Dialect* dialect_;
+  Extension* extension_;
   std::unique_ptr<controller::Controller> drive_;
   std::unique_ptr<dialect::Session> host_;
   std::vector<std::string> output_;  // lines the drive sent on its own, not yet expected
@@ -345,12 +353,12 @@ bool parse_duration_us(const std::string& text, uint64_t& out_us) {
 
 TranscriptResult run_transcript_text(const std::string& text, const std::string& name,
                                      const std::string& base_dir, const controller::Timing& timing,
-                                     const dialect::Dialect* dialect) {
-  return Runner(name, base_dir, timing, dialect).run(text);
+                                     const dialect::Dialect* dialect, Extension* extension) {
+  return Runner(name, base_dir, timing, dialect, extension).run(text);
 }
 
 TranscriptResult run_transcript_file(const std::string& path, const controller::Timing& timing,
-                                     const dialect::Dialect* dialect) {
+                                     const dialect::Dialect* dialect, Extension* extension) {
   std::string error;
   auto text = read_text_file(path, &error);
   if (!text) {
@@ -358,7 +366,8 @@ TranscriptResult run_transcript_file(const std::string& path, const controller::
     r.failures.push_back(path + ": cannot read: " + error);
     return r;
   }
-  return run_transcript_text(*text, path, std::filesystem::path(path).parent_path().string(), timing, dialect);
+  return run_transcript_text(*text, path, std::filesystem::path(path).parent_path().string(), timing, dialect,
+                             extension);
 }
 
 }  // namespace uprog::transcript

@@ -318,6 +318,15 @@ bool Machine::read_local(uint32_t thread, uint32_t depth, uint32_t local, Value&
   return true;
 }
 
+bool Machine::write_local(uint32_t thread, uint32_t depth, uint32_t local, Value value) {
+  if (thread >= thread_count_ || depth >= threads_[thread].frame_count) return false;
+  Thread& t = threads_[thread];
+  const Frame& f = t.frames[t.frame_count - 1 - depth];
+  if (local >= routines_[f.routine].locals) return false;
+  f.locals[local] = value;
+  return true;
+}
+
 bool Machine::is_instruction_start(uint32_t pc) const {
   for (uint32_t at = 0; at < code_size_;) {
     if (at == pc) return true;

@@ -119,6 +119,7 @@ class Machine {
   bool write_memory(uint32_t address, Value value);
   // Locals of a frame, for the debugger.
   bool read_local(uint32_t thread, uint32_t depth, uint32_t local, Value& out) const;
+  bool write_local(uint32_t thread, uint32_t depth, uint32_t local, Value value);
 
   // False when pc is not an instruction or the table is full.
   bool set_breakpoint(uint32_t pc);

@@ -38,6 +38,7 @@ void Firmware::dispatch_auto_routines() {
 void Firmware::on_run_time_error() {
   vm::Machine& m = *machine();
   program_error_ = m.last_error(kProgramThread);
+  debug_error_reported_ = false;  // DB##MS shows it until DB##ES reads it
   program_error_detail_ = m.error_detail(kProgramThread);
   std::string text = "run-time error " + std::to_string(static_cast<int>(program_error_)) + " (" +
                      vm::run_error_text(program_error_) + ")";
@@ -66,7 +67,10 @@ void Firmware::background_slice() {
   // runs every servo cycle, and the slice's end says all the firmware needs.
   const vm::ThreadStatus before = m.status(kProgramThread);
   if (before != vm::ThreadStatus::Running && before != vm::ThreadStatus::Waiting) return;
-  const vm::SliceResult r = m.run_slice(kProgramThread, slice_budget_);
+  // A step of the Elmo debugger runs to the nearest end of line (DB##SO, SI, SU).
+  const vm::SliceResult r =
+      m.run_slice(kProgramThread, debug_step_ == DebugStep::None ? slice_budget_ : vm::Budget::of_lines(1));
+  if (debug_active_) after_debug_slice(r.end);
   if (r.end == vm::SliceEnd::Error) on_run_time_error();
   if (r.end == vm::SliceEnd::Finished) log("program finished");
   if (!autos_.quiet()) autos_.update_active(m, kProgramThread);

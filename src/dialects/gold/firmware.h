@@ -49,6 +49,9 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::vector<dialect::ThreadInfo> threads() const override;
   const dialect::LoadedProgram* loaded_program() const override { return program_.get(); }
   std::optional<drive::Signal> recorder_signal(std::string_view n) const override { return gold::recorder_signal(n); }
+  dialect::LoadedProgram* debug_program() override { return program_.get(); }
+  dialect::Evaluation evaluate(uint32_t thread, uint32_t depth, std::string_view expression) override;  // debug_hooks.cpp
+  std::string start_with_arguments(std::string_view entry, const std::vector<double>& args) override;
 
   // --- vm::Host: drive commands, plus MI, PS and EC that the firmware keeps ---
   vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override;
@@ -77,6 +80,9 @@ class Firmware final : public dialect::Firmware, public vm::Host {
 
   // --- the background (background.cpp) ---
   void background_slice();
+  // --- the Elmo debugger's commands, DB##BP, BC, GO, SO, SI, SU, MS, PS, ES (debug_commands.cpp) ---
+  bool debug_command(const std::string& word, std::vector<dialect::Answer>& answers);
+  void after_debug_slice(vm::SliceEnd end);
   void dispatch_auto_routines();
   void on_run_time_error();
 
@@ -114,6 +120,21 @@ class Firmware final : public dialect::Firmware, public vm::Host {
 
   int32_t ec_ = 0;  // EC: the interpreter's last error code
   std::map<int32_t, std::string> recorder_map_;  // DB##RV[n]=name
+
+  // The Elmo debugger's breakpoints (a code word, and the hit that stops: DB##BP=pc,n) and step.
+  struct DebugBreakpoint {
+    uint32_t pc;
+    int32_t stop_at_hit;
+    int32_t hits;
+  };
+  enum class DebugStep : uint8_t { None, Over, In, Out };
+  std::vector<DebugBreakpoint> debug_breakpoints_;
+  DebugStep debug_step_ = DebugStep::None;
+  uint32_t debug_step_depth_ = 0;
+  bool debug_active_ = false;       // breakpoints or a step: the background looks after each slice
+  bool debug_error_reported_ = false;  // DB##ES has read the last run-time error
+  uint32_t debug_generation_ = 0;      // the program they belong to (program_generation_)
+  void forget_debug_state_of_another_program();
 
 };
 

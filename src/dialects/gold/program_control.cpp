@@ -90,6 +90,7 @@ bool Firmware::program_control(const std::string& text, std::vector<Answer>& ans
     return true;
   }
   if (word.rfind("DB##", 0) == 0) {
+    if (debug_command(word.substr(4), answers)) return true;
     const int32_t code = map_recorder(compact.substr(4));
     if (code != 0) fail(code, "DB##RV[n]=name with n 1..8 and a global variable of the program");
     return true;

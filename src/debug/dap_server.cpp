@@ -1,0 +1,350 @@
+// The DAP server's lifecycle and execution requests (dap_server.h): initialize, launch,
+// breakpoints, configurationDone, continue, next, stepIn, stepOut, pause, disconnect, terminate,
+// and the events that follow. Inspection requests are in dap_inspect.cpp.
+#include "debug/dap_server.h"
+
+#include <fmt/core.h>
+
+#include "debug/dap_framing.h"
+#include "drive/axis.h"
+
+namespace uprog::debug {
+namespace {
+
+// DAP thread ids start at 1; the VM's threads at 0.
+int64_t thread_id(uint32_t thread) { return int64_t{thread} + 1; }
+
+// A program's output or a request's own text may hold bytes that are not UTF-8: they go out
+// replaced rather than ending the session.
+std::string dumped(const nlohmann::json& m) {
+  return m.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+}  // namespace
+
+DapServer::DapServer(DapOptions options, std::function<void(const std::string&)> send)
+    : options_(std::move(options)), send_(std::move(send)) {}
+DapServer::~DapServer() = default;
+
+void DapServer::handle(const std::string& message) {
+  if (done_) return;  // after disconnect's response nothing more is said
+  json request;
+  try {
+    request = json::parse(message);
+  } catch (const json::exception& e) {
+    event("output", {{"category", "stderr"},
+                     {"output", std::string("not a JSON message: ") + e.what() + "\n"}});
+    return;
+  }
+  if (!request.is_object() || request.value("type", "") != "request" ||
+      !request.contains("command") || !request["command"].is_string()) {
+    event("output",
+          {{"category", "stderr"}, {"output", "a message that is not a request was ignored\n"}});
+    return;
+  }
+  try {
+    dispatch(request);
+  } catch (const json::exception& e) {
+    // A field of the wrong type: the request fails, the session goes on.
+    fail(request, std::string("malformed arguments: ") + e.what());
+  }
+  report();
+}
+
+void DapServer::dispatch(const json& r) {
+  const std::string command = r["command"];
+  if (command == "initialize") return initialize(r);
+  if (command == "launch") return launch(r);
+  if (command == "disconnect") return end(r, false);
+  if (command == "terminate") return end(r, true);
+  if (!debugger_) {
+    if (command == "setBreakpoints" || command == "setFunctionBreakpoints" ||
+        command == "setExceptionBreakpoints" || command == "configurationDone" ||
+        command == "threads") {
+      // Before a launch there is nothing to set them in; a client that sends them early is told so.
+      return fail(r, "no program: launch first");
+    }
+    return fail(r, "unknown request '" + command + "' or no program launched");
+  }
+  if (command == "setBreakpoints") return set_breakpoints(r);
+  if (command == "setFunctionBreakpoints") return set_function_breakpoints(r);
+  if (command == "setExceptionBreakpoints") return set_exception_breakpoints(r);
+  if (command == "configurationDone") return configuration_done(r);
+  if (command == "threads") return threads(r);
+  if (command == "stackTrace") return stack_trace(r);
+  if (command == "scopes") return scopes(r);
+  if (command == "variables") return variables(r);
+  if (command == "setVariable") return set_variable(r);
+  if (command == "evaluate") return evaluate(r);
+  if (command == "continue") return step(r, std::nullopt);
+  if (command == "next") return step(r, StepKind::Over);
+  if (command == "stepIn") return step(r, StepKind::In);
+  if (command == "stepOut") return step(r, StepKind::Out);
+  if (command == "pause") return pause(r);
+  if (command == "attach")
+    return fail(r, "attach to a running `uprog sim` is not offered yet: use launch");
+  fail(r, "unknown request '" + command + "'");
+}
+
+void DapServer::respond(const json& request, json body) {
+  json m = {{"seq", seq_++},
+            {"type", "response"},
+            {"request_seq", request.value("seq", int64_t{0})},
+            {"success", true},
+            {"command", request["command"]}};
+  if (!body.empty()) m["body"] = std::move(body);
+  send_(frame_message(dumped(m)));
+}
+
+void DapServer::fail(const json& request, const std::string& message) {
+  json m = {{"seq", seq_++},
+            {"type", "response"},
+            {"request_seq", request.value("seq", int64_t{0})},
+            {"success", false},
+            {"command", request.value("command", "")},
+            {"message", message},
+            {"body", {{"error", {{"id", 1}, {"format", message}}}}}};
+  send_(frame_message(dumped(m)));
+}
+
+void DapServer::event(const std::string& name, json body) {
+  json m = {{"seq", seq_++}, {"type", "event"}, {"event", name}};
+  if (!body.empty()) m["body"] = std::move(body);
+  send_(frame_message(dumped(m)));
+}
+
+void DapServer::initialize(const json& r) {
+  respond(r,
+          {{"supportsConfigurationDoneRequest", true},
+           {"supportsFunctionBreakpoints", true},
+           {"supportsConditionalBreakpoints", true},
+           {"supportsHitConditionalBreakpoints", true},
+           {"supportsLogPoints", true},
+           {"supportsSetVariable", true},
+           {"supportsEvaluateForHovers", true},
+           {"supportsTerminateRequest", true},
+           {"exceptionBreakpointFilters",
+            json::array({{{"filter", "error"},
+                          {"label", "Run-time errors"},
+                          {"default", false},
+                          {"description",
+                           "Stop where a run-time error that no try block catches happens"}}})}});
+}
+
+void DapServer::launch(const json& r) {
+  if (drive_) return fail(r, "a program is already launched");
+  const json args = r.value("arguments", json::object());
+  const std::string program = args.value("program", "");
+  if (program.empty()) return fail(r, "launch needs \"program\": the path of the source file");
+  std::string error;
+  const dialect::Dialect* d = options_.choose_dialect(args.value("dialect", ""), program, error);
+  if (d == nullptr) return fail(r, error);
+  std::vector<std::string> input_items = args.value("inputs", std::vector<std::string>{});
+  auto inputs = parse_input_changes(input_items, &error);
+  if (!inputs) return fail(r, error);
+  const std::vector<double> entry_args = args.value("args", std::vector<double>{});
+  const std::string entry = args.value("entry", "");
+  const bool stop_on_entry = args.value("stopOnEntry", false);
+  const bool realtime = args.value("realtime", false);
+
+  controller::ControllerOptions o;
+  o.dialect = d;
+  auto drive = std::make_unique<controller::Controller>(o);
+  std::vector<Diagnostic> diagnostics;
+  const bool compiled = drive->download_source_file(program, diagnostics);
+  if (!diagnostics.empty())
+    event("output", {{"category", "stderr"}, {"output", format_text(diagnostics)}});
+  if (!compiled) return fail(r, "the program did not compile: " + program);
+  if (const std::string why = drive->firmware().start_with_arguments(entry, entry_args);
+      !why.empty()) {
+    return fail(r, why);
+  }
+  drive_ = std::move(drive);
+  debugger_ = std::make_unique<Debugger>(*drive_);
+  debugger_->program_changed();
+  inputs_ = std::move(*inputs);
+  start_us_ = drive_->now_us();
+  stop_on_entry_ = stop_on_entry;
+  realtime_ = realtime;
+  respond(r);
+  event("initialized");
+  for (const dialect::ThreadInfo& t : debugger_->threads()) {
+    event("thread", {{"reason", "started"}, {"threadId", thread_id(t.thread)}});
+  }
+}
+
+void DapServer::set_breakpoints(const json& r) {
+  const json& args = r.at("arguments");
+  const std::string path = args.at("source").value("path", args.at("source").value("name", ""));
+  std::vector<BreakpointSpec> specs;
+  if (args.contains("breakpoints")) {
+    for (const json& b : args["breakpoints"]) {
+      BreakpointSpec s;
+      s.line = b.at("line").get<uint32_t>();
+      s.condition = b.value("condition", "");
+      s.hit_condition = b.value("hitCondition", "");
+      s.log_message = b.value("logMessage", "");
+      specs.push_back(std::move(s));
+    }
+  } else if (args.contains("lines")) {
+    for (const json& l : args["lines"]) {
+      BreakpointSpec s;
+      s.line = l.get<uint32_t>();
+      specs.push_back(std::move(s));
+    }
+  }
+  json out = json::array();
+  for (const BreakpointState& b : debugger_->set_line_breakpoints(path, specs)) {
+    json j = {{"id", b.id}, {"verified", b.verified}, {"line", b.line}};
+    if (!b.message.empty()) j["message"] = b.message;
+    if (b.verified) j["source"] = {{"path", path}};
+    out.push_back(std::move(j));
+  }
+  respond(r, {{"breakpoints", out}});
+}
+
+void DapServer::set_function_breakpoints(const json& r) {
+  std::vector<BreakpointSpec> specs;
+  for (const json& b : r.at("arguments").value("breakpoints", json::array())) {
+    BreakpointSpec s;
+    s.function = b.at("name").get<std::string>();
+    s.condition = b.value("condition", "");
+    s.hit_condition = b.value("hitCondition", "");
+    specs.push_back(std::move(s));
+  }
+  json out = json::array();
+  for (const BreakpointState& b : debugger_->set_function_breakpoints(specs)) {
+    json j = {{"id", b.id}, {"verified", b.verified}};
+    if (b.verified) j["line"] = b.line;
+    if (!b.message.empty()) j["message"] = b.message;
+    out.push_back(std::move(j));
+  }
+  respond(r, {{"breakpoints", out}});
+}
+
+void DapServer::set_exception_breakpoints(const json& r) {
+  bool on = false;
+  for (const json& f : r.at("arguments").value("filters", json::array())) {
+    if (f.get<std::string>() == "error") on = true;
+  }
+  debugger_->set_break_on_error(on);
+  respond(r, {{"breakpoints", json::array({{{"verified", true}}})}});
+}
+
+void DapServer::configuration_done(const json& r) {
+  respond(r);
+  if (configured_) return;
+  configured_ = true;
+  if (stop_on_entry_) debugger_->stop_at_entry();
+}
+
+void DapServer::threads(const json& r) {
+  json out = json::array();
+  for (const dialect::ThreadInfo& t : debugger_->threads()) {
+    out.push_back({{"id", thread_id(t.thread)}, {"name", t.name}});
+  }
+  respond(r, {{"threads", out}});
+}
+
+void DapServer::step(const json& r, std::optional<StepKind> kind) {
+  if (ended_) return fail(r, "the program has ended");
+  const json args = r.value("arguments", json::object());
+  const int64_t id = args.value("threadId", int64_t{1});
+  if (debugger_->state() != RunState::Stopped) {
+    return fail(r, "the program is running");
+  }
+  references_.clear();
+  stop_reported_ = false;
+  if (kind) {
+    debugger_->step(static_cast<uint32_t>(std::max<int64_t>(id - 1, 0)), *kind,
+                    args.value("singleThread", false));
+    respond(r);
+  } else {
+    debugger_->resume();
+    respond(r, {{"allThreadsContinued", true}});
+  }
+}
+
+void DapServer::pause(const json& r) {
+  respond(r);
+  if (debugger_->state() == RunState::Running && configured_) debugger_->pause();
+}
+
+void DapServer::end(const json& r, bool terminate) {
+  respond(r);
+  if (terminate && !ended_ && debugger_) {
+    ended_ = true;
+    event("terminated");
+    return;
+  }
+  done_ = !terminate || !debugger_;
+}
+
+bool DapServer::running_program() const {
+  return !done_ && debugger_ && configured_ && !ended_ && debugger_->state() == RunState::Running;
+}
+
+bool DapServer::running() const { return running_program(); }
+
+bool DapServer::poll(uint64_t budget_ns) {
+  if (!running_program()) return false;
+  // Inputs change when virtual time reaches them: a run stops short of the next one.
+  while (next_input_ < inputs_.size() &&
+         inputs_[next_input_].at_us <= drive_->now_us() - start_us_) {
+    drive_->set_input_level(inputs_[next_input_].input, inputs_[next_input_].level);
+    ++next_input_;
+  }
+  uint64_t budget = budget_ns;
+  if (next_input_ < inputs_.size()) {
+    const uint64_t due_ns = (inputs_[next_input_].at_us - (drive_->now_us() - start_us_)) * 1000;
+    budget = std::min(budget, std::max<uint64_t>(due_ns, 1));
+  }
+  debugger_->run(budget);
+  report();
+  return running_program();
+}
+
+void DapServer::flush_output() {
+  if (!drive_) return;
+  for (const controller::LogEntry& e : drive_->take_log()) {
+    event("output", {{"category", "console"},
+                     {"output", fmt::format("[{:.3f} ms] {}\n",
+                                            static_cast<double>(e.time_us) / 1000.0, e.text)}});
+  }
+  for (const std::string& text : drive_->take_output())
+    event("output", {{"category", "stdout"}, {"output", text}});
+  if (debugger_) {
+    for (const std::string& m : debugger_->take_messages())
+      event("output", {{"category", "console"}, {"output", m + "\n"}});
+  }
+}
+
+void DapServer::report() {
+  if (done_) return;
+  flush_output();
+  if (!debugger_ || ended_ || !configured_) return;
+  if (debugger_->state() == RunState::Stopped && !stop_reported_) {
+    stop_reported_ = true;
+    const Stop& s = debugger_->last_stop();
+    json body = {{"reason", stop_reason_name(s.reason)},
+                 {"threadId", thread_id(s.thread)},
+                 {"allThreadsStopped", true}};
+    if (!s.description.empty()) {
+      body["description"] = s.description;
+      body["text"] = s.description;
+    }
+    if (!s.breakpoints.empty()) body["hitBreakpointIds"] = s.breakpoints;
+    event("stopped", std::move(body));
+  } else if (debugger_->state() == RunState::Ended) {
+    ended_ = true;
+    int exit_code = drive_->program_error() != 0 ? 1 : 0;
+    for (const dialect::ThreadInfo& t : debugger_->threads()) {
+      if (t.status == vm::ThreadStatus::Error) exit_code = 1;  // stopped by a run-time error
+      event("thread", {{"reason", "exited"}, {"threadId", thread_id(t.thread)}});
+    }
+    event("exited", {{"exitCode", exit_code}});
+    event("terminated");
+  }
+}
+
+}  // namespace uprog::debug

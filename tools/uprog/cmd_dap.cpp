@@ -1,0 +1,133 @@
+// `uprog dap`: a Debug Adapter Protocol server (src/debug/dap_server.h) on stdin and stdout, or on
+// one TCP connection with --listen HOST:PORT. It runs the launched program in this process; while
+// the program runs, requests are read between slices of virtual time.
+#include <fmt/core.h>
+#include <poll.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+
+#include "commands.h"
+#include "debug/dap_framing.h"
+#include "debug/dap_server.h"
+#include "dialects/registry.h"
+#include "transport/asio.h"
+#include "transport/tcp_server.h"
+
+namespace uprog::cli {
+namespace {
+
+// Virtual time per slice while running as fast as it can: requests are read between slices.
+constexpr uint64_t kSliceNs = 10'000'000;
+
+bool write_all(int fd, const std::string& bytes) {
+  size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<size_t>(n);
+  }
+  return true;
+}
+
+const dialect::Dialect* dialect_for(const std::string& name, const std::string& path,
+                                    std::string& error) {
+  if (!name.empty()) {
+    const dialect::Dialect* d = dialects::find(name);
+    if (d == nullptr) error = "no dialect named '" + name + "' (uprog dialects lists them)";
+    return d;
+  }
+  if (const dialect::Dialect* d = dialects::for_file(path)) return d;
+  return &dialects::default_dialect();
+}
+
+// Serves one client on `in` and `out` until it disconnects or closes its end.
+int serve(int in, int out) {
+  std::signal(SIGPIPE, SIG_IGN);  // a client gone mid-answer ends the session, not the process
+  bool broken = false;
+  debug::DapServer server({dialect_for},
+                          [&](const std::string& m) { broken = broken || !write_all(out, m); });
+  debug::DapReader reader;
+  char buffer[65536];
+  auto last = std::chrono::steady_clock::now();
+  while (!server.done() && !broken) {
+    // Running: look for requests without waiting (realtime: wait a millisecond of wall time).
+    pollfd p{in, POLLIN, 0};
+    const int timeout = server.running() ? (server.realtime() ? 1 : 0) : -1;
+    const int ready = ::poll(&p, 1, timeout);
+    if (ready < 0 && errno != EINTR) return 1;
+    if (ready > 0) {
+      const ssize_t n = ::read(in, buffer, sizeof buffer);
+      if (n <= 0) break;  // the client closed its end
+      reader.feed(std::string_view(buffer, static_cast<size_t>(n)));
+      while (auto message = reader.next()) server.handle(*message);
+      if (!reader.error().empty()) {
+        fmt::print(stderr, "uprog dap: {}; the session ends\n", reader.error());
+        return 1;
+      }
+    }
+    if (server.running()) {
+      const auto now = std::chrono::steady_clock::now();
+      const auto wall_ns = static_cast<uint64_t>(
+          std::chrono::duration_cast<std::chrono::nanoseconds>(now - last).count());
+      last = now;
+      server.poll(server.realtime() ? wall_ns : kSliceNs);
+    } else {
+      last = std::chrono::steady_clock::now();
+    }
+  }
+  return broken ? 1 : 0;
+}
+
+int listen_and_serve(const std::string& where) {
+  namespace asio = boost::asio;
+  asio::ip::tcp::endpoint endpoint;
+  std::string error;
+  if (!transport::parse_endpoint(where, endpoint, error)) {
+    fmt::print(stderr, "uprog dap: --listen {}: {}\n", where, error);
+    return 2;
+  }
+  asio::io_context io;
+  boost::system::error_code ec;
+  asio::ip::tcp::acceptor acceptor(io);
+  acceptor.open(endpoint.protocol(), ec);
+  if (!ec) acceptor.set_option(asio::ip::tcp::acceptor::reuse_address(true), ec);
+  if (!ec) acceptor.bind(endpoint, ec);
+  if (!ec) acceptor.listen(1, ec);
+  if (ec) {
+    fmt::print(stderr, "uprog dap: cannot listen on {}: {}\n", where, ec.message());
+    return 1;
+  }
+  const auto local = acceptor.local_endpoint();
+  fmt::print(stderr, "uprog dap: listening on tcp {}:{}\n", local.address().to_string(),
+             local.port());
+  asio::ip::tcp::socket socket(io);
+  acceptor.accept(socket, ec);
+  if (ec) {
+    fmt::print(stderr, "uprog dap: accept failed: {}\n", ec.message());
+    return 1;
+  }
+  return serve(socket.native_handle(), socket.native_handle());
+}
+
+void add_options(CLI::App* cmd, Action& action) {
+  auto listen = std::make_shared<std::string>();
+  cmd->add_option(
+      "--listen", *listen,
+      "HOST:PORT: serve one client over TCP instead of stdin/stdout (port 0 picks one)");
+  cmd->callback([&action, listen] {
+    action = [listen] {
+      return listen->empty() ? serve(STDIN_FILENO, STDOUT_FILENO) : listen_and_serve(*listen);
+    };
+  });
+}
+
+const Subcommand kDap{
+    "dap", "Debug a program in an editor: a Debug Adapter Protocol server (docs/debugging.md)",
+    add_options};
+
+}  // namespace
+}  // namespace uprog::cli
