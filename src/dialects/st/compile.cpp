@@ -19,23 +19,54 @@ namespace {
 int directive_code(preproc::PreprocError) { return static_cast<int>(Error::BadDirective); }
 const char* directive_text(preproc::PreprocError) { return error_text(Error::BadDirective); }
 
-// The drive writes its directives in capitals (#IF, #DEFINE): the shared preprocessor reads
-// them in small letters, at the same columns.
-std::string lower_directives(std::string text) {
-  bool line_start = true;
-  for (size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (c == '\n') {
-      line_start = true;
-      continue;
+// An #IF condition in the shared preprocessor's C operators: `=` is `==`, `<>` `!=`, AND OR
+// NOT MOD `&&` `||` `!` `%`. Only `=` grows the line (by one column).
+std::string c_condition(std::string_view line) {
+  std::string out;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    const char prev = i > 0 ? line[i - 1] : ' ', next = i + 1 < line.size() ? line[i + 1] : ' ';
+    if (c == '<' && next == '>') {
+      out += "!=";
+      ++i;
+    } else if (c == '=' && prev != '<' && prev != '>' && prev != '=' && prev != '!' && next != '=') {
+      out += "==";
+    } else if (std::isalpha(static_cast<unsigned char>(c)) && !std::isalnum(static_cast<unsigned char>(prev)) && prev != '_') {
+      size_t e = i;
+      while (e < line.size() && (std::isalnum(static_cast<unsigned char>(line[e])) || line[e] == '_')) ++e;
+      const std::string w = upper(line.substr(i, e - i));
+      out += w == "AND" ? "&& " : w == "OR" ? "||" : w == "NOT" ? "!  " : w == "MOD" ? "%  " : std::string(line.substr(i, e - i));
+      i = e - 1;
+    } else {
+      out.push_back(c);
     }
-    if (line_start && c == '#') {
-      for (size_t k = i + 1; k < text.size() && std::isalpha(static_cast<unsigned char>(text[k])); ++k)
-        text[k] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[k])));
-    }
-    if (c != ' ' && c != '\t') line_start = false;
   }
-  return text;
+  return out;
+}
+
+// The drive writes its directives in capitals (#IF, #DEFINE): the shared preprocessor reads
+// them in small letters, at the same columns, and its conditions in C's operators.
+std::string lower_directives(const std::string& text) {
+  std::string out;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(start, end - start);
+    const size_t hash = line.find_first_not_of(" \t");
+    if (hash != std::string::npos && line[hash] == '#') {
+      size_t k = hash + 1;
+      for (; k < line.size() && std::isalpha(static_cast<unsigned char>(line[k])); ++k)
+        line[k] = static_cast<char>(std::tolower(static_cast<unsigned char>(line[k])));
+      const std::string word = line.substr(hash + 1, k - hash - 1);
+      if (word == "if" || word == "elseif") line = line.substr(0, k) + c_condition(std::string_view(line).substr(k));
+    }
+    out += line;
+    if (end == text.size()) break;
+    out.push_back('\n');
+    start = end + 1;
+  }
+  return out;
 }
 
 // The names a source declares, for #IFDEF of a variable: every word after BYTE, WORD, LONG or

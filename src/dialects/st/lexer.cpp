@@ -101,9 +101,11 @@ class Lexer {
         else if (n == '>') { ++i_; push(Tok::Shr, start); }
         else push(Tok::Gt, start);
         return;
-      case '[': case ']':
+      case '[':
         reporter_.error(Error::Unsupported, start, "arrays are not implemented");
         return;
+      case ']':
+        return;  // its '[' was reported
       default:
         reporter_.error(Error::BadCharacter, start);
         return;
@@ -182,9 +184,10 @@ class Lexer {
     }
     if (i_ >= t_.size() || t_[i_] != '\'') {
       reporter_.error(Error::OpenString, start);
-      return;
+    } else {
+      ++i_;
     }
-    ++i_;
+    // An open string still ends its line as a string, so the parser does not stumble on.
     push(Tok::String, start).text = std::move(s);
   }
 

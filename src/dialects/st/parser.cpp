@@ -64,9 +64,15 @@ class Parser {
     next();
     return true;
   }
+  // A syntax error right after a line that has an error already is its consequence: not
+  // reported again.
   [[noreturn]] void fail(Error e, size_t offset, const std::string& note = {}) {
-    reporter_.error(e, offset, note);
+    if (!(e == Error::Syntax && i_ > 0 && reporter_.line_has_error(t_[i_ - 1].line))) reporter_.error(e, offset, note);
     throw Failed{};
+  }
+  // A missing THEN or DO: reported, and the body parsed as if it were there.
+  void want_word(const char* w) {
+    if (!accept_word(w)) reporter_.error(Error::Syntax, peek().offset, std::string("expected ") + w);
   }
   void expect(Tok k, const char* what) {
     if (!accept(k)) fail(Error::Syntax, peek().offset, std::string("expected ") + what);
@@ -141,18 +147,25 @@ class Parser {
     Routine r;
     r.offset = head.offset;
     r.line = head.line;
+    // A routine with a bad name is parsed all the same (its body is checked) and then dropped.
+    bool keep = true;
+    const auto refuse = [&](Error e, const std::string& note) {
+      reporter_.error(e, name_token.offset, note);
+      keep = false;
+    };
     if (is_program) {
       const auto kind = program_of(name_token.text);
-      if (!kind) fail(Error::UnknownProgram, name_token.offset, "'" + name_token.text + "'");
+      if (!kind) refuse(Error::UnknownProgram, "'" + name_token.text + "'");
       for (const Routine& other : p_.routines)
-        if (other.kind == *kind) fail(Error::ProgramTwice, name_token.offset, "'" + name_token.text + "'");
-      r.kind = *kind;
+        if (kind && other.kind == *kind) refuse(Error::ProgramTwice, "'" + name_token.text + "'");
+      r.kind = kind.value_or(ProgramKind::Function);
       r.name = name_token.text;
     } else {
-      r.name = user_name(name_token);
-      if (functions_.count(r.name) != 0) fail(Error::FunctionUnknown, name_token.offset, "'" + r.name + "' defined twice");
-      if (globals_.count(r.name) != 0) fail(Error::DeclaredTwice, name_token.offset, "'" + r.name + "' is a variable");
-      functions_.insert(r.name);
+      r.name = name_token.text;
+      if (auto e = name_problem(r.name)) refuse(*e, "'" + r.name + "'");
+      else if (functions_.count(r.name) != 0) refuse(Error::FunctionUnknown, "'" + r.name + "' defined twice");
+      else if (globals_.count(r.name) != 0) refuse(Error::DeclaredTwice, "'" + r.name + "' is a variable");
+      else functions_.insert(r.name);
     }
     const char* end = is_program ? "END_PROGRAM" : "END_FUNCTION";
     current_ = &r;
@@ -164,7 +177,7 @@ class Parser {
     accept(Tok::Semi);
     resolve_gotos(r);
     current_ = nullptr;
-    p_.routines.push_back(std::move(r));
+    if (keep) p_.routines.push_back(std::move(r));
   }
 
   void resolve_gotos(Routine& r) {
@@ -292,7 +305,7 @@ class Parser {
     Stmt s = begin(Stmt::Kind::If, next());
     s.expr = expression();
     code_line(s.line);
-    expect_word("THEN");
+    want_word("THEN");
     s.body = block({"ELSE", "END_IF"});
     if (accept_word("ELSE")) s.else_body = block({"END_IF"});
     end_word("END_IF");
@@ -308,7 +321,7 @@ class Parser {
     loop_here(s.offset);
     s.expr = expression();
     code_line(s.line);
-    expect_word("DO");
+    want_word("DO");
     s.body = block({"END_WHILE"});
     end_word("END_WHILE");
     return add(std::move(s));
@@ -343,11 +356,11 @@ class Parser {
       const int e = expression();
       const Expr& step = p_.exprs[static_cast<size_t>(e)];
       if (step.kind != Expr::Kind::Const) fail(Error::Syntax, step.offset, "BY takes a constant");
-      if (step.value == 0) fail(Error::ConstantRange, step.offset, "the step of FOR must not be 0");
-      s.step = step.value;
+      if (step.value == 0) reporter_.error(Error::ConstantRange, step.offset, "the step of FOR must not be 0");
+      s.step = step.value == 0 ? 1 : step.value;
     }
     code_line(s.line);
-    expect_word("DO");
+    want_word("DO");
     s.scratch = current_->for_count++;
     s.body = block({"END_FOR"});
     end_word("END_FOR");

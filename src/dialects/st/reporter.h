@@ -1,5 +1,6 @@
 // Collects a compile's diagnostics: after kMaxErrors errors one TooManyErrors and nothing more.
 #pragma once
+#include <set>
 #include <string>
 #include <vector>
 
@@ -12,7 +13,14 @@ class Reporter {
  public:
   explicit Reporter(const Locator& locator) : locator_(locator) {}
 
-  void error(Error e, size_t offset, const std::string& note = {}) { add(e, locator_.at(offset), note); }
+  // A syntax error on a line that already has an error is the first one's consequence: dropped.
+  void error(Error e, size_t offset, const std::string& note = {}) {
+    Location where = locator_.at(offset);
+    if (e == Error::Syntax && line_has_error(where.line)) return;
+    error_lines_.insert(where.line);
+    add(e, std::move(where), note);
+  }
+  bool line_has_error(int line) const { return error_lines_.count(line) != 0; }
   void add(Error e, Location where, const std::string& note = {}) {
     if (full_) return;
     if (errors_ == kMaxErrors) {
@@ -39,6 +47,7 @@ class Reporter {
   std::vector<Diagnostic> items_;
   size_t errors_ = 0;
   bool full_ = false;
+  std::set<int> error_lines_;
 };
 
 }  // namespace uprog::st

@@ -1,6 +1,6 @@
 // One host's S300 command line: its own PLCDL download in progress (`PLCDL BEGIN n`, hex lines,
 // `PLCDL END` stores atomically, `PLCDL ABORT`); every other line goes to the drive's command
-// line, and each takes one axis step of virtual time.
+// line, and each takes one axis step of virtual time after its answer.
 #include <cctype>
 
 #include "dialects/st/firmware.h"
@@ -21,11 +21,14 @@ class Session final : public dialect::Session {
  public:
   explicit Session(Firmware& firmware) : firmware_(firmware) {}
 
+  // The line is answered as it arrives; the axis step it takes passes after the answer.
   std::vector<Answer> send(std::string_view line) override {
-    firmware_.spend_line_time();
     const size_t b = line.find_first_not_of(" \t");
-    if (b != std::string_view::npos && upper(line.substr(b, 5)) == "PLCDL") return download(line.substr(b + 5));
-    return firmware_.command_line(line);
+    std::vector<Answer> answers = b != std::string_view::npos && upper(line.substr(b, 5)) == "PLCDL"
+                                      ? download(line.substr(b + 5))
+                                      : firmware_.command_line(line);
+    firmware_.spend_line_time();
+    return answers;
   }
 
  private:
