@@ -128,14 +128,18 @@ class Parser {
     next();
     const VarType type = w == "BYTE" ? VarType::Byte : w == "WORD" ? VarType::Word : w == "LONG" ? VarType::Long
                                                                                                   : VarType::Dlong;
+    // A bad name is reported and declared all the same, so its uses give no more errors.
     do {
       const Token& t = next();
       if (t.kind != Tok::Ident) fail(Error::Syntax, t.offset, "expected a variable name");
-      if (globals_.count(t.text) != 0) fail(Error::DeclaredTwice, t.offset, "'" + t.text + "'");
-      if (functions_.count(t.text) != 0) fail(Error::DeclaredTwice, t.offset, "'" + t.text + "' is a function");
-      const std::string name = user_name(t);
-      globals_[name] = static_cast<uint32_t>(p_.globals.size());
-      p_.globals.push_back({name, type, false});
+      if (globals_.count(t.text) != 0) {
+        reporter_.error(Error::DeclaredTwice, t.offset, "'" + t.text + "'");
+        continue;
+      }
+      if (functions_.count(t.text) != 0) reporter_.error(Error::DeclaredTwice, t.offset, "'" + t.text + "' is a function");
+      else if (auto e = name_problem(t.text)) reporter_.error(*e, t.offset, "'" + t.text + "'");
+      globals_[t.text] = static_cast<uint32_t>(p_.globals.size());
+      p_.globals.push_back({t.text, type, false});
     } while (accept(Tok::Comma));
     expect(Tok::Semi, "';' after the declaration");
   }
@@ -301,9 +305,23 @@ class Parser {
       fail(Error::ConstantRange, e.offset, std::to_string(e.value) + " does not fit " + p_.globals[target].name);
   }
 
+  // A condition that fails is reported and skipped up to `until` on its line, so the block
+  // after it is still parsed as the block it is.
+  int condition(const char* until) {
+    const int line = peek().line;
+    try {
+      return expression();
+    } catch (Failed&) {
+      while (peek().kind != Tok::End && peek().line == line && !at_word(until)) next();
+      Expr zero;
+      zero.offset = peek().offset;
+      return make(zero);
+    }
+  }
+
   int if_statement() {
     Stmt s = begin(Stmt::Kind::If, next());
-    s.expr = expression();
+    s.expr = condition("THEN");
     code_line(s.line);
     want_word("THEN");
     s.body = block({"ELSE", "END_IF"});
@@ -319,7 +337,7 @@ class Parser {
   int while_statement() {
     Stmt s = begin(Stmt::Kind::While, next());
     loop_here(s.offset);
-    s.expr = expression();
+    s.expr = condition("DO");
     code_line(s.line);
     want_word("DO");
     s.body = block({"END_WHILE"});
