@@ -108,6 +108,10 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
 
   const AsciiEntry* e = find_ascii(name);
   if (e == nullptr) return {err(kErrUnknown, "unknown command")};
+  // A program cannot stop, replace or reboot itself from inside its own run.
+  if (in_program_ && (name == "PLCSTOP" || name == "PLCRUN" || name == "PLCSTART" || name == "COLDSTART" ||
+                      name == "PLCDL"))
+    return {err(kErrSyntax, "not from a PLC program")};
   if (argc > 0 && e->access == AsciiAccess::Read) return {err(kErrReadOnly, "read only")};
 
   if (auto n = user_variable_number(name)) {

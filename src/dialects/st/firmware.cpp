@@ -261,7 +261,9 @@ vm::CommandStatus Firmware::read(uint32_t command, int32_t, Value& out) {
   const AsciiEntry* e = ascii_by_id(command);
   out = Value::of_int(0);
   if (e == nullptr) return vm::kCommandOk;
+  in_program_ = true;
   const std::vector<dialect::Answer> a = command_line(e->name);
+  in_program_ = false;
   if (!a.empty() && !a[0].is_error()) {
     out = Value::of_int(static_cast<int32_t>(std::strtod(a[0].text.c_str(), nullptr)));
   } else if (!a.empty() && msg_ >= 1) {
@@ -274,7 +276,9 @@ vm::CommandStatus Firmware::write(uint32_t command, int32_t, Value value) {
   schedule_.charge(kCostlyCallLines);
   const AsciiEntry* e = ascii_by_id(command);
   if (e == nullptr) return vm::kCommandOk;
+  in_program_ = true;
   const std::vector<dialect::Answer> a = command_line(std::string(e->name) + " " + std::to_string(value.i));
+  in_program_ = false;
   if (!a.empty() && a[0].is_error() && msg_ >= 1)
     say(running_place(*program_, schedule_.running(), threads_) + ": " + answer_text(a[0]).substr(1));
   return vm::kCommandOk;
@@ -284,7 +288,10 @@ vm::CommandStatus Firmware::execute(uint32_t command, int32_t, const Value* args
   schedule_.charge(kCostlyCallLines);
   if (command != kCommandAction || count != 1 || !program_) return vm::kCommandOk;
   const std::string_view text = program_->machine().image().text(static_cast<uint32_t>(args[0].i));
-  for (const dialect::Answer& a : command_line(text)) {
+  in_program_ = true;
+  const std::vector<dialect::Answer> answers = command_line(text);
+  in_program_ = false;
+  for (const dialect::Answer& a : answers) {
     if (a.is_error() && msg_ >= 1) say(running_place(*program_, schedule_.running(), threads_) + ": " + answer_text(a).substr(1));
   }
   return vm::kCommandOk;

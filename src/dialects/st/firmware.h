@@ -99,6 +99,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   double ramp_counts_per_s2(int32_t ms) const;
 
   dialect::Runtime& runtime_;
+  bool in_program_ = false;  // inside a host call of the program: nothing may replace it
   int32_t prompt_ = 0;
   int32_t msg_ = 0;
   S300Wire wire_;
