@@ -211,7 +211,7 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     return {Answer{fmt::format("{:.3f}", rpm), 0}};
   }
   if (name == "INPOS") {
-    const int64_t off = std::llabs(static_cast<long long>(user_of(target_counts_) - user_of(axis_->position())));
+    const int64_t off = std::llabs(static_cast<long long>(int64_t{user_of(target_counts_)} - user_of(axis_->position())));
     return {value(off <= values_.at("PEINPOS") && !axis_->profiler_moving() ? 1 : 0)};
   }
   if (name.size() == 3 && name.starts_with("IN")) return {value(axis_->input_active(name[2] - '0') ? 1 : 0)};

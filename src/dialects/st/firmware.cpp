@@ -18,7 +18,8 @@ constexpr uint64_t kCostlyCallLines = 625;  // XREAD, XWRITE, COMMAND, PRINTF
 
 vm::MachineConfig machine_config() {
   vm::MachineConfig c;
-  c.threads = 7;  // one per program
+  c.threads = 7;    // one per program
+  c.stack = 512;    // an expression may nest 200 deep (parser.cpp)
   return c;
 }
 
@@ -98,6 +99,9 @@ int32_t Firmware::compile_and_start() {
   const CompileResult r = compile(SourceFile{"program.st", *source_}, options);
   compile_failed_ = !r.ok();
   report_compile(r);
+  program_.reset();  // the old program's globals go with it
+  globals_.clear();
+  threads_.clear();
   if (compile_failed_) {
     latch(32);
     return kErrCompileFailed;
@@ -265,7 +269,8 @@ vm::CommandStatus Firmware::read(uint32_t command, int32_t, Value& out) {
   const std::vector<dialect::Answer> a = command_line(e->name);
   in_program_ = false;
   if (!a.empty() && !a[0].is_error()) {
-    out = Value::of_int(static_cast<int32_t>(std::strtod(a[0].text.c_str(), nullptr)));
+    const double v = std::strtod(a[0].text.c_str(), nullptr);
+    out = Value::of_int(v >= 2147483647.0 ? INT32_MAX : v <= -2147483648.0 ? INT32_MIN : static_cast<int32_t>(v));
   } else if (!a.empty() && msg_ >= 1) {
     say(running_place(*program_, schedule_.running(), threads_) + ": " + answer_text(a[0]).substr(1));
   }

@@ -8,6 +8,15 @@
 #include "drive/axis.h"
 
 namespace uprog::st {
+namespace {
+
+// A rate or speed as the axis takes it: whole, at most int32 (NaN and below 1 give `low`).
+int32_t to_axis(double v, double low = 1.0) {
+  if (!(v >= low)) return static_cast<int32_t>(low);
+  return v >= 2147483647.0 ? INT32_MAX : static_cast<int32_t>(v);
+}
+
+}  // namespace
 
 int32_t Firmware::counts_of(int64_t user) const {
   const int64_t in = values_.at("PGEARI"), out = values_.at("PGEARO");
@@ -31,9 +40,10 @@ int32_t Firmware::jog(int32_t rpm, int32_t ms) {
   if (!axis_->motor_on()) return kErrNeedsEnabled;
   if (opmode_ != 0) return kErrOpmode;
   drive::Parameters& p = axis_->parameters();
-  p.accel_counts_per_s2 = static_cast<int32_t>(ramp_counts_per_s2(values_.at("ACC")));
-  p.decel_counts_per_s2 = static_cast<int32_t>(ramp_counts_per_s2(values_.at("DEC")));
-  axis_->set_jog_velocity(static_cast<int32_t>(rpm_to_counts(rpm)));
+  p.accel_counts_per_s2 = to_axis(ramp_counts_per_s2(values_.at("ACC")));
+  p.decel_counts_per_s2 = to_axis(ramp_counts_per_s2(values_.at("DEC")));
+  const double v = rpm_to_counts(rpm);
+  axis_->set_jog_velocity(v < 0 ? -to_axis(-v, 0.0) : to_axis(v, 0.0));
   axis_->begin();
   jog_until_ns_ = ms > 0 ? runtime_.now_ns() + uint64_t(ms) * 1'000'000 : 0;
   return 0;
@@ -50,9 +60,9 @@ int32_t Firmware::start_task(int32_t nr) {
   target_counts_ = (t.c & 1) != 0 ? axis_->absolute_target() + distance : distance;
   drive::Parameters& p = axis_->parameters();
   const double speed = user_units ? std::abs(static_cast<double>(counts_of(t.v))) : std::abs(static_cast<double>(t.v));
-  p.speed_counts_per_s = static_cast<int32_t>(std::max(1.0, speed));
-  p.accel_counts_per_s2 = static_cast<int32_t>(std::max(1.0, speed / (std::max(t.acc, 1) / 1000.0)));
-  p.decel_counts_per_s2 = static_cast<int32_t>(std::max(1.0, speed / (std::max(t.dec, 1) / 1000.0)));
+  p.speed_counts_per_s = to_axis(speed);
+  p.accel_counts_per_s2 = to_axis(speed / (std::max(t.acc, 1) / 1000.0));
+  p.decel_counts_per_s2 = to_axis(speed / (std::max(t.dec, 1) / 1000.0));
   axis_->set_absolute_target(static_cast<int32_t>(target_counts_));
   if (axis_->begin() != drive::Status::kOk) return kErrTask;
   last_move_ = nr;

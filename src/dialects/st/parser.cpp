@@ -236,8 +236,18 @@ class Parser {
     accept(Tok::Semi);
   }
 
+  // Blocks nest at most this deep: the checker and the code generator recurse over them.
+  static constexpr int kMaxNesting = 64;
+  struct Nest {
+    explicit Nest(int& depth) : depth_(depth) { ++depth_; }
+    ~Nest() { --depth_; }
+    int& depth_;
+  };
+
   int statement() {
     const Token& t = peek();
+    const Nest nest(nesting_);
+    if (nesting_ > kMaxNesting) fail(Error::Syntax, t.offset, "blocks nested too deeply");
     const std::string w = word();
     if (t.kind == Tok::Ident && peek(1).kind == Tok::Colon) return label();
     if (t.kind != Tok::Ident) fail(Error::Syntax, t.offset, "expected a statement");
@@ -450,7 +460,12 @@ class Parser {
     return static_cast<int>(p_.exprs.size() - 1);
   }
 
-  int expression() { return binary(0); }
+  // An expression holds at most this many operators (a #DEFINE can make a long one).
+  static constexpr int kMaxOperators = 400;
+  int expression() {
+    operators_ = 0;
+    return binary(0);
+  }
 
   const Level* match(size_t level) const {
     for (const Level& l : kLevels[level]) {
@@ -464,6 +479,7 @@ class Parser {
     int left = binary(level + 1);
     while (const Level* l = match(level)) {
       const size_t at = next().offset;
+      if (++operators_ > kMaxOperators) fail(Error::Syntax, at, "expression too long");
       const int right = binary(level + 1);
       Expr e;
       e.kind = Expr::Kind::Binary;
@@ -557,6 +573,8 @@ class Parser {
   Reporter& reporter_;
   size_t i_ = 0;
   int depth_ = 0;
+  int nesting_ = 0;
+  int operators_ = 0;
   Program p_;
   std::map<std::string, uint32_t> globals_;
   std::set<std::string> functions_;
