@@ -30,6 +30,8 @@ class Generator {
       image_.globals.push_back({g.name, ValueType::Int, g.type == VarType::Dlong ? 2u : 1u});
     for (size_t i = 0; i < p_.routines.size(); ++i) routine_index_[p_.routines[i].name] = static_cast<uint32_t>(i);
     for (size_t i = 0; i < p_.routines.size(); ++i) routine(p_.routines[i], static_cast<uint32_t>(i));
+    // A file of declarations only still makes a loadable image: the loader wants code.
+    if (image_.code.empty()) b_.emit(bytecode::Op::RET);
     b_.finish();
     return std::move(image_);
   }
