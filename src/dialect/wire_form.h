@@ -21,9 +21,6 @@ class WireForm {
   virtual void write_silent_line(std::string& out) const = 0;
   // Appends what follows the answers to one physical line (CR LF, a prompt).
   virtual void write_line_end(std::string& out) const = 0;
-  // Appends the echo of a host line before its answers, where the drive echoes (the S300 with
-  // PROMPT=1); nothing by default.
-  virtual void write_echo(std::string_view line, std::string& out) const { (void)line, (void)out; }
   // Appends text the drive sends on its own (a program's message); it starts and ends a line.
   virtual void write_output(std::string_view text, std::string& out) const = 0;
   // Appends what the drive sends back the moment it receives `bytes` (a real Elmo drive echoes

@@ -42,6 +42,9 @@ TEST(st_wire, PromptOneEchoesAndPrompts) {
   EXPECT_EQ(d.say("PROMPT 1\r"), "-->");  // the echo is decided as the line arrives
   EXPECT_EQ(d.say("VER\r"), "VER\r\nuprog S300 sim 1.0\r\n-->");
   EXPECT_EQ(d.say("MSG 2\r"), "MSG 2\r\n-->");
+  // Each byte comes back as it arrives; the answer when its CR does.
+  EXPECT_EQ(d.say("V"), "V");
+  EXPECT_EQ(d.say("ER\r\n"), "ER\r\nuprog S300 sim 1.0\r\n-->");
   EXPECT_EQ(d.say("PFB 3\r"), "PFB 3\r\n\aERR 4 read only\r\n-->");
   EXPECT_EQ(d.say("ERRCODE\r"), "ERRCODE\r\nno error\r\n-->");
   EXPECT_EQ(d.say("PROMPT 0\r"), "PROMPT 0\r\n");

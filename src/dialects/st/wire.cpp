@@ -25,10 +25,13 @@ void S300Wire::write_line_end(std::string& out) const {
   if (prompt_ != 0) out += "-->";
 }
 
-void S300Wire::write_echo(std::string_view line, std::string& out) const {
+// An LF is not echoed: after a CR it is the same line end, and a CR LF went back already.
+void S300Wire::write_echo(std::string_view bytes, std::string& out) const {
   if (prompt_ == 0) return;
-  out += line;
-  out += "\r\n";
+  for (char c : bytes) {
+    if (c == '\r') out += "\r\n";
+    else if (c != '\n') out.push_back(c);
+  }
 }
 
 void S300Wire::write_output(std::string_view text, std::string& out) const {

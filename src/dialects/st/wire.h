@@ -18,7 +18,9 @@ class S300Wire final : public dialect::WireForm {
   void write_answer(const dialect::Answer& answer, std::string& out) const override;
   void write_silent_line(std::string&) const override {}
   void write_line_end(std::string& out) const override;
-  void write_echo(std::string_view line, std::string& out) const override;
+  // PROMPT=1: every byte comes back as it arrives, the CR that ends a line as CR LF.
+  void write_echo(std::string_view bytes, std::string& out) const override;
+  bool echoes() const override { return prompt_ != 0; }
   void write_output(std::string_view text, std::string& out) const override;
 
  private:
