@@ -16,7 +16,7 @@ constexpr std::string_view kKeywords[] = {
 };
 constexpr std::string_view kUnsupported[] = {
     "ELSIF", "CASE", "OF", "END_CASE", "EXIT", "ARRAY", "REAL", "LREAL", "INT", "DINT", "BOOL",
-    "VAR", "END_VAR", "CONTINUE",
+    "CONTINUE",
 };
 struct BuiltinName {
   std::string_view name;
