@@ -3,7 +3,11 @@
 // so a diagnostic points at the file, line and column the user wrote.
 #pragma once
 #include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "support/diagnostic.h"
@@ -59,6 +63,11 @@ struct PreprocOptions {
   // Bounds that keep hostile input finite (`#define A B B`, `#define B C C`, ...).
   int max_expansion_depth = 64;
   size_t max_expansion_chars = 1 << 16;  // per use of a macro in the text
+
+  // Names the dialect knows before the source (ST: the drive's parameters and the program's
+  // variables): true when `name` is one, with its value where it has one (#if reads it, #ifdef
+  // finds it). Null: none.
+  std::function<bool(std::string_view name, std::optional<int32_t>& value)> predefined;
 
   // Extension points for later dialects. Each switch names a directive; while it is off the
   // directive is UnknownDirective. Switching one on today still gives UnknownDirective

@@ -17,6 +17,7 @@
 namespace uprog::transcript {
 
 using controller::Answer;
+using controller::DownloadResult;
 namespace {
 
 std::string trim(const std::string& s) {
@@ -166,6 +167,12 @@ class Runner {
       expect_output(number, directive == "quiet", arg);
     } else if (directive == "load") {
       load(number, arg);
+    } else if (directive == "store") {
+      store(number, arg);
+    } else if (directive == "boot") {
+      // An extension: power-cycles the drive (saved parameters, the stored program as at power-up).
+      drive().reboot();
+      collect_output();
     } else if (directive == "wait") {
       uint64_t us = 0;
       if (!parse_duration_us(arg, us)) fail(number, "wait needs a duration such as 500ms, 2s or 10us");
@@ -206,19 +213,48 @@ class Runner {
     }
   }
 
-  void load(int number, const std::string& arg) {
+  // Compiles and downloads FILE; false (with the failure noted) when that fails.
+  bool download(int number, const std::string& directive, const std::string& arg) {
     if (arg.empty()) {
-      fail(number, "load needs a path");
-      return;
+      fail(number, directive + " needs a path");
+      return false;
     }
     const std::filesystem::path path = std::filesystem::path(arg).is_absolute()
                                            ? std::filesystem::path(arg)
                                            : std::filesystem::path(base_dir_) / arg;
     std::vector<Diagnostic> diagnostics;
     if (!drive().download_source_file(path.string(), diagnostics)) {
-      fail(number, "load " + arg + " failed:\n" + format_text(diagnostics));
-      return;
+      fail(number, directive + " " + arg + " failed:\n" + format_text(diagnostics));
+      return false;
     }
+    return true;
+  }
+
+  // An extension: only stores FILE, as a download does, without loading it to run. A dialect
+  // whose stored form is the source itself (its stored extension is a source extension: the
+  // drive compiles it) gets the file as it is even when it does not compile, as its drive would.
+  void store(int number, const std::string& arg) {
+    const dialect::Dialect& d = drive().dialect();
+    bool source_is_stored = false;
+    for (std::string_view e : d.source_extensions()) source_is_stored |= e == d.stored_extension();
+    std::string error;
+    const std::optional<std::string> text = source_is_stored ? read_text_file(resolve(arg), &error) : std::nullopt;
+    if (!source_is_stored) {
+      download(number, "store", arg);
+    } else if (!text) {
+      fail(number, "store " + arg + ": " + error);
+    } else if (const DownloadResult r = drive().download(std::vector<uint8_t>(text->begin(), text->end())); !r.ok) {
+      fail(number, "store " + arg + ": " + r.error);
+    }
+    collect_output();
+  }
+
+  std::string resolve(const std::string& arg) const {
+    return std::filesystem::path(arg).is_absolute() ? arg : (std::filesystem::path(base_dir_) / arg).string();
+  }
+
+  void load(int number, const std::string& arg) {
+    if (!download(number, "load", arg)) return;
     // Loaded as the dialect's host loads a downloaded program (Gold: CC), taking no time.
     const std::string line = drive().dialect().load_line();
     if (!line.empty()) {

@@ -1,0 +1,44 @@
+// libFuzzer target: host lines into an S300 drive's ASCII interface (a session's send, PLCDL
+// included), with a PLC program running whose globals, DPRVARs and PRINTF are reachable; then
+// a little virtual time so that whatever the lines started runs for a bounded while.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+
+#include "controller/controller.h"
+#include "dialects/st/dialect.h"
+
+namespace {
+
+constexpr std::string_view kProgram =
+    "LONG A, B; DLONG D; WORD W;\n"
+    "PROGRAM PLC1\n  A := A + 1;\n  LIMITW(B, A, DPRVAR1);\nEND_PROGRAM\n"
+    "PROGRAM PLCMAIN\n  IF A MOD 100 = 0 THEN\n    PRINTF('a=%d\\n', A);\n  END_IF;\n"
+    "  XREAD('PFB', B);\n  ADDDLONG(D, D, A);\nEND_PROGRAM\n";
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  using namespace uprog;
+  controller::ControllerOptions options;
+  options.dialect = &st::dialect();
+  controller::Controller drive(options);
+  if (!drive.download(std::vector<uint8_t>(kProgram.begin(), kProgram.end())).ok) abort();
+  for (const auto& a : drive.query("PLCRUN"))
+    if (a.is_error()) abort();
+  std::unique_ptr<dialect::Session> host = drive.open_session();
+  std::string_view input(reinterpret_cast<const char*>(data), size);
+  // One host line per input line, as a terminal sends them; COLDSTART reboots inside.
+  while (!input.empty()) {
+    const size_t end = input.find('\n');
+    (void)host->send(input.substr(0, end));
+    if (end == std::string_view::npos) break;
+    input.remove_prefix(end + 1);
+  }
+  drive.advance(20'000);
+  (void)drive.take_log();
+  (void)drive.take_output();
+  return 0;
+}

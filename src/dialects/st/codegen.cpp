@@ -1,0 +1,428 @@
+// The ST code generator (codegen.h). The page's operator rules: `*` multiplies the operands'
+// low 16 bits; `/` and MOD divide by the divisor's low 16 bits and fail with Overflow when the
+// quotient leaves 16 bits; relations and AND/OR/XOR/NOT give TRUE = -1; unary minus wraps.
+#include "dialects/st/codegen.h"
+
+#include <map>
+
+#include "bytecode/code_builder.h"
+#include "dialects/st/ascii_table.h"
+#include "dialects/st/names.h"
+#include "vm/run_error.h"
+
+namespace uprog::st {
+namespace {
+
+using bytecode::CodeBuilder;
+
+using L = CodeBuilder::Label;
+
+constexpr uint32_t kScratchA = 0, kScratchB = 1, kFirstForLocal = 2;
+
+class Generator {
+ public:
+  Generator(const Program& p, const Locator& locator) : p_(p), locator_(locator), b_(image_.code) {}
+
+  bytecode::Image run(const std::string& source_name) {
+    image_.dialect = "st";
+    image_.source_name = source_name;
+    for (const GlobalVar& g : p_.globals)
+      image_.globals.push_back({g.name, ValueType::Int, g.type == VarType::Dlong ? 2u : 1u});
+    for (size_t i = 0; i < p_.routines.size(); ++i) routine_index_[p_.routines[i].name] = static_cast<uint32_t>(i);
+    for (size_t i = 0; i < p_.routines.size(); ++i) routine(p_.routines[i], static_cast<uint32_t>(i));
+    // A file of declarations only still makes a loadable image: the loader wants code.
+    if (image_.code.empty()) b_.emit(bytecode::Op::RET);
+    b_.finish();
+    return std::move(image_);
+  }
+
+ private:
+  void routine(const Routine& r, uint32_t index) {
+    bytecode::Routine out;
+    out.name = r.name;
+    out.kind = r.kind == ProgramKind::Function ? bytecode::RoutineKind::Function : bytecode::RoutineKind::Task;
+    out.entry = b_.here();
+    out.locals.push_back({"$A", ValueType::Int});
+    out.locals.push_back({"$B", ValueType::Int});
+    for (int k = 0; k < r.for_count; ++k) out.locals.push_back({"$FOR" + std::to_string(k + 1), ValueType::Int});
+    image_.routines.push_back(std::move(out));
+    if (r.kind != ProgramKind::Function) {
+      bytecode::Task t;
+      t.routine = index;
+      t.number = static_cast<uint32_t>(r.kind);
+      t.period_ns = period_ns(r.kind);
+      t.starts_at_reset = r.kind == ProgramKind::Init || r.kind == ProgramKind::Main;
+      image_.tasks.push_back(t);
+    }
+    labels_.clear();
+    for (int s : r.body) statement(s);
+    b_.emit(bytecode::Op::RET);
+  }
+
+  L label_of(const std::string& name) {
+    auto it = labels_.find(name);
+    if (it != labels_.end()) return it->second;
+    const L l = b_.new_label();
+    labels_.emplace(name, l);
+    return l;
+  }
+
+  void line(size_t offset) {
+    const Location at = locator_.at(offset);
+    image_.lines.push_back({b_.here(), at.file, static_cast<uint32_t>(at.line)});
+  }
+  void eol() { b_.emit(bytecode::Op::EOL); }
+
+  void push(int32_t v) {
+    if (v >= -(1 << 23) && v < (1 << 23)) {
+      b_.emit_imm(bytecode::Op::PUSHI, v);
+      return;
+    }
+    image_.constants.push_back({ValueType::Int, static_cast<uint32_t>(v)});
+    b_.emit(bytecode::Op::PUSHK, static_cast<uint32_t>(image_.constants.size() - 1));
+  }
+
+  void store(uint32_t global) {
+    const VarType t = p_.globals[global].type;
+    if (t == VarType::Byte) b_.emit(bytecode::Op::SEXT, 8);
+    if (t == VarType::Word) b_.emit(bytecode::Op::SEXT, 16);
+    b_.emit(bytecode::Op::STG, global);
+  }
+
+  uint32_t text(const std::string& s) {
+    image_.texts.push_back(s);
+    return static_cast<uint32_t>(image_.texts.size() - 1);
+  }
+
+  // --- expressions ---
+  const Expr& ex(int i) const { return p_.exprs[static_cast<size_t>(i)]; }
+
+  static bool is_relation(Op op) { return op >= Op::Gt && op <= Op::Ne; }
+
+  void relation(const Expr& e) {
+    expression(e.a);
+    expression(e.b);
+    switch (e.op) {
+      case Op::Gt: b_.emit(bytecode::Op::GTI); break;
+      case Op::Ge: b_.emit(bytecode::Op::GEI); break;
+      case Op::Lt: b_.emit(bytecode::Op::LTI); break;
+      case Op::Le: b_.emit(bytecode::Op::LEI); break;
+      case Op::Eq: b_.emit(bytecode::Op::EQI); break;
+      default: b_.emit(bytecode::Op::NEI); break;
+    }
+  }
+
+  // A condition: any non-zero value is true; a relation's 0/1 need not become -1.
+  void condition(int i) {
+    const Expr& e = ex(i);
+    if (e.kind == Expr::Kind::Binary && is_relation(e.op)) return relation(e);
+    expression(i);
+  }
+
+  void truth(int i) {
+    expression(i);
+    b_.emit(bytecode::Op::PUSHI, 0);
+    b_.emit(bytecode::Op::NEI);
+  }
+
+  // The quotient on top must fit 16 bits, or the run stops with Overflow.
+  void check_quotient() {
+    const L ok = b_.new_label();
+    b_.emit(bytecode::Op::DUP);
+    b_.emit(bytecode::Op::DUP);
+    b_.emit(bytecode::Op::SEXT, 16);
+    b_.emit(bytecode::Op::EQI);
+    b_.emit_to(bytecode::Op::JNZ, ok);
+    b_.emit(bytecode::Op::RAISE, static_cast<uint32_t>(vm::RunError::Overflow));
+    b_.bind(ok);
+  }
+
+  void expression(int i) {
+    const Expr& e = ex(i);
+    switch (e.kind) {
+      case Expr::Kind::Const: push(e.value); return;
+      case Expr::Kind::Var: b_.emit(bytecode::Op::LDG, e.global); return;
+      case Expr::Kind::Unary:
+        if (e.op == Op::Neg) {
+          push(0);
+          expression(e.a);
+          b_.emit(bytecode::Op::SUBI);
+        } else if (e.op == Op::Not) {
+          expression(e.a);
+          b_.emit(bytecode::Op::LNOT);
+          b_.emit(bytecode::Op::NEGI);
+        } else {
+          expression(e.a);
+          b_.emit(bytecode::Op::NOTI);
+        }
+        return;
+      case Expr::Kind::Binary: binary(e); return;
+    }
+  }
+
+  void binary(const Expr& e) {
+    if (is_relation(e.op)) {
+      relation(e);
+      b_.emit(bytecode::Op::NEGI);
+      return;
+    }
+    if (e.op == Op::And || e.op == Op::Or || e.op == Op::Xor) {
+      truth(e.a);
+      truth(e.b);
+      b_.emit(e.op == Op::And ? bytecode::Op::ANDI : e.op == Op::Or ? bytecode::Op::ORI : bytecode::Op::XORI);
+      b_.emit(bytecode::Op::NEGI);
+      return;
+    }
+    switch (e.op) {
+      case Op::Mul:
+        expression(e.a);
+        b_.emit(bytecode::Op::SEXT, 16);
+        expression(e.b);
+        b_.emit(bytecode::Op::SEXT, 16);
+        b_.emit(bytecode::Op::MULI);
+        return;
+      case Op::Div:
+        expression(e.a);
+        expression(e.b);
+        b_.emit(bytecode::Op::SEXT, 16);
+        b_.emit(bytecode::Op::DIVI);
+        check_quotient();
+        return;
+      case Op::Mod:
+        expression(e.a);
+        expression(e.b);
+        b_.emit(bytecode::Op::SEXT, 16);
+        b_.emit(bytecode::Op::STL, kScratchB);
+        b_.emit(bytecode::Op::STL, kScratchA);
+        b_.emit(bytecode::Op::LDL, kScratchA);
+        b_.emit(bytecode::Op::LDL, kScratchB);
+        b_.emit(bytecode::Op::DIVI);
+        check_quotient();
+        b_.emit(bytecode::Op::POP);
+        b_.emit(bytecode::Op::LDL, kScratchA);
+        b_.emit(bytecode::Op::LDL, kScratchB);
+        b_.emit(bytecode::Op::REMI);
+        return;
+      case Op::Shl:
+      case Op::Shr:
+        expression(e.a);
+        push(ex(e.b).value);
+        b_.emit(e.op == Op::Shl ? bytecode::Op::SHLI : bytecode::Op::SHRI);
+        return;
+      default: break;
+    }
+    expression(e.a);
+    expression(e.b);
+    switch (e.op) {
+      case Op::Add: b_.emit(bytecode::Op::ADDI); break;
+      case Op::Sub: b_.emit(bytecode::Op::SUBI); break;
+      case Op::BAnd: b_.emit(bytecode::Op::ANDI); break;
+      case Op::BOr: b_.emit(bytecode::Op::ORI); break;
+      default: b_.emit(bytecode::Op::XORI); break;
+    }
+  }
+
+  // --- statements ---
+  const Stmt& st(int i) const { return p_.stmts[static_cast<size_t>(i)]; }
+  void body(const std::vector<int>& list) {
+    for (int s : list) statement(s);
+  }
+
+  void statement(int i) {
+    const Stmt& s = st(i);
+    switch (s.kind) {
+      case Stmt::Kind::Assign:
+        line(s.offset);
+        expression(s.expr);
+        store(s.target);
+        eol();
+        return;
+      case Stmt::Kind::If: {
+        const L other = b_.new_label(), end = b_.new_label();
+        line(s.offset);
+        condition(s.expr);
+        eol();
+        b_.emit_to(bytecode::Op::JZ, other);
+        body(s.body);
+        if (!s.else_body.empty()) b_.emit_to(bytecode::Op::JMP, end);
+        b_.bind(other);
+        body(s.else_body);
+        b_.bind(end);
+        return;
+      }
+      case Stmt::Kind::While: {
+        const L top = b_.new_label(), end = b_.new_label();
+        b_.bind(top);
+        line(s.offset);
+        condition(s.expr);
+        eol();
+        b_.emit_to(bytecode::Op::JZ, end);
+        body(s.body);
+        b_.emit_to(bytecode::Op::JMP, top);
+        b_.bind(end);
+        return;
+      }
+      case Stmt::Kind::Repeat: {
+        const L top = b_.new_label();
+        b_.bind(top);
+        body(s.body);
+        line(s.offset);
+        image_.lines.back().line = static_cast<uint32_t>(s.cond_line);
+        condition(s.expr);
+        eol();
+        b_.emit_to(bytecode::Op::JZ, top);
+        return;
+      }
+      case Stmt::Kind::For: return for_loop(s);
+      case Stmt::Kind::Goto:
+        line(s.offset);
+        eol();
+        b_.emit_to(bytecode::Op::JMP, label_of(s.name));
+        return;
+      case Stmt::Kind::Label: b_.bind(label_of(s.name)); return;
+      case Stmt::Kind::Return:
+        line(s.offset);
+        eol();
+        b_.emit(bytecode::Op::RET);
+        return;
+      case Stmt::Kind::Call:
+        line(s.offset);
+        b_.emit(bytecode::Op::CALL, routine_index_.at(s.name), 0);
+        eol();
+        return;
+      case Stmt::Kind::Builtin:
+        line(s.offset);
+        builtin(s);
+        eol();
+        return;
+    }
+  }
+
+  void for_loop(const Stmt& s) {
+    const uint32_t bound = kFirstForLocal + static_cast<uint32_t>(s.scratch);
+    const L top = b_.new_label(), end = b_.new_label();
+    line(s.offset);
+    expression(s.expr);
+    store(s.target);
+    expression(s.expr2);
+    b_.emit(bytecode::Op::STL, bound);
+    b_.bind(top);
+    b_.emit(bytecode::Op::LDG, s.target);
+    b_.emit(bytecode::Op::LDL, bound);
+    b_.emit(s.step > 0 ? bytecode::Op::GTI : bytecode::Op::LTI);
+    eol();
+    b_.emit_to(bytecode::Op::JNZ, end);
+    body(s.body);
+    b_.emit(bytecode::Op::LDG, s.target);
+    push(s.step);
+    b_.emit(bytecode::Op::ADDI);
+    store(s.target);
+    b_.emit_to(bytecode::Op::JMP, top);
+    b_.bind(end);
+  }
+
+  void ldg(const Arg& a) { b_.emit(bytecode::Op::LDG, a.global); }
+  void high_word(uint32_t global) {
+    push(1);
+    b_.emit(bytecode::Op::LDGX, global);
+  }
+  // The 64-bit pair on the stack (high on top) into DLONG `global`.
+  void store_pair(uint32_t global) {
+    b_.emit(bytecode::Op::STL, kScratchA);
+    b_.emit(bytecode::Op::STG, global);
+    push(1);
+    b_.emit(bytecode::Op::LDL, kScratchA);
+    b_.emit(bytecode::Op::STGX, global);
+  }
+
+  void builtin(const Stmt& s) {
+    const std::vector<Arg>& a = s.args;
+    switch (s.builtin) {
+      case Builtin::Clrdlong:
+        push(0);
+        push(0);
+        store_pair(a[0].global);
+        return;
+      case Builtin::Setdlong:
+        ldg(a[1]);
+        high_word(a[1].global);
+        store_pair(a[0].global);
+        return;
+      case Builtin::Adddlong:
+      case Builtin::Subdlong:
+        ldg(a[1]);
+        high_word(a[1].global);
+        ldg(a[2]);
+        b_.emit(bytecode::Op::I2W);
+        b_.emit(s.builtin == Builtin::Adddlong ? bytecode::Op::ADDW : bytecode::Op::SUBW);
+        store_pair(a[0].global);
+        return;
+      case Builtin::Muldiv:
+        ldg(a[0]);
+        ldg(a[1]);
+        ldg(a[2]);
+        b_.emit(bytecode::Op::MULDIV);
+        store(a[3].global);
+        return;
+      case Builtin::Limitw: return limitw(a[0].global, a[1].global, a[2].global);
+      case Builtin::Xread:
+        b_.emit(bytecode::Op::CMDGET, ascii_id(*find_ascii(a[0].text)), 0);
+        store(a[1].global);
+        return;
+      case Builtin::Xwrite:
+        ldg(a[1]);
+        b_.emit(bytecode::Op::CMDSET, ascii_id(*find_ascii(a[0].text)), 0);
+        return;
+      case Builtin::Command:
+        push(static_cast<int32_t>(text(a[0].text)));
+        b_.emit(bytecode::Op::CMDRUN, kCommandAction, 1);
+        return;
+      case Builtin::Printf:
+        for (size_t k = 1; k < a.size(); ++k) ldg(a[k]);
+        b_.emit(bytecode::Op::MSG, text(a[0].text), static_cast<uint32_t>(a.size() - 1));
+        return;
+    }
+  }
+
+  // OUT := IN clamped to -MAX … MAX, inline.
+  void limitw(uint32_t out, uint32_t in, uint32_t max) {
+    const L below = b_.new_label(), done = b_.new_label();
+    b_.emit(bytecode::Op::LDG, in);
+    b_.emit(bytecode::Op::STL, kScratchA);
+    b_.emit(bytecode::Op::LDL, kScratchA);
+    b_.emit(bytecode::Op::LDG, max);
+    b_.emit(bytecode::Op::GTI);
+    b_.emit_to(bytecode::Op::JZ, below);
+    b_.emit(bytecode::Op::LDG, max);
+    b_.emit(bytecode::Op::STL, kScratchA);
+    b_.bind(below);
+    push(0);
+    b_.emit(bytecode::Op::LDG, max);
+    b_.emit(bytecode::Op::SUBI);
+    b_.emit(bytecode::Op::STL, kScratchB);
+    b_.emit(bytecode::Op::LDL, kScratchA);
+    b_.emit(bytecode::Op::LDL, kScratchB);
+    b_.emit(bytecode::Op::LTI);
+    b_.emit_to(bytecode::Op::JZ, done);
+    b_.emit(bytecode::Op::LDL, kScratchB);
+    b_.emit(bytecode::Op::STL, kScratchA);
+    b_.bind(done);
+    b_.emit(bytecode::Op::LDL, kScratchA);
+    store(out);
+  }
+
+  const Program& p_;
+  const Locator& locator_;
+  bytecode::Image image_;
+  CodeBuilder b_;
+  std::map<std::string, uint32_t> routine_index_;
+  std::map<std::string, L> labels_;
+};
+
+}  // namespace
+
+bytecode::Image generate(const Program& program, const Locator& locator, const std::string& source_name) {
+  return Generator(program, locator).run(source_name);
+}
+
+}  // namespace uprog::st

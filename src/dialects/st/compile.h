@@ -1,0 +1,41 @@
+// The ST compiler's driver: the source limits (61 440 bytes, 255 characters a line), the shared
+// preprocessor (#DEFINE #IF #IFDEF #IFNDEF #ELSE #ENDIF, drive parameters in #IF), lexer,
+// parser, whole-file checks and code generation. The drive runs it at boot and on PLCRUN;
+// `uprog check` and the tools run it on files.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "bytecode/image.h"
+#include "dialects/st/checker.h"
+#include "support/diagnostic.h"
+#include "support/source.h"
+
+namespace uprog::st {
+
+constexpr size_t kMaxSourceBytes = 61'440;
+constexpr size_t kMaxLineLength = 255;
+
+struct CompileOptions {
+  bool check_only = false;
+  uint64_t created_unix_s = 0;
+  // A drive parameter's value at compile time, for #IF (the drive's: its current values;
+  // `uprog check`: the table's defaults). Null: the defaults.
+  std::function<std::optional<int32_t>(std::string_view name)> parameter;
+};
+
+struct CompileResult {
+  bytecode::Image image;  // empty on errors or with check_only
+  std::vector<Diagnostic> diagnostics;
+  CheckResult sizes;      // the programs present and the load factor (also with errors after parsing)
+  bool ok() const;
+};
+
+CompileResult compile(const SourceFile& source, const CompileOptions& options = {});
+CompileResult compile_file(const std::string& path, const CompileOptions& options = {});
+
+}  // namespace uprog::st

@@ -1,0 +1,100 @@
+// The ST dialect behind dialect::Dialect: `.st` macro sources, stored as the source itself (the
+// drive compiles it), the S300 firmware, PLCDL downloads and PLCRUN.
+#include "dialects/st/dialect.h"
+
+#include <fmt/core.h>
+
+#include "dialects/st/compile.h"
+#include "dialects/st/errors.h"
+#include "dialects/st/firmware.h"
+
+namespace uprog::st {
+namespace {
+
+constexpr std::string_view kExtensions[] = {".st"};
+constexpr size_t kHexBytesPerLine = 100;
+
+constexpr dialect::ErrorInfo kInterpreterErrors[] = {
+    {kErrUnknown, "Unknown", "unknown command"},
+    {kErrSyntax, "Syntax", "syntax error"},
+    {kErrRange, "Range", "out of range"},
+    {kErrReadOnly, "ReadOnly", "read only"},
+    {kErrNeedsDisabled, "NeedsDisabled", "needs disabled"},
+    {kErrNeedsEnabled, "NeedsEnabled", "needs enabled"},
+    {kErrOpmode, "Opmode", "OPMODE"},
+    {kErrFault, "Fault", "fault"},
+    {kErrTask, "Task", "no such task"},
+    {kErrStorage, "Storage", "storage"},
+    {kErrCompileFailed, "CompileFailed", "compile failed"},
+};
+
+std::vector<dialect::ErrorInfo> diagnostic_table() {
+  size_t count = 0;
+  const ErrorInfo* all = all_errors(count);
+  std::vector<dialect::ErrorInfo> out;
+  for (size_t i = 0; i < count; ++i) out.push_back({all[i].code, all[i].name, all[i].text});
+  return out;
+}
+
+class StDialect final : public dialect::Dialect {
+ public:
+  std::string_view name() const override { return "st"; }
+  std::string_view description() const override {
+    return "Kollmorgen S300/S700 macros (.st): structured text stored as source, compiled by the drive";
+  }
+  std::span<const std::string_view> source_extensions() const override { return kExtensions; }
+  std::string_view stored_extension() const override { return ".st"; }
+
+  dialect::CompileOutput compile_file(const std::string& path, const dialect::CompileSettings& settings) const override {
+    CompileOptions options;
+    options.check_only = settings.check_only;
+    options.created_unix_s = settings.created_unix_s;
+    CompileResult r = st::compile_file(path, options);
+    dialect::CompileOutput out;
+    out.diagnostics = std::move(r.diagnostics);
+    if (out.ok() && !settings.check_only) {
+      std::string error;
+      // The stored form is the source: the drive compiles it itself.
+      std::FILE* f = std::fopen(path.c_str(), "rb");
+      if (f != nullptr) {
+        for (int c; (c = std::fgetc(f)) != EOF;) out.stored_form.push_back(static_cast<uint8_t>(c));
+        std::fclose(f);
+      }
+      out.image = std::move(r.image);
+    }
+    return out;
+  }
+
+  std::span<const dialect::ErrorInfo> diagnostic_codes() const override {
+    static const std::vector<dialect::ErrorInfo> table = diagnostic_table();
+    return table;
+  }
+  std::span<const dialect::ErrorInfo> interpreter_errors() const override { return kInterpreterErrors; }
+
+  std::unique_ptr<dialect::Firmware> make_firmware(dialect::Runtime& runtime,
+                                                   const dialect::FirmwareOptions&) const override {
+    return std::make_unique<Firmware>(runtime);
+  }
+
+  std::vector<std::string> download_lines(const std::vector<uint8_t>& source) const override {
+    std::vector<std::string> out{fmt::format("PLCDL BEGIN {}", source.size())};
+    for (size_t i = 0; i < source.size(); i += kHexBytesPerLine) {
+      std::string line = "PLCDL ";
+      for (size_t k = i; k < source.size() && k < i + kHexBytesPerLine; ++k) line += fmt::format("{:02X}", source[k]);
+      out.push_back(std::move(line));
+    }
+    out.push_back("PLCDL END");
+    return out;
+  }
+  std::string load_line() const override { return "PLCRUN"; }
+  std::size_t max_download_bytes() const override { return kMaxStoredSource; }
+};
+
+}  // namespace
+
+const dialect::Dialect& dialect() {
+  static const StDialect st;
+  return st;
+}
+
+}  // namespace uprog::st

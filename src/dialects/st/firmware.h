@@ -1,0 +1,136 @@
+// The S300 drive's firmware (dialect::Firmware): the stored source, compiled by the drive at boot
+// and on PLCRUN/PLCSTART with the MSG=2 report; the PLC programs in cyclic tasks in virtual time
+// (scheduling::CyclicTasks); F31/F32; the ASCII command line (command_line.cpp) with motion
+// tasks (motion.cpp) on the simulated axis; the VM's Host for XREAD/XWRITE/COMMAND/PRINTF.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "dialect/firmware.h"
+#include "dialect/loaded_program.h"
+#include "dialect/runtime.h"
+#include "dialect/scheduling/cyclic_tasks.h"
+#include "dialects/st/ascii_table.h"
+#include "dialects/st/compile.h"
+#include "dialects/st/wire.h"
+#include "vm/machine.h"
+
+namespace uprog::st {
+
+// The error codes of the ASCII interface (`ERR code text`).
+enum AsciiError : int32_t {
+  kErrUnknown = 1, kErrSyntax = 2, kErrRange = 3, kErrReadOnly = 4, kErrNeedsDisabled = 5,
+  kErrNeedsEnabled = 6, kErrOpmode = 7, kErrFault = 8, kErrTask = 9, kErrStorage = 10,
+  kErrCompileFailed = 11,
+};
+
+constexpr uint64_t kStepNs = 125'000;  // the axis steps every 125 µs, two 62.5 µs ticks
+constexpr size_t kMaxStoredSource = 61'440;
+
+// A motion task (ORDER): target, speed, control word, ramps, next task and its delay.
+struct MotionTask {
+  int32_t p = 0, v = 0, c = 0, acc = 10, dec = 10, a2 = 0, d2 = 0, fn = 0, ft = 0;
+  bool defined = false;
+};
+
+class Firmware final : public dialect::Firmware, public vm::Host {
+ public:
+  explicit Firmware(dialect::Runtime& runtime);
+
+  // --- dialect::Firmware ---
+  const dialect::WireForm& wire() const override { return wire_; }
+  void boot(std::vector<std::string>& messages) override;
+  uint64_t cycle_ns() const override { return kStepNs; }
+  void cycle(const std::vector<uint32_t>& drive_events) override;
+  std::unique_ptr<dialect::Session> open_session() override;
+  std::vector<dialect::Answer> query(std::string_view line) override { return command_line(line); }
+  dialect::DownloadResult download(const std::vector<uint8_t>& source) override;
+  std::string start(std::string_view entry) override;
+  bool running() const override { return plc_state() == 1; }
+  int32_t program_error() const override { return static_cast<int32_t>(run_error_); }
+  std::string program_error_text() const override;
+  std::string state_summary() const override;
+  std::vector<dialect::ThreadInfo> threads() const override;
+
+  // --- vm::Host ---
+  vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override;
+  vm::CommandStatus write(uint32_t command, int32_t index, Value value) override;
+  vm::CommandStatus execute(uint32_t command, int32_t index, const Value* args, uint32_t count) override;
+  vm::CommandStatus message(uint32_t thread, uint32_t text, const Value* args, uint32_t count) override;
+  uint32_t now_us() override { return static_cast<uint32_t>(runtime_.now_ns() / 1000); }
+
+  // One host line: its answers (command_line.cpp); a session also lets one axis step pass.
+  std::vector<dialect::Answer> command_line(std::string_view line);
+  void spend_line_time() { runtime_.advance_ns(kStepNs); }
+
+ private:
+  friend class CommandLine;
+  // --- the PLC (firmware.cpp) ---
+  int32_t plc_state() const;  // PLC: 1 running, 0 stopped, -1 failed, -2 no source
+  int32_t compile_and_start();  // 0, or the ASCII error (11 compile failed)
+  void report_compile(const CompileResult& r);
+  void stop_plc();
+  void latch(int fault);
+  void on_report(const scheduling::Report& report);
+  void sync_user_variables_out();
+  std::optional<int32_t> parameter_value(std::string_view name);
+  void say(const std::string& line) { runtime_.output(line + "\n"); }
+
+  // --- parameters (settings.cpp) ---
+  void defaults();
+  std::string saved_text() const;
+  void apply_saved(const std::string& text);
+  int32_t save();
+  int32_t load();
+
+  // --- motion (motion.cpp) ---
+  int32_t counts_of(int64_t user) const;
+  int32_t user_of(int64_t counts) const;
+  int32_t start_task(int32_t nr);
+  void step_motion();
+  int32_t jog(int32_t rpm, int32_t ms);
+  double rpm_to_counts(double rpm) const;
+  double ramp_counts_per_s2(int32_t ms) const;
+
+  dialect::Runtime& runtime_;
+  bool in_program_ = false;  // inside a host call of the program: nothing may replace it
+  int32_t prompt_ = 0;
+  int32_t msg_ = 0;
+  S300Wire wire_;
+  drive::Axis* axis_ = nullptr;
+
+  // Parameters the firmware keeps (the saved ones among them go to the settings record).
+  std::map<std::string, int32_t> values_;
+  std::array<int32_t, kUserVariables> user_vars_{};
+
+  // The stored source, and the compiled program in RAM.
+  std::optional<std::string> source_;
+  std::unique_ptr<dialect::LoadedProgram> program_;
+  std::vector<bytecode::Global> globals_;  // the loaded program's, for the command line
+  scheduling::CyclicTasks schedule_;
+  std::vector<std::pair<uint32_t, std::string>> threads_;  // thread, program name
+  bool compile_failed_ = false;
+  bool plc_started_ = false;
+  vm::RunError run_error_ = vm::RunError::None;
+  std::set<int> faults_;  // F31, F32 (the firmware's); the axis' come from its MF
+
+  // Motion.
+  std::map<int32_t, MotionTask> tasks_;
+  int32_t mtmux_ = 0;
+  int32_t last_move_ = 0;
+  int32_t opmode_ = 8;
+  bool enabled_ = false;
+  int64_t target_counts_ = 0;
+  bool next_pending_ = false;
+  int32_t next_task_ = 0;
+  uint64_t next_at_ns_ = 0;
+  uint64_t jog_until_ns_ = 0;
+};
+
+}  // namespace uprog::st

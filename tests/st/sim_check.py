@@ -1,0 +1,44 @@
+#!/usr/bin/env python3
+"""`uprog sim` serving an S300 drive over TCP, as `uprog term` or a host program sees it: the
+prompt and echo with PROMPT=1, BEL ERR errors, the MSG=2 compile report on PLCRUN and PRINTF
+text between answers. Usage: sim_check.py UPROG PROGRAM.st"""
+import socket
+import subprocess
+import sys
+import time
+
+uprog, program = sys.argv[1], sys.argv[2]
+sim = subprocess.Popen([uprog, "sim", "--listen", "127.0.0.1:0", "--program", program],
+                       stdout=subprocess.PIPE, text=True)
+try:
+    line = sim.stdout.readline()  # "listening on tcp 127.0.0.1:PORT"
+    port = int(line.rsplit(":", 1)[1])
+    s = socket.create_connection(("127.0.0.1", port), timeout=5)
+
+    def talk(data, expected, also=b""):
+        s.sendall(data)
+        got = b""
+        deadline = time.time() + 5
+        while not got.endswith(expected[-3:]) and time.time() < deadline:
+            s.settimeout(max(0.01, deadline - time.time()))
+            try:
+                chunk = s.recv(4096)
+            except socket.timeout:
+                break
+            if not chunk:
+                break
+            got += chunk
+        # `also` may come first: what the program loaded at start printed before this line.
+        if got != expected and got != also + expected:
+            sys.exit(f"sent {data!r}: expected {expected!r}, got {got!r}")
+
+    talk(b"PROMPT 1\r", b"-->", also=b"Hello world in the year 2011\r\n")
+    talk(b"VER\r", b"VER\r\nuprog S300 sim 1.0\r\n-->")
+    talk(b"NOSUCH\r", b"NOSUCH\r\n\aERR 1 unknown command\r\n-->")
+    talk(b"MSG 2\r", b"MSG 2\r\n-->")
+    talk(b"PLCRUN\r", b"PLCRUN\r\nPLC compile\r\nPLCMAIN (size=4)\r\nload factor 0\r\nPLC start\r\n"
+                      b"Hello world in the year 2011\r\n-->")
+    print("ok")
+finally:
+    sim.kill()
+    sim.wait()

@@ -1,0 +1,63 @@
+// The S300's ASCII wire end to end through a host's session: PROMPT=0 answers bare lines,
+// PROMPT=1 echoes the input with CR LF and ends with the prompt `-->`, an error is BEL `ERR`
+// code text; PRINTF's text reaches the host as unsolicited CR LF lines.
+#include <gtest/gtest.h>
+
+#include "controller/controller.h"
+#include "dialects/st/dialect.h"
+#include "dialects/st/wire.h"
+#include "transport/controller_service.h"
+#include "transport/host_session.h"
+
+namespace uprog {
+namespace {
+
+struct Drive {
+  Drive() : controller(options()), service(controller), session(service) {}
+  static controller::ControllerOptions options() {
+    controller::ControllerOptions o;
+    o.dialect = &st::dialect();
+    return o;
+  }
+  std::string say(std::string_view bytes) {
+    std::string out;
+    session.receive(bytes, out);
+    return out;
+  }
+  controller::Controller controller;
+  transport::ControllerService service;
+  transport::HostSession session;
+};
+
+TEST(st_wire, PromptZeroAnswersWithoutEchoOrPrompt) {
+  Drive d;
+  EXPECT_EQ(d.say("VER\r"), "uprog S300 sim 1.0\r\n");
+  EXPECT_EQ(d.say("PGEARI 20000\r"), "");  // a write answers none
+  EXPECT_EQ(d.say("pgeari\n"), "20000\r\n");
+  EXPECT_EQ(d.say("NOSUCH\r"), "\aERR 1 unknown command\r\n");
+}
+
+TEST(st_wire, PromptOneEchoesAndPrompts) {
+  Drive d;
+  EXPECT_EQ(d.say("PROMPT 1\r"), "-->");  // the echo is decided as the line arrives
+  EXPECT_EQ(d.say("VER\r"), "VER\r\nuprog S300 sim 1.0\r\n-->");
+  EXPECT_EQ(d.say("MSG 2\r"), "MSG 2\r\n-->");
+  // Each byte comes back as it arrives; the answer when its CR does.
+  EXPECT_EQ(d.say("V"), "V");
+  EXPECT_EQ(d.say("ER\r\n"), "ER\r\nuprog S300 sim 1.0\r\n-->");
+  EXPECT_EQ(d.say("PFB 3\r"), "PFB 3\r\n\aERR 4 read only\r\n-->");
+  EXPECT_EQ(d.say("ERRCODE\r"), "ERRCODE\r\nno error\r\n-->");
+  EXPECT_EQ(d.say("PROMPT 0\r"), "PROMPT 0\r\n");
+}
+
+TEST(st_wire, UnsolicitedTextEndsItsLinesWithCrLf) {
+  std::string out;
+  const int32_t prompt = 0;
+  st::S300Wire wire(prompt);
+  wire.write_output("Hello world in the year 2011\n", out);
+  EXPECT_EQ(out, "Hello world in the year 2011\r\n");
+  EXPECT_EQ(st::answer_text({"unknown command", 1}), "\aERR 1 unknown command");
+}
+
+}  // namespace
+}  // namespace uprog
