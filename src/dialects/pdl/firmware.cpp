@@ -101,7 +101,7 @@ bool Firmware::load_stored(std::string* error) {
     int ro = 0;
     if (std::sscanf(info.c_str(), "var %63s %7s %d %d %d", name, kind, &ro, &v.level_read, &v.level_write) != 5) continue;
     v.name = name;
-    v.kind = kind[0] == 's' ? 's' : kind[0] == 'f' ? 'f' : (kind[1] == 'p') ? 'p' : 'l';
+    v.kind = kind[1] == 'p' ? 'p' : kind[0] == 's' ? 's' : kind[0] == 'f' ? 'f' : 'l';
     v.read_only = ro != 0;
     const int g = image.find_global(v.name);
     if (g < 0) continue;
