@@ -71,7 +71,12 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   Compiler compiler(std::move(tokens), locate, source.name);
   bytecode::Image image;
   const bool ok = compiler.compile(image) && diags.empty();
-  for (Diagnostic& d : compiler.diagnostics()) diags.push_back(std::move(d));
+  // A line whose characters did not lex gets no second error from the parser.
+  std::vector<int> bad_lines;
+  for (const Diagnostic& d : diags) bad_lines.push_back(d.where.line);
+  for (Diagnostic& d : compiler.diagnostics()) {
+    if (std::find(bad_lines.begin(), bad_lines.end(), d.where.line) == bad_lines.end()) diags.push_back(std::move(d));
+  }
   std::stable_sort(diags.begin(), diags.end(), [](const Diagnostic& a, const Diagnostic& b) {
     return a.where.line != b.where.line ? a.where.line < b.where.line : a.where.column < b.where.column;
   });

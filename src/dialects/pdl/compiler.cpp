@@ -129,9 +129,6 @@ bool Compiler::compile(bytecode::Image& out) {
     if (!proc.defined) error(Error::ProcNotImplemented, proc.declared_at, name);
   }
   if (!code_.finish()) error(Error::UnknownLabel, toks_.back().offset, "a jump to a label never defined");
-  if (slots_ * 4 + text_bytes_ > kPdlCodeBytes) {
-    error(Error::CodeTooLarge, toks_.back().offset, std::to_string(slots_ * 4 + text_bytes_) + " bytes");
-  }
   for (auto& [name, info] : scopes_[0]) {
     if (info.routine >= 0 && info.defined)
       image_.routines[static_cast<size_t>(info.routine)].entry = code_.target(info.label);
@@ -334,7 +331,14 @@ void Compiler::procedure() {
     return skip_to_command_end();
   }
   if (proc.defined) error(Error::Redefined, name.offset, "procedure " + name.text);
-  if (current_proc_ != nullptr) return;
+  if (current_proc_ != nullptr) {
+    // Its body still closes with its own end, so that the outer procedure's stays its own.
+    proc.defined = true;
+    statement_list(1, true);
+    accept_word("end");
+    accept_op(";");
+    return;
+  }
   proc.defined = true;
   CodeBuilder::Label after = code_.new_label();
   code_.emit_to(Op::JMP, after);  // the code around it does not fall into it
@@ -412,19 +416,19 @@ void Compiler::finish_scope() {
   }
 }
 
-LabelInfo& Compiler::label_named(const std::string& name, int scope) {
+LabelInfo& Compiler::label_named(const std::string& name, int scope, size_t offset) {
   auto& labels = scopes_[static_cast<size_t>(scope)];
   auto it = labels.find(name);
   if (it != labels.end()) return it->second;
   LabelInfo& info = labels[name];
   info.label = code_.new_label();
-  info.first_use = peek().offset;
+  info.first_use = offset;
   return info;
 }
 
 // Every global label is an entry routine: `run` and the host start tasks there.
-int Compiler::routine_for_label(const std::string& name) {
-  LabelInfo& info = label_named(name, 0);
+int Compiler::routine_for_label(const std::string& name, size_t offset) {
+  LabelInfo& info = label_named(name, 0, offset);
   if (info.routine < 0) {
     bytecode::Routine r;
     r.name = name;

@@ -132,8 +132,8 @@ class Compiler {
   void emit_return_dispatch();
   void emit_indirect_stubs();
   void emit_dispatch(uint32_t local, const std::vector<std::pair<int32_t, CodeBuilder::Label>>& cases);
-  LabelInfo& label_named(const std::string& name, int scope);
-  int routine_for_label(const std::string& name);
+  LabelInfo& label_named(const std::string& name, int scope, size_t offset);
+  int routine_for_label(const std::string& name, size_t offset);
 
   // --- commands (compiler_commands.cpp)
   void command(int depth, bool in_proc);
@@ -158,6 +158,8 @@ class Compiler {
   void proc_call(const Proc& proc);
   void assignment();
   uint32_t short_command_slots();
+  void check_code_size();
+  bool is_literal(size_t first, size_t end) const;
   bool short_command_allowed() const;
   void simple_command(bool in_proc);
 
@@ -228,6 +230,7 @@ class Compiler {
   int32_t slave_reads_ = 0;
   int32_t operations_ = 0;
   bool in_short_if_ = false;
+  bool size_reported_ = false;
   bool address_float_ = false;  // the last logical_address() was a float's
   bool address_short_ = false;
 };

@@ -24,6 +24,21 @@ void Compiler::begin_command(uint32_t slots) {
     commands_.push_back({slots_, start, scope_});
   }
   slots_ += slots;
+  check_code_size();
+}
+
+// 1.1: code up to 32 KB (4 bytes a slot, the printl strings with their NULs).
+void Compiler::check_code_size() {
+  if (size_reported_ || slots_ * 4 + text_bytes_ <= kPdlCodeBytes) return;
+  size_reported_ = true;
+  error(Error::CodeTooLarge, peek().offset, std::to_string(slots_ * 4 + text_bytes_) + " bytes");
+}
+
+// A constant argument: a number, or a negated one.
+bool Compiler::is_literal(size_t first, size_t end) const {
+  auto number = [&](size_t i) { return toks_[i].kind == Tok::Int || toks_[i].kind == Tok::Float || toks_[i].kind == Tok::Char; };
+  if (end == first + 1) return number(first);
+  return end == first + 2 && toks_[first].kind == Tok::Op && toks_[first].text == "-" && number(first + 1);
 }
 
 void Compiler::command(int depth, bool in_proc) {
@@ -34,8 +49,8 @@ void Compiler::command(int depth, bool in_proc) {
     next();
     next();
     if (t.text.size() > 24) error(Error::LabelTooLong, t.offset, t.text);
-    if (scope_ == 0) routine_for_label(t.text);
-    LabelInfo& info = label_named(t.text, scope_);
+    if (scope_ == 0) routine_for_label(t.text, t.offset);
+    LabelInfo& info = label_named(t.text, scope_, t.offset);
     if (info.defined) return error(Error::LabelRedefined, t.offset, t.text);
     info.defined = true;
     info.slot = slots_;
@@ -296,8 +311,8 @@ void Compiler::goto_command() {
   const Token& name = peek();
   const std::string label = expect_name();
   if (label.empty()) return;
-  if (scope_ == 0) routine_for_label(label);
-  LabelInfo& info = label_named(label, scope_);
+  if (scope_ == 0) routine_for_label(label, name.offset);
+  LabelInfo& info = label_named(label, scope_, name.offset);
   if (accept_op("[")) {
     int_operand(expr(), name.offset);
     expect_op("]");
@@ -315,10 +330,11 @@ void Compiler::goto_command() {
 void Compiler::call_command() {
   next();
   begin_command(1);
+  const size_t label_at = peek().offset;
   const std::string label = expect_name();
   if (label.empty()) return;
-  if (scope_ == 0) routine_for_label(label);
-  LabelInfo& info = label_named(label, scope_);
+  if (scope_ == 0) routine_for_label(label, label_at);
+  LabelInfo& info = label_named(label, scope_, label_at);
   code_.emit(Op::LDL, kSp);
   code_.emit(Op::LDL, kLimit);
   CodeBuilder::Label room = code_.new_label();
@@ -406,7 +422,7 @@ void Compiler::proc_call(const Proc& proc) {
     push_int(2 + count);
     code_.emit(Op::ADDI);
     const Ty t = expr();
-    const bool constant = pos_ - first == 1 || (pos_ - first == 2 && toks_[first].text == "-");
+    const bool constant = is_literal(first, pos_);
     if (count < params) {
       const Param& p = proc.params[static_cast<size_t>(count)];
       const Ty want = p.pointer ? (p.kind == Kind::Float ? Ty::PtrFloat : Ty::PtrInt)
@@ -449,7 +465,7 @@ void Compiler::run_command() {
     error(Error::RunNeedsGlobalLabel, at, label);
     return;
   }
-  const int routine = routine_for_label(label);
+  const int routine = routine_for_label(label, at);
   push_int(t.int_value);
   push_int(routine);
   code_.emit(Op::CMDRUNX, kRunCommand, 1);

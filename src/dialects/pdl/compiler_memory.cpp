@@ -471,7 +471,7 @@ void Compiler::memory_block_assignment(size_t lhs_start) {
       const size_t value_at = peek().offset;
       const size_t first = pos_;
       const Ty t = expr();
-      const bool constant = pos_ - first == 1 || (pos_ - first == 2 && toks_[first].text == "-");
+      const bool constant = is_literal(first, pos_);
       if (is_float(t) != dest_float && !constant) error(Error::ArgumentType, value_at, "memset does not convert");
       convert(t, dest_float ? Ty::Float : Ty::Int, dest_short);
     } else {

@@ -105,6 +105,7 @@ void Compiler::printl_command(bool ret) {
   image_.texts.push_back(format.text);
   text_bytes_ += format.text.size() + 1;
   slots_ += static_cast<uint32_t>(k);
+  check_code_size();
   code_.emit(Op::MSG, static_cast<uint32_t>(image_.texts.size() - 1), static_cast<uint32_t>(k + 2));
   if (ret) {
     emit_ret();
