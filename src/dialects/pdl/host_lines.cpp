@@ -55,6 +55,13 @@ std::string format_float(float f) {
 
 Answer error(int32_t code, std::string text) { return Answer{std::move(text), code}; }
 
+bool is_name(std::string_view s) {
+  if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
+  for (char c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+  return true;
+}
+
 // "name[i]" -> name and i.
 bool split_index(std::string_view text, std::string_view& name, std::optional<int32_t>& index) {
   text = trim(text);
@@ -62,10 +69,11 @@ bool split_index(std::string_view text, std::string_view& name, std::optional<in
   if (open == std::string_view::npos) {
     name = text;
     index.reset();
-    return !name.empty();
+    return is_name(name);
   }
   if (text.back() != ']') return false;
   name = trim(text.substr(0, open));
+  if (!is_name(name)) return false;
   int32_t i = 0;
   if (!parse_int(text.substr(open + 1, text.size() - open - 2), i)) return false;
   index = i;
@@ -207,7 +215,7 @@ Answer Firmware::read_name(std::string_view name, std::optional<int32_t> index, 
   }
   bool axis_zero = false;
   const SystemVariable* s = find_system_variable(name, &axis_zero);
-  if (!s) return error(kNoSuchVariable, "no such variable");
+  if (!s) return program_ ? error(kNoSuchVariable, "no such variable") : error(kNoProgram, "no program");
   if (!s->readable()) return error(kUnknownCommand, "write-only");
   if (axis_zero && index) return error(kBadIndex, "bad index");
   int32_t v = 0;
@@ -246,7 +254,7 @@ std::optional<Answer> Firmware::write_name(std::string_view name, std::optional<
   }
   bool axis_zero = false;
   const SystemVariable* s = find_system_variable(name, &axis_zero);
-  if (!s) return error(kNoSuchVariable, "no such variable");
+  if (!s) return program_ ? error(kNoSuchVariable, "no such variable") : error(kNoProgram, "no program");
   if (!s->writable()) return error(kReadOnly, "read-only");
   if (axis_zero && index) return error(kBadIndex, "bad index");
   const int32_t code = write_variable(s->id, index.value_or(0), rounded(values[0]), true);
