@@ -14,6 +14,27 @@ namespace {
 
 int preproc_code(preproc::PreprocError) { return static_cast<int>(Error::PreprocDirective); }
 
+const char* preproc_text(preproc::PreprocError e) {
+  using P = preproc::PreprocError;
+  switch (e) {
+    case P::IdentifierMissing: return "#define needs a name";
+    case P::InvalidIdentifier: return "not a valid macro name (function-like macros are not supported yet)";
+    case P::AlreadyDefined: return "macro already defined";
+    case P::ConditionMissing: return "condition missing";
+    case P::MisplacedElse: return "#else outside #ifdef/#ifndef, or twice";
+    case P::NotDefined: return "#undef of a name that is not defined";
+    case P::MismatchedType: return "condition of the wrong type";
+    case P::TooManyDefines: return "too many #define directives";
+    case P::MisplacedEndif: return "#endif without #ifdef/#ifndef";
+    case P::UnterminatedIf: return "#ifdef/#ifndef without #endif";
+    case P::TooManyElseifs: return "too many branches";
+    case P::UnknownDirective: return "directive not supported yet (#include, #elifdef, #elifndef)";
+    case P::DivisionByZero: return "division by zero";
+    case P::ExpansionTooComplex: return "macro expansion too deep or too long";
+  }
+  return "preprocessor error";
+}
+
 // Line starts of a text, to place an offset where no source map is.
 class PlainLocator {
  public:
@@ -46,6 +67,7 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   preproc::PreprocOptions po;
   po.scheme = "pdl";
   po.code_of = preproc_code;
+  po.text_of = preproc_text;
   po.star_star_comments = false;
   po.undefined_identifier_is_zero = true;
   po.unknown_hash_lines_pass_through = true;
