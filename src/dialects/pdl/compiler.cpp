@@ -471,6 +471,7 @@ void Compiler::emit_return_dispatch() {
 // `goto L[n]`: n counts slots from L; only a command's start in L's scope is a target.
 void Compiler::emit_indirect_stubs() {
   for (const IndirectGoto& g : indirect_) {
+    line_entry(g.offset);  // an n that is no command's start is the goto's error
     code_.bind(g.stub);
     auto& labels = scopes_[static_cast<size_t>(g.scope)];
     auto it = labels.find(g.label);

@@ -177,7 +177,7 @@ void Compiler::if_command(int depth, bool in_proc) {
   code_.bind(f);
   end_line();
   code_.bind(end);
-  if (at_word("else")) error(Error::StrayEnd, peek().offset, "else after a short if");
+  if (at_word("else") && !at_word("do", 1)) error(Error::StrayEnd, peek().offset, "else after a short if");
 }
 
 void Compiler::while_command(int depth, bool in_proc) {
