@@ -150,7 +150,10 @@ class Preprocessor {
       case Directive::Endif: run_endif(at); break;
       case Directive::Include: extension(options_.allow_include, at); break;
       case Directive::Elifdef:
-      case Directive::Elifndef: extension(options_.allow_elifdef, at); break;
+      case Directive::Elifndef:
+        if (!options_.allow_elifdef) extension(false, at);
+        else run_branch(at, [&] { return is_defined(args, args_at, at, d == Directive::Elifdef); });
+        break;
       case Directive::Definevar: extension(options_.allow_definevar, at); break;
       case Directive::Information: extension(options_.allow_information, at); break;
     }
@@ -282,6 +285,12 @@ class Preprocessor {
   }
 
   void run_elseif(std::string_view args, size_t from, const Location& at) {
+    run_branch(at, [&] { return condition(args, from, at); });
+  }
+
+  // #elseif, #elifdef, #elifndef: the next branch, taken when none was and `cond` holds.
+  template <class Condition>
+  void run_branch(const Location& at, Condition cond) {
     if (stack_.empty()) return report(PreprocError::MisplacedElse, at);
     Conditional& c = stack_.back();
     if (c.seen_else) {
@@ -299,7 +308,7 @@ class Preprocessor {
       c.active = false;
       return;
     }
-    c.active = condition(args, from, at);
+    c.active = cond();
     c.taken = c.active;
   }
 

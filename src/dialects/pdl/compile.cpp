@@ -28,7 +28,7 @@ const char* preproc_text(preproc::PreprocError e) {
     case P::MisplacedEndif: return "#endif without #ifdef/#ifndef";
     case P::UnterminatedIf: return "#ifdef/#ifndef without #endif";
     case P::TooManyElseifs: return "too many branches";
-    case P::UnknownDirective: return "directive not supported yet (#include, #elifdef, #elifndef)";
+    case P::UnknownDirective: return "directive not supported yet (#include)";
     case P::DivisionByZero: return "division by zero";
     case P::ExpansionTooComplex: return "macro expansion too deep or too long";
   }
@@ -72,6 +72,7 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   po.undefined_identifier_is_zero = true;
   po.unknown_hash_lines_pass_through = true;
   po.max_name_length = 24;
+  po.allow_elifdef = true;
   DiagnosticList pre_diags;
   const bool preprocess = source.text.find('#') != std::string::npos;
   preproc::Preprocessed pre;
