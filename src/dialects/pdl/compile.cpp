@@ -18,7 +18,7 @@ const char* preproc_text(preproc::PreprocError e) {
   using P = preproc::PreprocError;
   switch (e) {
     case P::IdentifierMissing: return "#define needs a name";
-    case P::InvalidIdentifier: return "not a valid macro name (function-like macros are not supported yet)";
+    case P::InvalidIdentifier: return "not a valid macro name";
     case P::AlreadyDefined: return "macro already defined";
     case P::ConditionMissing: return "condition missing";
     case P::MisplacedElse: return "#else outside #ifdef/#ifndef, or twice";
@@ -73,6 +73,7 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   po.unknown_hash_lines_pass_through = true;
   po.max_name_length = 24;
   po.allow_elifdef = true;
+  po.allow_function_macros = true;
   DiagnosticList pre_diags;
   const bool preprocess = source.text.find('#') != std::string::npos;
   preproc::Preprocessed pre;
