@@ -5,6 +5,7 @@
 
 #include "dialects/pdl/system_names.h"
 #include "drive/axis.h"
+#include "drive/events.h"
 #include "drive/inputs.h"
 #include "support/format_message.h"
 #include "vm/run_error.h"
@@ -46,7 +47,7 @@ Firmware::Firmware(dialect::Runtime& runtime, const dialect::FirmwareOptions&)
 void Firmware::boot(std::vector<std::string>& messages) {
   phase_us_ = runtime_.axis(0).period_us() == 0 ? 50 : runtime_.axis(0).period_us();
   fclk_ = 0;
-  homed_ = home_was_active_ = false;
+  homed_ = false;
   overrides_.clear();
   schedule_.reset();
   for (uint32_t t = 0; t <= kTasks; ++t) {
@@ -230,13 +231,11 @@ void Firmware::report_error(uint32_t task) {
 }
 
 // One phase: states refresh, then one command of one task (the axes stepped already).
-void Firmware::cycle(const std::vector<uint32_t>&) {
+void Firmware::cycle(const std::vector<uint32_t>& drive_events) {
   ++fclk_;
-  overrides_.clear();
-  drive::Axis& a = runtime_.axis(0);
-  const bool home = (a.input_port() & drive::kIpMainHome) != 0;
-  if (home && !home_was_active_) homed_ = true;
-  home_was_active_ = home;
+  if (!overrides_.empty()) overrides_.clear();
+  // X_homed latches when the home input becomes active (the axis reports the edge).
+  if (!drive_events.empty() && (drive_events[0] & drive::kEventHome) != 0) homed_ = true;
   vm::Machine* m = machine();
   if (!m) return;
   const scheduling::PhaseResult r = schedule_.phase(*m);

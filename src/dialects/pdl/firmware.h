@@ -113,7 +113,6 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   uint32_t task_routine_[kTasks + 1] = {};   // where a host's run started it
   bool kill_pending_[kTasks + 1] = {};
   bool homed_ = false;
-  bool home_was_active_ = false;
   int32_t in_func_[7] = {0, 9, 11, 17, 7, 7, 7};
   // A program's change to a state the drive refreshes lasts until the next phase (2.4.3).
   struct Override {
