@@ -1,4 +1,4 @@
-// The peers' bench driver: compiles a Gold file, runs `main` to its end with an unlimited budget
+// The peers' bench driver: compiles a Gold (or PDL) file, runs `main` to its end with an unlimited budget
 // on the bare VM (a fake Host, no drive simulation), prints the globals named by --then.
 // --histogram counts executed opcodes and opcode pairs instead (one instruction per slice);
 // A .s file (uprog assembly, e.g. hand-edited --asm output) is assembled and run through the
@@ -19,6 +19,8 @@
 #include "bytecode/opcodes.h"
 #include "bytecode/peephole.h"
 #include "dialects/gold/compile.h"
+#include "dialects/pdl/compile.h"
+#include "dialects/pdl/layout.h"
 #include "support/diagnostic.h"
 #include "vm/machine.h"
 
@@ -104,6 +106,10 @@ int main(int argc, char** argv) {
       return 1;
     }
     bc::optimize(compiled.image);
+  } else if (file.size() > 4 && file.compare(file.size() - 4, 4, ".pdl") == 0) {
+    uprog::pdl::CompileResult pdl = uprog::pdl::compile_file(file);
+    compiled.image = std::move(pdl.image);
+    compiled.diagnostics = std::move(pdl.diagnostics);
   } else {
     uprog::gold::CompileOptions options;
     options.optimize = peephole;
@@ -140,12 +146,22 @@ int main(int argc, char** argv) {
                  static_cast<int>(status.verify), status.pc);
     return 1;
   }
-  const int main_routine = image.find_routine("main");
-  if (main_routine < 0) {
-    std::fprintf(stderr, "no function main\n");
-    return 1;
+  if (image.dialect == "pdl") {
+    // A PDL program runs from the start of its code with task 1's stack registers.
+    namespace pdl = uprog::pdl;
+    const int32_t base = pdl::stack_base(1);
+    const Value args[pdl::kEntryInputs] = {Value::of_int(base), Value::of_int(base),
+                                           Value::of_int(base + pdl::kStackWords),
+                                           Value::of_int(pdl::kTaskAddressUnit - base), Value::of_int(base)};
+    machine.start(0, 0, args, pdl::kEntryInputs);
+  } else {
+    const int main_routine = image.find_routine("main");
+    if (main_routine < 0) {
+      std::fprintf(stderr, "no function main\n");
+      return 1;
+    }
+    machine.start(0, static_cast<uint32_t>(main_routine));
   }
-  machine.start(0, static_cast<uint32_t>(main_routine));
 
   const auto run_start = std::chrono::steady_clock::now();
   std::vector<uint64_t> ops(256), pairs(256 * 256);

@@ -5,6 +5,7 @@
 
 #include "dialects/gold/dialect.h"
 #include "dialects/st/dialect.h"
+#include "dialects/pdl/dialect.h"
 
 namespace uprog::dialects {
 namespace {
@@ -12,6 +13,7 @@ namespace {
 const dialect::Dialect* const kDialects[] = {
     &gold::dialect(),
     &st::dialect(),
+    &pdl::dialect(),
 };
 
 bool ends_with_ignoring_case(std::string_view text, std::string_view suffix) {

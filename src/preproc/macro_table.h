@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "support/source.h"
 #include "support/value.h"
@@ -15,6 +16,7 @@ struct Macro {
   std::string body;                 // the string, comments blanked and trimmed; may be empty
   std::optional<TypedValue> value;  // set when the body is a constant expression
   Location defined_at;
+  std::optional<std::vector<std::string>> params;  // a function-like macro's (HIWIN PDL)
 };
 
 class MacroTable {

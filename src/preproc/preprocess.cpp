@@ -65,10 +65,37 @@ class Preprocessor {
   Preprocessed run() {
     const std::string_view text = source_.text;
     size_t pos = 0;
+    std::string continued;  // a #define's lines ending in '\\', joined (function-like macros)
+    int continued_from = 0;
     for (line_ = 1;; ++line_) {
       const size_t newline = text.find('\n', pos);
       const size_t end = newline == std::string_view::npos ? text.size() : newline;
-      process_line(text.substr(pos, end - pos));
+      std::string_view line = text.substr(pos, end - pos);
+      if (options_.allow_function_macros) {
+        std::string_view body = line;
+        while (!body.empty() && is_blank(body.back())) body.remove_suffix(1);
+        const bool more = !body.empty() && body.back() == '\\' && newline != std::string_view::npos &&
+                          (!continued.empty() || trim(line).starts_with("#define"));
+        if (more) {
+          if (continued.empty()) continued_from = line_;
+          continued.append(body.substr(0, body.size() - 1)).push_back(' ');
+          out_.mark(line_, 1);
+          out_.append('\n');
+          pos = newline + 1;
+          continue;
+        }
+      }
+      if (!continued.empty()) {
+        // The joined directive is reported at its first line; it writes no text of its own.
+        continued.append(line);
+        const int last = line_;
+        line_ = continued_from;
+        process_line(continued);
+        line_ = last;
+        continued.clear();
+      } else {
+        process_line(line);
+      }
       if (newline == std::string_view::npos) break;
       out_.append('\n');
       pos = newline + 1;
@@ -150,7 +177,10 @@ class Preprocessor {
       case Directive::Endif: run_endif(at); break;
       case Directive::Include: extension(options_.allow_include, at); break;
       case Directive::Elifdef:
-      case Directive::Elifndef: extension(options_.allow_elifdef, at); break;
+      case Directive::Elifndef:
+        if (!options_.allow_elifdef) extension(false, at);
+        else run_branch(at, [&] { return is_defined(args, args_at, at, d == Directive::Elifdef); });
+        break;
       case Directive::Definevar: extension(options_.allow_definevar, at); break;
       case Directive::Information: extension(options_.allow_information, at); break;
     }
@@ -200,10 +230,24 @@ class Preprocessor {
   }
 
   void run_define(std::string_view args, size_t from, const Location& at) {
-    const Word name = word_at(args, from);
-    if (options_.allow_function_macros && name.text.find('(') != std::string_view::npos) {
-      return report(PreprocError::UnknownDirective, at,
-                    {{at, "function-like macros are not implemented yet"}});
+    Word name = word_at(args, from);
+    std::optional<std::vector<std::string>> params;
+    size_t body_at = name.at + name.text.size();
+    if (options_.allow_function_macros) {
+      // NAME(a, b) body: the parenthesis right after the name makes it function-like.
+      size_t e = name.at;
+      while (e < args.size() && is_ident_char(args[e])) ++e;
+      if (e < args.size() && args[e] == '(') {
+        std::vector<std::string> list;
+        size_t close = 0;
+        if (!read_arguments(args, e, list, close)) return report(PreprocError::InvalidIdentifier, here(e));
+        for (const std::string& p : list) {
+          if (!valid_name(p)) return report(PreprocError::InvalidIdentifier, here(e));
+        }
+        name.text = args.substr(name.at, e - name.at);
+        params = std::move(list);
+        body_at = close;
+      }
     }
     if (!check_name(name, at)) return;
     if (const Macro* old = macros_.find(name.text)) {
@@ -217,9 +261,10 @@ class Preprocessor {
     }
     ++define_count_;
     Macro m;
-    m.body = std::string(trim(args.substr(name.at + name.text.size())));
+    m.body = std::string(trim(args.substr(std::min(body_at, args.size()))));
     m.defined_at = at;
-    if (!m.body.empty()) {
+    m.params = std::move(params);
+    if (!m.body.empty() && !m.params) {
       // Manual 2.9.1: a string that evaluates is replaced by its value, any other by itself.
       const EvalResult r = evaluate_constant(m.body, [this](std::string_view n) { return value_of(n); });
       if (r.status == EvalStatus::Ok) m.value = r.value;
@@ -290,6 +335,12 @@ class Preprocessor {
   }
 
   void run_elseif(std::string_view args, size_t from, const Location& at) {
+    run_branch(at, [&] { return condition(args, from, at); });
+  }
+
+  // #elseif, #elifdef, #elifndef: the next branch, taken when none was and `cond` holds.
+  template <class Condition>
+  void run_branch(const Location& at, Condition cond) {
     if (stack_.empty()) return report(PreprocError::MisplacedElse, at);
     Conditional& c = stack_.back();
     if (c.seen_else) {
@@ -307,7 +358,7 @@ class Preprocessor {
       c.active = false;
       return;
     }
-    c.active = condition(args, from, at);
+    c.active = cond();
     c.taken = c.active;
   }
 
@@ -341,20 +392,29 @@ class Preprocessor {
     std::vector<Span>& spans = spans_;
     spans.clear();
     scan_line(line, options_, in_block_comment_, spans);
+    size_t skip_to = 0;  // a function-like use's arguments go with it
     for (const Span& s : spans) {
+      if (s.begin < skip_to) {
+        if (s.end > skip_to) out_.append(line.substr(skip_to, s.end - skip_to));
+        continue;
+      }
       const std::string_view piece = line.substr(s.begin, s.end - s.begin);
       const Macro* m = s.kind == SpanKind::Identifier ? macros_.find(piece) : nullptr;
-      if (!Expander::expands(m)) {
+      std::vector<std::string> args;
+      size_t end = s.end;
+      if (!Expander::expands(m) || (m->params && !read_arguments(line, s.end, args, end))) {
         out_.append(piece);
         continue;
       }
-      expand_use(piece, *m, here(s.begin));
-      out_.mark(line_, static_cast<int>(s.end) + 1);
+      expand_use(piece, *m, here(s.begin), m->params ? &args : nullptr);
+      skip_to = end;
+      out_.mark(line_, static_cast<int>(end) + 1);
     }
   }
 
-  void expand_use(std::string_view name, const Macro& m, const Location& used_at) {
-    const std::optional<std::string> text = expander_.expand(name, m);
+  void expand_use(std::string_view name, const Macro& m, const Location& used_at,
+                  const std::vector<std::string>* args = nullptr) {
+    const std::optional<std::string> text = expander_.expand(name, m, args);
     if (!text) {
       report(PreprocError::ExpansionTooComplex, used_at,
              {{m.defined_at, "expanding '" + std::string(name) + "' goes too deep or too long"}});

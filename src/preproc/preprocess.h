@@ -74,7 +74,7 @@ struct PreprocOptions {
   // ("not implemented") until its handler is written in preprocess.cpp's directive table.
   bool allow_include = false;          // #include "file" / <file> (HIWIN PDL, Akribis PUP)
   bool allow_function_macros = false;  // #define F(a, b) ... with `\` continuation (HIWIN PDL)
-  bool allow_elifdef = false;          // #elifdef / #elifndef (HIWIN PDL)
+  bool allow_elifdef = false;          // #elifdef / #elifndef (HIWIN PDL): implemented
   bool allow_definevar = false;        // #definevar NAME GenData[N] (Akribis PUP)
   bool allow_information = false;      // #information text (Akribis PUP)
 };

@@ -175,7 +175,9 @@ class Runner {
       collect_output();
     } else if (directive == "wait") {
       uint64_t us = 0;
-      if (!parse_duration_us(arg, us)) fail(number, "wait needs a duration such as 500ms, 2s or 10us");
+      uint64_t cycles = 0;
+      if (parse_cycles(arg, cycles)) drive().advance_ns(cycles * drive().firmware().cycle_ns());
+      else if (!parse_duration_us(arg, us)) fail(number, "wait needs a duration such as 500ms, 2s, 10us or 40ph");
       else if (extension_ != nullptr) extension_->wait(drive(), us);
       else drive().advance(us);
       collect_output();
@@ -366,6 +368,13 @@ class Runner {
 };
 
 }  // namespace
+
+// "40ph": a number of the firmware's cycles (PDL's phases).
+bool parse_cycles(const std::string& text, uint64_t& out) {
+  if (text.size() < 3 || !text.ends_with("ph")) return false;
+  const auto [p, e] = std::from_chars(text.data(), text.data() + text.size() - 2, out);
+  return e == std::errc() && p == text.data() + text.size() - 2;
+}
 
 bool parse_duration_us(const std::string& text, uint64_t& out_us) {
   const std::string t = trim(text);

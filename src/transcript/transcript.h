@@ -40,5 +40,7 @@ TranscriptResult run_transcript_file(const std::string& path, const controller::
 
 // "500ms", "2s", "10us", "1.5s" -> microseconds; false when it is not a duration.
 bool parse_duration_us(const std::string& text, uint64_t& out_us);
+// `40ph`: 40 of the firmware's cycles (a PDL drive's phases).
+bool parse_cycles(const std::string& text, uint64_t& out);
 
 }  // namespace uprog::transcript

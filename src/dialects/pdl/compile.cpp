@@ -1,0 +1,130 @@
+// The PDL compiler driver: the shared preprocessor with PDL's options, the tokenizer, the
+// one-pass compiler, then the peephole pass.
+#include "dialects/pdl/compile.h"
+
+#include <algorithm>
+
+#include "bytecode/peephole.h"
+#include "dialects/pdl/compiler.h"
+#include "preproc/preprocess.h"
+#include "support/files.h"
+
+namespace uprog::pdl {
+namespace {
+
+int preproc_code(preproc::PreprocError) { return static_cast<int>(Error::PreprocDirective); }
+
+const char* preproc_text(preproc::PreprocError e) {
+  using P = preproc::PreprocError;
+  switch (e) {
+    case P::IdentifierMissing: return "#define needs a name";
+    case P::InvalidIdentifier: return "not a valid macro name";
+    case P::AlreadyDefined: return "macro already defined";
+    case P::ConditionMissing: return "condition missing";
+    case P::MisplacedElse: return "#else outside #ifdef/#ifndef, or twice";
+    case P::NotDefined: return "#undef of a name that is not defined";
+    case P::MismatchedType: return "condition of the wrong type";
+    case P::TooManyDefines: return "too many #define directives";
+    case P::MisplacedEndif: return "#endif without #ifdef/#ifndef";
+    case P::UnterminatedIf: return "#ifdef/#ifndef without #endif";
+    case P::TooManyElseifs: return "too many branches";
+    case P::UnknownDirective: return "directive not supported yet (#include)";
+    case P::DivisionByZero: return "division by zero";
+    case P::ExpansionTooComplex: return "macro expansion too deep or too long";
+  }
+  return "preprocessor error";
+}
+
+// Line starts of a text, to place an offset where no source map is.
+class PlainLocator {
+ public:
+  PlainLocator(std::string name, const std::string& text) : name_(std::move(name)) {
+    starts_.push_back(0);
+    for (size_t i = 0; i < text.size(); ++i)
+      if (text[i] == '\n') starts_.push_back(i + 1);
+  }
+  Location operator()(size_t offset) const {
+    const auto it = std::upper_bound(starts_.begin(), starts_.end(), offset);
+    const size_t line = static_cast<size_t>(it - starts_.begin());
+    return Location{name_, static_cast<int>(line), static_cast<int>(offset - starts_[line - 1] + 1)};
+  }
+
+ private:
+  std::string name_;
+  std::vector<size_t> starts_;
+};
+
+}  // namespace
+
+bool CompileResult::ok() const {
+  for (const Diagnostic& d : diagnostics)
+    if (d.severity == Severity::Error) return false;
+  return true;
+}
+
+CompileResult compile(const SourceFile& source, const CompileOptions& options) {
+  CompileResult result;
+  preproc::PreprocOptions po;
+  po.scheme = "pdl";
+  po.code_of = preproc_code;
+  po.text_of = preproc_text;
+  po.star_star_comments = false;
+  po.undefined_identifier_is_zero = true;
+  po.unknown_hash_lines_pass_through = true;
+  po.max_name_length = 24;
+  po.allow_elifdef = true;
+  po.allow_function_macros = true;
+  DiagnosticList pre_diags;
+  const bool preprocess = source.text.find('#') != std::string::npos;
+  preproc::Preprocessed pre;
+  if (preprocess) pre = preproc::preprocess(source, po, pre_diags);
+  const std::string& text = preprocess ? pre.text : source.text;
+  std::vector<Diagnostic> diags = pre_diags.items();
+  for (Diagnostic& d : diags) d.scheme = "pdl";
+
+  std::vector<LexError> lex_errors;
+  std::vector<Token> tokens = tokenize(text, lex_errors);
+  std::function<Location(size_t)> locate;
+  if (preprocess) {
+    const preproc::SourceMap* map = &pre.map;
+    locate = [map](size_t offset) { return map->locate(offset); };
+  } else {
+    locate = PlainLocator(source.name, text);
+  }
+  for (const LexError& e : lex_errors) diags.push_back(make_diagnostic(e.error, locate(e.offset), e.detail));
+  Compiler compiler(std::move(tokens), locate, source.name);
+  bytecode::Image image;
+  const bool ok = compiler.compile(image) && diags.empty();
+  // A line whose characters did not lex gets no second error from the parser.
+  std::vector<int> bad_lines;
+  for (const Diagnostic& d : diags) bad_lines.push_back(d.where.line);
+  for (Diagnostic& d : compiler.diagnostics()) {
+    if (std::find(bad_lines.begin(), bad_lines.end(), d.where.line) == bad_lines.end()) diags.push_back(std::move(d));
+  }
+  std::stable_sort(diags.begin(), diags.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    return a.where.line != b.where.line ? a.where.line < b.where.line : a.where.column < b.where.column;
+  });
+  limit_errors(diags, options.max_errors);
+  result.diagnostics = std::move(diags);
+  if (ok && result.ok() && !options.check_only) {
+    image.source_name = source.name;
+    image.created_unix_s = options.created_unix_s;
+    bytecode::optimize(image);
+    result.image = std::move(image);
+  }
+  attach_source_lines(result.diagnostics, source);
+  return result;
+}
+
+CompileResult compile_file(const std::string& path, const CompileOptions& options) {
+  std::string why;
+  std::optional<std::string> text = read_text_file(path, &why);
+  if (!text) {
+    CompileResult r;
+    r.diagnostics.push_back(make_diagnostic(Error::Syntax, Location{path, 0, 0}, "cannot read: " + why));
+    return r;
+  }
+  return compile(SourceFile{path, std::move(*text)}, options);
+}
+
+}  // namespace uprog::pdl

@@ -1,0 +1,238 @@
+// The PDL compiler's state: one pass over the tokens, emitting code as it parses (names are
+// known from where they are declared, procedures from their definition or prototype), with the
+// return sites, indirect gotos and entry routines resolved at the end. Split over
+// compiler*.cpp: declarations and structure, commands, expressions and conditions, memory.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bytecode/code_builder.h"
+#include "bytecode/image.h"
+#include "dialects/pdl/errors.h"
+#include "dialects/pdl/layout.h"
+#include "dialects/pdl/lexer.h"
+#include "dialects/pdl/system_names.h"
+#include "support/diagnostic.h"
+
+namespace uprog::pdl {
+
+using bytecode::CodeBuilder;
+using bytecode::Op;
+
+// An expression's type: an integer, a float, or an address of either.
+enum class Ty : uint8_t { Int, Float, PtrInt, PtrFloat };
+inline bool is_float(Ty t) { return t == Ty::Float; }
+
+enum class Kind : uint8_t { Long, Short, Float };
+
+struct Var {
+  std::string name;
+  Kind kind = Kind::Long;
+  bool pointer = false;
+  uint32_t length = 1;
+  bool local = false;
+  int32_t address = 0;  // global: word 0..399; local: words from the frame's start
+  int32_t global = -1;  // the image's global
+  Ty type() const {
+    if (pointer) return kind == Kind::Float ? Ty::PtrFloat : Ty::PtrInt;
+    return kind == Kind::Float ? Ty::Float : Ty::Int;
+  }
+};
+
+struct Param {
+  std::string name;
+  Kind kind = Kind::Long;
+  bool pointer = false;
+  bool operator==(const Param& o) const { return kind == o.kind && pointer == o.pointer; }
+};
+
+struct Proc {
+  std::string name;
+  std::vector<Param> params;
+  CodeBuilder::Label entry{};
+  bool defined = false;
+  size_t declared_at = 0;  // token offset
+};
+
+struct LabelInfo {
+  CodeBuilder::Label label{};
+  bool defined = false;
+  uint32_t slot = 0;
+  size_t first_use = 0;  // offset of the first goto/call naming it
+  int routine = -1;      // global labels: its entry routine
+};
+
+struct CommandStart {
+  uint32_t slot;
+  CodeBuilder::Label label;
+  int scope;
+};
+
+struct IndirectGoto {
+  int scope;
+  std::string label;
+  CodeBuilder::Label stub;
+  size_t offset;
+};
+
+// Where a value is read or stored (parse_place()).
+struct Place {
+  enum class Form : uint8_t {
+    Global,    // LDG/STG of an image global, nothing on the stack
+    Memory,    // a flat address is on the stack: LDM/STM
+    System,    // CMDGET/CMDSET at an immediate index
+    SystemX,   // the index is on the stack
+    State,     // a state by number (immediate)
+    StateX,    // a state whose number is on the stack
+  } form = Form::Global;
+  Ty type = Ty::Int;
+  bool is_short = false;
+  int32_t global = 0;
+  uint32_t command = 0;
+  int32_t index = 0;
+  const Var* var = nullptr;  // a user variable (for &, sizeof, memory blocks)
+  const SystemVariable* system = nullptr;
+  bool slave = false;
+  std::vector<const Var*> post_increments;  // `[n+]`: after the access
+};
+
+class Compiler {
+ public:
+  Compiler(std::vector<Token> tokens, std::function<Location(size_t)> locate, std::string source_name);
+  bool compile(bytecode::Image& image);  // false on errors
+  std::vector<Diagnostic>& diagnostics() { return diagnostics_; }
+
+ private:
+  // --- tokens and diagnostics (compiler.cpp)
+  const Token& peek(size_t ahead = 0) const;
+  const Token& next();
+  bool at_op(std::string_view op, size_t ahead = 0) const;
+  bool at_word(std::string_view word, size_t ahead = 0) const;  // a keyword, any case
+  bool accept_op(std::string_view op);
+  bool accept_word(std::string_view word);
+  bool expect_op(std::string_view op);
+  std::string expect_name();
+  void error(Error e, size_t offset, std::string_view detail = {});
+  void skip_to_command_end();
+  bool is_keyword(std::string_view name) const;
+
+  // --- program structure (compiler.cpp)
+  void program();
+  void statement_list(int depth, bool in_proc);
+  bool at_block_end() const;
+  void directive();
+  void declaration(Kind kind);
+  void task_directive(size_t at);
+  void procedure();
+  void finish_scope();
+  void emit_return_dispatch();
+  void emit_indirect_stubs();
+  void emit_dispatch(uint32_t local, const std::vector<std::pair<int32_t, CodeBuilder::Label>>& cases);
+  LabelInfo& label_named(const std::string& name, int scope, size_t offset);
+  int routine_for_label(const std::string& name, size_t offset);
+
+  // --- commands (compiler_commands.cpp)
+  void command(int depth, bool in_proc);
+  void begin_command(uint32_t slots);
+  void line_entry(size_t offset);
+  void end_line() { code_.emit(Op::EOL); }
+  void if_command(int depth, bool in_proc);
+  void while_command(int depth, bool in_proc);
+  void loop_command(int depth, bool in_proc);
+  void till_command();
+  void wait_command();
+  void sleep_command();
+  void goto_command();
+  void call_command();
+  void ret_command();
+  void emit_ret();
+  void proc_return();
+  void run_command();
+  void kill_command();
+  void set_state_command(int mode);
+  void printl_command(bool ret);
+  void proc_call(const Proc& proc);
+  void assignment();
+  uint32_t short_command_slots();
+  void check_code_size();
+  bool is_literal(size_t first, size_t end) const;
+  bool short_command_allowed() const;
+  void simple_command(bool in_proc);
+
+  // --- expressions and conditions (compiler_expr.cpp)
+  Ty expr(bool in_condition = false, int level = 0);
+  Ty unary(bool in_condition);
+  Ty primary(bool in_condition);
+  Ty builtin(const std::string& name, size_t at);
+  Ty name_value(const Token& name_token, bool in_condition);
+  void condition();
+  void cond_and();
+  void cond_not();
+  void cond_atom();
+  void push_int(int32_t v);
+  void push_float(float v);
+  void convert(Ty from, Ty to, bool to_short);
+  Ty arith(std::string_view op, Ty a, Ty b, size_t at);
+  Ty int_operand(Ty t, size_t at);
+
+  // --- places and memory (compiler_memory.cpp)
+  std::optional<Place> parse_place(bool for_store);
+  void emit_load(const Place& p, bool keep_prefix);
+  void emit_store(const Place& p);
+  void emit_post_increments(const Place& p);
+  void emit_increment(const Var& v, int32_t by);
+  void emit_translate();                 // logical address -> flat (checked)
+  void emit_user_check();                // flat address in user memory (checked)
+  bool logical_address(bool for_store);  // pushes a memory place's logical address
+  void read_var(const Var& v);
+  const Var* find_var(const std::string& name) const;
+  void memory_block_assignment(size_t lhs_start);
+  void emit_copy_loop(bool set, uint32_t dst, uint32_t src, uint32_t n);
+  void emit_phase_yields(uint32_t n_local, int32_t per_phase);
+  Ty memory_reduction(const std::string& name, size_t at, CodeBuilder::Label skip, bool has_prefix);
+  bool has_prefix(const Place& p) const;
+  uint32_t scratch();
+  void release(uint32_t count) { scratch_next_ -= count; }
+  int32_t add_constant(ValueType type, uint32_t bits);
+
+  std::vector<Token> toks_;
+  size_t pos_ = 0;
+  std::function<Location(size_t)> locate_;
+  std::string source_name_;
+  std::vector<Diagnostic> diagnostics_;
+  size_t error_count_ = 0;
+
+  bytecode::Image image_;
+  CodeBuilder code_{image_.code};
+
+  std::vector<Var> globals_;
+  std::vector<Var> locals_;  // the current procedure's parameters and locals
+  int32_t user_words_ = 0;
+  std::map<std::string, Proc> procs_;
+  std::vector<std::map<std::string, LabelInfo>> scopes_{1};
+  int scope_ = 0;
+  Proc* current_proc_ = nullptr;
+  int32_t frame_words_ = 0;  // 2 + parameters + locals of the current procedure
+  std::vector<CodeBuilder::Label> return_sites_;
+  std::vector<CommandStart> commands_;
+  std::vector<IndirectGoto> indirect_;
+  CodeBuilder::Label dispatch_{};
+  bool tasks_seen_[kTasks + 1] = {};
+  uint32_t slots_ = 0;
+  size_t text_bytes_ = 0;
+  uint32_t scratch_next_ = kFirstScratch;
+  uint32_t scratch_high_ = kFirstScratch;
+  bool in_lock_ = false;
+  int32_t slave_reads_ = 0;
+  int32_t operations_ = 0;
+  bool in_short_if_ = false;
+  bool size_reported_ = false;
+  bool address_float_ = false;  // the last logical_address() was a float's
+  bool address_short_ = false;
+};
+
+}  // namespace uprog::pdl

@@ -1,0 +1,461 @@
+// The compiler's expressions (2.1's right-hand sides, the built-in functions of 2.3) and
+// conditions (2.2.8: states, relations, TOUT, `&`, `|`, `~`). Integers stay integers except
+// under `/`, which divides as floats so that the assignment rounds (2.3.6).
+#include <cmath>
+#include <cstring>
+
+#include "dialects/pdl/compiler.h"
+#include "vm/run_error.h"
+
+namespace uprog::pdl {
+namespace {
+
+// Binary operators by level, loosest first; `&` and `|` are a condition's own in a condition.
+bool op_at_level(std::string_view op, int level, bool in_condition) {
+  switch (level) {
+    case 0: return op == "|" && !in_condition;
+    case 1: return op == "@";
+    case 2: return op == "&" && !in_condition;
+    case 3: return op == "+" || op == "-";
+    case 4: return op == "*" || op == "/" || op == "%";
+    default: return false;
+  }
+}
+
+constexpr int kLevels = 5;
+
+bool is_builtin(std::string_view name) {
+  for (std::string_view b : {"max", "min", "abs", "sign", "sin", "cos", "sqrt", "divi", "shift", "bitset",
+                             "bitclr", "bittog", "sizeof", "memmin", "memmax", "memsum"}) {
+    if (equal_ignoring_case(b, name)) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void Compiler::push_int(int32_t v) {
+  if (v >= -(1 << 23) && v < (1 << 23)) code_.emit_imm(Op::PUSHI, v);
+  else code_.emit(Op::PUSHK, static_cast<uint32_t>(add_constant(ValueType::Int, static_cast<uint32_t>(v))));
+}
+
+void Compiler::push_float(float v) {
+  uint32_t bits = 0;
+  std::memcpy(&bits, &v, sizeof bits);
+  code_.emit(Op::PUSHK, static_cast<uint32_t>(add_constant(ValueType::Float, bits)));
+}
+
+int32_t Compiler::add_constant(ValueType type, uint32_t bits) {
+  for (size_t i = 0; i < image_.constants.size(); ++i) {
+    if (image_.constants[i].type == type && image_.constants[i].bits == bits) return static_cast<int32_t>(i);
+  }
+  image_.constants.push_back({type, bits});
+  return static_cast<int32_t>(image_.constants.size() - 1);
+}
+
+uint32_t Compiler::scratch() {
+  if (scratch_next_ >= kEntryLocals) {
+    error(Error::Syntax, peek().offset, "command too complex");
+    return kEntryLocals - 1;
+  }
+  return scratch_next_++;
+}
+
+// Assignment's conversions (2.1): float to an integer rounds, an integer into a short keeps
+// its low 16 bits sign-extended; addresses are integers.
+void Compiler::convert(Ty from, Ty to, bool to_short) {
+  if (is_float(from) && !is_float(to)) code_.emit(Op::F2IR);
+  if (!is_float(from) && is_float(to)) code_.emit(Op::I2F);
+  if (to_short && !is_float(to)) code_.emit(Op::SEXT, 16);
+}
+
+Ty Compiler::int_operand(Ty t, size_t at) {
+  if (is_float(t)) {
+    error(Error::IntegerNeeded, at);
+    code_.emit(Op::F2IR);
+  }
+  return Ty::Int;
+}
+
+Ty Compiler::arith(std::string_view op, Ty a, Ty b, size_t at) {
+  ++operations_;
+  const bool pa = a == Ty::PtrInt || a == Ty::PtrFloat, pb = b == Ty::PtrInt || b == Ty::PtrFloat;
+  if (op == "/") {
+    if (!is_float(a)) code_.emit(Op::I2F2);
+    if (!is_float(b)) code_.emit(Op::I2F);
+    code_.emit(Op::DIVF);
+    return Ty::Float;
+  }
+  if (op == "+" || op == "-" || op == "*") {
+    if (is_float(a) || is_float(b)) {
+      if (pa || pb) error(Error::IntegerNeeded, at, "pointer arithmetic with a float");
+      if (!is_float(a)) code_.emit(Op::I2F2);
+      if (!is_float(b)) code_.emit(Op::I2F);
+      code_.emit(op == "+" ? Op::ADDF : op == "-" ? Op::SUBF : Op::MULF);
+      return Ty::Float;
+    }
+    code_.emit(op == "+" ? Op::ADDI : op == "-" ? Op::SUBI : Op::MULI);
+    if (op == "-" && pa && pb) return Ty::Int;
+    if (op != "*" && pa) return a;
+    if (op == "+" && pb) return b;
+    return Ty::Int;
+  }
+  if (is_float(a) || is_float(b)) error(Error::IntegerNeeded, at, "'" + std::string(op) + "' of a float");
+  code_.emit(op == "%" ? Op::REMI : op == "&" ? Op::ANDI : op == "|" ? Op::ORI : Op::XORI);
+  return Ty::Int;
+}
+
+Ty Compiler::expr(bool in_condition, int level) {
+  if (level == kLevels) return unary(in_condition);
+  Ty a = expr(in_condition, level + 1);
+  while (peek().kind == Tok::Op && op_at_level(peek().text, level, in_condition)) {
+    const Token& op = next();
+    const Ty b = expr(in_condition, level + 1);
+    a = arith(op.text, a, b, op.offset);
+  }
+  return a;
+}
+
+Ty Compiler::unary(bool in_condition) {
+  const Token& t = peek();
+  if (at_op("-")) {
+    next();
+    if (peek().kind == Tok::Int) {
+      push_int(static_cast<int32_t>(0u - static_cast<uint32_t>(next().int_value)));
+      return Ty::Int;
+    }
+    if (peek().kind == Tok::Float) {
+      push_float(-next().float_value);
+      return Ty::Float;
+    }
+    ++operations_;
+    const Ty a = unary(in_condition);
+    code_.emit(is_float(a) ? Op::NEGF : Op::NEGI);
+    return is_float(a) ? Ty::Float : Ty::Int;
+  }
+  if (at_op("~")) {
+    next();
+    ++operations_;
+    int_operand(unary(in_condition), t.offset);
+    code_.emit(Op::NOTI);
+    return Ty::Int;
+  }
+  if (at_op("&")) {
+    next();
+    if (!logical_address(false)) return Ty::Int;
+    return address_float_ ? Ty::PtrFloat : Ty::PtrInt;
+  }
+  return primary(in_condition);
+}
+
+Ty Compiler::primary(bool in_condition) {
+  const Token& t = peek();
+  switch (t.kind) {
+    case Tok::Int:
+    case Tok::Char: next(); push_int(t.int_value); return Ty::Int;
+    case Tok::Float: next(); push_float(t.float_value); return Ty::Float;
+    case Tok::String:
+      error(Error::Syntax, t.offset, "a string stands only alone on the right of '='");
+      next();
+      push_int(0);
+      return Ty::Int;
+    case Tok::End:
+      error(Error::Expected, t.offset, "a value at the end of the file");
+      push_int(0);
+      return Ty::Int;
+    default: break;
+  }
+  if (accept_op("(")) {
+    const Ty a = expr(in_condition);
+    expect_op(")");
+    return a;
+  }
+  if (at_op("<")) {
+    // <STATE> is the state's number (st=<LEFT_LIM>); <var> the state whose number var holds.
+    next();
+    const bool invert = accept_op("~");
+    const Token& name = peek();
+    if (name.kind == Tok::Name && find_state(name.text) && !find_var(name.text)) {
+      next();
+      expect_op(">");
+      if (invert) error(Error::Syntax, name.offset, "'~' of a state number");
+      push_int(find_state(name.text)->number);
+      return Ty::Int;
+    }
+    int_operand(primary(false), name.offset);
+    expect_op(">");
+    code_.emit(Op::CMDGETX, kStateCommand);
+    if (invert) code_.emit(Op::LNOT);
+    return Ty::Int;
+  }
+  if (t.kind == Tok::Name && equal_ignoring_case(t.text, "sttovar")) {
+    next();
+    condition();
+    return Ty::Int;
+  }
+  if (t.kind == Tok::Name && at_op("(", 1) && is_builtin(t.text) && !find_var(t.text)) {
+    next();
+    return builtin(t.text, t.offset);
+  }
+  if (t.kind != Tok::Name && !at_op("*")) {
+    error(Error::Syntax, t.offset, "unexpected '" + t.text + "'");
+    next();
+    push_int(0);
+    return Ty::Int;
+  }
+  std::optional<Place> p = parse_place(false);
+  if (!p) {
+    push_int(0);
+    return Ty::Int;
+  }
+  emit_load(*p, false);
+  Ty type = p->type;
+  if (accept_op("->")) {
+    // v->n: bit n of v (2.1.3).
+    int_operand(type, t.offset);
+    ++operations_;
+    int_operand(primary(false), t.offset);
+    code_.emit(Op::SHRU);
+    push_int(1);
+    code_.emit(Op::ANDI);
+    type = Ty::Int;
+  }
+  return type;
+}
+
+Ty Compiler::builtin(const std::string& raw, size_t at) {
+  std::string name;
+  for (char c : raw) name.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
+  ++operations_;
+  if (name == "sizeof") {
+    expect_op("(");
+    const Token& v = next();
+    expect_op(")");
+    if (const Var* var = find_var(v.text)) {
+      push_int(static_cast<int32_t>(var->length));
+    } else if (const SystemVariable* s = find_system_variable(v.text)) {
+      push_int(static_cast<int32_t>(s->slave ? kMaxAxes : s->length));
+    } else {
+      error(Error::UnknownName, v.offset, v.text);
+      push_int(0);
+    }
+    return Ty::Int;
+  }
+  if (name == "memmin" || name == "memmax" || name == "memsum") {
+    error(Error::Syntax, at, raw + " stands alone on the right of '='");
+  }
+  expect_op("(");
+  std::vector<Ty> args;
+  std::vector<uint32_t> temps;
+  while (!at_op(")") && peek().kind != Tok::End) {
+    const bool literal = peek().kind == Tok::Int || peek().kind == Tok::Float ||
+                         (at_op("-") && (peek(1).kind == Tok::Int || peek(1).kind == Tok::Float));
+    const size_t arg_at = peek().offset;
+    args.push_back(expr());
+    if (literal && !at_op(")")) error(Error::FunctionArgument, arg_at, raw);
+    if (!accept_op(",")) break;
+  }
+  expect_op(")");
+  const size_t want = name == "max" || name == "min" || name == "divi" || name == "shift" || name == "bitset" ||
+                              name == "bitclr" || name == "bittog"
+                          ? 2
+                          : 1;
+  if (args.size() != want) {
+    error(Error::ArgumentCount, at, raw + " takes " + std::to_string(want));
+    for (size_t i = 0; i < args.size(); ++i) code_.emit(Op::POP);
+    push_int(0);
+    return Ty::Int;
+  }
+  if (want == 1) {
+    const Ty a = args[0];
+    if (name == "abs") {
+      code_.emit(is_float(a) ? Op::ABSF : Op::ABSI);
+      return is_float(a) ? Ty::Float : Ty::Int;
+    }
+    if (name == "sign") {
+      code_.emit(is_float(a) ? Op::SIGNF : Op::SIGNI);
+      return Ty::Int;
+    }
+    if (!is_float(a)) code_.emit(Op::I2F);
+    if (name == "sin" || name == "cos") {
+      code_.emit(name == "sin" ? Op::SINF : Op::COSF);
+      return Ty::Float;
+    }
+    // sqrt: of a negative number, the negative root (2.3.5).
+    const uint32_t s = scratch();
+    CodeBuilder::Label pos = code_.new_label(), end = code_.new_label();
+    code_.emit(Op::STL, s);
+    code_.emit(Op::LDL, s);
+    push_float(0.0f);
+    code_.emit_to(Op::JNLTF, pos);
+    code_.emit(Op::LDL, s);
+    code_.emit(Op::NEGF);
+    code_.emit(Op::SQRTF);
+    code_.emit(Op::NEGF);
+    code_.emit_to(Op::JMP, end);
+    code_.bind(pos);
+    code_.emit(Op::LDL, s);
+    code_.emit(Op::SQRTF);
+    code_.bind(end);
+    release(1);
+    return Ty::Float;
+  }
+  Ty a = args[0], b = args[1];
+  if (name == "max" || name == "min") {
+    const bool f = is_float(a) || is_float(b);
+    if (f && !is_float(a)) code_.emit(Op::I2F2);
+    if (f && !is_float(b)) code_.emit(Op::I2F);
+    const uint32_t s1 = scratch(), s2 = scratch();
+    code_.emit(Op::STL, s2);
+    code_.emit(Op::STL, s1);
+    CodeBuilder::Label second = code_.new_label(), end = code_.new_label();
+    code_.emit(Op::LDL, s1);
+    code_.emit(Op::LDL, s2);
+    if (f) code_.emit(name == "max" ? Op::GEF : Op::LEF);
+    else code_.emit(name == "max" ? Op::GEI : Op::LEI);
+    code_.emit_to(Op::JZ, second);
+    code_.emit(Op::LDL, s1);
+    code_.emit_to(Op::JMP, end);
+    code_.bind(second);
+    code_.emit(Op::LDL, s2);
+    code_.bind(end);
+    release(2);
+    return f ? Ty::Float : Ty::Int;
+  }
+  if (name == "divi") {
+    if (is_float(a) || is_float(b)) {
+      if (!is_float(a)) code_.emit(Op::I2F2);
+      if (!is_float(b)) code_.emit(Op::I2F);
+      code_.emit(Op::DIVF);
+      code_.emit(Op::F2IT);
+    } else {
+      code_.emit(Op::DIVI);
+    }
+    return Ty::Int;
+  }
+  if (is_float(a) || is_float(b)) error(Error::IntegerNeeded, at, raw);
+  if (name == "shift") {
+    // n > 0 shifts left, n < 0 right (arithmetic).
+    const uint32_t s1 = scratch(), s2 = scratch();
+    code_.emit(Op::STL, s2);
+    code_.emit(Op::STL, s1);
+    CodeBuilder::Label right = code_.new_label(), end = code_.new_label();
+    code_.emit(Op::LDL, s2);
+    push_int(0);
+    code_.emit_to(Op::JLTI, right);
+    code_.emit(Op::LDL, s1);
+    code_.emit(Op::LDL, s2);
+    code_.emit(Op::SHLI);
+    code_.emit_to(Op::JMP, end);
+    code_.bind(right);
+    code_.emit(Op::LDL, s1);
+    code_.emit(Op::LDL, s2);
+    code_.emit(Op::NEGI);
+    code_.emit(Op::SHRI);
+    code_.bind(end);
+    release(2);
+    return Ty::Int;
+  }
+  // bitset/bitclr/bittog: a, n on the stack -> a op (1 << n).
+  const uint32_t s = scratch();
+  code_.emit(Op::STL, s);
+  push_int(1);
+  code_.emit(Op::LDL, s);
+  code_.emit(Op::SHLI);
+  release(1);
+  if (name == "bitclr") {
+    code_.emit(Op::NOTI);
+    code_.emit(Op::ANDI);
+  } else {
+    code_.emit(name == "bitset" ? Op::ORI : Op::XORI);
+  }
+  return Ty::Int;
+}
+
+// --- conditions: each leaves int 0 or 1
+
+void Compiler::condition() {
+  cond_and();
+  while (accept_op("|")) {
+    cond_and();
+    code_.emit(Op::ORI);
+  }
+}
+
+void Compiler::cond_and() {
+  cond_not();
+  while (accept_op("&")) {
+    cond_not();
+    code_.emit(Op::ANDI);
+  }
+}
+
+void Compiler::cond_not() {
+  if (accept_op("~")) {
+    cond_not();
+    code_.emit(Op::LNOT);
+    return;
+  }
+  cond_atom();
+}
+
+void Compiler::cond_atom() {
+  if (accept_op("(")) {
+    condition();
+    expect_op(")");
+    return;
+  }
+  if (at_op("<")) {
+    // <var>: the state whose number var holds; <STATE>: that state.
+    next();
+    const bool invert = accept_op("~");
+    const Token& name = peek();
+    if (name.kind == Tok::Name && find_state(name.text) && !find_var(name.text)) {
+      next();
+      code_.emit(Op::CMDGET, kStateCommand, static_cast<uint32_t>(find_state(name.text)->number));
+    } else {
+      int_operand(primary(false), name.offset);
+      code_.emit(Op::CMDGETX, kStateCommand);
+    }
+    expect_op(">");
+    if (invert) code_.emit(Op::LNOT);
+    return;
+  }
+  const Token& first = peek();
+  const size_t first_pos = pos_;
+  const Ty a = expr(true);
+  const bool lone_state = pos_ == first_pos + 1 && first.kind == Tok::Name && find_state(first.text) && !find_var(first.text);
+  if (at_word("TOUT")) {
+    // v1 TOUT v2: fclk - v1 >= v2 (2.2.11), wrapping.
+    const size_t at = next().offset;
+    int_operand(a, at);
+    code_.emit(Op::CMDGET, 14, 0);
+    code_.emit(Op::SWAP);
+    code_.emit(Op::SUBI);
+    int_operand(expr(true), at);
+    code_.emit(Op::GEI);
+    return;
+  }
+  static constexpr std::string_view kRelations[] = {"=", "<>", "<", "<=", ">", ">="};
+  static constexpr Op kInt[] = {Op::EQI, Op::NEI, Op::LTI, Op::LEI, Op::GTI, Op::GEI};
+  static constexpr Op kFloat[] = {Op::EQF, Op::NEF, Op::LTF, Op::LEF, Op::GTF, Op::GEF};
+  for (size_t i = 0; i < 6; ++i) {
+    if (!at_op(kRelations[i])) continue;
+    next();
+    const Ty b = expr(true);
+    const bool f = is_float(a) || is_float(b);
+    if (f && !is_float(a)) code_.emit(Op::I2F2);
+    if (f && !is_float(b)) code_.emit(Op::I2F);
+    code_.emit(f ? kFloat[i] : kInt[i]);
+    return;
+  }
+  if (lone_state) return;  // already 0 or 1
+  if (is_float(a)) {
+    code_.emit(Op::TRUTHF);
+  } else {
+    push_int(0);
+    code_.emit(Op::NEI);
+  }
+}
+
+}  // namespace uprog::pdl

@@ -1,0 +1,91 @@
+// PDL's entry in the dialect registry: its compiler, tables and firmware behind dialect::Dialect,
+// and each host's session (its level and its download in progress).
+#include "dialects/pdl/dialect.h"
+
+#include "dialects/gold/download_protocol.h"
+#include "dialects/pdl/compile.h"
+#include "dialects/pdl/errors.h"
+#include "dialects/pdl/firmware.h"
+
+namespace uprog::pdl {
+namespace {
+
+constexpr std::string_view kExtensions[] = {".pdl"};
+
+constexpr dialect::ErrorInfo kHostErrors[] = {
+    {1, "UnknownCommand", "unknown command"},     {2, "NoSuchVariable", "no such variable"},
+    {3, "BadIndex", "bad index"},                 {4, "ReadOnly", "read-only (_ro)"},
+    {5, "BadValue", "bad value"},                 {6, "LevelTooLow", "level too low"},
+    {7, "NoProgram", "no program"},               {8, "NoSuchLabel", "no such _ label"},
+    {9, "BadTask", "task not 1..3"},              {10, "TaskBusy", "task busy or label running"},
+    {11, "ServoNotReady", "servo not ready"},     {12, "EnableRefused", "enable refused"},
+};
+
+std::vector<dialect::ErrorInfo> diagnostic_table() {
+  size_t count = 0;
+  const ErrorEntry* all = all_errors(count);
+  std::vector<dialect::ErrorInfo> out;
+  for (size_t i = 0; i < count; ++i) out.push_back({all[i].code, all[i].name, all[i].text});
+  return out;
+}
+
+class Session final : public dialect::Session {
+ public:
+  explicit Session(Firmware& firmware) : firmware_(firmware) {}
+  std::vector<dialect::Answer> send(std::string_view line) override {
+    return firmware_.host_line(line, level_, &download_, true);
+  }
+
+ private:
+  Firmware& firmware_;
+  int32_t level_ = 0;  // level/n; 0 at connect
+  gold::DownloadReceiver download_;
+};
+
+class PdlDialect final : public dialect::Dialect {
+ public:
+  std::string_view name() const override { return "pdl"; }
+  std::string_view description() const override {
+    return "HIWIN D-series PDL: four tasks switched every phase, pointers, procedures, printl events";
+  }
+  std::span<const std::string_view> source_extensions() const override { return kExtensions; }
+  std::string_view stored_extension() const override { return ".pdi"; }
+  dialect::CompileOutput compile_file(const std::string& path, const dialect::CompileSettings& settings) const override {
+    CompileOptions options;
+    options.check_only = settings.check_only;
+    options.created_unix_s = settings.created_unix_s;
+    CompileResult r = pdl::compile_file(path, options);
+    dialect::CompileOutput out;
+    out.diagnostics = std::move(r.diagnostics);
+    if (r.ok() && !settings.check_only) {
+      out.stored_form = bytecode::encode(r.image);
+      out.image = std::move(r.image);
+    }
+    return out;
+  }
+  std::span<const dialect::ErrorInfo> diagnostic_codes() const override {
+    static const std::vector<dialect::ErrorInfo> table = diagnostic_table();
+    return table;
+  }
+  std::span<const dialect::ErrorInfo> interpreter_errors() const override { return kHostErrors; }
+  std::unique_ptr<dialect::Firmware> make_firmware(dialect::Runtime& runtime,
+                                                   const dialect::FirmwareOptions& options) const override {
+    return std::make_unique<Firmware>(runtime, options);
+  }
+  std::vector<std::string> download_lines(const std::vector<uint8_t>& stored_form) const override {
+    return gold::download_lines(stored_form);
+  }
+  std::string load_line() const override { return "reset"; }
+  std::size_t max_download_bytes() const override { return gold::kDownloadMaxBytes; }
+};
+
+}  // namespace
+
+std::unique_ptr<dialect::Session> Firmware::open_session() { return std::make_unique<Session>(*this); }
+
+const dialect::Dialect& dialect() {
+  static const PdlDialect pdl;
+  return pdl;
+}
+
+}  // namespace uprog::pdl

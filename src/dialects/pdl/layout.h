@@ -1,0 +1,36 @@
+// Where things live in a PDL program's data memory and its machine, shared by the compiler and
+// the firmware: 400 words of user memory, then each task's 256-word stack; the locals every
+// entry routine has (the task's stack registers, then scratch words).
+#pragma once
+#include <cstdint>
+
+namespace uprog::pdl {
+
+constexpr int32_t kUserWords = 400;
+constexpr int32_t kStackWords = 256;
+constexpr uint32_t kTasks = 3;
+constexpr int32_t kMemoryWords = kUserWords + static_cast<int32_t>(kTasks) * kStackWords;
+constexpr int32_t kFloatAddressBit = 1 << 29;  // &f of a float (manual 2.5.2)
+constexpr int32_t kTaskAddressUnit = 0x1000;   // &local of task t: 0x1000*t + word
+
+// The first word of task t's stack (t = 1..3) in the flat memory.
+constexpr int32_t stack_base(uint32_t task) { return kUserWords + static_cast<int32_t>(task - 1) * kStackWords; }
+
+// Locals of every entry routine; the first kEntryInputs are set by the firmware at start.
+enum EntryLocal : uint32_t {
+  kSp = 0,     // flat address of the next free stack word
+  kBase = 1,   // flat address of the stack's first word
+  kLimit = 2,  // one past its last word
+  kBias = 3,   // 0x1000*t - base: flat + bias is a local's address as a program sees it
+  kFp = 4,     // flat address of the current procedure's frame
+  kEntryInputs = 5,
+  kRetId = 5,   // the return site a ret or a procedure's end goes back to
+  kGotoN = 6,   // the slot offset of an indirect goto
+  kFirstScratch = 7,
+  kEntryLocals = 16,
+};
+
+constexpr uint32_t kMaxTasksNumber = 3;
+constexpr uint32_t kPdlCodeBytes = 32 * 1024;
+
+}  // namespace uprog::pdl
