@@ -4,12 +4,14 @@
 #include <cctype>
 
 #include "dialects/gold/dialect.h"
+#include "dialects/pup/dialect.h"
 
 namespace uprog::dialects {
 namespace {
 
 const dialect::Dialect* const kDialects[] = {
     &gold::dialect(),
+    &pup::dialect(),
 };
 
 bool ends_with_ignoring_case(std::string_view text, std::string_view suffix) {

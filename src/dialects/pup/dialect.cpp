@@ -5,12 +5,43 @@
 #include <filesystem>
 
 #include "dialects/pup/errors.h"
+#include "dialects/pup/firmware.h"
+#include "dialects/pup/cup_loader.h"
 #include "dialects/pup/pup_compiler.h"
+#include "support/files.h"
 
 namespace uprog::pup {
 namespace {
 
 constexpr std::string_view kExtensions[] = {".pup", ".cup"};
+
+bool is_cup(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  return ext == ".cup" || ext == ".CUP";
+}
+
+// A hand-written .cup: read leniently, checked by the loader (a refusal names its line), and
+// written again with CR line ends and a fresh header.
+PupOutput rebuild_cup(const std::string& path, uint64_t created_unix_s) {
+  PupOutput out;
+  std::string why;
+  const auto text = read_text_file(path, &why);
+  if (!text) {
+    out.diagnostics.push_back(make_error(Error::IncludeNotFound, Location{path, 0, 0}, why));
+    return out;
+  }
+  out.program = read_cup_text(*text, std::filesystem::path(path).stem().string());
+  out.program.date = cup_date(created_unix_s);
+  if (!load_cup(out.program, &why)) {
+    Diagnostic d;
+    d.scheme = "cup";
+    d.code = 45;
+    d.message = why;
+    d.where = Location{path, 0, 0};
+    out.diagnostics.push_back(std::move(d));
+  }
+  return out;
+}
 
 class PupDialect final : public dialect::Dialect {
  public:
@@ -23,7 +54,7 @@ class PupDialect final : public dialect::Dialect {
 
   dialect::CompileOutput compile_file(const std::string& path, const dialect::CompileSettings& settings) const override {
     dialect::CompileOutput out;
-    PupOutput r = compile_pup_file(path, settings.created_unix_s);
+    PupOutput r = is_cup(path) ? rebuild_cup(path, settings.created_unix_s) : compile_pup_file(path, settings.created_unix_s);
     out.diagnostics = std::move(r.diagnostics);
     if (out.ok() && !settings.check_only) {
       const std::string cup = write_cup(r.program);
@@ -34,8 +65,9 @@ class PupDialect final : public dialect::Dialect {
 
   std::span<const dialect::ErrorInfo> diagnostic_codes() const override { return diagnostic_table(); }
   std::span<const dialect::ErrorInfo> interpreter_errors() const override { return {}; }
-  std::unique_ptr<dialect::Firmware> make_firmware(dialect::Runtime&, const dialect::FirmwareOptions&) const override {
-    return nullptr;
+  std::unique_ptr<dialect::Firmware> make_firmware(dialect::Runtime& runtime,
+                                                   const dialect::FirmwareOptions& options) const override {
+    return std::make_unique<Firmware>(runtime, options);
   }
   std::vector<std::string> download_lines(const std::vector<uint8_t>&) const override { return {}; }
   std::string load_line() const override { return ""; }
