@@ -183,6 +183,8 @@ int32_t Firmware::run_key(KeywordId key, int32_t index, bool, int32_t arg, uint3
       schedule_.reset();
       thread_error_.fill(0);
       event_mask_ = 0x00FFFFFF;
+      latched_ = 0;
+      event_frames_.clear();
       return thread != 0 ? vm::kCommandEndSlice : 0;
     default: return 8;
   }

@@ -77,6 +77,11 @@ std::string Firmware::install(const std::string& cup, bool store) {
   cup_program_ = std::move(*program);
   schedule_.reset();
   thread_error_.fill(0);
+  latched_ = 0;
+  event_frames_.clear();
+  event_mask_ = 0x00FFFFFF;
+  previous_inputs_ = 0;
+  for (int n = 1; n <= 6; ++n) previous_inputs_ |= axis_->input_level(n) ? 1u << (n - 1) : 0u;
   if (store) stored_ = cup;
   return "";
 }
@@ -118,23 +123,31 @@ std::string Firmware::start(std::string_view entry) {
   return code == 0 ? "" : fmt::format("cannot run task {} (error {})", task, code);
 }
 
-void Firmware::cycle(const std::vector<uint32_t>&) {
+void Firmware::cycle(const std::vector<uint32_t>& drive_events) {
   timer_us_ += 50;
   if (timer_us_ >= 1000) {
     timer_us_ -= 1000;
-    for (int32_t& t : timers_) t = t > 0 ? t - 1 : t;
+    for (size_t n = 0; n < timers_.size(); ++n) {
+      if (timers_[n] <= 0) continue;
+      if (--timers_[n] == 0) latch(18 + static_cast<int32_t>(n));
+    }
   }
   if (!program_) return;
+  latch_events(drive_events.empty() ? 0 : drive_events[0]);
+  take_event();
   const scheduling::Report report = schedule_.cycle(program_->machine());
   for (uint32_t t = 1; t <= kThreads; ++t) {
     if (report.has(t, scheduling::ThreadEvent::Error)) on_thread_error(t);
   }
+  check_event_return();
 }
 
 void Firmware::on_thread_error(uint32_t thread) {
   const vm::Machine& m = program_->machine();
   const int32_t code = code_of(m.last_error(thread), m.error_detail(thread));
   thread_error_[thread] = code;
+  if (thread == 1) reset_events();  // the held threads resume; no event is raised
+  else latch(22);
   log_error(code, static_cast<int32_t>(thread), static_cast<int32_t>(cup_.line_of(m.pc(thread))));
   runtime_.log(fmt::format("thread {}: error {} at line {}", thread, code, cup_.line_of(m.pc(thread))));
 }

@@ -58,6 +58,13 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   vm::Machine* machine() { return program_ ? &program_->machine() : nullptr; }
   uint32_t running_thread() const;
 
+  // --- events.cpp: latching, masks, entering thread 1 and leaving ---
+  void latch_events(uint32_t drive_events);
+  void latch(int32_t id);
+  void take_event();
+  void check_event_return();
+  void reset_events();
+
   // --- keywords.cpp side (controller_keywords.cpp): parameters and commands ---
   int32_t read_key(KeywordId key, int32_t index, int32_t& out);
   int32_t write_key(KeywordId key, int32_t index, int32_t value);
@@ -87,6 +94,11 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::vector<int32_t> line_stack_;  // thread 0: the CUP keywords sent over the line
   std::vector<std::array<int32_t, 3>> err_log_;  // newest first: code, source, line
   uint32_t event_mask_ = 0x00FFFFFF;
+  uint32_t latched_ = 0;                 // event IDs latched, one bit each
+  std::vector<uint32_t> event_frames_;   // thread 1's frame count inside each event entered
+  uint32_t previous_inputs_ = 0;         // input levels, bit n-1 for input n
+  bool was_moving_ = false;
+  bool above_max_ = false, below_min_ = false;
   int32_t motion_mode_ = 0;
   int32_t speed_ = 10000;
   int32_t ain_factor_ = 1, ain_offset_ = 0;
