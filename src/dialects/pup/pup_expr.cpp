@@ -197,7 +197,8 @@ class Parser {
       return tree_.add(std::move(n));
     }
     if (!k->indexed()) return error(Error::IndexNotAllowed, "'" + n.key + "'", t.where);
-    return indexed(std::move(n), index, k->index_min, k->index_max - k->index_min + 1, n.key);
+    const std::string key = n.key;
+    return indexed(std::move(n), index, k->index_min, k->index_max - k->index_min + 1, key);
   }
 
   // key[base + i - 1], i in 1..size: a fixed parameter when i is a constant.

@@ -136,7 +136,7 @@ void PupCompiler::include(const std::string& raw, const Location& at, const std:
     text = std::string(kBuiltinHeader);
     shown = std::string(kBuiltinHeaderName);
   }
-  if (!text) return error(Error::IncludeNotFound, at, "'" + name + "': " + why);
+  if (!text) return error(Error::IncludeNotFound, at, "'" + name + "'");
   for (const std::string& open : include_stack_) {
     if (open == shown) return error(Error::IncludeLoop, at, "'" + name + "'");
   }
