@@ -4,6 +4,7 @@
 #include <fmt/core.h>
 
 #include "dialects/pup/cup_math.h"
+#include "dialects/pup/download.h"
 #include "dialects/pup/firmware.h"
 #include "drive/axis.h"
 
@@ -32,24 +33,40 @@ std::string trim(std::string_view s) {
 class Session final : public dialect::Session {
  public:
   explicit Session(Firmware& f) : firmware_(f) {}
-  std::vector<dialect::Answer> send(std::string_view line) override { return firmware_.send(line, true); }
+  std::vector<dialect::Answer> send(std::string_view line) override { return firmware_.send(line, true, &download_); }
 
  private:
   Firmware& firmware_;
+  DownloadState download_;
 };
+
+// "ADownloadUProg[k],arg" (any case, blanks around the tokens) → {k, arg}.
+std::optional<std::pair<int32_t, std::optional<std::string>>> parse_download(std::string_view text) {
+  constexpr std::string_view kKey = "adownloaduprog";
+  if (text.size() < kKey.size()) return std::nullopt;
+  for (size_t i = 0; i < kKey.size(); ++i) {
+    if (std::tolower(static_cast<unsigned char>(text[i])) != kKey[i]) return std::nullopt;
+  }
+  std::string rest = trim(text.substr(kKey.size()));
+  if (rest.size() < 3 || rest[0] != '[' || rest[2] != ']' || rest[1] < '1' || rest[1] > '3') return std::nullopt;
+  const int32_t step = rest[1] - '0';
+  rest = trim(std::string_view(rest).substr(3));
+  if (rest.empty() || rest[0] != ',') return std::pair{step, std::optional<std::string>()};
+  return std::pair{step, std::optional<std::string>(trim(std::string_view(rest).substr(1)))};
+}
 
 }  // namespace
 
 std::unique_ptr<dialect::Session> Firmware::open_session() { return std::make_unique<Session>(*this); }
 
-std::vector<dialect::Answer> Firmware::send(std::string_view line, bool takes_time) {
+std::vector<dialect::Answer> Firmware::send(std::string_view line, bool takes_time, DownloadState* download) {
   std::vector<dialect::Answer> answers;
   size_t start = 0;
   while (start <= line.size()) {
     const size_t end = std::min(line.find(';', start), line.size());
     const std::string text = trim(line.substr(start, end - start));
     if (!text.empty()) {
-      answers.push_back(message(text));
+      answers.push_back(message(text, download));
       if (takes_time) runtime_.advance_ns(cycle_ns());
     }
     start = end + 1;
@@ -57,8 +74,13 @@ std::vector<dialect::Answer> Firmware::send(std::string_view line, bool takes_ti
   return answers;
 }
 
-dialect::Answer Firmware::message(std::string_view text) {
+dialect::Answer Firmware::message(std::string_view text, DownloadState* download) {
   int32_t code = 0;
+  // ADownloadUProg[2]'s argument is hex data, no number: read apart from the other messages.
+  if (auto dl = parse_download(text)) {
+    if (download == nullptr) return refusal(13);
+    return download_message(dl->first, dl->second, *download);
+  }
   const auto m = parse_message(text, &code);
   if (!m) return refusal(code);
   const Keyword* k = find_keyword(m->target.key);
@@ -81,7 +103,9 @@ dialect::Answer Firmware::message(std::string_view text) {
     code = run_key(k->id, index, has_arg, m->value, 0);
     return code == 0 ? dialect::Answer{} : refusal(code);
   }
+  if (k->id == KeywordId::UploadUProg) return has_arg ? upload(m->value) : refusal(9);
   if (has_arg) return refusal(8);
+  if (k->id == KeywordId::ProgInfo) return info();
   if (k->id == KeywordId::ErrLog) {
     if (static_cast<size_t>(index) > err_log_.size()) return {"0,0,0", 0};
     const auto& e = err_log_[static_cast<size_t>(index - 1)];

@@ -129,17 +129,20 @@ std::optional<CupProgram> read_cup(const std::string& bytes, CupReadError* error
     if (error) *error = {code, std::move(text)};
     return std::nullopt;
   };
+  // Line 1 and the CRC first: a changed byte anywhere is a CRC error (43), not a header one.
+  const auto crc = bytes.size() >= kCrcLineSize && bytes.compare(0, 2, "% ") == 0 && bytes[10] == '\r'
+                       ? parse_number("0x" + bytes.substr(2, 8))
+                       : std::nullopt;
+  if (!crc) return fail(44, "header line 1 is the CRC, 8 hex digits");
+  if (static_cast<uint32_t>(*crc) != crc_of(bytes.substr(kCrcLineSize))) {
+    return fail(43, "the CRC in the header does not match the file");
+  }
   bool clean = false;
   const std::vector<std::string> lines = split_cr(bytes, &clean);
   if (!clean) return fail(44, "lines must end with CR alone");
   if (lines.size() < 8) return fail(44, "the header has 8 lines");
   for (size_t i = 0; i < 8; ++i) {
     if (!lines[i].starts_with("% ")) return fail(44, fmt::format("header line {} must start with '% '", i + 1));
-  }
-  const auto crc = lines[0].size() == 10 ? parse_number("0x" + lines[0].substr(2)) : std::nullopt;
-  if (!crc) return fail(44, "header line 1 is the CRC, 8 hex digits");
-  if (static_cast<uint32_t>(*crc) != crc_of(bytes.substr(kCrcLineSize))) {
-    return fail(43, "the CRC in the header does not match the file");
   }
   CupProgram p;
   p.date = lines[1].substr(2);

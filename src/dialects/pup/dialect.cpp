@@ -7,6 +7,7 @@
 #include "dialects/pup/errors.h"
 #include "dialects/pup/firmware.h"
 #include "dialects/pup/cup_loader.h"
+#include "dialects/pup/download.h"
 #include "dialects/pup/pup_compiler.h"
 #include "support/files.h"
 
@@ -69,9 +70,11 @@ class PupDialect final : public dialect::Dialect {
                                                    const dialect::FirmwareOptions& options) const override {
     return std::make_unique<Firmware>(runtime, options);
   }
-  std::vector<std::string> download_lines(const std::vector<uint8_t>&) const override { return {}; }
-  std::string load_line() const override { return ""; }
-  std::size_t max_download_bytes() const override { return 262144; }
+  std::vector<std::string> download_lines(const std::vector<uint8_t>& cup) const override {
+    return pup::download_lines(cup);
+  }
+  std::string load_line() const override { return ""; }  // ADownloadUProg[3] stores and loads
+  std::size_t max_download_bytes() const override { return kMaxProgramBytes; }
 };
 
 }  // namespace

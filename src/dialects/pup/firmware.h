@@ -22,6 +22,14 @@ namespace uprog::pup {
 constexpr uint32_t kThreads = 8;
 constexpr size_t kGenDataSize = 1000;
 
+// One host's download in progress (ADownloadUProg[1..3]); it dies with the connection.
+struct DownloadState {
+  bool open = false;
+  bool dropped = false;  // an error dropped the transfer: 40 until the next [1]
+  size_t expected = 0;
+  std::string data;
+};
+
 class Firmware final : public dialect::Firmware, public vm::Host {
  public:
   Firmware(dialect::Runtime& runtime, const dialect::FirmwareOptions& options);
@@ -46,7 +54,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   uint32_t now_us() override { return static_cast<uint32_t>(runtime_.now_ns() / 1000); }
 
   // One host line: its messages (split at `;`), each answered, each a cycle when `takes_time`.
-  std::vector<dialect::Answer> send(std::string_view line, bool takes_time);
+  std::vector<dialect::Answer> send(std::string_view line, bool takes_time, DownloadState* download = nullptr);
 
  private:
   // --- firmware.cpp: program store, threads ---
@@ -72,7 +80,10 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   int32_t status_of(int32_t s, int32_t v);
 
   // --- command_line.cpp ---
-  dialect::Answer message(std::string_view text);
+  dialect::Answer message(std::string_view text, DownloadState* download);
+  dialect::Answer download_message(int32_t step, const std::optional<std::string>& argument, DownloadState& d);
+  dialect::Answer upload(int32_t offset);
+  dialect::Answer info();
   dialect::Answer line_stack(const Message& m, const Keyword& k);
 
   dialect::Runtime& runtime_;
