@@ -73,9 +73,7 @@ int32_t Firmware::read_key(KeywordId key, int32_t index, int32_t& out) {
     case KeywordId::ProgEventMask: out = static_cast<int32_t>(event_mask_); return 0;
     case KeywordId::ProgPointer:
       if (!program_) return 15;
-      out = program_status(static_cast<uint32_t>(index)) == 0
-                ? 0
-                : static_cast<int32_t>(cup_.line_of(program_->machine().pc(static_cast<uint32_t>(index))));
+      out = program_status(static_cast<uint32_t>(index)) == 0 ? 0 : static_cast<int32_t>(next_line(static_cast<uint32_t>(index)));
       return 0;
     default: return 8;  // no single value: lists are the command line's (command_line.cpp)
   }

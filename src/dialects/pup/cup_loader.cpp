@@ -188,11 +188,6 @@ class Loader {
         if (auto r = flow(op.target)) return r;
       }
     }
-    for (uint32_t l = 1; l <= count(); ++l) {
-      if (ops_[l].key->id == KeywordId::Return && contexts_[l] == 3) {
-        return Refusal{l, "AReturn reached both from a task and from a function"};
-      }
-    }
     return std::nullopt;
   }
 
@@ -287,9 +282,10 @@ class Loader {
         b.emit(Op::CALL, static_cast<uint32_t>(function_routine_.at(m.value)), 0);
         break;
       case KeywordId::Return:
-        if (contexts_[l] == static_cast<uint8_t>(Context::Function)) return b.emit(Op::RETEOL);
-        b.emit(Op::CMDRUN, kFailBase + 29, 0);  // only reached from a task: no call to return from
-        break;
+        // A task may fall into a function (past its AProgHalt): whether there is a call to
+        // return from is known only at run time.
+        b.emit(Op::CMDRUN, kReturnCheck, 0);
+        return b.emit(Op::RETEOL);
       case KeywordId::WaitTime:
         push_constant(b, m.value);
         b.emit(Op::WAIT, 1000);

@@ -6,6 +6,7 @@
 
 #include "dialects/pup/cup_math.h"
 #include "drive/axis.h"
+#include "bytecode/opcodes.h"
 #include "vm/run_error.h"
 
 namespace uprog::pup {
@@ -212,6 +213,15 @@ std::vector<dialect::ThreadInfo> Firmware::threads() const {
   return out;
 }
 
+// The CUP line a thread executes next: a pc on a line's closing EOL is already past that line.
+uint32_t Firmware::next_line(uint32_t thread) const {
+  const vm::Machine& m = program_->machine();
+  uint32_t pc = m.pc(thread);
+  const auto& code = m.image().code;
+  if (pc < code.size() && bytecode::word_op(code[pc]) == bytecode::Op::EOL && cup_.line_of(pc + 1) != cup_.line_of(pc)) ++pc;
+  return cup_.line_of(pc);
+}
+
 uint32_t Firmware::running_thread() const {
   const uint32_t t = schedule_.running();
   return t == scheduling::kNoThread ? 0 : t;
@@ -255,7 +265,8 @@ vm::CommandStatus Firmware::write(uint32_t command, int32_t index, Value value) 
 
 vm::CommandStatus Firmware::execute(uint32_t command, int32_t index, const Value* args, uint32_t count) {
   const uint32_t thread = running_thread();
-  if (command >= kFailBase && command < kStatusBase) return static_cast<int32_t>(command - kFailBase);
+  if (command == kReturnCheck) return program_->machine().frame_count(thread) <= 1 ? 29 : 0;
+  if (command >= kFailBase && command < kReturnCheck) return static_cast<int32_t>(command - kFailBase);
   if (command >= kMathBase && command < kMathResult) {
     if (count != 2) return 2;
     int32_t code = 0;

@@ -65,6 +65,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   void log_error(int32_t code, int32_t source, int32_t line);
   vm::Machine* machine() { return program_ ? &program_->machine() : nullptr; }
   uint32_t running_thread() const;
+  uint32_t next_line(uint32_t thread) const;
 
   // --- events.cpp: latching, masks, entering thread 1 and leaving ---
   void latch_events(uint32_t drive_events);
