@@ -111,6 +111,9 @@ dialect::Answer Firmware::message(std::string_view text, DownloadState* download
     const auto& e = err_log_[static_cast<size_t>(index - 1)];
     return {fmt::format("{},{},{}", e[0], e[1], e[2]), 0};
   }
+  if (k->id == KeywordId::ProgBreaks) return {breaks_list(static_cast<uint32_t>(index)), 0};
+  if (k->id == KeywordId::ProgCallStack) return {call_stack(static_cast<uint32_t>(index)), 0};
+  if (k->id == KeywordId::ProgExpStack && index != 0) return refusal(8);  // see docs/dialects/pup.md
   if (k->id == KeywordId::ProgExpStack) {
     std::string list;
     if (index == 0) {

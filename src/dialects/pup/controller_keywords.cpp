@@ -124,6 +124,7 @@ int32_t Firmware::write_key(KeywordId key, int32_t index, int32_t value) {
     case KeywordId::ProgPriority:
       return schedule_.set_priority(static_cast<uint32_t>(index), static_cast<uint32_t>(value)) ? 0 : 10;
     case KeywordId::ProgEventMask: event_mask_ = static_cast<uint32_t>(value); return 0;
+    case KeywordId::ProgBreaks: return program_ ? set_breaks(static_cast<uint32_t>(index), value) : 15;
     default: return 11;
   }
 }
@@ -176,6 +177,8 @@ int32_t Firmware::run_key(KeywordId key, int32_t index, bool, int32_t arg, uint3
         for (uint32_t t = 1; t <= kThreads; ++t) {
           if (t == thread) program_->machine().halt(t);
           else program_->machine().kill(t);
+          set_breaks(t, 0);
+          single_[t].active = false;
         }
       }
       schedule_.reset();
@@ -184,6 +187,9 @@ int32_t Firmware::run_key(KeywordId key, int32_t index, bool, int32_t arg, uint3
       latched_ = 0;
       event_frames_.clear();
       return thread != 0 ? vm::kCommandEndSlice : 0;
+    case KeywordId::ProgSingle: return program_ ? single_step(static_cast<uint32_t>(index), arg) : 15;
+    case KeywordId::ProgClrCall: return clear_stacks(static_cast<uint32_t>(index), false);
+    case KeywordId::ProgClrExp: return clear_stacks(static_cast<uint32_t>(index), true);
     default: return 8;
   }
 }

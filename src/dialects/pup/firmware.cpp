@@ -78,6 +78,8 @@ std::string Firmware::install(const std::string& cup, bool store) {
   cup_program_ = std::move(*program);
   schedule_.reset();
   thread_error_.fill(0);
+  single_.fill(Single{});
+  for (auto& b : breaks_) b.clear();
   latched_ = 0;
   event_frames_.clear();
   event_mask_ = 0x00FFFFFF;
@@ -141,6 +143,7 @@ void Firmware::cycle(const std::vector<uint32_t>& drive_events) {
     if (report.has(t, scheduling::ThreadEvent::Error)) on_thread_error(t);
   }
   check_event_return();
+  after_cycle(report);
 }
 
 void Firmware::on_thread_error(uint32_t thread) {
@@ -213,12 +216,13 @@ std::vector<dialect::ThreadInfo> Firmware::threads() const {
   return out;
 }
 
-// The CUP line a thread executes next: a pc on a line's closing EOL is already past that line.
+// The CUP line a thread executes next: a pc on a line's closing EOL is already past that line,
+// unless the thread waits in it.
 uint32_t Firmware::next_line(uint32_t thread) const {
   const vm::Machine& m = program_->machine();
   uint32_t pc = m.pc(thread);
   const auto& code = m.image().code;
-  if (pc < code.size() && bytecode::word_op(code[pc]) == bytecode::Op::EOL && cup_.line_of(pc + 1) != cup_.line_of(pc)) ++pc;
+  if (m.status(thread) != vm::ThreadStatus::Waiting && pc < code.size() && bytecode::word_op(code[pc]) == bytecode::Op::EOL && cup_.line_of(pc + 1) != cup_.line_of(pc)) ++pc;
   return cup_.line_of(pc);
 }
 

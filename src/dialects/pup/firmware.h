@@ -74,6 +74,14 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   void check_event_return();
   void reset_events();
 
+  // --- program_control.cpp: single steps, breakpoints, the call stack ---
+  int32_t single_step(uint32_t thread, int32_t kind);
+  int32_t set_breaks(uint32_t thread, int32_t value);
+  int32_t clear_stacks(uint32_t thread, bool expression_stack);
+  std::string breaks_list(uint32_t thread) const;
+  std::string call_stack(uint32_t thread) const;
+  void after_cycle(const scheduling::Report& report);
+
   // --- keywords.cpp side (controller_keywords.cpp): parameters and commands ---
   int32_t read_key(KeywordId key, int32_t index, int32_t& out);
   int32_t write_key(KeywordId key, int32_t index, int32_t value);
@@ -105,6 +113,13 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::array<int32_t, kThreads + 1> math_result_{};
   std::vector<int32_t> line_stack_;  // thread 0: the CUP keywords sent over the line
   std::vector<std::array<int32_t, 3>> err_log_;  // newest first: code, source, line
+  struct Single {
+    bool active = false;
+    bool over = false;  // Type != 0: until the pointer leaves the line at the same call depth
+    uint32_t line = 0, depth = 0;
+  };
+  std::array<Single, kThreads + 1> single_{};
+  std::array<std::vector<uint32_t>, kThreads + 1> breaks_{};  // lines, ascending
   uint32_t event_mask_ = 0x00FFFFFF;
   uint32_t latched_ = 0;                 // event IDs latched, one bit each
   std::vector<uint32_t> event_frames_;   // thread 1's frame count inside each event entered
