@@ -352,6 +352,8 @@ class Loader {
       add_routine(fmt::format("event {}", e.event), bytecode::RoutineKind::AutoRoutine, out_.line_pc[l] + 1);
     }
     out_.line_depth = depth_;
+    out_.waits.assign(count() + 2, false);
+    for (uint32_t l = 1; l <= count(); ++l) out_.waits[l] = ops_[l].key->id == KeywordId::WaitStatus;
   }
 
   const CupProgram& p_;

@@ -35,6 +35,7 @@ struct LoadedCup {
   std::vector<int32_t> task_routine;   // by task number 0..64, -1 for none
   std::vector<int32_t> event_routine;  // by event ID 0..23, -1 for none
   std::vector<int32_t> line_depth;     // stack depth before each line, -1 unreachable
+  std::vector<bool> waits;             // per line: an AWaitStatus (a thread in it is waiting)
   // The CUP line of a code word (0 for none).
   uint32_t line_of(uint32_t pc) const;
 };

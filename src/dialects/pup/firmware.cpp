@@ -174,7 +174,9 @@ int32_t Firmware::program_status(uint32_t thread) const {
   if (!program_) return 0;
   switch (program_->machine().status(thread)) {
     case vm::ThreadStatus::Idle: return 0;
-    case vm::ThreadStatus::Running: return schedule_.held(thread) ? 6 : 1;
+    case vm::ThreadStatus::Running:
+      if (schedule_.held(thread)) return 6;
+      return cup_.waits[cup_.line_of(program_->machine().pc(thread))] ? 2 : 1;
     case vm::ThreadStatus::Waiting: return schedule_.held(thread) ? 6 : 2;
     case vm::ThreadStatus::Halted: return 3;
     case vm::ThreadStatus::AtBreakpoint: return 4;
