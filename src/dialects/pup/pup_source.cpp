@@ -13,6 +13,7 @@ namespace {
 
 constexpr size_t kMaxIncludeDepth = 16;
 constexpr int kMaxDefineDepth = 16;
+constexpr size_t kMaxLineTokens = 4096;  // after #define replacement: keeps `#define A B B` finite
 
 std::string trim(const std::string& s) {
   const size_t a = s.find_first_not_of(" \t");
@@ -99,13 +100,18 @@ void PupCompiler::expand(std::vector<Token>& tokens, int depth) {
       continue;
     }
     changed = true;
+    if (out.size() + d->second.tokens.size() > kMaxLineTokens || depth >= kMaxDefineDepth) {
+      error(Error::DefineTooLong, t.where, "'" + t.text + "'");
+      tokens.clear();
+      return;
+    }
     for (Token r : d->second.tokens) {
       r.where = t.where;
       out.push_back(std::move(r));
     }
   }
   tokens = std::move(out);
-  if (changed && depth < kMaxDefineDepth) expand(tokens, depth + 1);
+  if (changed) expand(tokens, depth + 1);
 }
 
 void PupCompiler::directive(const std::string& text, const Location& at, const std::string& path) {
