@@ -17,8 +17,6 @@ using bytecode::Op;
 
 constexpr int32_t kMaxDepth = 50;
 
-enum class Context : uint8_t { Task = 1, Function = 2 };
-
 struct LineOp {
   const Keyword* key = nullptr;
   Message msg;
@@ -157,16 +155,14 @@ class Loader {
   // Every line's stack depth from every entry, one depth per line; AReturn at depth 0.
   std::optional<Refusal> analyse() {
     depth_.assign(count() + 2, -1);
-    contexts_.assign(count() + 2, 0);
-    std::vector<std::pair<uint32_t, Context>> work;
-    if (count() > 0 && !(ops_[1].key->id == KeywordId::ProgTask)) work.push_back({1, Context::Task});
-    for (const auto& [n, l] : tasks_) work.push_back({l, Context::Task});
-    for (const auto& [n, l] : functions_) work.push_back({l, Context::Function});
-    for (auto& [l, c] : work) depth_[l] = 0;
+    std::vector<uint32_t> work;  // lines whose depth is known and whose successors are not
+    if (count() > 0 && ops_[1].key->id != KeywordId::ProgTask) work.push_back(1);
+    for (const auto& [n, line] : tasks_) work.push_back(line);
+    for (const auto& [n, line] : functions_) work.push_back(line);
+    for (uint32_t line : work) depth_[line] = 0;
     while (!work.empty()) {
-      const auto [l, c] = work.back();
+      const uint32_t l = work.back();
       work.pop_back();
-      contexts_[l] |= static_cast<uint8_t>(c);
       if (l > count()) continue;
       const LineOp& op = ops_[l];
       const int32_t d = depth_[l];
@@ -176,9 +172,9 @@ class Loader {
       if (op.key->id == KeywordId::Return && d != 0) return Refusal{l, "AReturn with values on the stack"};
       auto flow = [&](uint32_t to) -> std::optional<Refusal> {
         if (depth_[to] >= 0 && depth_[to] != after) return Refusal{to, "reachable at two stack depths"};
-        if (depth_[to] == after && (contexts_[to] & static_cast<uint8_t>(c)) != 0) return std::nullopt;
+        if (depth_[to] == after) return std::nullopt;
         depth_[to] = after;
-        work.push_back({to, c});
+        work.push_back(to);
         return std::nullopt;
       };
       if (op.falls_through) {
@@ -361,7 +357,6 @@ class Loader {
   std::map<int32_t, uint32_t> tasks_, functions_;
   std::map<int32_t, int32_t> function_routine_;
   std::vector<int32_t> depth_;
-  std::vector<uint8_t> contexts_;
   LoadedCup out_;
 };
 

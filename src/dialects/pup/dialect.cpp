@@ -52,6 +52,10 @@ class PupDialect final : public dialect::Dialect {
   }
   std::span<const std::string_view> source_extensions() const override { return kExtensions; }
   std::string_view stored_extension() const override { return ".cup"; }
+  // X.pup → X.cup, as the PC Suite names it; a .cup is rewritten in place (checked, fresh header).
+  std::string stored_path(const std::string& source) const override {
+    return std::filesystem::path(source).replace_extension(".cup").string();
+  }
 
   dialect::CompileOutput compile_file(const std::string& path, const dialect::CompileSettings& settings) const override {
     dialect::CompileOutput out;
