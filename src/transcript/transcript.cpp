@@ -163,6 +163,8 @@ class Runner {
       expect_output(number, directive == "quiet", arg);
     } else if (directive == "load") {
       load(number, arg);
+    } else if (directive == "compile") {
+      compile(number, arg);
     } else if (directive == "wait") {
       uint64_t us = 0;
       if (!parse_duration_us(arg, us)) fail(number, "wait needs a duration such as 500ms, 2s or 10us");
@@ -214,6 +216,25 @@ class Runner {
       }
     }
     collect_output();
+  }
+
+  std::string resolve(const std::string& arg) const {
+    return std::filesystem::path(arg).is_absolute() ? arg : (std::filesystem::path(base_dir_) / arg).string();
+  }
+
+  // An extension: "compile SOURCE EXPECTED": the dialect compiles SOURCE (date 0, a reproducible
+  // build) into a stored form equal to EXPECTED's bytes.
+  void compile(int number, const std::string& arg) {
+    ++result_.checks;
+    const size_t space = arg.find_first_of(" \t");
+    if (space == std::string::npos) return fail(number, "compile needs 'compile SOURCE EXPECTED'");
+    const std::string source = resolve(arg.substr(0, space)), expected_path = resolve(trim(arg.substr(space)));
+    const dialect::CompileOutput out = dialect_->compile_file(source, {});
+    if (!out.ok()) return fail(number, "compile " + source + " failed:\n" + format_text(out.diagnostics));
+    std::string error;
+    const auto expected = read_binary_file(expected_path, &error);
+    if (!expected) return fail(number, "compile: " + error);
+    if (out.stored_form != *expected) return fail(number, "compile " + source + ": the stored form differs from " + expected_path);
   }
 
   void choose_dialect(int number, const std::string& arg) {
