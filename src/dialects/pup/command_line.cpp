@@ -66,7 +66,7 @@ std::vector<dialect::Answer> Firmware::send(std::string_view line, bool takes_ti
     const size_t end = std::min(line.find(';', start), line.size());
     const std::string text = trim(line.substr(start, end - start));
     if (!text.empty()) {
-      answers.push_back(message(text, download));
+      answers.push_back(serve_message(text, download));
       if (takes_time) runtime_.advance_ns(cycle_ns());
     }
     start = end + 1;
@@ -74,7 +74,7 @@ std::vector<dialect::Answer> Firmware::send(std::string_view line, bool takes_ti
   return answers;
 }
 
-dialect::Answer Firmware::message(std::string_view text, DownloadState* download) {
+dialect::Answer Firmware::serve_message(std::string_view text, DownloadState* download) {
   int32_t code = 0;
   // ADownloadUProg[2]'s argument is hex data, no number: read apart from the other messages.
   if (auto dl = parse_download(text)) {
@@ -140,6 +140,11 @@ dialect::Answer Firmware::line_stack(const Message& m, const Keyword& k) {
     return dialect::Answer{};
   };
   const Keyword* name = m.tail_is_name ? find_keyword(m.name.key) : nullptr;
+  if (name != nullptr) {  // the parameter named after `,` has its own index rules
+    if (name->indexed() != m.name.has_index) return refusal(name->indexed() ? 3 : 5);
+    if (name->indexed() && (m.name.index < name->index_min || m.name.index > name->index_max)) return refusal(4);
+    if (name->kind != KeywordKind::Param && name->kind != KeywordKind::ReadOnly) return refusal(12);
+  }
   int32_t a = 0, b = 0, code = 0;
   switch (k.id) {
     case KeywordId::PushConstant:

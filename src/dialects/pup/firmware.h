@@ -89,7 +89,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   int32_t status_of(int32_t s, int32_t v);
 
   // --- command_line.cpp ---
-  dialect::Answer message(std::string_view text, DownloadState* download);
+  dialect::Answer serve_message(std::string_view text, DownloadState* download);
   dialect::Answer download_message(int32_t step, const std::optional<std::string>& argument, DownloadState& d);
   dialect::Answer upload(int32_t offset);
   dialect::Answer info();
