@@ -49,6 +49,9 @@ class Dialect {
   virtual std::span<const std::string_view> source_extensions() const = 0;
   // The extension of the stored form as `uprog build` writes it (".upi").
   virtual std::string_view stored_extension() const = 0;
+  // Where `uprog build SOURCE` writes the stored form by default: SOURCE plus the extension
+  // ("f.ehl.upi"); a dialect whose stored form replaces the source's extension says so.
+  virtual std::string stored_path(const std::string& source) const { return source + std::string(stored_extension()); }
   virtual CompileOutput compile_file(const std::string& path, const CompileSettings& settings) const = 0;
   virtual std::span<const ErrorInfo> diagnostic_codes() const = 0;
   virtual std::span<const ErrorInfo> interpreter_errors() const = 0;

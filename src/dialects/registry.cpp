@@ -4,16 +4,18 @@
 #include <cctype>
 
 #include "dialects/gold/dialect.h"
-#include "dialects/st/dialect.h"
 #include "dialects/pdl/dialect.h"
+#include "dialects/pup/dialect.h"
+#include "dialects/st/dialect.h"
 
 namespace uprog::dialects {
 namespace {
 
 const dialect::Dialect* const kDialects[] = {
     &gold::dialect(),
-    &st::dialect(),
     &pdl::dialect(),
+    &pup::dialect(),
+    &st::dialect(),
 };
 
 bool ends_with_ignoring_case(std::string_view text, std::string_view suffix) {

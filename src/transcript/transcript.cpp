@@ -173,6 +173,8 @@ class Runner {
       // An extension: power-cycles the drive (saved parameters, the stored program as at power-up).
       drive().reboot();
       collect_output();
+    } else if (directive == "compile") {
+      compile(number, arg);
     } else if (directive == "wait") {
       uint64_t us = 0;
       uint64_t cycles = 0;
@@ -265,6 +267,21 @@ class Runner {
       }
     }
     collect_output();
+  }
+
+  // An extension: "compile SOURCE EXPECTED": the dialect compiles SOURCE (date 0, a reproducible
+  // build) into a stored form equal to EXPECTED's bytes.
+  void compile(int number, const std::string& arg) {
+    ++result_.checks;
+    const size_t space = arg.find_first_of(" \t");
+    if (space == std::string::npos) return fail(number, "compile needs 'compile SOURCE EXPECTED'");
+    const std::string source = resolve(arg.substr(0, space)), expected_path = resolve(trim(arg.substr(space)));
+    const dialect::CompileOutput out = dialect_->compile_file(source, {});
+    if (!out.ok()) return fail(number, "compile " + source + " failed:\n" + format_text(out.diagnostics));
+    std::string error;
+    const auto expected = read_binary_file(expected_path, &error);
+    if (!expected) return fail(number, "compile: " + error);
+    if (out.stored_form != *expected) return fail(number, "compile " + source + ": the stored form differs from " + expected_path);
   }
 
   void choose_dialect(int number, const std::string& arg) {

@@ -38,7 +38,7 @@ int build(const BuildOptions& o) {
     const std::string text = bytecode::disassemble(*r.image);
     written = write_file_atomically(o.output.empty() ? o.input + ".s" : o.output, text.data(), text.size(), &error);
   } else {
-    const std::string out = o.output.empty() ? o.input + std::string(d->stored_extension()) : o.output;
+    const std::string out = o.output.empty() ? d->stored_path(o.input) : o.output;
     written = write_file_atomically(out, r.stored_form.data(), r.stored_form.size(), &error);
   }
   if (!written) {

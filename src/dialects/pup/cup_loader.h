@@ -1,0 +1,46 @@
+// The controller's loader: a CUP program (its lines and tables) checked and translated into the
+// project's verified image, each CUP line its own line of code (EOL), so that the threads run
+// one CUP line per turn and program keywords speak in CUP lines.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bytecode/image.h"
+#include "dialects/pup/cup_file.h"
+#include "dialects/pup/keywords.h"
+
+namespace uprog::pup {
+
+// Host command numbers of the image, beyond the keywords' own (KeywordId): what the firmware
+// computes for a line that the VM has no opcode for.
+constexpr uint32_t kIndexedBase = 0x1000;  // + k: indexed access k (APushParamIdx / APopParamIdx)
+constexpr uint32_t kMathBase = 0x2000;     // + n: AMath[n] done by the firmware
+constexpr uint32_t kMathResult = 0x2FFF;   // the last binary AMath's result of the running thread
+constexpr uint32_t kFailBase = 0x3000;     // + code: the line fails with this controller error
+constexpr uint32_t kReturnCheck = 0x3FFF;  // AReturn: error 29 when the thread is in no call
+constexpr uint32_t kStatusBase = 0x4000;   // + s: AGetStatus[s] of the index v, 1 or 0
+
+struct IndexedAccess {
+  KeywordId key;
+  int32_t base = 0;  // key[base + i - 1]
+  int32_t size = 0;  // i in 1..size, else error 4
+};
+
+struct LoadedCup {
+  bytecode::Image image;
+  std::vector<uint32_t> line_pc;  // per CUP line from 1 (index 0 unused), its first code word; one more: the end
+  std::vector<IndexedAccess> indexed;
+  std::vector<int32_t> task_routine;   // by task number 0..64, -1 for none
+  std::vector<int32_t> event_routine;  // by event ID 0..23, -1 for none
+  std::vector<int32_t> line_depth;     // stack depth before each line, -1 unreachable
+  std::vector<bool> waits;             // per line: an AWaitStatus (a thread in it is waiting)
+  // The CUP line of a code word (0 for none).
+  uint32_t line_of(uint32_t pc) const;
+};
+
+// nullopt with `error` "line N: why" (the download's error 45) when the program is unsafe.
+std::optional<LoadedCup> load_cup(const CupProgram& program, std::string* error);
+
+}  // namespace uprog::pup

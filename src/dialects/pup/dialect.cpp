@@ -1,0 +1,91 @@
+// PUP's entry in the dialect registry: the PUP compiler (a .pup → its CUP text), CUP as the
+// stored form, and the AG300 firmware.
+#include "dialects/pup/dialect.h"
+
+#include <filesystem>
+
+#include "dialects/pup/errors.h"
+#include "dialects/pup/firmware.h"
+#include "dialects/pup/cup_loader.h"
+#include "dialects/pup/download.h"
+#include "dialects/pup/pup_compiler.h"
+#include "support/files.h"
+
+namespace uprog::pup {
+namespace {
+
+constexpr std::string_view kExtensions[] = {".pup", ".cup"};
+
+bool is_cup(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  return ext == ".cup" || ext == ".CUP";
+}
+
+// A hand-written .cup: read leniently, checked by the loader (a refusal names its line), and
+// written again with CR line ends and a fresh header.
+PupOutput rebuild_cup(const std::string& path, uint64_t created_unix_s) {
+  PupOutput out;
+  std::string why;
+  const auto text = read_text_file(path, &why);
+  if (!text) {
+    out.diagnostics.push_back(make_error(Error::IncludeNotFound, Location{path, 0, 0}, why));
+    return out;
+  }
+  out.program = read_cup_text(*text, std::filesystem::path(path).stem().string());
+  out.program.date = cup_date(created_unix_s);
+  if (!load_cup(out.program, &why)) {
+    Diagnostic d;
+    d.scheme = "cup";
+    d.code = 45;
+    d.message = why;
+    d.where = Location{path, 0, 0};
+    out.diagnostics.push_back(std::move(d));
+  }
+  return out;
+}
+
+class PupDialect final : public dialect::Dialect {
+ public:
+  std::string_view name() const override { return "pup"; }
+  std::string_view description() const override {
+    return "Akribis AG300: PUP (.pup, .puh) compiled to CUP (.cup), threads, events";
+  }
+  std::span<const std::string_view> source_extensions() const override { return kExtensions; }
+  std::string_view stored_extension() const override { return ".cup"; }
+  // X.pup → X.cup, as the PC Suite names it; a .cup is rewritten in place (checked, fresh header).
+  std::string stored_path(const std::string& source) const override {
+    return std::filesystem::path(source).replace_extension(".cup").string();
+  }
+
+  dialect::CompileOutput compile_file(const std::string& path, const dialect::CompileSettings& settings) const override {
+    dialect::CompileOutput out;
+    PupOutput r = is_cup(path) ? rebuild_cup(path, settings.created_unix_s) : compile_pup_file(path, settings.created_unix_s);
+    out.diagnostics = std::move(r.diagnostics);
+    if (out.ok() && !settings.check_only) {
+      const std::string cup = write_cup(r.program);
+      out.stored_form.assign(cup.begin(), cup.end());
+    }
+    return out;
+  }
+
+  std::span<const dialect::ErrorInfo> diagnostic_codes() const override { return diagnostic_table(); }
+  std::span<const dialect::ErrorInfo> interpreter_errors() const override { return {}; }
+  std::unique_ptr<dialect::Firmware> make_firmware(dialect::Runtime& runtime,
+                                                   const dialect::FirmwareOptions& options) const override {
+    return std::make_unique<Firmware>(runtime, options);
+  }
+  std::vector<std::string> download_lines(const std::vector<uint8_t>& cup) const override {
+    return pup::download_lines(cup);
+  }
+  std::string load_line() const override { return ""; }  // ADownloadUProg[3] stores and loads
+  std::size_t max_download_bytes() const override { return kMaxProgramBytes; }
+};
+
+}  // namespace
+
+const dialect::Dialect& dialect() {
+  static const PupDialect pup;
+  return pup;
+}
+
+}  // namespace uprog::pup

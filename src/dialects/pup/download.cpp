@@ -1,0 +1,43 @@
+// The download's host side and hex helpers (download.h); the firmware's side is in
+// download_receiver.cpp.
+#include "dialects/pup/download.h"
+
+#include <fmt/core.h>
+
+namespace uprog::pup {
+
+std::string to_hex(const std::string& bytes) {
+  std::string out;
+  for (unsigned char c : bytes) out += fmt::format("{:02X}", c);
+  return out;
+}
+
+bool from_hex(const std::string& hex, std::string& out) {
+  auto digit = [](char c) -> int {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+  };
+  if (hex.size() % 2 != 0) return false;
+  out.clear();
+  for (size_t i = 0; i < hex.size(); i += 2) {
+    const int hi = digit(hex[i]), lo = digit(hex[i + 1]);
+    if (hi < 0 || lo < 0) return false;
+    out.push_back(static_cast<char>(hi * 16 + lo));
+  }
+  return true;
+}
+
+std::vector<std::string> download_lines(const std::vector<uint8_t>& cup) {
+  const std::string bytes(cup.begin(), cup.end());
+  std::vector<std::string> lines = {fmt::format("ADownloadUProg[1],{}", bytes.size())};
+  for (size_t at = 0; at < bytes.size(); at += kMaxChunkBytes) {
+    lines.push_back("ADownloadUProg[2]," + to_hex(bytes.substr(at, kMaxChunkBytes)));
+  }
+  // The header's first line, "% XXXXXXXX", carries the CRC.
+  lines.push_back("ADownloadUProg[3],0x" + (bytes.size() >= 10 ? bytes.substr(2, 8) : std::string("0")));
+  return lines;
+}
+
+}  // namespace uprog::pup

@@ -1,0 +1,29 @@
+// The PUP diagnostics table and make_error (errors.h).
+#include "dialects/pup/errors.h"
+
+namespace uprog::pup {
+namespace {
+
+constexpr dialect::ErrorInfo kTable[] = {
+#define PUP_ERROR(code, name, text) {code, #name, text},
+#include "dialects/pup/pup_errors.def"
+#undef PUP_ERROR
+};
+
+}  // namespace
+
+std::span<const dialect::ErrorInfo> diagnostic_table() { return kTable; }
+
+Diagnostic make_error(Error e, Location where, const std::string& detail) {
+  Diagnostic d;
+  d.scheme = "pup";
+  d.code = static_cast<int>(e);
+  for (const dialect::ErrorInfo& info : kTable) {
+    if (info.code == d.code) d.message = std::string(info.text);
+  }
+  if (!detail.empty()) d.message += ": " + detail;
+  d.where = std::move(where);
+  return d;
+}
+
+}  // namespace uprog::pup

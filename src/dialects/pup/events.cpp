@@ -1,0 +1,90 @@
+// The AG300's events (the spec's IDs 0..23): latched when linked (#event) and enabled by
+// AProgEventMask, taken lowest first on thread 1 while it runs or waits; threads 2..8 are held
+// until the event function returns. Mask bit 31 lets an event function be interrupted.
+#include <fmt/core.h>
+
+#include "dialects/pup/firmware.h"
+#include "drive/axis.h"
+#include "drive/events.h"
+
+namespace uprog::pup {
+namespace {
+
+constexpr uint32_t kNestingBit = 1u << 31;
+
+uint32_t input_levels(const drive::Axis& a) {
+  uint32_t bits = 0;
+  for (int n = 1; n <= 6; ++n) bits |= a.input_level(n) ? 1u << (n - 1) : 0u;
+  return bits;
+}
+
+}  // namespace
+
+void Firmware::latch(int32_t id) {
+  if (!program_ || id < 0 || id > 23) return;
+  if (cup_.event_routine[static_cast<size_t>(id)] < 0 || ((event_mask_ >> id) & 1u) == 0) return;
+  latched_ |= 1u << id;
+}
+
+void Firmware::latch_events(uint32_t drive_events) {
+  const drive::Axis& a = *axis_;
+  if (drive_events & drive::kEventFault) latch(0);
+  if (drive_events & drive::kEventForwardLimit) latch(1);
+  if (drive_events & drive::kEventReverseLimit) latch(2);
+  const drive::Parameters& p = a.parameters();
+  const bool above = a.reference_position() >= p.position_high_counts;
+  const bool below = a.reference_position() <= p.position_low_counts;
+  if (above && !above_max_) latch(3);
+  if (below && !below_min_) latch(4);
+  above_max_ = above, below_min_ = below;
+  const bool moving = a.profiler_moving();
+  if (was_moving_ && !moving) latch(5);
+  was_moving_ = moving;
+  const uint32_t levels = input_levels(a);
+  for (int n = 0; n < 6; ++n) {
+    const bool now = (levels >> n) & 1u, before = (previous_inputs_ >> n) & 1u;
+    if (now && !before) latch(6 + n);
+    if (!now && before) latch(12 + n);
+  }
+  previous_inputs_ = levels;
+}
+
+void Firmware::take_event() {
+  if (latched_ == 0 || !program_) return;
+  const int32_t s = program_status(1);
+  if (s != 1 && s != 2) return;
+  if (!event_frames_.empty() && (event_mask_ & kNestingBit) == 0) return;
+  int32_t id = 0;
+  while (((latched_ >> id) & 1u) == 0) ++id;
+  latched_ &= ~(1u << id);
+  vm::Machine& m = program_->machine();
+  if (m.interrupt(1, static_cast<uint32_t>(cup_.event_routine[static_cast<size_t>(id)])) != vm::RunError::None) {
+    log_error(28, 1, static_cast<int32_t>(cup_.line_of(m.pc(1))));
+    return;
+  }
+  event_mask_ &= ~kNestingBit;
+  event_frames_.push_back(m.frame_count(1));
+  for (uint32_t t = 2; t <= kThreads; ++t) schedule_.hold(t);
+  runtime_.log(fmt::format("event {} entered", id));
+}
+
+// An event function has returned when thread 1 is back below its frame; the last one out
+// releases the held threads. An error or a halt of thread 1 ends them all.
+void Firmware::check_event_return() {
+  if (event_frames_.empty()) return;
+  const vm::Machine& m = program_->machine();
+  const int32_t s = program_status(1);
+  if (s != 1 && s != 2 && s != 6) {
+    if (s != 3 && s != 4) reset_events();  // a halt or breakpoint keeps the event for resuming
+    return;
+  }
+  while (!event_frames_.empty() && m.frame_count(1) < event_frames_.back()) event_frames_.pop_back();
+  if (event_frames_.empty()) schedule_.release_all();
+}
+
+void Firmware::reset_events() {
+  event_frames_.clear();
+  schedule_.release_all();
+}
+
+}  // namespace uprog::pup

@@ -1,0 +1,286 @@
+// The AG300 firmware's lifecycle: boot, the program store (a download is read strictly, loaded
+// and only then stored), threads on rate priorities, their run-time errors, and the VM's Host.
+#include "dialects/pup/firmware.h"
+
+#include <fmt/core.h>
+
+#include "dialects/pup/cup_math.h"
+#include "drive/axis.h"
+#include "bytecode/opcodes.h"
+#include "vm/run_error.h"
+
+namespace uprog::pup {
+namespace {
+
+constexpr std::string_view kRecord = "program.cup";
+
+vm::MachineConfig machine_config() {
+  vm::MachineConfig c;
+  c.threads = kThreads + 1;
+  c.stack = 50;
+  c.frames = 30;
+  c.locals = 16;
+  return c;
+}
+
+// The controller's code for a VM error (the spec's error list).
+int32_t code_of(vm::RunError e, int32_t detail) {
+  switch (e) {
+    case vm::RunError::CommandRefused: return detail;
+    case vm::RunError::DivisionByZero: return 30;
+    case vm::RunError::StackOverflow: return 26;
+    case vm::RunError::CallDepth:
+    case vm::RunError::InterruptDepth: return 28;
+    case vm::RunError::IndexOutOfRange: return 4;
+    default: return 2;
+  }
+}
+
+}  // namespace
+
+Firmware::Firmware(dialect::Runtime& runtime, const dialect::FirmwareOptions&)
+    : runtime_(runtime), wire_(dialect::FramerOptions{}), schedule_(scheduling::RatePrioritiesConfig{}) {}
+
+void Firmware::boot(std::vector<std::string>& messages) {
+  axis_ = &runtime_.axis();
+  gen_data_.fill(0);
+  timers_.fill(0);
+  line_stack_.clear();
+  if (!flash_read_) {
+    flash_read_ = true;
+    std::string error;
+    if (auto bytes = runtime_.flash().read(kRecord, &error)) stored_ = std::string(bytes->begin(), bytes->end());
+  }
+  if (stored_) {
+    const std::string why = install(*stored_, false);
+    if (!why.empty()) {
+      messages.push_back("stored program " + runtime_.flash().where(kRecord) + " refused: " + why);
+      stored_.reset();
+    }
+  }
+}
+
+// Reads, checks and loads a CUP file; the threads are idle and the state reset after it.
+std::string Firmware::install(const std::string& cup, bool store) {
+  CupReadError read_error;
+  auto program = read_cup(cup, &read_error);
+  if (!program) return fmt::format("error {}: {}", read_error.code, read_error.text);
+  std::string why;
+  auto loaded = load_cup(*program, &why);
+  if (!loaded) return "error 45: " + why;
+  auto image = dialect::LoadedProgram::load(bytecode::encode(loaded->image), machine_config(), *this, &why, true, "pup");
+  if (!image) return "error 45: " + why;
+  if (store && !runtime_.flash().write(kRecord, std::vector<uint8_t>(cup.begin(), cup.end()), &why)) {
+    return "error 46: " + why;
+  }
+  program_ = std::move(image);
+  cup_ = std::move(*loaded);
+  cup_program_ = std::move(*program);
+  schedule_.reset();
+  thread_error_.fill(0);
+  single_.fill(Single{});
+  for (auto& b : breaks_) b.clear();
+  latched_ = 0;
+  event_frames_.clear();
+  event_mask_ = 0x00FFFFFF;
+  previous_inputs_ = 0;
+  for (int n = 1; n <= 6; ++n) previous_inputs_ |= axis_->input_level(n) ? 1u << (n - 1) : 0u;
+  if (store) stored_ = cup;
+  return "";
+}
+
+dialect::DownloadResult Firmware::download(const std::vector<uint8_t>& bytes) {
+  dialect::DownloadResult r;
+  r.error = install(std::string(bytes.begin(), bytes.end()), true);
+  r.ok = r.error.empty();
+  r.storage_failed = r.error.starts_with("error 46");
+  if (r.ok) runtime_.log(fmt::format("program downloaded ({} bytes)", bytes.size()));
+  return r;
+}
+
+int32_t Firmware::run_task(uint32_t thread, int32_t task) {
+  if (!program_) return 15;
+  if (task < 0 || task > 64 || cup_.task_routine[static_cast<size_t>(task)] < 0) return 33;
+  const vm::ThreadStatus s = program_->machine().status(thread);
+  if (s == vm::ThreadStatus::Running || s == vm::ThreadStatus::Waiting) return 17;
+  program_->machine().kill(thread);
+  program_->machine().start(thread, static_cast<uint32_t>(cup_.task_routine[static_cast<size_t>(task)]));
+  schedule_.started(thread);
+  thread_error_[thread] = 0;
+  return 0;
+}
+
+std::string Firmware::start(std::string_view entry) {
+  if (!program_) return "no program has been downloaded";
+  int32_t task = -1;
+  if (!entry.empty()) {
+    const auto n = parse_number(entry);
+    if (!n) return fmt::format("'{}' is no task number", entry);
+    task = *n;
+  } else {
+    for (int32_t t = 0; t <= 64 && task < 0; ++t) {
+      if (cup_.task_routine[static_cast<size_t>(t)] >= 0) task = t;
+    }
+  }
+  const int32_t code = run_task(1, task);
+  return code == 0 ? "" : fmt::format("cannot run task {} (error {})", task, code);
+}
+
+void Firmware::cycle(const std::vector<uint32_t>& drive_events) {
+  timer_us_ += 50;
+  if (timer_us_ >= 1000) {
+    timer_us_ -= 1000;
+    for (size_t n = 0; n < timers_.size(); ++n) {
+      if (timers_[n] <= 0) continue;
+      if (--timers_[n] == 0) latch(18 + static_cast<int32_t>(n));
+    }
+  }
+  if (!program_) return;
+  latch_events(drive_events.empty() ? 0 : drive_events[0]);
+  take_event();
+  const scheduling::Report report = schedule_.cycle(program_->machine());
+  for (uint32_t t = 1; t <= kThreads; ++t) {
+    if (report.has(t, scheduling::ThreadEvent::Error)) on_thread_error(t);
+  }
+  check_event_return();
+  after_cycle(report);
+}
+
+void Firmware::on_thread_error(uint32_t thread) {
+  const vm::Machine& m = program_->machine();
+  const int32_t code = code_of(m.last_error(thread), m.error_detail(thread));
+  thread_error_[thread] = code;
+  if (thread == 1) reset_events();  // the held threads resume; no event is raised
+  else latch(22);
+  log_error(code, static_cast<int32_t>(thread), static_cast<int32_t>(cup_.line_of(m.pc(thread))));
+  runtime_.log(fmt::format("thread {}: error {} at line {}", thread, code, cup_.line_of(m.pc(thread))));
+}
+
+void Firmware::log_error(int32_t code, int32_t source, int32_t line) {
+  err_log_.insert(err_log_.begin(), {code, source, line});
+  if (err_log_.size() > 16) err_log_.pop_back();
+}
+
+bool Firmware::running() const {
+  for (uint32_t t = 1; t <= kThreads; ++t) {
+    const int32_t s = program_status(t);
+    if (s == 1 || s == 2) return true;
+  }
+  return false;
+}
+
+// AProgStatus: 0 idle, 1 running, 2 waiting, 3 halted, 4 breakpoint, 5 error, 6 held.
+int32_t Firmware::program_status(uint32_t thread) const {
+  if (!program_) return 0;
+  switch (program_->machine().status(thread)) {
+    case vm::ThreadStatus::Idle: return 0;
+    case vm::ThreadStatus::Running:
+      if (schedule_.held(thread)) return 6;
+      return cup_.waits[cup_.line_of(program_->machine().pc(thread))] ? 2 : 1;
+    case vm::ThreadStatus::Waiting: return schedule_.held(thread) ? 6 : 2;
+    case vm::ThreadStatus::Halted: return 3;
+    case vm::ThreadStatus::AtBreakpoint: return 4;
+    case vm::ThreadStatus::Error: return 5;
+  }
+  return 0;
+}
+
+int32_t Firmware::program_error() const {
+  for (uint32_t t = 1; t <= kThreads; ++t) {
+    if (thread_error_[t] != 0) return thread_error_[t];
+  }
+  return 0;
+}
+
+std::string Firmware::program_error_text() const {
+  const int32_t e = program_error();
+  return e == 0 ? "" : fmt::format("controller error {}", e);
+}
+
+std::string Firmware::state_summary() const {
+  return fmt::format("AProgStatus[1]={} APos={} AVel={} AMotorOn={} AMotorFault={}", program_status(1),
+                     axis_->position(), axis_->velocity(), axis_->motor_on() ? 1 : 0, axis_->motor_fault());
+}
+
+std::vector<dialect::ThreadInfo> Firmware::threads() const {
+  std::vector<dialect::ThreadInfo> out;
+  if (!program_) return out;
+  const vm::Machine& m = program_->machine();
+  for (uint32_t t = 1; t <= kThreads; ++t) {
+    dialect::ThreadInfo info;
+    info.thread = t;
+    info.name = fmt::format("thread {}", t);
+    info.status = m.status(t);
+    if (info.status != vm::ThreadStatus::Idle) info.where = fmt::format("{}:{}", cup_.image.source_name, cup_.line_of(m.pc(t)));
+    info.error = thread_error_[t];
+    out.push_back(std::move(info));
+  }
+  return out;
+}
+
+// The CUP line a thread executes next: a pc on a line's closing EOL is already past that line,
+// unless the thread waits in it.
+uint32_t Firmware::next_line(uint32_t thread) const {
+  const vm::Machine& m = program_->machine();
+  uint32_t pc = m.pc(thread);
+  const auto& code = m.image().code;
+  if (m.status(thread) != vm::ThreadStatus::Waiting && pc < code.size() && bytecode::word_op(code[pc]) == bytecode::Op::EOL && cup_.line_of(pc + 1) != cup_.line_of(pc)) ++pc;
+  return cup_.line_of(pc);
+}
+
+uint32_t Firmware::running_thread() const {
+  const uint32_t t = schedule_.running();
+  return t == scheduling::kNoThread ? 0 : t;
+}
+
+// --- Host: the program's keywords, indexed accesses, math and statuses ---
+
+vm::CommandStatus Firmware::read(uint32_t command, int32_t index, Value& out) {
+  int32_t v = 0, code = 0;
+  const uint32_t thread = running_thread();
+  if (command == kMathResult) {
+    v = math_result_[thread];
+  } else if (command >= kStatusBase && command < kStatusBase + 16) {
+    code = status_of(static_cast<int32_t>(command - kStatusBase), index);
+    v = code >= 0 ? code : 0;
+    code = code < 0 ? -code : 0;
+  } else if (command >= kMathBase && command < kMathResult) {
+    v = apply_math(static_cast<int32_t>(command - kMathBase), 0, index, &code);
+  } else if (command >= kIndexedBase && command < kMathBase) {
+    const IndexedAccess& a = cup_.indexed.at(command - kIndexedBase);
+    if (index < 1 || index > a.size) return 4;
+    code = read_key(a.key, a.base + index - 1, v);
+  } else if (command < static_cast<uint32_t>(KeywordId::kCount)) {
+    code = read_key(static_cast<KeywordId>(command), index, v);
+  } else {
+    return 1;
+  }
+  out = Value::of_int(v);
+  return code;
+}
+
+vm::CommandStatus Firmware::write(uint32_t command, int32_t index, Value value) {
+  if (command >= kIndexedBase && command < kMathBase) {
+    const IndexedAccess& a = cup_.indexed.at(command - kIndexedBase);
+    if (index < 1 || index > a.size) return 4;
+    return write_key(a.key, a.base + index - 1, value.i);
+  }
+  if (command >= static_cast<uint32_t>(KeywordId::kCount)) return 1;
+  return write_key(static_cast<KeywordId>(command), index, value.i);
+}
+
+vm::CommandStatus Firmware::execute(uint32_t command, int32_t index, const Value* args, uint32_t count) {
+  const uint32_t thread = running_thread();
+  if (command == kReturnCheck) return program_->machine().frame_count(thread) <= 1 ? 29 : 0;
+  if (command >= kFailBase && command < kReturnCheck) return static_cast<int32_t>(command - kFailBase);
+  if (command >= kMathBase && command < kMathResult) {
+    if (count != 2) return 2;
+    int32_t code = 0;
+    math_result_[thread] = apply_math(static_cast<int32_t>(command - kMathBase), args[0].i, args[1].i, &code);
+    return code;
+  }
+  if (command >= static_cast<uint32_t>(KeywordId::kCount)) return 1;
+  return run_key(static_cast<KeywordId>(command), index, count > 0, count > 0 ? args[0].i : 0, thread);
+}
+
+}  // namespace uprog::pup

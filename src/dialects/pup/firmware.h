@@ -1,0 +1,134 @@
+// The AG300 controller's firmware (dialect::Firmware): the CUP program in flash and its image in
+// RAM, threads 1..8 on rate priorities (one CUP line per due thread per cycle), the A-prefixed
+// command line (thread 0's stacks for CUP keywords sent over the line), and the VM's Host.
+#pragma once
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dialect/firmware.h"
+#include "dialect/loaded_program.h"
+#include "dialect/runtime.h"
+#include "dialect/scheduling/rate_priorities.h"
+#include "dialect/semicolon_wire.h"
+#include "dialects/pup/cup_file.h"
+#include "dialects/pup/cup_loader.h"
+#include "dialects/pup/message.h"
+
+namespace uprog::pup {
+
+constexpr uint32_t kThreads = 8;
+constexpr size_t kGenDataSize = 1000;
+
+// One host's download in progress (ADownloadUProg[1..3]); it dies with the connection.
+struct DownloadState {
+  bool open = false;
+  bool dropped = false;  // an error dropped the transfer: 40 until the next [1]
+  size_t expected = 0;
+  std::string data;
+};
+
+class Firmware final : public dialect::Firmware, public vm::Host {
+ public:
+  Firmware(dialect::Runtime& runtime, const dialect::FirmwareOptions& options);
+
+  const dialect::WireForm& wire() const override { return wire_; }
+  void boot(std::vector<std::string>& messages) override;
+  uint64_t cycle_ns() const override { return 50'000; }
+  void cycle(const std::vector<uint32_t>& drive_events) override;
+  std::unique_ptr<dialect::Session> open_session() override;
+  std::vector<dialect::Answer> query(std::string_view line) override { return send(line, false); }
+  dialect::DownloadResult download(const std::vector<uint8_t>& bytes) override;
+  std::string start(std::string_view entry) override;
+  bool running() const override;
+  int32_t program_error() const override;
+  std::string program_error_text() const override;
+  std::string state_summary() const override;
+  std::vector<dialect::ThreadInfo> threads() const override;
+
+  vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override;
+  vm::CommandStatus write(uint32_t command, int32_t index, Value value) override;
+  vm::CommandStatus execute(uint32_t command, int32_t index, const Value* args, uint32_t count) override;
+  uint32_t now_us() override { return static_cast<uint32_t>(runtime_.now_ns() / 1000); }
+
+  // One host line: its messages (split at `;`), each answered, each a cycle when `takes_time`.
+  std::vector<dialect::Answer> send(std::string_view line, bool takes_time, DownloadState* download = nullptr);
+
+ private:
+  // --- firmware.cpp: program store, threads ---
+  std::string install(const std::string& cup, bool store);
+  int32_t run_task(uint32_t thread, int32_t task);
+  int32_t program_status(uint32_t thread) const;
+  void on_thread_error(uint32_t thread);
+  void log_error(int32_t code, int32_t source, int32_t line);
+  vm::Machine* machine() { return program_ ? &program_->machine() : nullptr; }
+  uint32_t running_thread() const;
+  uint32_t next_line(uint32_t thread) const;
+
+  // --- events.cpp: latching, masks, entering thread 1 and leaving ---
+  void latch_events(uint32_t drive_events);
+  void latch(int32_t id);
+  void take_event();
+  void check_event_return();
+  void reset_events();
+
+  // --- program_control.cpp: single steps, breakpoints, the call stack ---
+  int32_t single_step(uint32_t thread, int32_t kind);
+  int32_t set_breaks(uint32_t thread, int32_t value);
+  int32_t clear_stacks(uint32_t thread, bool expression_stack);
+  std::string breaks_list(uint32_t thread) const;
+  std::string call_stack(uint32_t thread) const;
+  void after_cycle(const scheduling::Report& report);
+
+  // --- keywords.cpp side (controller_keywords.cpp): parameters and commands ---
+  int32_t read_key(KeywordId key, int32_t index, int32_t& out);
+  int32_t write_key(KeywordId key, int32_t index, int32_t value);
+  int32_t run_key(KeywordId key, int32_t index, bool has_arg, int32_t arg, uint32_t thread);
+  int32_t status_of(int32_t s, int32_t v);
+
+  // --- command_line.cpp ---
+  dialect::Answer serve_message(std::string_view text, DownloadState* download);
+  dialect::Answer download_message(int32_t step, const std::optional<std::string>& argument, DownloadState& d);
+  dialect::Answer upload(int32_t offset);
+  dialect::Answer info();
+  dialect::Answer line_stack(const Message& m, const Keyword& k);
+
+  dialect::Runtime& runtime_;
+  dialect::SemicolonWire wire_;
+  scheduling::RatePriorities schedule_;
+  drive::Axis* axis_ = nullptr;
+
+  std::optional<std::string> stored_;
+  bool flash_read_ = false;
+  std::unique_ptr<dialect::LoadedProgram> program_;
+  LoadedCup cup_;
+  CupProgram cup_program_;
+
+  std::array<int32_t, kGenDataSize> gen_data_{};
+  std::array<int32_t, 4> timers_{};
+  uint32_t timer_us_ = 0;
+  std::array<int32_t, kThreads + 1> thread_error_{};
+  std::array<int32_t, kThreads + 1> math_result_{};
+  std::vector<int32_t> line_stack_;  // thread 0: the CUP keywords sent over the line
+  std::vector<std::array<int32_t, 3>> err_log_;  // newest first: code, source, line
+  struct Single {
+    bool active = false;
+    bool over = false;  // Type != 0: until the pointer leaves the line at the same call depth
+    uint32_t line = 0, depth = 0;
+  };
+  std::array<Single, kThreads + 1> single_{};
+  std::array<std::vector<uint32_t>, kThreads + 1> breaks_{};  // lines, ascending
+  uint32_t event_mask_ = 0x00FFFFFF;
+  uint32_t latched_ = 0;                 // event IDs latched, one bit each
+  std::vector<uint32_t> event_frames_;   // thread 1's frame count inside each event entered
+  uint32_t previous_inputs_ = 0;         // input levels, bit n-1 for input n
+  bool was_moving_ = false;
+  bool above_max_ = false, below_min_ = false;
+  int32_t motion_mode_ = 0;
+  int32_t speed_ = 10000;
+  int32_t ain_factor_ = 1, ain_offset_ = 0;
+};
+
+}  // namespace uprog::pup

@@ -1,0 +1,110 @@
+// AProgSingle, AProgBreaks, AProgCallStack, AProgClrCall and AProgClrExp. A single step lets the
+// halted thread run in its own turns until it has executed one line (Type 0) or left the line
+// at its call depth (else, stepping over calls and waits), then halts it again. Breakpoints are
+// per thread: the VM traps any thread at the line, and one without the line in its list goes on.
+#include <fmt/core.h>
+
+#include <algorithm>
+
+#include "bytecode/opcodes.h"
+#include "dialects/pup/firmware.h"
+
+namespace uprog::pup {
+
+int32_t Firmware::single_step(uint32_t thread, int32_t kind) {
+  if (program_status(thread) != 3 && program_status(thread) != 4) return 19;
+  vm::Machine& m = program_->machine();
+  single_[thread] = Single{true, kind != 0, next_line(thread), m.frame_count(thread)};
+  m.resume(thread);
+  return 0;
+}
+
+void Firmware::after_cycle(const scheduling::Report& report) {
+  vm::Machine& m = program_->machine();
+  for (uint32_t t = 1; t <= kThreads; ++t) {
+    if (report.has(t, scheduling::ThreadEvent::Breakpoint)) {
+      const uint32_t line = next_line(t);
+      if (!std::binary_search(breaks_[t].begin(), breaks_[t].end(), line)) m.resume(t);
+      else single_[t].active = false;
+    }
+    Single& s = single_[t];
+    if (!s.active) continue;
+    const int32_t status = program_status(t);
+    if (status != 1 && status != 2) {
+      s.active = false;
+      continue;
+    }
+    const bool done = s.over ? status != 2 && m.frame_count(t) <= s.depth && next_line(t) != s.line : report.ran(t);
+    if (done) {
+      m.halt(t);
+      s.active = false;
+    }
+  }
+}
+
+int32_t Firmware::set_breaks(uint32_t thread, int32_t value) {
+  std::vector<uint32_t>& list = breaks_[thread];
+  vm::Machine& m = program_->machine();
+  auto in_use = [&](uint32_t line) {
+    for (uint32_t t = 1; t <= kThreads; ++t) {
+      if (std::binary_search(breaks_[t].begin(), breaks_[t].end(), line)) return true;
+    }
+    return false;
+  };
+  auto unset = [&](uint32_t line) {
+    list.erase(std::find(list.begin(), list.end(), line));
+    if (!in_use(line)) m.clear_breakpoint(cup_.line_pc[line]);
+  };
+  if (value == 0) {
+    while (!list.empty()) unset(list.back());
+    return 0;
+  }
+  const uint32_t line = static_cast<uint32_t>(value < 0 ? -static_cast<int64_t>(value) : value);
+  if (line > cup_program_.lines.size()) return 32;
+  const bool present = std::binary_search(list.begin(), list.end(), line);
+  if (value < 0) {
+    if (present) unset(line);
+    return 0;
+  }
+  if (present) return 0;
+  if (list.size() >= 16) return 34;
+  if (!in_use(line) && !m.set_breakpoint(cup_.line_pc[line])) return 34;
+  list.insert(std::upper_bound(list.begin(), list.end(), line), line);
+  return 0;
+}
+
+// Clearing a stack of a thread that is not running leaves it idle; thread 0's is the host's.
+int32_t Firmware::clear_stacks(uint32_t thread, bool expression_stack) {
+  if (thread == 0) {
+    if (expression_stack) line_stack_.clear();
+    return 0;
+  }
+  if (!program_) return 0;
+  const int32_t s = program_status(thread);
+  if (s == 1 || s == 2 || s == 6) return 17;
+  program_->machine().kill(thread);
+  single_[thread].active = false;
+  return 0;
+}
+
+std::string Firmware::breaks_list(uint32_t thread) const {
+  std::string out;
+  for (uint32_t l : breaks_[thread]) out += (out.empty() ? "" : ",") + std::to_string(l);
+  return out;
+}
+
+// The lines each caller resumes at, innermost first.
+std::string Firmware::call_stack(uint32_t thread) const {
+  std::string out;
+  if (!program_ || program_status(thread) == 0) return out;
+  const vm::Machine& m = program_->machine();
+  const auto& code = m.image().code;
+  for (uint32_t d = 1; d < m.frame_count(thread); ++d) {
+    uint32_t pc = m.frame(thread, d).pc;
+    if (pc < code.size() && bytecode::word_op(code[pc]) == bytecode::Op::EOL) ++pc;
+    out += (out.empty() ? "" : ",") + std::to_string(cup_.line_of(pc));
+  }
+  return out;
+}
+
+}  // namespace uprog::pup

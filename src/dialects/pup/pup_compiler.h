@@ -1,0 +1,23 @@
+// The PUP compiler: a .pup file and the .puh files it includes → a CUP program (cup_file.h),
+// with the PUP place of every CUP line for the debug map, and the diagnostics.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "dialects/pup/cup_file.h"
+#include "support/diagnostic.h"
+
+namespace uprog::pup {
+
+struct PupOutput {
+  CupProgram program;
+  std::vector<Location> places;  // per CUP line, where in the PUP sources it came from
+  std::vector<Diagnostic> diagnostics;
+  bool ok() const;
+};
+
+// `text` is the file's content; `path` names it (for diagnostics and #include).
+PupOutput compile_pup(const std::string& path, const std::string& text, uint64_t created_unix_s);
+PupOutput compile_pup_file(const std::string& path, uint64_t created_unix_s);
+
+}  // namespace uprog::pup
