@@ -50,7 +50,7 @@ class Controller::Drive final : public dialect::Runtime, public drive::ProgramWo
 
   // --- drive::ProgramWords: the program in RAM, for the recorder's global channels ---
   std::optional<Word> find_global(std::string_view name, uint32_t element) const override;
-  bool read_word(uint32_t address, uint32_t& bits) const override;
+  std::span<const Value> memory() const override;
 
   const ControllerOptions options_;
   StateFlash flash_;
@@ -113,12 +113,9 @@ std::optional<drive::ProgramWords::Word> Controller::Drive::find_global(std::str
   return std::nullopt;
 }
 
-bool Controller::Drive::read_word(uint32_t address, uint32_t& bits) const {
+std::span<const Value> Controller::Drive::memory() const {
   const dialect::LoadedProgram* program = firmware_->loaded_program();
-  Value v;
-  if (program == nullptr || !program->machine().read_memory(address, v)) return false;
-  bits = static_cast<uint32_t>(v.i);
-  return true;
+  return program != nullptr ? program->machine().memory() : std::span<const Value>{};
 }
 
 void Controller::Drive::advance_ns(uint64_t ns) {

@@ -122,20 +122,17 @@ void Axis::clear_fault_cause(std::string_view name) { fault_causes_ &= ~fault_bi
 
 // ---------------------------------------------------------------- motion commands
 
-bool Axis::modulo_active() const { return params_.modulo_high_counts > params_.modulo_low_counts; }
-
 double Axis::user_to_internal(int64_t user) const {
   return static_cast<double>(user) - offset_counts_;
 }
 
-int32_t Axis::internal_to_user(double internal) const {
-  const double user = std::round(internal + offset_counts_);
+int32_t Axis::internal_to_user_slow(double exact) const {
+  const double user = std::round(exact);
   if (modulo_active()) {
     const double low = params_.modulo_low_counts;
     const double range = static_cast<double>(params_.modulo_high_counts) - low;
     return static_cast<int32_t>(low + floor_mod(user - low, range));
   }
-  // A 32-bit position counter wraps, as a real drive's does.
   return static_cast<int32_t>(static_cast<uint32_t>(static_cast<int64_t>(floor_mod(user, 4294967296.0))));
 }
 
@@ -271,25 +268,9 @@ void Axis::stop() { stop_with(params_.stop_decel_counts_per_s2); }
 
 // ---------------------------------------------------------------- feedback
 
-int32_t Axis::position() const { return internal_to_user(motor_state_.position_counts); }
-
 void Axis::set_position(int32_t position_counts) {
   offset_counts_ = position_counts - std::round(motor_state_.position_counts);
 }
-
-int32_t Axis::velocity() const {
-  return static_cast<int32_t>(std::lround(motor_state_.velocity_counts_per_s));
-}
-
-int32_t Axis::position_error() const {
-  return static_cast<int32_t>(std::lround(ref_.position_counts - motor_state_.position_counts));
-}
-
-int32_t Axis::reference_velocity() const {
-  return static_cast<int32_t>(std::lround(ref_.velocity_counts_per_s));
-}
-
-int32_t Axis::reference_position() const { return internal_to_user(ref_.position_counts); }
 
 int32_t Axis::motion_status() const {
   if (!servo_ready_) return 1;  // the motor is off (or still enabling): nothing is commanded

@@ -12,8 +12,9 @@
 #include "drive/motor_model.h"
 #include "drive/parameters.h"
 #include "drive/profile.h"
-#include "drive/recorder.h"
 #include "drive/pt_table.h"
+#include "drive/recorder.h"
+#include "drive/rounding.h"
 #include "drive/servo_loop.h"
 #include "drive/smoothing.h"
 
@@ -93,12 +94,15 @@ class Axis {
   float torque_command() const { return torque_command_a_; }
 
   // --- feedback and status ---
-  int32_t position() const;                 // PX
+  // Inline: a program polls them and the recorder samples them every servo cycle.
+  int32_t position() const { return internal_to_user(motor_state_.position_counts); }  // PX
   void set_position(int32_t position_counts);
-  int32_t velocity() const;                 // VX
-  int32_t position_error() const;           // PE
-  int32_t reference_velocity() const;       // DV[2]
-  int32_t reference_position() const;       // DV[3]
+  int32_t velocity() const { return static_cast<int32_t>(round_half_away(motor_state_.velocity_counts_per_s)); }  // VX
+  int32_t position_error() const {  // PE
+    return static_cast<int32_t>(round_half_away(ref_.position_counts - motor_state_.position_counts));
+  }
+  int32_t reference_velocity() const { return static_cast<int32_t>(round_half_away(ref_.velocity_counts_per_s)); }  // DV[2]
+  int32_t reference_position() const { return internal_to_user(ref_.position_counts); }  // DV[3]
   float current_command() const { return static_cast<float>(current_command_a_); }  // DV[1]
   int32_t motion_status() const;            // MS: 0 settled in TR, 1 stationary or off, 2 moving
   uint32_t status_register() const;         // SR, without the program's bits 12 and 29
@@ -162,8 +166,15 @@ class Axis {
  private:
   double dt_s() const { return params_.servo_period_us * 1e-6; }
   double user_to_internal(int64_t user) const;
-  int32_t internal_to_user(double internal) const;
-  bool modulo_active() const;
+  // A 32-bit position counter wraps, as a real drive's does: modulo 2^32 of the rounded count.
+  int32_t internal_to_user(double internal) const {
+    const double exact = internal + offset_counts_;
+    if (!modulo_active() && std::fabs(exact) < kExactRoundingLimit)
+      return static_cast<int32_t>(static_cast<uint32_t>(round_half_away(exact)));
+    return internal_to_user_slow(exact);
+  }
+  int32_t internal_to_user_slow(double exact) const;  // modulo counts, or beyond 2^62
+  bool modulo_active() const { return params_.modulo_high_counts > params_.modulo_low_counts; }
   void latch_fault(uint32_t bits);
   void motor_off();
   Status begin_motion();

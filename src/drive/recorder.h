@@ -2,14 +2,18 @@
 // taken when it is armed, around a trigger with a pre-trigger share (docs/recorder.md). The axis
 // calls on_cycle() after each step while the recorder is active; nothing there allocates.
 #pragma once
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "drive/recording.h"
+#include "support/value.h"
 
 namespace uprog::drive {
 
@@ -29,6 +33,7 @@ enum class Signal : uint8_t {
   kMotionStatus,        // MS
   kAuxPosition,         // PY, counts
 };
+constexpr size_t kSignalCount = static_cast<size_t>(Signal::kAuxPosition) + 1;
 
 struct SignalInfo {
   Signal signal;
@@ -49,8 +54,9 @@ class ProgramWords {
   };
   // A global's element by name; nullopt when the program has no such global or element.
   virtual std::optional<Word> find_global(std::string_view name, uint32_t element) const = 0;
-  // The word's bits; false without a program or outside its memory.
-  virtual bool read_word(uint32_t address, uint32_t& bits) const = 0;
+  // The data memory's words (architecture.md, "The data memory"); empty without a program.
+  // Asked once per sample, so that a program's channels cost a load each.
+  virtual std::span<const Value> memory() const = 0;
 
  protected:
   ~ProgramWords() = default;
@@ -140,14 +146,25 @@ class Recorder {
 
  private:
   uint32_t read_bits(const Channel& channel, const Axis& axis) const;
+  std::span<const Value> program_memory() const;
+  static uint32_t word_bits(std::span<const Value> memory, uint32_t address);  // 0 outside it
   double read_value(const Channel& channel, const Axis& axis) const;
   bool trigger_fired(const Axis& axis);
+  void plan_sampling();
   void take_sample(const Axis& axis);
 
   RecorderSettings settings_;
   RecorderState state_ = RecorderState::kIdle;
   const ProgramWords* words_ = nullptr;
   std::vector<uint32_t> memory_;  // length x channels words, sample-major
+  // The sampling plan (plan_sampling): the signals read, the channel each goes into, the
+  // channels of program words (channel, address), and channels that repeat an earlier one's
+  // signal (to, from).
+  uint32_t row_words_ = 0;       // a sample of every channel
+  uint32_t needed_signals_ = 0;  // bit n: Signal n
+  std::array<uint8_t, kSignalCount> channel_of_signal_{};
+  std::vector<std::pair<uint8_t, uint32_t>> global_channels_;
+  std::vector<std::pair<uint8_t, uint8_t>> repeated_channels_;
   uint32_t pre_ = 0;              // samples before the trigger sample
   uint64_t pre_taken_ = 0;        // samples written into the pre-trigger ring
   uint32_t post_taken_ = 0;       // samples from the trigger sample on

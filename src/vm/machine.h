@@ -4,6 +4,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <span>
 
 #include "bytecode/image_view.h"
 #include "bytecode/verifier.h"
@@ -115,6 +116,8 @@ class Machine {
   // The data memory: every global's words in table order, global 0's element 0 at address 0,
   // as LDM and STM see it. Checked: false when the address is past the last word.
   uint32_t memory_words() const { return memory_words_; }
+  // All of it, read-only, for a reader that samples it (the drive's recorder); empty unloaded.
+  std::span<const Value> memory() const { return {memory_, loaded_ ? memory_words_ : 0u}; }
   bool read_memory(uint32_t address, Value& out) const;
   bool write_memory(uint32_t address, Value value);
   // Locals of a frame, for the debugger.

@@ -20,7 +20,7 @@ const char* const kSpecCommands[] = {
 // host drivers send.
 const char* const kReferenceCommands[] = {"HM", "CA", "QP", "TR", "TI", "WS", "EO", "LL", "HL", "FP",
                                           "FV", "VR", "SN", "MP", "PT", "PY", "PM", "IQ", "HX",
-                                          "RC", "RP"};  // issue 17: the recorder's
+                                          "RC", "RP", "WI", "BH"};  // issue 17: the recorder's
 
 const CommandInfo& get(const char* name) {
   const CommandInfo* c = find_command(name);

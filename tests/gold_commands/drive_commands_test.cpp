@@ -114,7 +114,7 @@ TEST(gold_commands_mapping, EveryCommandIsReadWrittenOrExecuted) {
       EXPECT_EQ(v.i, static_cast<int32_t>(s.read_back)) << c.name;
     }
   }
-  EXPECT_EQ(served, 64);  // with the recorder's RC and RP (issue 17)
+  EXPECT_EQ(served, 66);  // with the recorder's RC, RP, WI and BH (issue 17)
   // The actions the drive serves.
   EXPECT_EQ(f.commands.execute(id("ST"), 0), kDriveOk);
   f.write_int("UM", 5);

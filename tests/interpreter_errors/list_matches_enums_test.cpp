@@ -9,6 +9,7 @@
 #include "dialects/gold/dialect.h"
 #include "dialects/gold/drive_commands.h"
 #include "dialects/gold/interpreter_errors.h"
+#include "dialects/gold/recorder_commands.h"
 #include "gold_firmware/gold_drive.h"
 #include "vm/run_error.h"
 
@@ -38,7 +39,8 @@ const EnumValue kEnumValues[] = {
     ENUM_VALUE(NotHalted),        ENUM_VALUE(BadArguments),    ENUM_VALUE(Storage),
     ENUM_VALUE(NoStoredProgram),  ENUM_VALUE(LineDidNotFinish), ENUM_VALUE(NoSuchVariable),
     ENUM_VALUE(NoDownload),       ENUM_VALUE(DownloadSize),    ENUM_VALUE(DownloadChunk),
-    ENUM_VALUE(DownloadRefused),
+    ENUM_VALUE(DownloadRefused),  ENUM_VALUE(RecorderBusy),    ENUM_VALUE(RecorderNoSignals),
+    ENUM_VALUE(RecorderNoData),
 };
 #undef ENUM_VALUE
 

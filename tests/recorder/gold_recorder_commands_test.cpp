@@ -18,7 +18,8 @@ TEST(gold_recorder_commands, IdsAreTheTablesAndServed) {
   EXPECT_EQ(id("RR"), 56);
   EXPECT_EQ(id("RC"), 76);
   EXPECT_EQ(id("RP"), 77);
-  for (const char* n : {"RV", "RL", "RG", "RR", "RC", "RP"}) EXPECT_TRUE(RecorderCommands::serves(id(n))) << n;
+  EXPECT_EQ(id("WI"), 78);
+  for (const char* n : {"RV", "RL", "RG", "RR", "RC", "RP", "WI"}) EXPECT_TRUE(RecorderCommands::serves(id(n))) << n;
   EXPECT_FALSE(RecorderCommands::serves(id("PX")));
 }
 

@@ -251,12 +251,8 @@ class FakeWords final : public ProgramWords {
     if (name == "cnt" && element == 0) return Word{0, false};
     return std::nullopt;
   }
-  bool read_word(uint32_t address, uint32_t& bits) const override {
-    if (address >= 4) return false;
-    bits = words[address];
-    return true;
-  }
-  uint32_t words[4] = {};
+  std::span<const Value> memory() const override { return words; }
+  Value words[4] = {};
 };
 
 TEST(recorder_trigger, ProgramGlobalsAsChannelAndTriggerSource) {
@@ -279,9 +275,9 @@ TEST(recorder_trigger, ProgramGlobalsAsChannelAndTriggerSource) {
   s.trigger.level = 5;
   ASSERT_TRUE(b.axis.recorder().arm(s, &why)) << why;
   for (int32_t i = 0; i < 20; ++i) {
-    words.words[0] = static_cast<uint32_t>(i);
+    words.words[0] = Value::of_int(i);
     const float f = 0.5f * static_cast<float>(i);
-    std::memcpy(&words.words[3], &f, 4);
+    words.words[3] = Value::of_float(f);
     b.axis.step();
   }
   const std::optional<Recording> r = b.axis.recorder().recording(50);

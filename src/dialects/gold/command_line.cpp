@@ -2,8 +2,11 @@
 // gold::compile_line into a tiny image and run to its end on a machine of its own, which sees
 // the loaded program's globals (copied in before, and back after).
 #include <algorithm>
+#include <charconv>
+#include <optional>
 
 #include "dialects/gold/firmware.h"
+#include "dialects/gold/interpreter_errors.h"
 #include "dialects/gold/number_format.h"
 #include "vm/run_error.h"
 
@@ -23,6 +26,32 @@ vm::MachineConfig line_config() {
   c.locals = 64;
   c.breakpoints = 0;
   return c;
+}
+
+// "BH=n" (any case, blanks around '='): n's text, else nullopt. BH takes a number as host tools
+// send it (decimal or 0x hexadecimal, MAN-SIMSW 7.4.7: "BH=0x4000"), not an expression.
+std::optional<std::string_view> upload_request(std::string_view text) {
+  if (text.size() < 2 || (text[0] | 0x20) != 'b' || (text[1] | 0x20) != 'h') return std::nullopt;
+  text.remove_prefix(2);
+  while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+  if (text.empty()) return std::string_view{};
+  if (text.front() != '=') return std::nullopt;
+  text.remove_prefix(1);
+  while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+  while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
+  return text;
+}
+
+std::optional<int32_t> upload_number(std::string_view digits) {
+  int base = 10;
+  if (digits.size() > 2 && digits[0] == '0' && (digits[1] | 0x20) == 'x') {
+    base = 16;
+    digits.remove_prefix(2);
+  }
+  uint32_t n = 0;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), n, base);
+  if (digits.empty() || error != std::errc() || end != digits.data() + digits.size()) return std::nullopt;
+  return static_cast<int32_t>(n);
 }
 
 }  // namespace
@@ -72,8 +101,26 @@ void Firmware::download_expression(std::string_view expression, DownloadReceiver
   if (!r.ok) answers.push_back(error_answer(r.storage_failed ? kErrorStorage : kErrorDownloadRefused, r.error));
 }
 
+void Firmware::upload(std::string_view argument, std::vector<Answer>& answers) {
+  const std::optional<int32_t> n = upload_number(argument);
+  if (!n) {
+    answers.push_back(error_answer(kErrorSyntax, "Command syntax error: BH=n takes a number"));
+    return;
+  }
+  std::string record;
+  if (const int32_t e = drive_commands_->recorder().upload(*n, record)) {
+    answers.push_back(error_answer(e, interpreter_error_text(e)));
+    return;
+  }
+  answers.push_back(Answer{std::move(record), 0});
+}
+
 void Firmware::expression(std::string_view text, std::vector<Answer>& answers) {
   if (program_control(std::string(text), answers)) return;
+  if (const std::optional<std::string_view> argument = upload_request(text)) {
+    upload(*argument, answers);
+    return;
+  }
   // A command that answers text (VR) is no expression: its text is the answer.
   if (const CommandInfo* c = find_command(text); c != nullptr && (c->flags & kText) != 0) {
     if (auto answer = drive_commands_->text(c->id)) answers.push_back(Answer{std::move(*answer), 0});

@@ -108,6 +108,8 @@ constexpr std::array kCommands{
     CommandInfo{"HX", 75, kI, 0, 0, 0, 0, 1, "hexadecimal answers: 1 on, 0 off"},
     CommandInfo{"RC", 76, kI, 0, 0, 0, 0, 255, "recorder: bit n-1 records RV[n]"},
     CommandInfo{"RP", 77, kI, kIx, 0, 9, kIntMin, kIntMax, "recorder: [0] quantum, [1] trigger signal, [2] pre-trigger %, [3] trigger type, [4] [5] levels, [6] [7] input polarity and mask, [8] [9] upload range"},
+    CommandInfo{"WI", 78, kI, kR | kIx, 21, 21, kIntMin, kIntMax, "WI[21]: samples per signal the recorder holds"},
+    CommandInfo{"BH", 79, kI, kHostAct, 0, 0, 0, 0, "BH=n: upload the recorded signal RC&n, hexadecimal (command_line.cpp)"},
 };
 
 // find_command(id) indexes the table directly: row i must hold id i + 1.

@@ -15,7 +15,7 @@ enum Id : uint16_t {
   MO = 1, SO, UM, PA, PR, SP, AC, DC, SD, SF, JV, BG, ST, TC, PX, VX, PE, DV, MS, ER, VH, VL, XM,
   KP, KI, KV, CL, PL, IL, IP, IB, OP, OB, MF, SR, TM, TS, UI, UF, SV, LD, RS, MI, XQ, HP, XC, KL,
   PS, CC, LS, EC, DB, RV, RL, RG, RR,
-  HM, CA, QP, TR, TI, WS, EO, LL, HL, FP, FV, VR, SN, MP, PT, PY, PM, IQ, HX, RC, RP,
+  HM, CA, QP, TR, TI, WS, EO, LL, HL, FP, FV, VR, SN, MP, PT, PY, PM, IQ, HX, RC, RP, WI, BH,
 };
 
 bool from_reference(uint16_t id) { return id >= HM; }

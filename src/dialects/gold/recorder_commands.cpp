@@ -7,14 +7,15 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
+#include <cstdio>
 
 #include "dialects/gold/recorder_signals.h"
 
 namespace uprog::gold {
 namespace {
 
-// Ids of commands.cpp (gold_recorder_commands_test checks them against the names).
-enum Id : uint16_t { RV = 53, RL = 54, RG = 55, RR = 56, RC = 76, RP = 77 };
+using enum RecorderCommands::Id;
 
 constexpr int32_t kErrorOutOfRange = 21;       // as drive_commands.h's
 constexpr int32_t kErrorNoSuchVariable = 209;  // as interpreter_errors.h's: DB##RV[n]'s name is gone
@@ -32,15 +33,30 @@ bool rp_in_range(int32_t index, int32_t v) {
   }
 }
 
+// BH's record (MAN-SIMSW 7.4.7's table; table 8-8 of the Harmonica manual): each field as hexadecimal digits, most
+// significant nibble first.
+void append_hex(std::string& out, uint32_t value, int digits) {
+  char buf[9];
+  std::snprintf(buf, sizeof buf, "%0*x", digits, value);
+  out.append(buf, static_cast<size_t>(digits));
+}
+
+// A float signal goes up as whole micro-units with the factor 1e-6 ("provides the scaling
+// multiplier to relate it to user units"); an integer signal as it is, with the factor 1.
+constexpr double kFloatUploadUnit = 1e-6;
+constexpr uint16_t kMaxUploadItems = 0xFFFF;  // the record's data length is one word
+
+uint32_t upload_item(double value, bool is_float) {
+  if (!is_float) return static_cast<uint32_t>(static_cast<int32_t>(value));
+  const double units = std::clamp(std::round(value / kFloatUploadUnit), -2147483648.0, 2147483647.0);
+  return static_cast<uint32_t>(static_cast<int32_t>(units));
+}
+
 bool settings_command(uint16_t id, int32_t index) {
   return id == RC || id == RV || id == RL || id == RG || (id == RP && index < 8);
 }
 
 }  // namespace
-
-bool RecorderCommands::serves(uint16_t id) {
-  return id == RV || id == RL || id == RG || id == RR || id == RC || id == RP;
-}
 
 uint32_t RecorderCommands::report() const {
   switch (axis_.recorder().state()) {
@@ -59,6 +75,7 @@ int32_t RecorderCommands::read(uint16_t id, int32_t index, Value& out) const {
     case RG: v = gap_; break;
     case RP: v = rp_[static_cast<size_t>(index)]; break;
     case RR: v = static_cast<int32_t>(report()); break;
+    case WI: v = samples_recorded(); break;
     default: return kErrorOutOfRange;
   }
   out = Value::of_int(v);
@@ -111,6 +128,45 @@ uint32_t RecorderCommands::status_bits() const {
     case drive::RecorderState::kDone: return kBit16;             // valid data ready
   }
   return 0;
+}
+
+int32_t RecorderCommands::samples_recorded() const {
+  return static_cast<int32_t>(axis_.recorder().samples_recorded());
+}
+
+int32_t RecorderCommands::upload(int32_t n, std::string& out) const {
+  const drive::Recorder& recorder = axis_.recorder();
+  // "To execute a BH command, valid data must be stored in the recorder."
+  if (recorder.state() != drive::RecorderState::kDone) return kErrorRecorderNoData;
+  // "BH=16 will return an error because BH&RC=0"; with several bits "the variable with the
+  // lowest value will be uploaded". RC cannot have changed since: setting it invalidates.
+  const uint32_t bits = static_cast<uint32_t>(rc_) & static_cast<uint32_t>(n);
+  if (bits == 0) return kErrorOutOfRange;
+  const uint32_t bit = bits & (~bits + 1);
+  const auto channel = static_cast<size_t>(std::popcount(static_cast<uint32_t>(rc_) & (bit - 1)));
+  const std::optional<drive::Recording> recording = recorder.recording(axis_.period_us());
+  const drive::RecordedChannel& signal = recording->channels[channel];
+  // RP[8]..RP[9]: the first index and one past the last ("RP[9] must always equal or be less
+  // than the length of the recorded signal"); both 0: the whole signal.
+  size_t first = 0, end = signal.values.size();
+  if (rp_[8] != 0 || rp_[9] != 0) {
+    first = static_cast<size_t>(rp_[8]);
+    end = static_cast<size_t>(rp_[9]);
+    if (first >= end || end > signal.values.size()) return kErrorOutOfRange;
+  }
+  if (end - first > kMaxUploadItems) return kErrorOutOfRange;
+  const bool variable = signals_[static_cast<size_t>(std::countr_zero(bit))] == kRecorderVariableSignal;
+  const uint32_t type = (variable ? 2u : 0u) + (signal.is_float ? 1u : 0u);
+  const float factor = signal.is_float ? static_cast<float>(kFloatUploadUnit) : 1.0f;
+  out.clear();
+  out.reserve(20 + (end - first) * 8);
+  append_hex(out, type, 2);
+  append_hex(out, 8, 2);  // data width: long integers
+  append_hex(out, static_cast<uint32_t>(end - first), 4);
+  append_hex(out, recorder.settings().gap_cycles, 4);  // the sample period in TS
+  append_hex(out, std::bit_cast<uint32_t>(factor), 8);
+  for (size_t i = first; i < end; ++i) append_hex(out, upload_item(signal.values[i], signal.is_float), 8);
+  return kErrorOk;
 }
 
 int32_t RecorderCommands::channel_of(size_t slot, drive::Channel& out) const {
