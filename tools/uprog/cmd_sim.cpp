@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 
@@ -49,6 +50,10 @@ bool install_program(controller::Controller& drive, const SimOptions& options) {
     if (!result.ok) {
       fmt::print(stderr, "uprog sim: {}: {}\n", path, result.error);
       return false;
+    }
+    // `uprog build`'s debug map beside the stored form (PUP: X.cup.json), for the debugger.
+    if (std::filesystem::exists(path + ".json")) {
+      if (const auto map = read_text_file(path + ".json", &error)) drive.firmware().set_debug_map(*map);
     }
   } else {
     std::vector<Diagnostic> diagnostics;

@@ -31,10 +31,11 @@ void Firmware::set_debug_map(std::string_view text) {
 void Firmware::apply_debug_map(const std::string& cup, bytecode::Image& image) const {
   if (!debug_map_ || cup != debug_map_cup_) return;
   const std::vector<Location>& places = debug_map_->places;
+  if (places.size() != image.lines.size()) return;  // a map of another build: CUP lines it is
   std::vector<bytecode::LineEntry> lines;
   for (size_t i = 0; i < image.lines.size(); ++i) {
     const bytecode::LineEntry& e = image.lines[i];
-    if (e.line == 0 || e.line > places.size()) continue;
+    if (e.line == 0) continue;
     if (i + 1 < image.lines.size() && image.lines[i + 1].code == e.code) continue;
     const Location& at = places[e.line - 1];
     const auto line = static_cast<uint32_t>(at.line);
