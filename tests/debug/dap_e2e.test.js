@@ -273,3 +273,39 @@ test('a PUP session on two threads', async () => {
     await client.stop();
   }
 });
+
+// PUP through its stored form: `uprog build` writes X.cup and its debug map X.cup.json, `uprog sim
+// --program X.cup` reads both, and an attached debugger stops at the PUP line while the command
+// line reports the thread at its breakpoint (AProgStatus 4).
+test('attach to a PUP program that uprog sim runs from its .cup', async () => {
+  const { execFileSync } = require('node:child_process');
+  const fs = require('node:fs');
+  const os = require('node:os');
+  const pup = path.resolve(__dirname, 'programs', 'two_threads.pup');
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'uprog-pup-'));
+  const cup = path.join(dir, 'two_threads.cup');
+  execFileSync(uprog, ['build', pup, '-o', cup]);
+  assert.ok(fs.existsSync(cup + '.json'), 'no debug map beside the .cup');
+  const { sim, line, dap } = await startSim(cup);
+  const host = await commandLine(line);
+  const client = new DebugClient(uprog, 'dap', 'uprog');
+  try {
+    assert.strictEqual(await host.ask('AProgRun[1],1'), ';');
+    await client.start();
+    await client.initializeRequest();
+    await Promise.all([client.attachRequest({ host: '127.0.0.1', port: dap }), client.waitForEvent('initialized')]);
+    const set = await client.setBreakpointsRequest({ source: { path: pup }, breakpoints: [{ line: 12 }] });
+    assert.strictEqual(set.body.breakpoints[0].verified, true);
+    const [, stopped] = await Promise.all([client.configurationDoneRequest(), client.waitForEvent('stopped')]);
+    assert.strictEqual(stopped.body.reason, 'breakpoint');
+    const trace = await client.stackTraceRequest({ threadId: stopped.body.threadId });
+    assert.deepStrictEqual(trace.body.stackFrames.map((f) => [f.name, f.line]), [['task 2', 12]]);
+    assert.strictEqual(await host.ask('AProgStatus[2]'), '4;');
+    assert.strictEqual(await host.ask('AProgStatus[1]'), '3;');
+  } finally {
+    await client.stop();
+    host.close();
+    sim.kill();
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+});
