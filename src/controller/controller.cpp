@@ -36,7 +36,11 @@ class Controller::Drive final : public dialect::Runtime, public drive::ProgramWo
   drive::Axis& axis(std::size_t index) override { return *axes_.at(index); }
   dialect::Flash& flash() override { return flash_; }
   uint64_t now_ns() const override { return now_ns_; }
-  void advance_ns(uint64_t ns) override;
+  // A host line's time (dialect::Runtime): none while the debugger holds the program.
+  void advance_ns(uint64_t ns) override {
+    if (lines_take_time_) advance_by(ns);
+  }
+  void advance_by(uint64_t ns);
   // From the time given so far to the firmware's next cycle (0 when a reboot made it due already:
   // run_until() then runs it).
   uint64_t until_next_cycle_ns() const { return next_cycle_ns_ > target_ns_ ? next_cycle_ns_ - target_ns_ : 0; }
@@ -60,6 +64,7 @@ class Controller::Drive final : public dialect::Runtime, public drive::ProgramWo
   std::vector<std::string> boot_messages_;
   std::vector<LogEntry> log_;
   std::vector<std::string> output_;
+  bool lines_take_time_ = true;
 
  private:
   void run_until(uint64_t target_ns);
@@ -118,7 +123,7 @@ std::span<const Value> Controller::Drive::memory() const {
   return program != nullptr ? program->machine().memory() : std::span<const Value>{};
 }
 
-void Controller::Drive::advance_ns(uint64_t ns) {
+void Controller::Drive::advance_by(uint64_t ns) {
   target_ns_ += ns;
   run_until(target_ns_);
 }
@@ -191,6 +196,7 @@ bool Controller::download_source_file(const std::string& path, std::vector<Diagn
   diagnostics = std::move(out.diagnostics);
   if (!out.ok()) return false;
   const DownloadResult r = download(out.stored_form);
+  if (r.ok && !out.debug_map.empty()) firmware().set_debug_map(out.debug_map);
   if (!r.ok) {
     Diagnostic d;
     d.scheme = "image";
@@ -204,8 +210,9 @@ bool Controller::download_source_file(const std::string& path, std::vector<Diagn
 std::string Controller::start_program(std::string_view entry) { return drive_->firmware_->start(entry); }
 void Controller::reboot() { drive_->reboot(); }
 
-void Controller::advance(uint64_t duration_us) { drive_->advance_ns(duration_us * 1000); }
-void Controller::advance_ns(uint64_t duration_ns) { drive_->advance_ns(duration_ns); }
+void Controller::advance(uint64_t duration_us) { drive_->advance_by(duration_us * 1000); }
+void Controller::advance_ns(uint64_t duration_ns) { drive_->advance_by(duration_ns); }
+void Controller::set_lines_take_time(bool on) { drive_->lines_take_time_ = on; }
 uint64_t Controller::ns_to_next_cycle() const { return drive_->until_next_cycle_ns(); }
 uint64_t Controller::now_us() const { return drive_->now_ns() / 1000; }
 uint64_t Controller::now_ns() const { return drive_->now_ns(); }

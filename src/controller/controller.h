@@ -75,6 +75,9 @@ class Controller {
   // How long until the firmware's next cycle: advance_ns() by it runs that cycle and no more (the
   // debugger: a program that stops in that cycle stops with time standing at it).
   uint64_t ns_to_next_cycle() const;
+  // Off while a debugger holds the program: the hosts' lines take no virtual time, so nothing
+  // moves while it stands still (on again when it runs).
+  void set_lines_take_time(bool on);
   uint64_t now_us() const;
   uint64_t now_ns() const;
   void set_input_level(int input, bool high);

@@ -24,7 +24,9 @@ std::string dumped(const nlohmann::json& m) {
 
 DapServer::DapServer(DapOptions options, std::function<void(const std::string&)> send)
     : options_(std::move(options)), send_(std::move(send)) {}
-DapServer::~DapServer() = default;
+DapServer::~DapServer() {
+  if (attached_) detach();  // a client gone without disconnect leaves the program running on
+}
 
 void DapServer::handle(const std::string& message) {
   if (done_) return;  // after disconnect's response nothing more is said
@@ -42,6 +44,7 @@ void DapServer::handle(const std::string& message) {
           {{"category", "stderr"}, {"output", "a message that is not a request was ignored\n"}});
     return;
   }
+  if (request["command"] == "initialize") initialize_request_ = message;
   try {
     dispatch(request);
   } catch (const json::exception& e) {
@@ -55,6 +58,7 @@ void DapServer::dispatch(const json& r) {
   const std::string command = r["command"];
   if (command == "initialize") return initialize(r);
   if (command == "launch") return launch(r);
+  if (command == "attach") return attach(r);
   if (command == "disconnect") return end(r, false);
   if (command == "terminate") return end(r, true);
   if (!debugger_) {
@@ -81,8 +85,6 @@ void DapServer::dispatch(const json& r) {
   if (command == "stepIn") return step(r, StepKind::In);
   if (command == "stepOut") return step(r, StepKind::Out);
   if (command == "pause") return pause(r);
-  if (command == "attach")
-    return fail(r, "attach to a running `uprog sim` is not offered yet: use launch");
   fail(r, "unknown request '" + command + "'");
 }
 
@@ -133,6 +135,8 @@ void DapServer::initialize(const json& r) {
 
 void DapServer::launch(const json& r) {
   if (drive_) return fail(r, "a program is already launched");
+  if (options_.attach_target != nullptr)
+    return fail(r, "this is a drive's own debugger: attach to the program it runs");
   const json args = r.value("arguments", json::object());
   const std::string program = args.value("program", "");
   if (program.empty()) return fail(r, "launch needs \"program\": the path of the source file");
@@ -159,7 +163,8 @@ void DapServer::launch(const json& r) {
       !why.empty()) {
     return fail(r, why);
   }
-  drive_ = std::move(drive);
+  owned_drive_ = std::move(drive);
+  drive_ = owned_drive_.get();
   debugger_ = std::make_unique<Debugger>(*drive_);
   debugger_->program_changed();
   inputs_ = std::move(*inputs);
@@ -171,6 +176,80 @@ void DapServer::launch(const json& r) {
   for (const dialect::ThreadInfo& t : debugger_->threads()) {
     event("thread", {{"reason", "started"}, {"threadId", thread_id(t.thread)}});
   }
+}
+
+// `uprog sim --dap`: the program this process's drive runs. `uprog dap`: a connection to such a
+// sim, which answers this request and all that follow (the tool relays them).
+void DapServer::attach(const json& r) {
+  if (drive_) return fail(r, "a program is already being debugged");
+  if (options_.attach_target == nullptr) {
+    const json args = r.value("arguments", json::object());
+    const std::string host = args.value("host", "127.0.0.1");
+    const int64_t port = args.value("port", int64_t{0});
+    if (!options_.connect_remote) return fail(r, "attach: no drive to attach to here");
+    if (port < 1 || port > 65535)
+      return fail(r, "attach needs \"port\": the debugger port of a `uprog sim --dap`");
+    std::string error;
+    if (!options_.connect_remote(host, static_cast<uint16_t>(port), error))
+      return fail(r, "attach: " + error);
+    relay_start_ = {initialize_request_, dumped(r)};
+    return;
+  }
+  drive_ = options_.attach_target;
+  attached_ = true;
+  debugger_ = std::make_unique<Debugger>(*drive_);
+  debugger_->program_changed();
+  respond(r);
+  event("initialized");
+  for (const dialect::ThreadInfo& t : debugger_->threads()) {
+    event("thread", {{"reason", "started"}, {"threadId", thread_id(t.thread)}});
+  }
+}
+
+void DapServer::detach() {
+  if (!attached_ || !debugger_) return;
+  debugger_->clear_breakpoints();
+  debugger_->set_break_on_error(false);
+  debugger_->resume();
+  drive_->set_lines_take_time(true);
+  debugger_.reset();
+  attached_ = false;
+}
+
+std::vector<std::string> DapServer::relay_start() {
+  std::vector<std::string> out;
+  out.swap(relay_start_);
+  relayed_ = relayed_ || !out.empty();
+  return out;
+}
+
+bool DapServer::keep_time(uint64_t ns) {
+  if (!attached_ || !debugger_ || ended_) return false;
+  if (debugger_->state() == RunState::Ended) {
+    report();  // said once configured; till then, and after, the drive's time runs as usual
+    return false;
+  }
+  if (debugger_->state() == RunState::Running) debugger_->run(ns);
+  report();
+  if (attached_) drive_->set_lines_take_time(debugger_->state() != RunState::Stopped);
+  return true;
+}
+
+void DapServer::after_host_line() {
+  if (!attached_ || !debugger_ || ended_) return;
+  debugger_->program_changed();
+  if (debugger_->resumed_elsewhere()) {
+    // XC, DB##GO or the like from a terminal: the program goes on without a continue request.
+    references_.clear();
+    stop_reported_ = false;
+    event("continued", {{"threadId", 1}, {"allThreadsContinued", true}});
+  }
+  report();
+  if (attached_) drive_->set_lines_take_time(debugger_->state() != RunState::Stopped);
+}
+
+void DapServer::program_output(const std::string& text) {
+  if (attached_ && !done_) event("output", {{"category", "stdout"}, {"output", text}});
 }
 
 void DapServer::set_breakpoints(const json& r) {
@@ -272,6 +351,14 @@ void DapServer::pause(const json& r) {
 
 void DapServer::end(const json& r, bool terminate) {
   respond(r);
+  if (attached_) {
+    // The drive is not this session's to end: detaching leaves its program running on.
+    detach();
+    ended_ = true;
+    if (terminate) return event("terminated");
+    done_ = true;
+    return;
+  }
   if (terminate && !ended_ && debugger_) {
     ended_ = true;
     event("terminated");
@@ -306,13 +393,16 @@ bool DapServer::poll(uint64_t budget_ns) {
 
 void DapServer::flush_output() {
   if (!drive_) return;
-  for (const controller::LogEntry& e : drive_->take_log()) {
-    event("output", {{"category", "console"},
-                     {"output", fmt::format("[{:.3f} ms] {}\n",
-                                            static_cast<double>(e.time_us) / 1000.0, e.text)}});
+  // An attached drive's log and output are its hosts' (the sim passes its output on).
+  if (!attached_) {
+    for (const controller::LogEntry& e : drive_->take_log()) {
+      event("output", {{"category", "console"},
+                       {"output", fmt::format("[{:.3f} ms] {}\n",
+                                              static_cast<double>(e.time_us) / 1000.0, e.text)}});
+    }
+    for (const std::string& text : drive_->take_output())
+      event("output", {{"category", "stdout"}, {"output", text}});
   }
-  for (const std::string& text : drive_->take_output())
-    event("output", {{"category", "stdout"}, {"output", text}});
   if (debugger_) {
     for (const std::string& m : debugger_->take_messages())
       event("output", {{"category", "console"}, {"output", m + "\n"}});
@@ -344,6 +434,7 @@ void DapServer::report() {
     }
     event("exited", {{"exitCode", exit_code}});
     event("terminated");
+    detach();
   }
 }
 

@@ -23,6 +23,13 @@ struct DapOptions {
   std::function<const dialect::Dialect*(const std::string& name, const std::string& path,
                                         std::string& error)>
       choose_dialect;
+  // The drive of this very process that `attach` debugs (`uprog sim --dap`); null: there is none.
+  controller::Controller* attach_target = nullptr;
+  // Without a target, `attach {"host", "port"}` asks the tool to connect to a `uprog sim`'s
+  // debugger there: true when connected, and the tool relays the session from then on
+  // (relay_start()); false with `error` set.
+  std::function<bool(const std::string& host, uint16_t port, std::string& error)> connect_remote =
+      nullptr;
 };
 
 class DapServer {
@@ -40,6 +47,23 @@ class DapServer {
   bool done() const { return done_; }          // disconnected: the tool stops
   bool realtime() const { return realtime_; }  // the launch asked to pace virtual time to the wall
 
+  // --- relaying an attach to a `uprog sim` (connect_remote) ---
+  bool relaying() const { return !relay_start_.empty() || relayed_; }
+  // The requests the remote debugger is to get first (the client's initialize and attach), once.
+  std::vector<std::string> relay_start();
+  // The sequence number of the next message this session sends (a relayed one takes it).
+  int64_t next_seq() { return seq_++; }
+
+  // --- attached to this process's drive (attach_target) ---
+  // The time keeper of a drive that paces itself (transport::ControllerService): `ns` of time
+  // passes through the debugger, none while the program is stopped; false when no debugger is
+  // attached (or the program has ended): the drive advances as usual.
+  bool keep_time(uint64_t ns);
+  // After a host's line on the drive's command line: the program may have changed or resumed.
+  void after_host_line();
+  // The text the drive sent its hosts, for the debug console too.
+  void program_output(const std::string& text);
+
  private:
   using json = nlohmann::json;
   struct Reference {
@@ -54,6 +78,9 @@ class DapServer {
 
   void initialize(const json& request);
   void launch(const json& request);
+  void attach(const json& request);
+  // Ends an attach: the breakpoints cleared, the program running on as if never debugged.
+  void detach();
   void set_breakpoints(const json& request);
   void set_function_breakpoints(const json& request);
   void set_exception_breakpoints(const json& request);
@@ -79,7 +106,12 @@ class DapServer {
   DapOptions options_;
   std::function<void(const std::string&)> send_;
   int64_t seq_ = 1;
-  std::unique_ptr<controller::Controller> drive_;
+  std::unique_ptr<controller::Controller> owned_drive_;  // a launch's drive
+  controller::Controller* drive_ = nullptr;               // the launched or attached drive
+  bool attached_ = false;
+  std::string initialize_request_;
+  std::vector<std::string> relay_start_;
+  bool relayed_ = false;
   std::unique_ptr<Debugger> debugger_;
   bool configured_ = false;  // configurationDone: the program may run
   bool stop_on_entry_ = false;

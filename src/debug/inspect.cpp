@@ -69,6 +69,9 @@ std::vector<Variable> Debugger::globals() const {
     }
     out.push_back(std::move(var));
   }
+  // What the dialect keeps beyond the image (PUP's variables in AGenData).
+  for (const dialect::DebugVariable& v : drive_.firmware().debug_variables())
+    out.push_back({v.name, v.value, v.type, 0});
   return out;
 }
 

@@ -33,6 +33,9 @@ struct CompileOutput {
   std::vector<uint8_t> stored_form;    // what is downloaded and stored; empty on errors
   std::optional<bytecode::Image> image;  // the image it loads into, where the compiler has it
   std::vector<Diagnostic> diagnostics;
+  // The debug map of a stored form that carries no line table of its own (PUP's X.cup.json: the
+  // source place of each CUP line, the variables' names), in the dialect's own JSON; empty for none.
+  std::string debug_map;
   bool ok() const {
     for (const Diagnostic& d : diagnostics)
       if (d.severity == Severity::Error) return false;

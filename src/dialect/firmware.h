@@ -53,6 +53,14 @@ struct Evaluation {
   std::string error;  // why not, when !ok
 };
 
+// A variable the dialect keeps outside the image's globals (PUP's #definevar names for
+// AGenData), for the debugger's Globals.
+struct DebugVariable {
+  std::string name;
+  std::string value;  // as the dialect shows it; an array's elements joined by ", " in brackets
+  std::string type;
+};
+
 // One host's conversation with the drive: what belongs to that host alone (a download in
 // progress, a host level) lives here and dies with the connection.
 class Session {
@@ -112,6 +120,12 @@ class Firmware {
   virtual Evaluation evaluate(uint32_t /*thread*/, uint32_t /*depth*/, std::string_view /*expression*/) {
     return {false, {}, false, "this dialect evaluates no expressions for the debugger"};
   }
+  // The debug map (dialect::CompileOutput::debug_map) of the program just downloaded, given by the
+  // controller when it compiled the program itself: the line table and names it lends the
+  // debugger while that program is stored. The default ignores it.
+  virtual void set_debug_map(std::string_view /*map*/) {}
+  // Variables beyond the image's globals, by the dialect's names; the default has none.
+  virtual std::vector<DebugVariable> debug_variables() { return {}; }
   // As start(), with inputs for the entry routine (the debugger's `args`): "" or why not.
   virtual std::string start_with_arguments(std::string_view entry, const std::vector<double>& args) {
     return args.empty() ? start(entry) : "this dialect starts a program without arguments";

@@ -10,7 +10,7 @@ class ControllerChannel final : public LineChannel {
       : service_(service), session_(std::move(session)) {}
   std::vector<Reply> handle_line(std::string_view line) override {
     std::vector<Reply> replies = session_->send(line);
-    service_.settle();
+    service_.line_done();
     return replies;
   }
 
@@ -23,7 +23,7 @@ class ControllerChannel final : public LineChannel {
 
 std::vector<Reply> ControllerService::handle_line(std::string_view line) {
   std::vector<Reply> replies = controller_.send(line);
-  settle();
+  line_done();
   return replies;
 }
 
@@ -32,7 +32,12 @@ std::unique_ptr<LineChannel> ControllerService::open_channel() {
 }
 
 void ControllerService::advance(std::uint32_t us) {
-  controller_.advance(us);
+  if (!keeper_ || !keeper_(std::uint64_t{us} * 1000)) controller_.advance(us);
+  settle();
+}
+
+void ControllerService::line_done() {
+  if (after_line_) after_line_();
   settle();
 }
 

@@ -22,12 +22,24 @@ class ControllerService final : public LineService {
   std::unique_ptr<LineChannel> open_channel() override;
   const dialect::WireForm& wire() const override { return controller_.firmware().wire(); }
 
+  // A debugger attached to the drive lets time pass itself (it stops at a breakpoint and then
+  // lets none pass): `keeper` gets each advance's nanoseconds and returns true when it took them;
+  // false, or no keeper, and the drive advances as usual. `after_line` runs after each host line.
+  void set_time_keeper(std::function<bool(std::uint64_t ns)> keeper, std::function<void()> after_line) {
+    keeper_ = std::move(keeper);
+    after_line_ = std::move(after_line);
+  }
+
   // Passes on what the drive sent on its own since the last call, then runs `after_each`.
   void settle();
+  // After a host line: the keeper's look at it, then settle().
+  void line_done();
 
  private:
   controller::Controller& controller_;
   std::function<void()> after_each_;
+  std::function<bool(std::uint64_t ns)> keeper_;
+  std::function<void()> after_line_;
 };
 
 }  // namespace uprog::transport

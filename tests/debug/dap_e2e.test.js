@@ -126,3 +126,186 @@ test('the same client over TCP: uprog dap --listen', async () => {
     server.kill();
   }
 });
+
+// Attach: `uprog sim --dap` serves the debugger of the program it runs; `uprog dap` attaches to
+// it and relays. While the program stands at a breakpoint the sim's time stands still, and its
+// command line answers other hosts all along.
+async function startSim(programPath) {
+  const { spawn } = require('node:child_process');
+  const sim = spawn(uprog, ['sim', '--listen', '127.0.0.1:0', '--dap', '127.0.0.1:0', '--wire', 'readable',
+    '--program', programPath], { stdio: ['ignore', 'pipe', 'pipe'] });
+  const ports = await new Promise((resolve, reject) => {
+    let text = '';
+    sim.stdout.on('data', (d) => {
+      text += d;
+      const line = /listening on tcp [0-9.]+:(\d+)/.exec(text);
+      const dap = /debugger on tcp [0-9.]+:(\d+)/.exec(text);
+      if (line && dap) resolve({ line: Number(line[1]), dap: Number(dap[1]) });
+    });
+    sim.stderr.on('data', (d) => { text += d; });
+    sim.on('exit', (code) => reject(new Error(`uprog sim exited (${code}): ${text}`)));
+  });
+  return { sim, ...ports };
+}
+
+// A host on the sim's command line (the readable wire form): each line's answers up to CR LF.
+async function commandLine(port) {
+  const net = require('node:net');
+  const socket = net.connect(port, '127.0.0.1');
+  await new Promise((resolve, reject) => { socket.once('connect', resolve); socket.once('error', reject); });
+  let buffered = '';
+  const waiting = [];
+  socket.on('data', (d) => {
+    buffered += d;
+    let end;
+    while ((end = buffered.indexOf('\r\n')) >= 0 && waiting.length > 0) {
+      const answer = buffered.slice(0, end);
+      buffered = buffered.slice(end + 2);
+      waiting.shift()(answer);
+    }
+  });
+  return {
+    ask: (line) => new Promise((resolve) => { waiting.push(resolve); socket.write(line + '\r'); }),
+    close: () => socket.destroy(),
+  };
+}
+
+const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+const number = (answer) => Number(answer.replace(/;$/, ''));
+
+test('attach to a program running in uprog sim', async () => {
+  const attached = path.resolve(__dirname, 'programs', 'attach.ehl');
+  const { sim, line, dap } = await startSim(attached);
+  const host = await commandLine(line);
+  const client = new DebugClient(uprog, 'dap', 'uprog');
+  try {
+    await client.start();
+    // The program runs before anyone debugs it.
+    await sleep(100);
+    const before = number(await host.ask('ticks'));
+    assert.ok(before > 0, `ticks ${before} before attaching`);
+
+    await client.initializeRequest();
+    await Promise.all([client.attachRequest({ host: '127.0.0.1', port: dap }), client.waitForEvent('initialized')]);
+    const threads = await client.threadsRequest();
+    assert.deepStrictEqual(threads.body.threads.map((t) => t.id), [1]);
+    const set = await client.setBreakpointsRequest({ source: { path: attached }, breakpoints: [{ line: 10 }] });
+    assert.strictEqual(set.body.breakpoints[0].verified, true);
+    await Promise.all([client.configurationDoneRequest(), client.assertStoppedLocation('breakpoint', { path: attached, line: 10 })]);
+
+    // Stopped: the global as the debugger and as the command line see it, and time standing.
+    const trace = await client.stackTraceRequest({ threadId: 1 });
+    const scopes = await client.scopesRequest({ frameId: trace.body.stackFrames[0].id });
+    const globals = scopes.body.scopes.find((s) => s.name === 'Globals');
+    const vars = await client.variablesRequest({ variablesReference: globals.variablesReference });
+    const ticks = Number(vars.body.variables.find((v) => v.name === 'ticks').value);
+    assert.ok(ticks >= before, `ticks ${ticks} at the breakpoint, ${before} before`);
+    assert.strictEqual(number(await host.ask('ticks')), ticks);
+    const time = number(await host.ask('TM'));
+    await sleep(300);
+    assert.strictEqual(number(await host.ask('TM')), time, 'virtual time ran on while stopped');
+    assert.strictEqual(number(await host.ask('ticks')), ticks);
+
+    // The same breakpoint stops again one round later: one tick more.
+    await Promise.all([client.continueRequest({ threadId: 1 }), client.assertStoppedLocation('breakpoint', { path: attached, line: 10 })]);
+    const evaluated = await client.evaluateRequest({ expression: 'ticks', frameId: trace.body.stackFrames[0].id, context: 'watch' });
+    assert.strictEqual(Number(evaluated.body.result), ticks + 1);
+
+    // Without the breakpoint it runs on, and the command line answers meanwhile.
+    await client.setBreakpointsRequest({ source: { path: attached }, breakpoints: [] });
+    await client.continueRequest({ threadId: 1 });
+    await sleep(300);
+    const running = number(await host.ask('ticks'));
+    assert.ok(running > ticks + 5, `ticks ${running} after continuing from ${ticks + 1}`);
+    assert.ok(number(await host.ask('TM')) > time + 100000, 'virtual time did not go on after continue');
+
+    // Disconnecting leaves the program running in the sim.
+    await client.stop();
+    const detached = number(await host.ask('ticks'));
+    await sleep(200);
+    assert.ok(number(await host.ask('ticks')) > detached, 'the program stopped when the debugger left');
+  } finally {
+    host.close();
+    sim.kill();
+  }
+});
+
+// PUP (Akribis AG300): the debug map takes a breakpoint to the PUP line, threads 1..8 show by
+// their names, Globals hold the #definevar variables, evaluate reads PUP, and a singleThread
+// step moves thread 2 alone.
+test('a PUP session on two threads', async () => {
+  const pup = path.resolve(__dirname, 'programs', 'two_threads.pup');
+  const client = new DebugClient(uprog, 'dap', 'uprog');
+  await client.start();
+  try {
+    await client.hitBreakpoint({ program: pup }, { path: pup, line: 12 });
+    const threads = await client.threadsRequest();
+    assert.deepStrictEqual(threads.body.threads.map((t) => t.name),
+      ['thread 1', 'thread 2', 'thread 3', 'thread 4', 'thread 5', 'thread 6', 'thread 7', 'thread 8']);
+    const two = threads.body.threads[1].id;
+    // The first hit comes before either thread has counted; the second one round later.
+    await Promise.all([client.continueRequest({ threadId: two }), client.assertStoppedLocation('breakpoint', { path: pup, line: 12 })]);
+    const trace = await client.stackTraceRequest({ threadId: two });
+    assert.deepStrictEqual(trace.body.stackFrames.map((f) => [f.name, f.line]), [['task 2', 12]]);
+    const frameId = trace.body.stackFrames[0].id;
+    const scopes = await client.scopesRequest({ frameId });
+    const globals = scopes.body.scopes.find((s) => s.name === 'Globals');
+    const vars = await client.variablesRequest({ variablesReference: globals.variablesReference });
+    const byName = Object.fromEntries(vars.body.variables.map((v) => [v.name, v.value]));
+    assert.strictEqual(byName.Two, '1');
+    const one = Number(byName.One);
+    assert.ok(one >= 1, `One is ${byName.One}`);
+    const sum = await client.evaluateRequest({ expression: 'One * 2 + Two + 1', frameId, context: 'watch' });
+    assert.strictEqual(sum.body.result, String(one * 2 + 2));
+
+    // Thread 2 alone, round its loop: Two counts, One stands.
+    await client.setBreakpointsRequest({ source: { path: pup }, breakpoints: [] });
+    for (let i = 0; i < 4; i++) {
+      const [, stopped] = await Promise.all([client.nextRequest({ threadId: two, singleThread: true }), client.waitForEvent('stopped')]);
+      assert.strictEqual(stopped.body.reason, 'step');
+      assert.strictEqual(stopped.body.threadId, two);
+    }
+    const after = await client.evaluateRequest({ expression: 'One', frameId, context: 'watch' });
+    assert.strictEqual(after.body.result, String(one));
+    const counted = await client.evaluateRequest({ expression: 'Two', frameId, context: 'watch' });
+    assert.ok(Number(counted.body.result) >= 2, `Two is ${counted.body.result} after four steps`);
+  } finally {
+    await client.stop();
+  }
+});
+
+// PUP through its stored form: `uprog build` writes X.cup and its debug map X.cup.json, `uprog sim
+// --program X.cup` reads both, and an attached debugger stops at the PUP line while the command
+// line reports the thread at its breakpoint (AProgStatus 4).
+test('attach to a PUP program that uprog sim runs from its .cup', async () => {
+  const { execFileSync } = require('node:child_process');
+  const fs = require('node:fs');
+  const os = require('node:os');
+  const pup = path.resolve(__dirname, 'programs', 'two_threads.pup');
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'uprog-pup-'));
+  const cup = path.join(dir, 'two_threads.cup');
+  execFileSync(uprog, ['build', pup, '-o', cup]);
+  assert.ok(fs.existsSync(cup + '.json'), 'no debug map beside the .cup');
+  const { sim, line, dap } = await startSim(cup);
+  const host = await commandLine(line);
+  const client = new DebugClient(uprog, 'dap', 'uprog');
+  try {
+    assert.strictEqual(await host.ask('AProgRun[1],1'), ';');
+    await client.start();
+    await client.initializeRequest();
+    await Promise.all([client.attachRequest({ host: '127.0.0.1', port: dap }), client.waitForEvent('initialized')]);
+    const set = await client.setBreakpointsRequest({ source: { path: pup }, breakpoints: [{ line: 12 }] });
+    assert.strictEqual(set.body.breakpoints[0].verified, true);
+    const [, stopped] = await Promise.all([client.configurationDoneRequest(), client.waitForEvent('stopped')]);
+    assert.strictEqual(stopped.body.reason, 'breakpoint');
+    const trace = await client.stackTraceRequest({ threadId: stopped.body.threadId });
+    assert.deepStrictEqual(trace.body.stackFrames.map((f) => [f.name, f.line]), [['task 2', 12]]);
+    assert.strictEqual(await host.ask('AProgStatus[2]'), '4;');
+    assert.strictEqual(await host.ask('AProgStatus[1]'), '3;');
+  } finally {
+    await client.stop();
+    host.close();
+    sim.kill();
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+});

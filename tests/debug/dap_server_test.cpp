@@ -486,3 +486,78 @@ TEST(DapServer, ArbitraryRequestsNeverEndTheSession) {
 
 }  // namespace
 }  // namespace uprog::debug
+
+namespace uprog::debug {
+namespace {
+
+// `uprog sim --dap`'s server: attach debugs the program the drive already runs, time passes
+// through keep_time() (none while stopped, and the hosts' lines take none), and disconnect leaves
+// the program running undebugged.
+TEST(DapServer, AttachStopsTheDrivesRunningProgramAndItsTime) {
+  const std::string program = UPROG_SOURCE_DIR "/tests/debug/programs/attach.ehl";
+  controller::ControllerOptions o;
+  o.dialect = &gold::dialect();
+  controller::Controller drive(o);
+  std::vector<Diagnostic> diagnostics;
+  ASSERT_TRUE(drive.download_source_file(program, diagnostics));
+  ASSERT_EQ(drive.start_program("main"), "");
+  drive.advance(100'000);
+  std::vector<json> out;
+  DapReader reader;
+  DapOptions options;
+  options.attach_target = &drive;
+  DapServer server(options, [&](const std::string& framed) {
+    reader.feed(framed);
+    while (auto body = reader.next()) out.push_back(json::parse(*body));
+  });
+  int64_t seq = 1;
+  auto request = [&](const std::string& command, json arguments = json::object()) {
+    out.clear();
+    server.handle(json{{"seq", seq++}, {"type", "request"}, {"command", command}, {"arguments", arguments}}.dump());
+    return out;
+  };
+  request("initialize", {{"adapterID", "uprog"}});
+  EXPECT_EQ(kinds(request("launch", {{"program", program}})), std::vector<std::string>{"response launch"});
+  EXPECT_FALSE(out.at(0)["success"]);
+  EXPECT_EQ(kinds(request("attach", {{"host", "127.0.0.1"}, {"port", 4712}})),
+            (std::vector<std::string>{"response attach", "event initialized", "event thread"}));
+  EXPECT_TRUE(out.at(0)["success"]);
+  request("setBreakpoints", {{"source", {{"path", program}}}, {"breakpoints", {{{"line", 10}}}}});
+  EXPECT_TRUE(out.at(0)["body"]["breakpoints"][0]["verified"]);
+  request("configurationDone");
+  out.clear();
+  for (int i = 0; i < 100 && out.empty(); ++i) EXPECT_TRUE(server.keep_time(1'000'000));
+  ASSERT_EQ(kinds(out), std::vector<std::string>{"event stopped"});
+  EXPECT_EQ(out[0]["body"]["reason"], "breakpoint");
+  // Stopped: time stands, however long the pacer and the hosts go on.
+  const uint64_t at = drive.now_us();
+  auto host = drive.open_session();
+  for (int i = 0; i < 10; ++i) {
+    EXPECT_TRUE(server.keep_time(1'000'000));
+    host->send("TM");
+    server.after_host_line();
+  }
+  EXPECT_EQ(drive.now_us(), at);
+  // Continue, with the breakpoint gone: time and the program go on.
+  request("setBreakpoints", {{"source", {{"path", program}}}, {"breakpoints", json::array()}});
+  EXPECT_EQ(kinds(request("continue", {{"threadId", 1}})), std::vector<std::string>{"response continue"});
+  for (int i = 0; i < 50; ++i) EXPECT_TRUE(server.keep_time(1'000'000));
+  EXPECT_EQ(drive.now_us(), at + 50'000);
+  // Disconnect: the drive keeps its own time again, the program runs on.
+  EXPECT_EQ(kinds(request("disconnect")), std::vector<std::string>{"response disconnect"});
+  EXPECT_TRUE(server.done());
+  EXPECT_FALSE(server.keep_time(1'000'000));
+  EXPECT_TRUE(drive.program_running());
+}
+
+TEST(DapServer, AttachWithoutADriveSaysWhy) {
+  Client c;
+  c.request("initialize", {{"adapterID", "uprog"}});
+  const auto out = c.request("attach", {{"host", "127.0.0.1"}, {"port", 1}});
+  ASSERT_EQ(kinds(out), std::vector<std::string>{"response attach"});
+  EXPECT_FALSE(out[0]["success"]);
+  EXPECT_EQ(out[0]["message"], "attach: no drive to attach to here");
+}
+
+}  // namespace
+}  // namespace uprog::debug

@@ -40,6 +40,9 @@ int build(const BuildOptions& o) {
   } else {
     const std::string out = o.output.empty() ? d->stored_path(o.input) : o.output;
     written = write_file_atomically(out, r.stored_form.data(), r.stored_form.size(), &error);
+    // The debug map beside it (PUP: X.cup.json), for `uprog sim --program X.cup` to debug by source.
+    if (written && !r.debug_map.empty())
+      written = write_file_atomically(out + ".json", r.debug_map.data(), r.debug_map.size(), &error);
   }
   if (!written) {
     fmt::print(stderr, "uprog build: {}\n", error);

@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 
@@ -14,6 +15,7 @@
 #include "transport/pacer.h"
 #include "transport/pty_server.h"
 #include "transport/tcp_server.h"
+#include "sim_debugger.h"
 
 namespace uprog::cli {
 
@@ -28,6 +30,7 @@ struct SimOptions {
   bool safe_boot = false;
   std::string wire = "drive";
   bool log = false;
+  std::string dap;  // HOST:PORT of the debugger's port, empty for none
 };
 
 // Downloads `path` (a stored form such as a .upi image, or a source the dialect compiles), then
@@ -47,6 +50,10 @@ bool install_program(controller::Controller& drive, const SimOptions& options) {
     if (!result.ok) {
       fmt::print(stderr, "uprog sim: {}: {}\n", path, result.error);
       return false;
+    }
+    // `uprog build`'s debug map beside the stored form (PUP: X.cup.json), for the debugger.
+    if (std::filesystem::exists(path + ".json")) {
+      if (const auto map = read_text_file(path + ".json", &error)) drive.firmware().set_debug_map(*map);
     }
   } else {
     std::vector<Diagnostic> diagnostics;
@@ -95,9 +102,15 @@ int run_sim(const SimOptions& options) {
   transport::ControllerService service(drive, [&drive, &options] {
     if (options.log) print_log(drive);
   });
+  asio::ip::tcp::endpoint dap_endpoint;
+  if (!options.dap.empty() && !transport::parse_endpoint(options.dap, dap_endpoint, error)) {
+    fmt::print(stderr, "uprog sim: --dap: {}\n", error);
+    return 2;
+  }
   asio::io_context io;
   std::unique_ptr<transport::TcpServer> tcp;
   std::unique_ptr<transport::PtyServer> pty;
+  std::unique_ptr<SimDebugger> debugger;
   try {
     if (listen) {
       tcp = std::make_unique<transport::TcpServer>(io, service, endpoint);
@@ -109,6 +122,13 @@ int run_sim(const SimOptions& options) {
     if (options.pty) {
       pty = std::make_unique<transport::PtyServer>(io, service);
       fmt::print("listening on pty {}\n", pty->slave_path());
+    }
+    if (!options.dap.empty()) {
+      debugger = std::make_unique<SimDebugger>(io, drive, service, dap_endpoint);
+      const auto where = debugger->local_endpoint();
+      const auto address = where.address().to_string();
+      fmt::print("debugger on tcp {}:{}\n",
+                 where.address().is_v6() ? "[" + address + "]" : address, where.port());
     }
   } catch (const boost::system::system_error& e) {
     fmt::print(stderr, "uprog sim: {}\n", e.what());
@@ -124,6 +144,7 @@ int run_sim(const SimOptions& options) {
     pacer.stop();
     if (tcp) tcp->stop();
     if (pty) pty->stop();
+    if (debugger) debugger->stop();
     io.stop();
   });
   io.run();
@@ -145,6 +166,9 @@ void add_sim(CLI::App* cmd, Action& action) {
                   "drive: the bytes the vendor's drive sends (default); readable: error texts and a "
                   "line end after each line (docs/protocol.md)")
       ->check(CLI::IsMember({"drive", "readable"}));
+  cmd->add_option("--dap", options->dap,
+                  "HOST:PORT: serve the debugger there, for `uprog dap`'s attach or an editor "
+                  "(port 0 picks one; docs/debugging.md)");
   cmd->add_flag("--log", options->log, "print what the firmware does (auto-routines, errors)");
   cmd->callback([&action, options] { action = [options] { return run_sim(*options); }; });
 }

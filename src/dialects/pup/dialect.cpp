@@ -7,6 +7,7 @@
 #include "dialects/pup/errors.h"
 #include "dialects/pup/firmware.h"
 #include "dialects/pup/cup_loader.h"
+#include "dialects/pup/debug_map.h"
 #include "dialects/pup/download.h"
 #include "dialects/pup/pup_compiler.h"
 #include "support/files.h"
@@ -64,6 +65,7 @@ class PupDialect final : public dialect::Dialect {
     if (out.ok() && !settings.check_only) {
       const std::string cup = write_cup(r.program);
       out.stored_form.assign(cup.begin(), cup.end());
+      if (!is_cup(path)) out.debug_map = write_debug_map(r.places, r.vars);
     }
     return out;
   }

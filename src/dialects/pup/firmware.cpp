@@ -68,6 +68,7 @@ std::string Firmware::install(const std::string& cup, bool store) {
   std::string why;
   auto loaded = load_cup(*program, &why);
   if (!loaded) return "error 45: " + why;
+  apply_debug_map(cup, loaded->image);
   auto image = dialect::LoadedProgram::load(bytecode::encode(loaded->image), machine_config(), *this, &why, true, "pup");
   if (!image) return "error 45: " + why;
   if (store && !runtime_.flash().write(kRecord, std::vector<uint8_t>(cup.begin(), cup.end()), &why)) {

@@ -15,6 +15,7 @@
 #include "dialect/semicolon_wire.h"
 #include "dialects/pup/cup_file.h"
 #include "dialects/pup/cup_loader.h"
+#include "dialects/pup/debug_map.h"
 #include "dialects/pup/message.h"
 
 namespace uprog::pup {
@@ -47,6 +48,12 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::string program_error_text() const override;
   std::string state_summary() const override;
   std::vector<dialect::ThreadInfo> threads() const override;
+
+  // --- debug_hooks.cpp: the debugger's hooks (dialect/firmware.h) ---
+  dialect::LoadedProgram* debug_program() override { return program_.get(); }
+  dialect::Evaluation evaluate(uint32_t thread, uint32_t depth, std::string_view expression) override;
+  void set_debug_map(std::string_view map) override;
+  std::vector<dialect::DebugVariable> debug_variables() override;
 
   vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override;
   vm::CommandStatus write(uint32_t command, int32_t index, Value value) override;
@@ -81,6 +88,10 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::string breaks_list(uint32_t thread) const;
   std::string call_stack(uint32_t thread) const;
   void after_cycle(const scheduling::Report& report);
+  // A line of ProgBreaks in any thread's list: a trap elsewhere is the debugger's to handle.
+  bool break_line_in_use(uint32_t line) const;
+  // The debug map's PUP places as the image's line table, when the map is this program's.
+  void apply_debug_map(const std::string& cup, bytecode::Image& image) const;
 
   // --- keywords.cpp side (controller_keywords.cpp): parameters and commands ---
   int32_t read_key(KeywordId key, int32_t index, int32_t& out);
@@ -105,6 +116,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::unique_ptr<dialect::LoadedProgram> program_;
   LoadedCup cup_;
   CupProgram cup_program_;
+  std::optional<DebugMap> debug_map_;
+  std::string debug_map_cup_;  // the CUP text the map belongs to
 
   std::array<int32_t, kGenDataSize> gen_data_{};
   std::array<int32_t, 4> timers_{};

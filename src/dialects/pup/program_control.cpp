@@ -24,8 +24,13 @@ void Firmware::after_cycle(const scheduling::Report& report) {
   for (uint32_t t = 1; t <= kThreads; ++t) {
     if (report.has(t, scheduling::ThreadEvent::Breakpoint)) {
       const uint32_t line = next_line(t);
-      if (!std::binary_search(breaks_[t].begin(), breaks_[t].end(), line)) m.resume(t);
-      else single_[t].active = false;
+      if (!break_line_in_use(line)) {
+        // Not a ProgBreaks line: the debugger's trap (src/debug), which it handles.
+      } else if (!std::binary_search(breaks_[t].begin(), breaks_[t].end(), line)) {
+        m.resume(t);
+      } else {
+        single_[t].active = false;
+      }
     }
     Single& s = single_[t];
     if (!s.active) continue;
@@ -42,15 +47,17 @@ void Firmware::after_cycle(const scheduling::Report& report) {
   }
 }
 
+bool Firmware::break_line_in_use(uint32_t line) const {
+  for (uint32_t t = 1; t <= kThreads; ++t) {
+    if (std::binary_search(breaks_[t].begin(), breaks_[t].end(), line)) return true;
+  }
+  return false;
+}
+
 int32_t Firmware::set_breaks(uint32_t thread, int32_t value) {
   std::vector<uint32_t>& list = breaks_[thread];
   vm::Machine& m = program_->machine();
-  auto in_use = [&](uint32_t line) {
-    for (uint32_t t = 1; t <= kThreads; ++t) {
-      if (std::binary_search(breaks_[t].begin(), breaks_[t].end(), line)) return true;
-    }
-    return false;
-  };
+  auto in_use = [&](uint32_t line) { return break_line_in_use(line); };
   auto unset = [&](uint32_t line) {
     list.erase(std::find(list.begin(), list.end(), line));
     if (!in_use(line)) m.clear_breakpoint(cup_.line_pc[line]);

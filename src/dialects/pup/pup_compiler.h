@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "dialects/pup/cup_file.h"
+#include "dialects/pup/pup_expr.h"
 #include "support/diagnostic.h"
 
 namespace uprog::pup {
@@ -12,6 +13,7 @@ namespace uprog::pup {
 struct PupOutput {
   CupProgram program;
   std::vector<Location> places;  // per CUP line, where in the PUP sources it came from
+  VarTable vars;                 // the #definevar names, for the debug map
   std::vector<Diagnostic> diagnostics;
   bool ok() const;
 };

@@ -315,6 +315,44 @@ std::string param_text(const Node& n) {
 
 void emit_value(const ExprTree& tree, int node, std::vector<std::string>& out) { emit(tree, node, out); }
 
+int32_t evaluate_now(const ExprTree& tree, int node, const ParamReader& read, int32_t* error) {
+  const Node& n = tree.nodes[static_cast<size_t>(node)];
+  auto value = [&](int child) { return *error == 0 ? evaluate_now(tree, child, read, error) : 0; };
+  switch (n.kind) {
+    case NodeKind::Number:
+      return n.value;
+    case NodeKind::Param:
+      return read(n.key, n.has_index ? n.value : 0, error);
+    case NodeKind::Indexed: {
+      const int32_t i = value(n.a);
+      if (*error != 0) return 0;
+      if (i < 1 || i > n.size) {
+        *error = 4;
+        return 0;
+      }
+      return read(n.key, n.base + i - 1, error);
+    }
+    case NodeKind::Unary: {
+      const int32_t a = value(n.a);
+      return *error != 0 ? 0 : apply_math(math_of_unary(n.key), 0, a, error);
+    }
+    case NodeKind::Binary: {
+      const int32_t a = value(n.a), b = value(n.b);
+      if (*error != 0) return 0;
+      if (is_comparison(n)) return condition_holds(condition_of(n.key), a, b) ? 1 : 0;
+      return apply_math(math_of_binary(n.key), a, b, error);
+    }
+    case NodeKind::Call: {
+      // As AMath[n] pops them: the last argument is the top (first), the one before it second.
+      std::vector<int32_t> args;
+      for (int a : n.args) args.push_back(value(a));
+      if (*error != 0 || args.empty()) return 0;
+      return apply_math(n.value, args.size() > 1 ? args[args.size() - 2] : 0, args.back(), error);
+    }
+  }
+  return 0;
+}
+
 int stack_need(const ExprTree& tree, int node) {
   const Node& n = tree.nodes[static_cast<size_t>(node)];
   switch (n.kind) {

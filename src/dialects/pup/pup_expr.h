@@ -3,6 +3,7 @@
 // its operands. Names are user variables (#definevar) or controller parameters.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -87,6 +88,11 @@ int opposite_condition(int condition);
 std::string param_text(const Node& n);
 // Lines that leave the value of `node` on the stack.
 void emit_value(const ExprTree& tree, int node, std::vector<std::string>& out);
+// The value of `node` now, as the controller's CUP lines would compute it, with `read` giving a
+// parameter's value (its spelling, its index or 0; a controller error in `*error`): for the
+// debugger's watches and conditions. 0 with `*error` set (4, 30, 31, or what `read` set).
+using ParamReader = std::function<int32_t(const std::string& key, int32_t index, int32_t* error)>;
+int32_t evaluate_now(const ExprTree& tree, int node, const ParamReader& read, int32_t* error);
 // The stack entries evaluating `node` needs at most.
 int stack_need(const ExprTree& tree, int node);
 

@@ -47,6 +47,7 @@ PupOutput PupCompiler::run(const std::string& path, const std::string& text) {
   include_stack_.push_back(path);
   read_text(path, text, false);
   finish();
+  out_.vars = vars_;
   return std::move(out_);
 }
 
