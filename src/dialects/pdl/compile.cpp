@@ -3,6 +3,7 @@
 #include "dialects/pdl/compile.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <functional>
 #include <tuple>
 
@@ -62,6 +63,27 @@ class PlainLocator {
   std::vector<size_t> starts_;
 };
 
+// An included file: a regular file of at most kMaxIncludeBytes (not a device or a pipe, which
+// might never end).
+std::optional<std::string> read_include(const std::string& path, std::string* why) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    *why = std::filesystem::exists(path, ec) ? "not a regular file" : "no such file";
+    return std::nullopt;
+  }
+  const uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec || size > kMaxIncludeBytes) {
+    *why = "larger than " + std::to_string(kMaxIncludeBytes) + " bytes";
+    return std::nullopt;
+  }
+  return read_text_file(path, why);
+}
+
+std::optional<std::string> no_include(const std::string&, std::string* why) {
+  *why = "this compilation reads no files";
+  return std::nullopt;
+}
+
 }  // namespace
 
 bool CompileResult::ok() const {
@@ -85,6 +107,7 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   po.allow_include = true;
   po.max_include_depth = 20;  // 1.1
   po.backslash_separates = true;
+  po.read_file = options.read_includes ? read_include : no_include;
   DiagnosticList pre_diags;
   const bool preprocess = source.text.find('#') != std::string::npos;
   preproc::Preprocessed pre;
