@@ -13,7 +13,9 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace uprog;
   const SourceFile source{"fuzz.pdl", std::string(reinterpret_cast<const char*>(data), size)};
-  const pdl::CompileResult result = pdl::compile(source);
+  pdl::CompileOptions options;
+  options.read_includes = false;  // #include paths in the input must not read the machine's files
+  const pdl::CompileResult result = pdl::compile(source, options);
   if (!result.ok()) return 0;
   // What the compiler produces, the drive must take: a compiler bug shows as a crash here.
   const std::vector<uint8_t> bytes = bytecode::encode(result.image);

@@ -21,6 +21,9 @@ int gold_code_of(PreprocError e) {
     case PreprocError::UnknownDirective: return 97;
     case PreprocError::DivisionByZero: return 86;
     case PreprocError::ExpansionTooComplex: return 39;
+    // Gold has no #include (allow_include is off): these cannot arise for it.
+    case PreprocError::IncludeNotFound:
+    case PreprocError::IncludeTooDeep: return 97;
   }
   return 97;
 }

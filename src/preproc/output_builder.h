@@ -23,12 +23,21 @@ class OutputBuilder {
     if (!segs.empty()) {
       // Continuing the previous segment needs no new entry.
       const auto& last = segs.back();
-      if (last.line == line &&
+      if (last.line == line && last.file == file_index_ &&
           static_cast<size_t>(last.column) + (at - last.out_begin) == static_cast<size_t>(column))
         return;
     }
-    segs.push_back({at, line, column});
+    segs.push_back({at, line, column, file_index_});
   }
+  // Output that follows comes from `name` (an included file; "" for the source itself).
+  // Returns the index of the file that was current, to come back to.
+  uint32_t enter_file(const std::string& name) {
+    const uint32_t previous = file_index_;
+    result_.map.included.push_back(name);
+    file_index_ = static_cast<uint32_t>(result_.map.included.size());
+    return previous;
+  }
+  void leave_file(uint32_t previous) { file_index_ = previous; }
   void append(std::string_view s) { result_.text.append(s); }
   void append(char c) { result_.text.push_back(c); }
   size_t size() const { return result_.text.size(); }
@@ -39,6 +48,7 @@ class OutputBuilder {
 
  private:
   std::string file_;
+  uint32_t file_index_ = 0;
   Preprocessed result_;
 };
 

@@ -4,6 +4,7 @@
 #include "preproc/preprocess.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <string_view>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "preproc/line_scanner.h"
 #include "preproc/macro_table.h"
 #include "preproc/output_builder.h"
+#include "support/files.h"
 
 namespace uprog::preproc {
 namespace {
@@ -60,10 +62,20 @@ std::string_view trim(std::string_view s) {
 class Preprocessor {
  public:
   Preprocessor(const SourceFile& source, const PreprocOptions& options, DiagnosticList& diagnostics)
-      : source_(source), options_(options), diagnostics_(diagnostics), out_(source.name, source.text.size()) {}
+      : source_(&source), options_(options), diagnostics_(diagnostics), out_(source.name, source.text.size()) {}
 
   Preprocessed run() {
-    const std::string_view text = source_.text;
+    run_text();
+    for (const Conditional& c : stack_)
+      report(PreprocError::UnterminatedIf, c.at,
+             {{c.at, "this #if has no #endif before the end of the file"}});
+    return out_.take();
+  }
+
+ private:
+  // The lines of the current file (source_), each followed by a newline but the last.
+  void run_text() {
+    const std::string_view text = source_->text;
     size_t pos = 0;
     std::string continued;  // a #define's lines ending in '\\', joined (function-like macros)
     int continued_from = 0;
@@ -100,16 +112,11 @@ class Preprocessor {
       out_.append('\n');
       pos = newline + 1;
     }
-    for (const Conditional& c : stack_)
-      report(PreprocError::UnterminatedIf, c.at,
-             {{c.at, "this #if has no #endif before the end of the file"}});
-    return out_.take();
   }
 
- private:
   bool active() const { return stack_.empty() || stack_.back().active; }
   Location here(size_t offset) const {
-    return Location{source_.name, line_, static_cast<int>(std::min<size_t>(offset, 1u << 30)) + 1};
+    return Location{source_->name, line_, static_cast<int>(std::min<size_t>(offset, 1u << 30)) + 1};
   }
 
   void report(PreprocError e, Location where, std::vector<DiagnosticNote> notes = {}) {
@@ -175,7 +182,10 @@ class Preprocessor {
       case Directive::Elseif: run_elseif(args, args_at, at); break;
       case Directive::Else: run_else(at); break;
       case Directive::Endif: run_endif(at); break;
-      case Directive::Include: extension(options_.allow_include, at); break;
+      case Directive::Include:
+        if (!options_.allow_include) extension(false, at);
+        else if (active()) run_include(args, args_at, at);
+        break;
       case Directive::Elifdef:
       case Directive::Elifndef:
         if (!options_.allow_elifdef) extension(false, at);
@@ -190,6 +200,52 @@ class Preprocessor {
       out_.mark(line_, static_cast<int>(spans_.back().begin) + 1);
       out_.append(line.substr(spans_.back().begin));
     }
+  }
+
+  // #include "file" or <file>: its lines go out in place of the directive's, mapped to it.
+  void run_include(std::string_view args, size_t from, const Location& at) {
+    const size_t b = skip_blanks(args, from);
+    std::string name;
+    if (b < args.size() && (args[b] == '"' || args[b] == '<')) {
+      const size_t e = args.find(args[b] == '"' ? '"' : '>', b + 1);
+      if (e != std::string_view::npos) name = std::string(args.substr(b + 1, e - b - 1));
+    }
+    if (name.empty())
+      return report(PreprocError::IncludeNotFound, here(b), {{at, "#include needs \"file\" or <file>"}});
+    if (depth_ >= options_.max_include_depth) {
+      return report(PreprocError::IncludeTooDeep, here(b),
+                    {{at, "'" + name + "' would be " + std::to_string(depth_ + 1) + " files deep; at most " +
+                              std::to_string(options_.max_include_depth) + " (does a file include itself?)"}});
+    }
+    if (options_.backslash_separates) std::replace(name.begin(), name.end(), '\\', '/');
+    const std::filesystem::path given(name);
+    const std::filesystem::path dir = std::filesystem::path(source_->name).parent_path();
+    const std::string path = given.is_absolute() || dir.empty() ? name : (dir / given).string();
+    std::string why;
+    std::optional<std::string> text = options_.read_file ? options_.read_file(path, &why) : read_text_file(path, &why);
+    if (!text) return report(PreprocError::IncludeNotFound, here(b), {{here(b), "'" + path + "': " + why}});
+    const SourceFile inner{path, std::move(*text)};
+    const SourceFile* outer = source_;
+    const int outer_line = line_;
+    const bool outer_comment = in_block_comment_;
+    const size_t open_blocks = stack_.size();
+    const uint32_t outer_file = out_.enter_file(path);
+    source_ = &inner;
+    in_block_comment_ = false;
+    ++depth_;
+    run_text();
+    // An #if opened in the file closes in it.
+    while (stack_.size() > open_blocks) {
+      const Location opened = stack_.back().at;
+      report(PreprocError::UnterminatedIf, opened, {{opened, "this #if has no #endif before the end of its file"}});
+      stack_.pop_back();
+    }
+    --depth_;
+    source_ = outer;
+    line_ = outer_line;
+    in_block_comment_ = outer_comment;
+    out_.leave_file(outer_file);
+    out_.mark(line_, static_cast<int>(args.size()) + 1);
   }
 
   void extension(bool allowed, const Location& at) {
@@ -426,7 +482,7 @@ class Preprocessor {
     out_.add_expansion({begin, out_.size(), std::string(name), used_at, m.defined_at});
   }
 
-  const SourceFile& source_;
+  const SourceFile* source_;  // the file being read: the source or an #include'd one
   const PreprocOptions& options_;
   DiagnosticList& diagnostics_;
   OutputBuilder out_;
@@ -435,6 +491,7 @@ class Preprocessor {
   std::vector<Span> spans_;
   int line_ = 1;
   int define_count_ = 0;
+  int depth_ = 0;  // #include nesting
   bool in_block_comment_ = false;
   Expander expander_{macros_, options_};
 };

@@ -1,6 +1,7 @@
 // The C-like preprocessor every dialect shares (#define, #undef, #if/#elseif/#else/#endif,
-// #ifdef/#ifndef), with per-dialect options. Its output keeps a map back to the original text,
-// so a diagnostic points at the file, line and column the user wrote.
+// #ifdef/#ifndef, #include where a dialect has it), with per-dialect options. Its output keeps
+// a map back to the original text, so a diagnostic points at the file, line and column the
+// user wrote.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -32,6 +33,8 @@ enum class PreprocError {
   DivisionByZero,        // #if 1/0 (Gold 86)
   ExpansionTooComplex,   // macro expansion deeper than max_expansion_depth or longer than
                          // max_expansion_chars (Gold 39, "Code is too complex")
+  IncludeNotFound,       // #include of a file that cannot be read, or without a "name" / <name>
+  IncludeTooDeep,        // #include nested deeper than max_include_depth (a file including itself)
 };
 
 // Gold's code and text for each PreprocError: the defaults when PreprocOptions leaves them null.
@@ -70,9 +73,14 @@ struct PreprocOptions {
   std::function<bool(std::string_view name, std::optional<int32_t>& value)> predefined;
 
   // Extension points for later dialects. Each switch names a directive; while it is off the
-  // directive is UnknownDirective. Switching one on today still gives UnknownDirective
-  // ("not implemented") until its handler is written in preprocess.cpp's directive table.
-  bool allow_include = false;          // #include "file" / <file> (HIWIN PDL, Akribis PUP)
+  // directive is UnknownDirective. Switching one on whose handler is not written yet in
+  // preprocess.cpp's directive table still gives UnknownDirective ("not implemented").
+  bool allow_include = false;          // #include "file" / <file> (HIWIN PDL): implemented
+  // #include: files nested at most this deep (the source itself is depth 0), found beside the
+  // file that includes them (or as given, when absolute); read_file reads one (null: from disk).
+  int max_include_depth = 20;
+  bool backslash_separates = false;  // `#include "..\common.h"` (HIWIN's manual, 2.5.6)
+  std::function<std::optional<std::string>(const std::string& path, std::string* why)> read_file;
   bool allow_function_macros = false;  // #define F(a, b) ... with `\` continuation (HIWIN PDL)
   bool allow_elifdef = false;          // #elifdef / #elifndef (HIWIN PDL): implemented
   bool allow_definevar = false;        // #definevar NAME GenData[N] (Akribis PUP)
@@ -96,14 +104,17 @@ class SourceMap {
   // The expansion that produced `offset`, or nullptr.
   const Expansion* expansion_at(size_t offset) const;
 
-  // Filled by the preprocessor. A segment per source line at least, so it holds no file name
-  // (every segment is in `file`): no string is built per line.
+  // Filled by the preprocessor. A segment per source line at least, so it holds no file name,
+  // only an index (0: `file`, k: included[k - 1]): no string is built per line.
   struct Segment {
     size_t out_begin;  // output offset where this segment starts
     int line, column;  // original place of its first character; columns advance one by one
+    uint32_t file = 0;
   };
   std::string file;
-  std::vector<Segment> segments;  // sorted by out_begin
+  std::vector<std::string> included;  // the #include'd files, as their diagnostics name them
+  std::vector<Segment> segments;      // sorted by out_begin
+  const std::string& file_name(uint32_t index) const { return index == 0 ? file : included[index - 1]; }
   std::vector<Expansion> expansions;
 };
 

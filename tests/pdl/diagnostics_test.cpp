@@ -43,12 +43,17 @@ std::vector<Case> read_cases() {
   return out;
 }
 
+// A case compiles as if it were a file beside cases.txt, so that `#include "include/x.pdh"`
+// finds tests/diagnostics/pdl/include/x.pdh; a diagnostic in an included file is listed as
+// `x.pdh:line:col code`.
 std::vector<std::string> got(const Case& c) {
-  const pdl::CompileResult r = pdl::compile(SourceFile{"case.pdl", c.source});
+  const std::string name = (fs::path(UPROG_SOURCE_DIR) / "tests/diagnostics/pdl/case.pdl").string();
+  const pdl::CompileResult r = pdl::compile(SourceFile{name, c.source});
   std::vector<std::string> out;
   for (const Diagnostic& d : r.diagnostics) {
     if (d.severity == Severity::Note) continue;
-    out.push_back(std::to_string(d.where.line) + ":" + std::to_string(d.where.column) + " " + std::to_string(d.code));
+    const std::string file = d.where.file == name ? "" : fs::path(d.where.file).filename().string() + ":";
+    out.push_back(file + std::to_string(d.where.line) + ":" + std::to_string(d.where.column) + " " + std::to_string(d.code));
   }
   return out;
 }

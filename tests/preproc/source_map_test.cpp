@@ -132,5 +132,52 @@ TEST(preproc_source_map, DialectCodesAndTexts) {
   EXPECT_EQ(d.items()[0].message, "pdl text");
 }
 
+// #include: the included lines stand in place of the directive and map to their own file,
+// line and column (found beside the including file); the lines after map to the source again.
+TEST(preproc_source_map, IncludedLinesMapToTheirFile) {
+  PreprocOptions o;
+  o.allow_include = true;
+  o.read_file = [](const std::string& path, std::string* why) -> std::optional<std::string> {
+    if (path == "dir/a.h") return std::string("#define K 5\nx = K\n#include \"b.h\"");
+    if (path == "dir/b.h") return std::string("  yy");
+    *why = "absent";
+    return std::nullopt;
+  };
+  DiagnosticList d;
+  const Preprocessed p = preprocess({"dir/m.prg", "one\n#include \"a.h\"\ntwo"}, o, d);
+  ASSERT_TRUE(d.items().empty());
+  ASSERT_EQ(p.text, "one\n\nx = 5\n  yy\ntwo");
+  const Location x = p.map.locate(p.text.find('x'));
+  EXPECT_EQ(x.file, "dir/a.h");
+  EXPECT_EQ(x.line, 2);
+  EXPECT_EQ(x.column, 1);
+  const Location y = p.map.locate(p.text.find("yy"));
+  EXPECT_EQ(y.file, "dir/b.h");
+  EXPECT_EQ(y.line, 1);
+  EXPECT_EQ(y.column, 3);
+  const Location two = p.map.locate(p.text.find("two"));
+  EXPECT_EQ(two.file, "dir/m.prg");
+  EXPECT_EQ(two.line, 3);
+  EXPECT_EQ(two.column, 1);
+}
+
+// A file that includes itself stops at max_include_depth, reported in that file.
+TEST(preproc_source_map, IncludeDepthIsBounded) {
+  PreprocOptions o;
+  o.allow_include = true;
+  o.max_include_depth = 3;
+  int reads = 0;
+  o.read_file = [&reads](const std::string&, std::string*) -> std::optional<std::string> {
+    ++reads;
+    return std::string("#include \"s.h\"");
+  };
+  DiagnosticList d;
+  preprocess({"s.h", "#include \"s.h\""}, o, d);
+  EXPECT_EQ(reads, 3);
+  ASSERT_EQ(d.items().size(), 1u);
+  EXPECT_EQ(d.items()[0].where.file, "s.h");
+  EXPECT_EQ(d.items()[0].where.column, 10);
+}
+
 }  // namespace
 }  // namespace uprog::preproc

@@ -165,6 +165,27 @@ TEST(transport_sim, TermInPipeMode) {
   EXPECT_NE(output.find("cannot connect"), std::string::npos);
 }
 
+// A PDL drive (examples/pdl/printl_report.pdl): after `reset`, task 2's five printl reports
+// reach `uprog term` as the drive sends them (10 ms apart, `<<` marks a line the drive sent on
+// its own), before the answer to the line typed a second later. The values are the program's:
+// level = step*step in %04x, ratio = level/25.
+TEST(transport_sim, TermShowsPdlPrintlEventsAsTheyArrive) {
+  SimProcess sim({"--listen", "127.0.0.1:0", "--program", std::string(UPROG_SOURCE_DIR) + "/examples/pdl/printl_report.pdl"});
+  const std::string term = std::string(UPROG_BINARY) + " term 127.0.0.1:" + std::to_string(sim.port);
+  int status = 0;
+  const std::string output = run_shell("(printf 'reset\\n'; sleep 1; printf 'step\\n') | " + term + " 2>&1", &status);
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  const char* const kReports[] = {"step=1 level=0001 ratio=0.04", "step=2 level=0004 ratio=0.16",
+                                  "step=3 level=0009 ratio=0.36", "step=4 level=0010 ratio=0.64",
+                                  "step=5 level=0019 ratio=1"};
+  size_t at = 0;
+  for (const char* r : kReports) {
+    at = output.find(std::string("<< %P 2 00000103 00000000 ramp report : ") + r, at);
+    ASSERT_NE(at, std::string::npos) << r << " missing or out of order in:\n" << output;
+  }
+  EXPECT_TRUE(output.ends_with("\n5\n")) << output;
+}
+
 // The drive form, as the SimplIQ software manual describes it (MAN-SIMSW 3.1, 3.2): every byte
 // echoed while EO=1, before the answer to the expression it ends; a value `VALUE;`, an error its
 // EC code as one byte and `?;`; an empty expression answered `;`; nothing between lines.

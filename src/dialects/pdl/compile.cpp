@@ -3,6 +3,9 @@
 #include "dialects/pdl/compile.h"
 
 #include <algorithm>
+#include <filesystem>
+#include <functional>
+#include <tuple>
 
 #include "bytecode/peephole.h"
 #include "dialects/pdl/compiler.h"
@@ -12,7 +15,11 @@
 namespace uprog::pdl {
 namespace {
 
-int preproc_code(preproc::PreprocError) { return static_cast<int>(Error::PreprocDirective); }
+int preproc_code(preproc::PreprocError e) {
+  if (e == preproc::PreprocError::IncludeNotFound) return static_cast<int>(Error::IncludeNotFound);
+  if (e == preproc::PreprocError::IncludeTooDeep) return static_cast<int>(Error::IncludeTooDeep);
+  return static_cast<int>(Error::PreprocDirective);
+}
 
 const char* preproc_text(preproc::PreprocError e) {
   using P = preproc::PreprocError;
@@ -28,9 +35,11 @@ const char* preproc_text(preproc::PreprocError e) {
     case P::MisplacedEndif: return "#endif without #ifdef/#ifndef";
     case P::UnterminatedIf: return "#ifdef/#ifndef without #endif";
     case P::TooManyElseifs: return "too many branches";
-    case P::UnknownDirective: return "directive not supported yet (#include)";
+    case P::UnknownDirective: return "directive not supported";
     case P::DivisionByZero: return "division by zero";
     case P::ExpansionTooComplex: return "macro expansion too deep or too long";
+    case P::IncludeNotFound: return "cannot include the file";
+    case P::IncludeTooDeep: return "#include nested more than 20 deep";
   }
   return "preprocessor error";
 }
@@ -54,6 +63,27 @@ class PlainLocator {
   std::vector<size_t> starts_;
 };
 
+// An included file: a regular file of at most kMaxIncludeBytes (not a device or a pipe, which
+// might never end).
+std::optional<std::string> read_include(const std::string& path, std::string* why) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    *why = std::filesystem::exists(path, ec) ? "not a regular file" : "no such file";
+    return std::nullopt;
+  }
+  const uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec || size > kMaxIncludeBytes) {
+    *why = "larger than " + std::to_string(kMaxIncludeBytes) + " bytes";
+    return std::nullopt;
+  }
+  return read_text_file(path, why);
+}
+
+std::optional<std::string> no_include(const std::string&, std::string* why) {
+  *why = "this compilation reads no files";
+  return std::nullopt;
+}
+
 }  // namespace
 
 bool CompileResult::ok() const {
@@ -74,6 +104,10 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   po.max_name_length = 24;
   po.allow_elifdef = true;
   po.allow_function_macros = true;
+  po.allow_include = true;
+  po.max_include_depth = 20;  // 1.1
+  po.backslash_separates = true;
+  po.read_file = options.read_includes ? read_include : no_include;
   DiagnosticList pre_diags;
   const bool preprocess = source.text.find('#') != std::string::npos;
   preproc::Preprocessed pre;
@@ -96,13 +130,19 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   bytecode::Image image;
   const bool ok = compiler.compile(image) && diags.empty();
   // A line whose characters did not lex gets no second error from the parser.
-  std::vector<int> bad_lines;
-  for (const Diagnostic& d : diags) bad_lines.push_back(d.where.line);
+  std::vector<std::pair<std::string, int>> bad_lines;
+  for (const Diagnostic& d : diags) bad_lines.emplace_back(d.where.file, d.where.line);
   for (Diagnostic& d : compiler.diagnostics()) {
-    if (std::find(bad_lines.begin(), bad_lines.end(), d.where.line) == bad_lines.end()) diags.push_back(std::move(d));
+    const std::pair<std::string, int> line{d.where.file, d.where.line};
+    if (std::find(bad_lines.begin(), bad_lines.end(), line) == bad_lines.end()) diags.push_back(std::move(d));
   }
-  std::stable_sort(diags.begin(), diags.end(), [](const Diagnostic& a, const Diagnostic& b) {
-    return a.where.line != b.where.line ? a.where.line < b.where.line : a.where.column < b.where.column;
+  // By place: the source's own first, then each included file's, by name.
+  std::stable_sort(diags.begin(), diags.end(), [&source](const Diagnostic& a, const Diagnostic& b) {
+    const auto key = [&source](const Diagnostic& d) {
+      const bool included = d.where.file != source.name;
+      return std::tuple<bool, const std::string&, int, int>(included, d.where.file, d.where.line, d.where.column);
+    };
+    return key(a) < key(b);
   });
   limit_errors(diags, options.max_errors);
   result.diagnostics = std::move(diags);

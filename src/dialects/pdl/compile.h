@@ -14,7 +14,12 @@ struct CompileOptions {
   bool check_only = false;
   uint64_t created_unix_s = 0;
   size_t max_errors = 30;
+  // #include reads files from disk (regular files up to kMaxIncludeBytes); false: none is read
+  // (every #include is [pdl 102]), for fuzzing and for text that is not the user's.
+  bool read_includes = true;
 };
+
+constexpr uintmax_t kMaxIncludeBytes = 1u << 20;
 
 struct CompileResult {
   bytecode::Image image;

@@ -1,0 +1,4 @@
+// Included by common.h (found beside it): a procedure.
+proc add_to(long v, long * p) do
+  *p=*p+v+LIMIT;
+end;
