@@ -57,6 +57,12 @@ dialect::Evaluation Firmware::evaluate(uint32_t, uint32_t, std::string_view expr
     out.error = "no program is loaded";
     return out;
   }
+  // One expression or assignment: a statement list could call the built-ins that print or
+  // command the drive, whose texts live in the evaluator's image, not the program's.
+  if (expression.find_first_of(";\r\n") != std::string_view::npos) {
+    out.error = "one expression or assignment, without ';'";
+    return out;
+  }
   vm::Machine& pm = program_->machine();
   // A variable alone is read as the command line reads it (a DLONG as one 64-bit number).
   std::string trimmed(expression);

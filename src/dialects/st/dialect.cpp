@@ -97,8 +97,8 @@ class StDialect final : public dialect::Dialect {
   std::span<const dialect::ErrorInfo> interpreter_errors() const override { return kInterpreterErrors; }
 
   std::unique_ptr<dialect::Firmware> make_firmware(dialect::Runtime& runtime,
-                                                   const dialect::FirmwareOptions&) const override {
-    return std::make_unique<Firmware>(runtime);
+                                                   const dialect::FirmwareOptions& options) const override {
+    return std::make_unique<Firmware>(runtime, options.wire_style);
   }
 
   std::vector<std::string> download_lines(const std::vector<uint8_t>& source) const override {

@@ -34,7 +34,10 @@ uint32_t passes_local_of(const bytecode::ImageView& image, uint32_t routine) {
 
 }  // namespace
 
-Firmware::Firmware(dialect::Runtime& runtime) : runtime_(runtime), wire_(prompt_) { defaults(); }
+Firmware::Firmware(dialect::Runtime& runtime, dialect::WireStyle wire_style)
+    : runtime_(runtime), wire_(prompt_, wire_style) {
+  defaults();
+}
 
 void Firmware::boot(std::vector<std::string>& messages) {
   axis_ = &runtime_.axis();

@@ -41,7 +41,7 @@ struct MotionTask {
 
 class Firmware final : public dialect::Firmware, public vm::Host {
  public:
-  explicit Firmware(dialect::Runtime& runtime);
+  Firmware(dialect::Runtime& runtime, dialect::WireStyle wire_style);
 
   // --- dialect::Firmware ---
   const dialect::WireForm& wire() const override { return wire_; }
