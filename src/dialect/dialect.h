@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "bytecode/image.h"
@@ -27,6 +28,9 @@ struct ErrorInfo {
 struct CompileSettings {
   bool check_only = false;      // diagnostics only (`uprog check`): no stored form is built
   uint64_t created_unix_s = 0;  // stored where the form has a date; 0 keeps builds reproducible
+  // `uprog check -D NAME=value`: names the preprocessor sees with a value (ST: a drive parameter's
+  // value for #IF instead of its default); a dialect without such names ignores them.
+  std::vector<std::pair<std::string, std::string>> defines;
 };
 
 struct CompileOutput {

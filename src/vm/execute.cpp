@@ -93,8 +93,10 @@ SliceResult Machine::run_slice(uint32_t thread, Budget budget) {
   if (first.end != SliceEnd::BudgetSpent || budget.instructions == 1) return first;
   Budget rest = budget;
   if (rest.instructions != 0) rest.instructions -= 1;
+  if (rest.lines != 0) rest.lines -= first.lines;  // the first instruction may end a line
   SliceResult more = execute(t, rest);
   more.executed += first.executed;
+  more.lines += first.lines;
   return more;
 }
 
@@ -126,6 +128,8 @@ SliceResult Machine::execute_loop(Thread& t, Budget budget) {
   int32_t detail = 0;
   SliceEnd end = SliceEnd::BudgetSpent;
 
+// Line ends passed so far; a budget of 0 (no limit) counts nothing.
+#define LINES_ENDED() (budget.lines != 0 ? budget.lines - lines.left() : 0)
 #define SAVE() (t.pc = static_cast<uint32_t>(ip - code), t.sp = sp)
 #define LOAD() (ip = code + t.pc, sp = t.sp, locals = t.frames[t.frame_count - 1].locals)
 #define DISPATCH()                           \
@@ -843,7 +847,7 @@ finished:
   SAVE();
   reset_thread(t);
   t.last_error = RunError::None;
-  return {SliceEnd::Finished, kCounted ? budget.instructions - steps.left() : 0};
+  return {SliceEnd::Finished, kCounted ? budget.instructions - steps.left() : 0, LINES_ENDED()};
 
 raise_error:
   SAVE();
@@ -855,12 +859,13 @@ raise_error:
     if (--back_jumps.now == 0) goto out_of_back_jumps;
     DISPATCH();
   }
-  return {SliceEnd::Error, kCounted ? budget.instructions - steps.left() : 0};
+  return {SliceEnd::Error, kCounted ? budget.instructions - steps.left() : 0, LINES_ENDED()};
 
 stop:
   SAVE();
-  return {end, kCounted ? budget.instructions - steps.left() : 0};
+  return {end, kCounted ? budget.instructions - steps.left() : 0, LINES_ENDED()};
 
+#undef LINES_ENDED
 #undef JUMP_TO
 #undef JUMP_OR
 #undef SAVE

@@ -54,6 +54,7 @@ enum class SliceEnd : uint8_t {
 struct SliceResult {
   SliceEnd end;
   uint64_t executed;  // instructions run in this slice; counted only under an instruction budget
+  uint64_t lines = 0;  // line ends passed in this slice; counted only under a line budget
 };
 
 struct LoadStatus {

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """`uprog sim` serving an S300 drive over TCP, as `uprog term` or a host program sees it: the
-prompt and echo with PROMPT=1, BEL ERR errors, the MSG=2 compile report on PLCRUN and PRINTF
-text between answers. Usage: sim_check.py UPROG PROGRAM.st"""
+prompt and echo with PROMPT=1, BEL ERR errors, the MSG=2 compile report on PLCRUN and at boot
+(COLDSTART with MSG=2 saved) and PRINTF text between answers. Usage: sim_check.py UPROG PROGRAM.st"""
 import socket
 import subprocess
 import sys
@@ -38,6 +38,12 @@ try:
     talk(b"MSG 2\r", b"MSG 2\r\n-->")
     talk(b"PLCRUN\r", b"PLCRUN\r\nPLC compile\r\nPLCMAIN (size=4)\r\nload factor 0\r\nPLC start\r\n"
                       b"Hello world in the year 2011\r\n-->")
+    # MSG=2 saved, then a cold start: the drive compiles its stored source at boot and prints
+    # the same report before the program's PRINTF; PROMPT=1 was saved too.
+    talk(b"SAVE\r", b"SAVE\r\n-->")
+    talk(b"COLDSTART\r", b"COLDSTART\r\nPLC compile\r\nPLCMAIN (size=4)\r\nload factor 0\r\nPLC start\r\n"
+                         b"Hello world in the year 2011\r\n-->")
+    talk(b"MSG\r", b"MSG\r\n2\r\n-->")
     print("ok")
 finally:
     sim.kill()

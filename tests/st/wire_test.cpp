@@ -53,10 +53,28 @@ TEST(st_wire, PromptOneEchoesAndPrompts) {
 TEST(st_wire, UnsolicitedTextEndsItsLinesWithCrLf) {
   std::string out;
   const int32_t prompt = 0;
-  st::S300Wire wire(prompt);
+  st::S300Wire wire(prompt, dialect::WireStyle::kDrive);
   wire.write_output("Hello world in the year 2011\n", out);
   EXPECT_EQ(out, "Hello world in the year 2011\r\n");
   EXPECT_EQ(st::answer_text({"unknown command", 1}), "\aERR 1 unknown command");
+}
+
+// The readable form (docs/protocol.md) for uprog's own hosts: `;` after each answer, `?CODE
+// TEXT;` for an error, `;` for a line without answers, CR LF after the line; no echo, no prompt
+// whatever PROMPT says.
+TEST(st_wire, TheReadableFormIsTheProtocolsOwn) {
+  const int32_t prompt = 1;
+  st::S300Wire wire(prompt, dialect::WireStyle::kReadable);
+  std::string out;
+  EXPECT_FALSE(wire.echoes());
+  wire.write_echo("VER\r", out);
+  wire.write_answer({"uprog S300 sim 1.0", 0}, out);
+  wire.write_line_end(out);
+  wire.write_answer({"unknown command", 1}, out);
+  wire.write_line_end(out);
+  wire.write_silent_line(out);
+  wire.write_line_end(out);
+  EXPECT_EQ(out, "uprog S300 sim 1.0;\r\n?1 unknown command;\r\n;\r\n");
 }
 
 }  // namespace

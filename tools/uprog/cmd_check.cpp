@@ -17,17 +17,26 @@ struct CheckOptions {
   std::vector<std::string> files;
   std::string format = "text";
   std::string dialect;
+  std::vector<std::string> defines;  // -D NAME=value
 };
 
 int check(const CheckOptions& o) {
   std::vector<Diagnostic> all;
   bool errors = false;
+  dialect::CompileSettings settings;
+  settings.check_only = true;  // every diagnostic of a build, without building the stored form
+  for (const std::string& d : o.defines) {
+    const size_t eq = d.find('=');
+    if (eq == 0 || eq == std::string::npos || eq + 1 == d.size()) {
+      fmt::print(stderr, "uprog check: -D {}: expected NAME=value\n", d);
+      return 2;
+    }
+    settings.defines.emplace_back(d.substr(0, eq), d.substr(eq + 1));
+  }
   prepare_heap_for_compiling(o.files);
   for (const std::string& f : o.files) {
     const dialect::Dialect* d = choose_dialect(o.dialect, f, "check");
     if (d == nullptr) return 2;
-    dialect::CompileSettings settings;
-    settings.check_only = true;  // every diagnostic of a build, without building the stored form
     dialect::CompileOutput r = d->compile_file(f, settings);
     errors = errors || !r.ok();
     all.insert(all.end(), r.diagnostics.begin(), r.diagnostics.end());
@@ -42,6 +51,7 @@ void add_check(CLI::App* cmd, Action& action) {
   cmd->add_option("FILE", o->files, "source files")->required();
   cmd->add_option("--format", o->format, "text or json")->check(CLI::IsMember({"text", "json"}));
   add_dialect_option(cmd, o->dialect);
+  cmd->add_option("-D", o->defines, "NAME=value: a name the preprocessor sees with that value (ST: a drive parameter in #IF)");
   cmd->callback([&action, o] { action = [o] { return check(*o); }; });
 }
 

@@ -2,6 +2,7 @@
 // the background slice runs the init task, then the restarting background loop, on what is left.
 #include "dialect/scheduling/cyclic_tasks.h"
 
+#include "bytecode/opcodes.h"
 #include "dialect/scheduling/line_step.h"
 
 namespace uprog::scheduling {
@@ -12,16 +13,17 @@ constexpr uint64_t kSecondNs = 1'000'000'000;
 
 // A line is counted when it ends, or when the run ends inside it; a line that stops at a wait,
 // a yield or a breakpoint is counted by the step that finishes it. A step cut by the back-jump
-// cap counts too, so that a line that never ends still spends the budget.
-uint64_t lines_of(vm::SliceEnd end) {
-  switch (end) {
-    case vm::SliceEnd::LineEnd:
-    case vm::SliceEnd::Finished:
+// cap counts its last line too, so that a line that never ends still spends the budget; a
+// program that ends without a line (an empty one) costs one, as its bare end's step.
+uint64_t lines_of(const LineStep& s) {
+  switch (s.end) {
     case vm::SliceEnd::Error:
     case vm::SliceEnd::BudgetSpent:
-      return 1;
+      return s.lines + 1;
+    case vm::SliceEnd::Finished:
+      return s.lines == 0 ? 1 : s.lines;
     default:
-      return 0;
+      return s.lines;
   }
 }
 
@@ -57,9 +59,9 @@ bool CyclicTasks::set_init(uint32_t thread, uint32_t routine) {
   return true;
 }
 
-bool CyclicTasks::set_background(uint32_t thread, uint32_t routine) {
+bool CyclicTasks::set_background(uint32_t thread, uint32_t routine, uint32_t pass_local) {
   if (started_) return false;
-  main_ = {thread, routine};
+  main_ = {thread, routine, pass_local};
   return true;
 }
 
@@ -123,6 +125,8 @@ bool CyclicTasks::start(vm::Machine& machine, uint64_t now_ns) {
   credit_lines_ = 0;
   rt_lines_ = 0;
   second_end_ns_ = now_ns + kSecondNs;
+  passes_at_second_ = 0;
+  if (main_.set()) main_entry_ = machine.image().routines[main_.routine].entry;
   reset_statistics();
   for (uint32_t i = 0; i < task_count_; ++i) {
     tasks_[i].state = RunState::Ready;
@@ -155,15 +159,29 @@ Report CyclicTasks::run(vm::Machine& machine, uint64_t now_ns) {
   return report;
 }
 
-CyclicTasks::Step CyclicTasks::step(vm::Machine& machine, uint32_t thread, Report& report) {
+CyclicTasks::Step CyclicTasks::step(vm::Machine& machine, uint32_t thread, uint64_t lines,
+                                     Report& report) {
   running_ = thread;
   charged_ = 0;
-  const LineStep s = step_lines(machine, thread, 1, config_.back_jump_cap);
+  const LineStep s = step_lines(machine, thread, lines, config_.back_jump_cap);
   running_ = kNoThread;
   if (s.ran) report.mark_ran(thread);
   if (s.end == vm::SliceEnd::Error) report.add(thread, ThreadEvent::Error);
   if (s.end == vm::SliceEnd::Breakpoint) report.add(thread, ThreadEvent::Breakpoint);
-  return {s.end, lines_of(s.end) + charged_};
+  return {s.end, lines_of(s) + charged_, charged_ != 0};
+}
+
+// Up to `lines` lines in one slice. A host call that charged lines and ended the slice (a costly
+// one) has its line finished in the same step, so that the budget is looked at only where a line
+// ends; the program's own yield pauses the run as a wait does.
+CyclicTasks::Step CyclicTasks::slice(vm::Machine& machine, uint32_t thread, uint64_t lines,
+                                      Report& report) {
+  Step s = step(machine, thread, lines, report);
+  while (s.end == vm::SliceEnd::Yielded && s.charged) {
+    const Step rest = step(machine, thread, 1, report);
+    s = {rest.end, s.cost + rest.cost, rest.charged};
+  }
+  return s;
 }
 
 CyclicTasks::Flow CyclicTasks::run_tick(vm::Machine& machine, uint64_t tick, Report& report) {
@@ -191,7 +209,7 @@ CyclicTasks::Flow CyclicTasks::run_task(vm::Machine& machine, Task& task, Report
     }
     if (!can_step(status)) return Flow::Continue;  // halted, at a breakpoint: until resumed
     if (task.run_lines >= task.stats.budget_lines) return overrun(machine, task, report);
-    const Step s = step(machine, thread, report);
+    const Step s = slice(machine, thread, task.stats.budget_lines - task.run_lines, report);
     task.run_lines += s.cost;
     rt_lines_ += s.cost;
     switch (s.end) {
@@ -243,12 +261,12 @@ void CyclicTasks::run_background(vm::Machine& machine, uint64_t now_ns, Report& 
     run_main(machine, report);
   }
   if (credit_lines_ > 0) credit_lines_ = 0;  // the CPU idled: unused lines are lost
-  latch_seconds(now_ns);
+  latch_seconds(machine, now_ns);
 }
 
 void CyclicTasks::run_init(vm::Machine& machine, Report& report) {
   while (credit_lines_ > 0 && can_step(machine.status(init_.thread))) {
-    const Step s = step(machine, init_.thread, report);
+    const Step s = slice(machine, init_.thread, static_cast<uint64_t>(credit_lines_), report);
     credit_lines_ -= static_cast<int64_t>(s.cost);
     if (s.end != vm::SliceEnd::LineEnd && s.end != vm::SliceEnd::BudgetSpent) break;
   }
@@ -265,7 +283,7 @@ void CyclicTasks::run_main(vm::Machine& machine, Report& report) {
   if (!main_.set()) return;
   // A thread that cannot run (halted, stopped, killed) ends the slice at its first step.
   while (credit_lines_ > 0) {
-    const Step s = step(machine, main_.thread, report);
+    const Step s = slice(machine, main_.thread, static_cast<uint64_t>(credit_lines_), report);
     credit_lines_ -= static_cast<int64_t>(s.cost);
     switch (s.end) {
       case vm::SliceEnd::LineEnd:
@@ -281,7 +299,31 @@ void CyclicTasks::run_main(vm::Machine& machine, Report& report) {
   }
 }
 
-void CyclicTasks::latch_seconds(uint64_t now_ns) {
+// The looping background's passes finished: those begun, less the one under way (unless the
+// thread stands at its top or at the jump back to it). Its counter wraps as a 32-bit int.
+uint32_t CyclicTasks::main_passes_done(const vm::Machine& machine) const {
+  const uint32_t thread = main_.thread;
+  const uint32_t frames = machine.frame_count(thread);
+  Value begun;
+  if (frames == 0 || !machine.read_local(thread, frames - 1, main_.pass_local, begun))
+    return passes_at_second_;  // not running: nothing more finished
+  const uint32_t pc = machine.pc(thread);
+  const bytecode::ImageView& image = machine.image();
+  bool between = pc == main_entry_;
+  if (!between && frames == 1 && pc < image.code.size()) {
+    const uint32_t word = image.code[pc];
+    between = bytecode::word_op(word) == bytecode::Op::JMP && bytecode::word_a(word) == main_entry_;
+  }
+  return static_cast<uint32_t>(begun.i) - (between ? 0u : 1u);
+}
+
+void CyclicTasks::latch_seconds(const vm::Machine& machine, uint64_t now_ns) {
+  if (now_ns < second_end_ns_) return;
+  if (init_done_ && main_.set() && main_.pass_local != kNoLocal) {
+    const uint32_t done = main_passes_done(machine);
+    loops_this_second_ += static_cast<uint32_t>(done - passes_at_second_);
+    passes_at_second_ = done;
+  }
   while (now_ns >= second_end_ns_) {
     loops_last_second_ = loops_this_second_;
     loops_this_second_ = 0;

@@ -32,8 +32,12 @@ struct CyclicTaskStats {
 };
 
 // Lines are counted as they end (line_step.h), the end of a run ending its last one; a host call
-// may charge more (charge()). A run that waits or yields pauses until the task is next due and
-// goes on counting the same run; a halted task or one at a breakpoint is skipped until resumed.
+// may charge more (charge()) and then end the slice (vm::kCommandEndSlice), which finishes its
+// line before the budget is looked at again. Each run goes in one machine slice of the lines it
+// may still use: a real-time run its budget, the background its credit (the machine counts the
+// line ends), so a line costs the same as when stepped one by one. A run that waits pauses until
+// the task is next due and goes on counting the same run; a halted task or one at a breakpoint
+// is skipped until resumed.
 // An overrun or an uncaught error ends the call at once and stops that task until start(): the
 // firmware decides what else stops. A real-time run's end and the background's restart are
 // the schedule itself, not events: the report says Finished only for the init task.
@@ -47,9 +51,13 @@ class CyclicTasks {
   // not a positive whole number of ticks; tasks run fastest first, in the order added when
   // their periods are equal.
   bool add_task(uint32_t thread, uint32_t routine, uint64_t period_ns);
-  // The init and background programs may share a thread; false while started.
+  // The init and background programs may share a thread; false while started. A background
+  // routine that loops by itself names the local it counts its passes in (one added at its top,
+  // the routine's entry, which nothing else jumps to); without one it is started again each time
+  // it finishes.
+  static constexpr uint32_t kNoLocal = UINT32_MAX;
   bool set_init(uint32_t thread, uint32_t routine);
-  bool set_background(uint32_t thread, uint32_t routine);
+  bool set_background(uint32_t thread, uint32_t routine, uint32_t pass_local = kNoLocal);
   void clear();  // no tasks, no init, no background (while started: nothing)
 
   // Starts at `now_ns`: the init task alone first (when there is one), in background slices;
@@ -93,18 +101,22 @@ class CyclicTasks {
   struct Program {
     uint32_t thread = kNoThread;
     uint32_t routine = 0;
+    uint32_t pass_local = kNoLocal;
     bool set() const { return thread != kNoThread; }
   };
   // How a run of steps ended: the caller goes on, or the call ends (overrun, error).
   enum class Flow : uint8_t { Continue, EndCall };
   struct Step {
     vm::SliceEnd end;
-    uint64_t cost;  // lines: the one it ended, plus the host's charges
+    uint64_t cost;  // lines: those it ended, plus the host's charges
+    bool charged;   // a host call charged lines (and may have ended the slice inside its line)
   };
 
   bool threads_valid(const vm::Machine& machine) const;
   bool routines_start(vm::Machine& machine) const;
-  Step step(vm::Machine& machine, uint32_t thread, Report& report);
+  Step step(vm::Machine& machine, uint32_t thread, uint64_t lines, Report& report);
+  Step slice(vm::Machine& machine, uint32_t thread, uint64_t lines, Report& report);
+  uint32_t main_passes_done(const vm::Machine& machine) const;
   Flow run_tick(vm::Machine& machine, uint64_t tick, Report& report);
   Flow run_task(vm::Machine& machine, Task& task, Report& report);
   Flow overrun(vm::Machine& machine, Task& task, Report& report);
@@ -112,7 +124,7 @@ class CyclicTasks {
   void run_init(vm::Machine& machine, Report& report);
   void run_main(vm::Machine& machine, Report& report);
   void accrue(uint64_t now_ns);
-  void latch_seconds(uint64_t now_ns);
+  void latch_seconds(const vm::Machine& machine, uint64_t now_ns);
 
   static constexpr CyclicTaskStats kNoStats{};
 
@@ -136,6 +148,8 @@ class CyclicTasks {
   uint64_t second_end_ns_ = 0;
   uint64_t loops_this_second_ = 0;
   uint64_t loops_last_second_ = 0;
+  uint32_t main_entry_ = 0;        // the looping background's top
+  uint32_t passes_at_second_ = 0;  // its passes finished when the last second was latched
 };
 
 }  // namespace uprog::scheduling

@@ -31,7 +31,7 @@ LineStep step_lines(vm::Machine& machine, uint32_t thread, uint64_t lines, uint6
   const bool was_waiting = status == vm::ThreadStatus::Waiting;
   if (was_waiting) budget.instructions = kCountOnly;
   const vm::SliceResult r = machine.run_slice(thread, budget);
-  LineStep step{r.end, !was_waiting || r.executed > 0};
+  LineStep step{r.end, !was_waiting || r.executed > 0, r.lines};
   if (r.end == vm::SliceEnd::LineEnd && at_bare_end(machine, thread)) {
     step.end = run_bare_end(machine, thread, back_jump_cap);
   }

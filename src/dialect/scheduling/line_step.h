@@ -16,6 +16,7 @@ struct LineStep {
   vm::SliceEnd end = vm::SliceEnd::NotRunning;
   // False when nothing executed: the thread could not run, or its timed wait is not over.
   bool ran = false;
+  uint64_t lines = 0;  // line ends passed (the bare end adds none)
 };
 
 // Runs `thread` through `lines` line ends (or to its end, a wait, a yield, a breakpoint, an

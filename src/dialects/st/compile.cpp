@@ -136,6 +136,10 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
     const std::set<std::string> declared = declared_names(source.text);
     po.predefined = [&](std::string_view name, std::optional<int32_t>& value) {
       if (declared.count(std::string(name)) != 0) return true;
+      if (auto d = options.defines.find(name); d != options.defines.end()) {
+        value = d->second;
+        return true;
+      }
       const AsciiEntry* e = find_ascii(name);
       if (e == nullptr || e->kind == AsciiKind::Command || e->kind == AsciiKind::Text) return false;
       value = options.parameter ? options.parameter(name) : std::nullopt;

@@ -5,6 +5,7 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -26,6 +27,9 @@ struct CompileOptions {
   // A drive parameter's value at compile time, for #IF (the drive's: its current values;
   // `uprog check`: the table's defaults). Null: the defaults.
   std::function<std::optional<int32_t>(std::string_view name)> parameter;
+  // `uprog check -D NAME=value`: a parameter's value instead of its default, or a name of its
+  // own (as a #DEFINE) for #IF and #IFDEF.
+  std::map<std::string, int32_t, std::less<>> defines;
 };
 
 struct CompileResult {

@@ -4,9 +4,14 @@
 
 #include <fmt/core.h>
 
+#include <cerrno>
+#include <cstdint>
+#include <cstdlib>
+
 #include "dialects/st/compile.h"
 #include "dialects/st/errors.h"
 #include "dialects/st/firmware.h"
+#include "dialects/st/names.h"
 
 namespace uprog::st {
 namespace {
@@ -36,6 +41,25 @@ std::vector<dialect::ErrorInfo> diagnostic_table() {
   return out;
 }
 
+// `-D NAME=value` into the compiler's defines: a capital name (as #IF sees it) and a whole
+// number; anything else is error 30 at the file, and nothing is compiled.
+bool take_defines(const std::string& path, const dialect::CompileSettings& settings, CompileOptions& options,
+                  std::vector<Diagnostic>& diagnostics) {
+  for (const auto& [name, text] : settings.defines) {
+    char* end = nullptr;
+    errno = 0;
+    const long long v = std::strtoll(text.c_str(), &end, 10);
+    const bool number = !text.empty() && end != nullptr && *end == '\0' && errno == 0 && v >= INT32_MIN && v <= INT32_MAX;
+    if (!number) {
+      diagnostics.push_back(make_error(Error::BadDirective, Location{path, 0, 0},
+                                       fmt::format("-D {}={}: the value must be a whole number", name, text)));
+      continue;
+    }
+    options.defines[upper(name)] = static_cast<int32_t>(v);
+  }
+  return diagnostics.empty();
+}
+
 class StDialect final : public dialect::Dialect {
  public:
   std::string_view name() const override { return "st"; }
@@ -49,8 +73,9 @@ class StDialect final : public dialect::Dialect {
     CompileOptions options;
     options.check_only = settings.check_only;
     options.created_unix_s = settings.created_unix_s;
-    CompileResult r = st::compile_file(path, options);
     dialect::CompileOutput out;
+    if (!take_defines(path, settings, options, out.diagnostics)) return out;
+    CompileResult r = st::compile_file(path, options);
     out.diagnostics = std::move(r.diagnostics);
     if (out.ok() && !settings.check_only) {
       std::string error;
@@ -72,8 +97,8 @@ class StDialect final : public dialect::Dialect {
   std::span<const dialect::ErrorInfo> interpreter_errors() const override { return kInterpreterErrors; }
 
   std::unique_ptr<dialect::Firmware> make_firmware(dialect::Runtime& runtime,
-                                                   const dialect::FirmwareOptions&) const override {
-    return std::make_unique<Firmware>(runtime);
+                                                   const dialect::FirmwareOptions& options) const override {
+    return std::make_unique<Firmware>(runtime, options.wire_style);
   }
 
   std::vector<std::string> download_lines(const std::vector<uint8_t>& source) const override {

@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "bytecode/image.h"
+#include "dialects/st/codegen.h"
 #include "dialects/st/names.h"
 #include "drive/axis.h"
 #include "support/format_message.h"
@@ -23,9 +24,20 @@ vm::MachineConfig machine_config() {
   return c;
 }
 
+// PLCMAIN's pass counter (codegen.h): its routine's last local.
+uint32_t passes_local_of(const bytecode::ImageView& image, uint32_t routine) {
+  const bytecode::RoutineRecord r = image.routines[routine];
+  if (r.locals == 0) return scheduling::CyclicTasks::kNoLocal;
+  const bytecode::LocalRecord l = image.locals[r.first_local + r.locals - 1];
+  return image.string(l.name) == kMainPassesLocal ? r.locals - 1 : scheduling::CyclicTasks::kNoLocal;
+}
+
 }  // namespace
 
-Firmware::Firmware(dialect::Runtime& runtime) : runtime_(runtime), wire_(prompt_) { defaults(); }
+Firmware::Firmware(dialect::Runtime& runtime, dialect::WireStyle wire_style)
+    : runtime_(runtime), wire_(prompt_, wire_style) {
+  defaults();
+}
 
 void Firmware::boot(std::vector<std::string>& messages) {
   axis_ = &runtime_.axis();
@@ -127,7 +139,7 @@ int32_t Firmware::compile_and_start() {
   for (const bytecode::Task& t : program_->image().tasks) {
     const auto kind = static_cast<ProgramKind>(t.number);
     if (kind == ProgramKind::Init) schedule_.set_init(thread, t.routine);
-    else if (kind == ProgramKind::Main) schedule_.set_background(thread, t.routine);
+    else if (kind == ProgramKind::Main) schedule_.set_background(thread, t.routine, passes_local_of(m.image(), t.routine));
     else schedule_.add_task(thread, t.routine, t.period_ns);
     threads_.push_back({thread, std::string(program_name(kind))});
     ++thread;
@@ -245,7 +257,8 @@ std::vector<dialect::ThreadInfo> Firmware::threads() const {
 }
 
 // --- Host: XREAD, XWRITE, COMMAND and PRINTF go through the command line; a refusal does not
-// stop the program (MSG >= 1 prints it with the program and line).
+// stop the program (MSG >= 1 prints it with the program and line). Each costs 625 lines and ends
+// the machine's slice, so that the schedule looks at its budget again once the line has ended.
 
 namespace {
 
@@ -264,7 +277,7 @@ vm::CommandStatus Firmware::read(uint32_t command, int32_t, Value& out) {
   schedule_.charge(kCostlyCallLines);
   const AsciiEntry* e = ascii_by_id(command);
   out = Value::of_int(0);
-  if (e == nullptr) return vm::kCommandOk;
+  if (e == nullptr) return vm::kCommandEndSlice;
   in_program_ = true;
   const std::vector<dialect::Answer> a = command_line(e->name);
   in_program_ = false;
@@ -274,24 +287,24 @@ vm::CommandStatus Firmware::read(uint32_t command, int32_t, Value& out) {
   } else if (!a.empty() && msg_ >= 1) {
     say(running_place(*program_, schedule_.running(), threads_) + ": " + answer_text(a[0]).substr(1));
   }
-  return vm::kCommandOk;
+  return vm::kCommandEndSlice;
 }
 
 vm::CommandStatus Firmware::write(uint32_t command, int32_t, Value value) {
   schedule_.charge(kCostlyCallLines);
   const AsciiEntry* e = ascii_by_id(command);
-  if (e == nullptr) return vm::kCommandOk;
+  if (e == nullptr) return vm::kCommandEndSlice;
   in_program_ = true;
   const std::vector<dialect::Answer> a = command_line(std::string(e->name) + " " + std::to_string(value.i));
   in_program_ = false;
   if (!a.empty() && a[0].is_error() && msg_ >= 1)
     say(running_place(*program_, schedule_.running(), threads_) + ": " + answer_text(a[0]).substr(1));
-  return vm::kCommandOk;
+  return vm::kCommandEndSlice;
 }
 
 vm::CommandStatus Firmware::execute(uint32_t command, int32_t, const Value* args, uint32_t count) {
   schedule_.charge(kCostlyCallLines);
-  if (command != kCommandAction || count != 1 || !program_) return vm::kCommandOk;
+  if (command != kCommandAction || count != 1 || !program_) return vm::kCommandEndSlice;
   const std::string_view text = program_->machine().image().text(static_cast<uint32_t>(args[0].i));
   in_program_ = true;
   const std::vector<dialect::Answer> answers = command_line(text);
@@ -299,14 +312,14 @@ vm::CommandStatus Firmware::execute(uint32_t command, int32_t, const Value* args
   for (const dialect::Answer& a : answers) {
     if (a.is_error() && msg_ >= 1) say(running_place(*program_, schedule_.running(), threads_) + ": " + answer_text(a).substr(1));
   }
-  return vm::kCommandOk;
+  return vm::kCommandEndSlice;
 }
 
 vm::CommandStatus Firmware::message(uint32_t, uint32_t text, const Value* args, uint32_t count) {
   schedule_.charge(kCostlyCallLines);
-  if (!program_) return vm::kCommandOk;
+  if (!program_) return vm::kCommandEndSlice;
   runtime_.output(format_message(program_->machine().image().text(text), args, count));
-  return vm::kCommandOk;
+  return vm::kCommandEndSlice;
 }
 
 }  // namespace uprog::st

@@ -41,7 +41,7 @@ struct MotionTask {
 
 class Firmware final : public dialect::Firmware, public vm::Host {
  public:
-  explicit Firmware(dialect::Runtime& runtime);
+  Firmware(dialect::Runtime& runtime, dialect::WireStyle wire_style);
 
   // --- dialect::Firmware ---
   const dialect::WireForm& wire() const override { return wire_; }
@@ -57,6 +57,9 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::string program_error_text() const override;
   std::string state_summary() const override;
   std::vector<dialect::ThreadInfo> threads() const override;
+  // The debugger (docs/debugging.md): the PLC programs are its threads; an expression in ST.
+  dialect::LoadedProgram* debug_program() override { return program_.get(); }
+  dialect::Evaluation evaluate(uint32_t thread, uint32_t depth, std::string_view expression) override;  // debug_hooks.cpp
 
   // --- vm::Host ---
   vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override;

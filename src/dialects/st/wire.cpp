@@ -9,6 +9,9 @@ dialect::FramerOptions framing_options() {
   return o;
 }
 
+S300Wire::S300Wire(const int32_t& prompt, dialect::WireStyle style)
+    : prompt_(prompt), style_(style), readable_(framing_options()) {}
+
 dialect::FramerOptions S300Wire::framing() const { return framing_options(); }
 
 std::string answer_text(const dialect::Answer& a) {
@@ -17,17 +20,24 @@ std::string answer_text(const dialect::Answer& a) {
 }
 
 void S300Wire::write_answer(const dialect::Answer& a, std::string& out) const {
+  if (!drive_style()) return readable_.write_answer(a, out);
   for (char c : answer_text(a)) out.push_back(c == '\r' || c == '\n' ? ' ' : c);
   out += "\r\n";
 }
 
+// The drive answers a write with nothing; the readable form marks it, as every uprog drive does.
+void S300Wire::write_silent_line(std::string& out) const {
+  if (!drive_style()) readable_.write_silent_line(out);
+}
+
 void S300Wire::write_line_end(std::string& out) const {
+  if (!drive_style()) return readable_.write_line_end(out);
   if (prompt_ != 0) out += "-->";
 }
 
 // An LF is not echoed: after a CR it is the same line end, and a CR LF went back already.
 void S300Wire::write_echo(std::string_view bytes, std::string& out) const {
-  if (prompt_ == 0) return;
+  if (!echoes()) return;
   for (char c : bytes) {
     if (c == '\r') out += "\r\n";
     else if (c != '\n') out.push_back(c);
