@@ -16,7 +16,7 @@ let dc;
 // A client whose requests may take 30 s rather than the library's 5: CI runs this beside the
 // other tests on two cores, and under the sanitizers.
 function newClient() {
-  const client = newClient();
+  const client = new DebugClient(uprog, 'dap', 'uprog');
   client.defaultTimeout = 30000;
   return client;
 }
