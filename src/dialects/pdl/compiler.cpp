@@ -92,6 +92,7 @@ std::string Compiler::expect_name() {
 }
 
 void Compiler::error(Error e, size_t offset, std::string_view detail) {
+  if (expression_abandoned_ && e == Error::Expected) return;  // after [pdl 67] in this expression
   if (!is_warning(e)) {
     ++error_count_;
     if (error_count_ > 30) return;

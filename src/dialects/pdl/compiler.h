@@ -166,6 +166,7 @@ class Compiler {
   // --- expressions and conditions (compiler_expr.cpp)
   Ty expr(bool in_condition = false, int level = 0);
   Ty unary(bool in_condition);
+  Ty operand(bool in_condition);  // unary's body, one nesting level in
   Ty primary(bool in_condition);
   Ty builtin(const std::string& name, size_t at);
   Ty name_value(const Token& name_token, bool in_condition);
@@ -205,6 +206,9 @@ class Compiler {
   std::string source_name_;
   std::vector<Diagnostic> diagnostics_;
   size_t error_count_ = 0;
+  static constexpr int kMaxExpressionDepth = 200;  // [pdl 67]
+  int expression_depth_ = 0;
+  bool expression_abandoned_ = false;  // [pdl 67] reported: the open levels' ')' are not
 
   bytecode::Image image_;
   CodeBuilder code_{image_.code};

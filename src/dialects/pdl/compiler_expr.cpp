@@ -116,7 +116,27 @@ Ty Compiler::expr(bool in_condition, int level) {
   return a;
 }
 
+// Every operand is parsed here, one level deeper for each '(' and unary operator around it: the
+// limit keeps the parser's own stack bounded whatever the source (a fuzzer's 10 000 '(').
 Ty Compiler::unary(bool in_condition) {
+  if (expression_depth_ == 0) expression_abandoned_ = false;
+  if (expression_depth_ >= kMaxExpressionDepth) {
+    error(Error::ExpressionTooDeep, peek().offset);
+    // The rest of the command is skipped up to its ';', and the ')' and ']' the levels still
+    // open expect are not reported again (error()).
+    expression_abandoned_ = true;
+    const size_t from = pos_;
+    while (peek().kind != Tok::End && !at_op(";") && !(pos_ != from && peek().line_start)) next();
+    push_int(0);
+    return Ty::Int;
+  }
+  ++expression_depth_;
+  const Ty ty = operand(in_condition);
+  --expression_depth_;
+  return ty;
+}
+
+Ty Compiler::operand(bool in_condition) {
   const Token& t = peek();
   if (at_op("-")) {
     next();
