@@ -101,7 +101,7 @@ void Firmware::download_expression(std::string_view expression, DownloadReceiver
   if (!r.ok) answers.push_back(error_answer(r.storage_failed ? kErrorStorage : kErrorDownloadRefused, r.error));
 }
 
-void Firmware::upload(std::string_view argument, std::vector<Answer>& answers) {
+void Firmware::recorder_upload(std::string_view argument, std::vector<Answer>& answers) {
   const std::optional<int32_t> n = upload_number(argument);
   if (!n) {
     answers.push_back(error_answer(kErrorSyntax, "Command syntax error: BH=n takes a number"));
@@ -118,7 +118,7 @@ void Firmware::upload(std::string_view argument, std::vector<Answer>& answers) {
 void Firmware::expression(std::string_view text, std::vector<Answer>& answers) {
   if (program_control(std::string(text), answers)) return;
   if (const std::optional<std::string_view> argument = upload_request(text)) {
-    upload(*argument, answers);
+    recorder_upload(*argument, answers);
     return;
   }
   // A command that answers text (VR) is no expression: its text is the answer.

@@ -90,7 +90,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   void download_expression(std::string_view expression, DownloadReceiver& download,
                            std::vector<dialect::Answer>& answers);
   void expression(std::string_view text, std::vector<dialect::Answer>& answers);
-  void upload(std::string_view argument, std::vector<dialect::Answer>& answers);  // BH=n
+  void recorder_upload(std::string_view argument, std::vector<dialect::Answer>& answers);  // BH=n
   bool program_control(const std::string& text, std::vector<dialect::Answer>& answers);
   void run_line(const std::string& text, std::vector<dialect::Answer>& answers);
   dialect::Answer error_answer(int32_t code, std::string why);
