@@ -13,13 +13,6 @@ namespace {
 
 double floor_mod(double a, double m) { return a - m * std::floor(a / m); }
 
-// `a != b` of std::array calls memcmp; six words compare faster in line.
-bool same_logic(const std::array<int32_t, kInputCount>& a, const std::array<int32_t, kInputCount>& b) {
-  int32_t differ = 0;
-  for (size_t i = 0; i < a.size(); ++i) differ |= a[i] ^ b[i];
-  return differ == 0;
-}
-
 }  // namespace
 
 Axis::Axis(const MotorModel& motor)
@@ -412,7 +405,6 @@ uint32_t Axis::scan_inputs() {
     }
   }
   inputs_changed_ = false;
-  scanned_logic_ = params_.input_logic;
   inhibit_active_ = forward_limit_active_ = reverse_limit_active_ = hard_stop_active_ = false;
   for (int n = 1; n <= kInputCount; ++n) {
     if (!input_was_active_[n - 1]) continue;
@@ -612,9 +604,7 @@ uint32_t Axis::step() {
   time_us_ += period_us();
   if (any_switch_) follow_position_switches();
   home_input_rose_ = false;
-  // IL may also have been changed through parameters(): compared, not trusted.
-  if (inputs_changed_ || inhibit_active_ || !same_logic(params_.input_logic, scanned_logic_))
-    events |= scan_inputs();
+  if (inputs_changed_ || inhibit_active_) events |= scan_inputs();
   const double position_before = motor_state_.position_counts;
 
   if (motor_on_ && !servo_ready_) {

@@ -247,7 +247,6 @@ class Axis {
   // scan_inputs runs only when an input or its IL may have changed, or an inhibit holds the
   // motor off; it leaves here what enforce_limits needs, so the usual cycle reads no input.
   bool inputs_changed_ = true;
-  std::array<int32_t, kInputCount> scanned_logic_{};  // IL as last scanned
   bool inhibit_active_ = false;
   bool forward_limit_active_ = false;
   bool reverse_limit_active_ = false;

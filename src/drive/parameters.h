@@ -50,7 +50,8 @@ struct Parameters {
   int32_t target_radius_counts = 100;                // TR[1]
   int32_t target_time_ms = 20;                       // TR[2]
 
-  // IL[n]: 7 = general purpose, active high: an unwired (low) input is inactive.
+  // IL[n]: 7 = general purpose, active high: an unwired (low) input is inactive. Changed only
+  // through Axis::set_input_logic() or load_parameters(), which rescan the inputs.
   std::array<int32_t, kInputCount> input_logic{7, 7, 7, 7, 7, 7};
 
   int32_t speed_counts_per_s = 10000;            // SP

@@ -7,9 +7,18 @@
 namespace uprog::drive {
 namespace {
 
+// The profile's start state must be set before its first segment is pushed.
 void push(Profile& p, double duration_s, double accel) {
   if (duration_s <= 0.0) return;
-  p.segments[static_cast<size_t>(p.segment_count++)] = {duration_s, accel};
+  double pos = p.start_position_counts;
+  double vel = p.start_velocity_counts_per_s;
+  if (p.segment_count > 0) {
+    const Segment& last = p.segments[static_cast<size_t>(p.segment_count - 1)];
+    pos = p.end_position_counts;
+    vel = last.start_velocity_counts_per_s + last.accel_counts_per_s2 * last.duration_s;
+  }
+  p.segments[static_cast<size_t>(p.segment_count++)] = {duration_s, accel, pos, vel};
+  p.end_position_counts = pos + (vel * duration_s + 0.5 * accel * duration_s * duration_s);
 }
 
 double sign(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); }
@@ -55,14 +64,7 @@ double Profile::duration_s() const {
 
 ProfileSample Profile::final_state() const {
   if (has_target) return {target_counts, 0.0, 0.0};
-  double pos = start_position_counts;
-  double vel = start_velocity_counts_per_s;
-  for (int i = 0; i < segment_count; ++i) {
-    const Segment& seg = segments[static_cast<size_t>(i)];
-    pos += vel * seg.duration_s + 0.5 * seg.accel_counts_per_s2 * seg.duration_s * seg.duration_s;
-    vel += seg.accel_counts_per_s2 * seg.duration_s;
-  }
-  return {pos, end_velocity_counts_per_s, 0.0};
+  return {segment_count > 0 ? end_position_counts : start_position_counts, end_velocity_counts_per_s, 0.0};
 }
 
 Profile plan_move(double start_position_counts, double start_velocity_counts_per_s,
@@ -121,19 +123,20 @@ Profile plan_stop(double start_position_counts, double start_velocity_counts_per
 }
 
 ProfileSample sample(const Profile& profile, double t_s) {
-  double pos = profile.start_position_counts;
-  double vel = profile.start_velocity_counts_per_s;
+  // The time left is reduced segment by segment, as final_state() adds them up.
   double remaining = std::max(t_s, 0.0);
   for (int i = 0; i < profile.segment_count; ++i) {
     const Segment& seg = profile.segments[static_cast<size_t>(i)];
-    const double dt = std::min(remaining, seg.duration_s);
-    pos += vel * dt + 0.5 * seg.accel_counts_per_s2 * dt * dt;
-    vel += seg.accel_counts_per_s2 * dt;
-    remaining -= dt;
-    if (dt < seg.duration_s) return {pos, vel, seg.accel_counts_per_s2};
+    if (remaining < seg.duration_s) {
+      const double vel = seg.start_velocity_counts_per_s;
+      return {seg.start_position_counts + (vel * remaining + 0.5 * seg.accel_counts_per_s2 * remaining * remaining),
+              vel + seg.accel_counts_per_s2 * remaining, seg.accel_counts_per_s2};
+    }
+    remaining -= seg.duration_s;
   }
-  if (profile.has_target) return {profile.target_counts, 0.0, 0.0};
-  return {pos + profile.end_velocity_counts_per_s * remaining, profile.end_velocity_counts_per_s, 0.0};
+  const ProfileSample end = profile.final_state();
+  if (profile.has_target) return end;
+  return {end.position_counts + end.velocity_counts_per_s * remaining, end.velocity_counts_per_s, 0.0};
 }
 
 }  // namespace uprog::drive

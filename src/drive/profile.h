@@ -15,6 +15,10 @@ struct MotionLimits {
 struct Segment {
   double duration_s;
   double accel_counts_per_s2;
+  // The state the segment starts from, kept when it is planned so that sampling does not add up
+  // the segments before it every servo cycle.
+  double start_position_counts = 0.0;
+  double start_velocity_counts_per_s = 0.0;
 };
 
 // Reference state at one instant.
@@ -32,6 +36,7 @@ struct Profile {
   double start_velocity_counts_per_s = 0.0;
   std::array<Segment, kMaxSegments> segments{};
   int segment_count = 0;
+  double end_position_counts = 0.0;  // where the last segment ends (the start with none)
   double end_velocity_counts_per_s = 0.0;  // exact, so a move ends at rest without rounding
   bool has_target = false;                 // a move: from its end on, the position is exactly
   double target_counts = 0.0;              // the target, free of the segments' rounding

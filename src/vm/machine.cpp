@@ -261,9 +261,6 @@ void Machine::kill(uint32_t thread) {
   if (thread < thread_count_) reset_thread(threads_[thread]);
 }
 
-ThreadStatus Machine::status(uint32_t thread) const {
-  return thread < thread_count_ ? threads_[thread].status : ThreadStatus::Idle;
-}
 RunError Machine::last_error(uint32_t thread) const {
   return thread < thread_count_ ? threads_[thread].last_error : RunError::NoSuchThread;
 }

@@ -102,7 +102,7 @@ class Machine {
   void resume(uint32_t thread);  // a halted thread, or one at a breakpoint, runs again
   void kill(uint32_t thread);    // drops the thread's frames; it becomes idle
 
-  ThreadStatus status(uint32_t thread) const;
+  ThreadStatus status(uint32_t thread) const;  // inline below: firmware asks it every cycle
   RunError last_error(uint32_t thread) const;
   int32_t error_detail(uint32_t thread) const;  // the drive's code for CommandRefused
   uint32_t pc(uint32_t thread) const;
@@ -213,5 +213,9 @@ class Machine {
   Breakpoint* breakpoints_ = nullptr;
   uint32_t breakpoint_count_ = 0;
 };
+
+inline ThreadStatus Machine::status(uint32_t thread) const {
+  return thread < thread_count_ ? threads_[thread].status : ThreadStatus::Idle;
+}
 
 }  // namespace uprog::vm
