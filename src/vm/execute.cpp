@@ -673,6 +673,9 @@ op_INCLJEOL: {
 op_STLJEOL:
   locals[B()] = *--sp;
   END_LINE_AND_JUMP()
+op_STGJEOL:
+  globals_[B()].data[0] = *--sp;
+  END_LINE_AND_JUMP()
 #undef END_LINE_AND_JUMP
 op_RETEOL:
   // The line ends here; the return is the line's last instruction, so a slice whose line
@@ -726,6 +729,91 @@ op_ADDFLLS: LOCALS_ARITH(float, f, a + b, locals[A()].f)
 op_SUBFLLS: LOCALS_ARITH(float, f, a - b, locals[A()].f)
 op_MULFLLS: LOCALS_ARITH(float, f, a * b, locals[A()].f)
 #undef LOCALS_ARITH
+
+// The global forms: element 0 of scalar globals, as LDG and STG read and write it.
+#define GLOBAL(n) (globals_[n].data[0])
+op_STGEOL:
+  GLOBAL(A()) = *--sp;
+  ++ip;
+  if (--lines.now == 0) goto out_of_lines;
+  DISPATCH();
+op_STGK:
+  GLOBAL(A()) = constants_[B()];
+  ip += 2;
+  DISPATCH();
+op_LDG2:
+  sp[0] = GLOBAL(A());
+  sp[1] = GLOBAL(B());
+  sp += 2;
+  ip += 2;
+  DISPATCH();
+op_ADDGK:
+  (sp++)->i = arith::wrap_add(GLOBAL(A()).i, static_cast<int32_t>(B()));
+  ip += 2;
+  DISPATCH();
+op_REMGK:
+  (sp++)->i = arith::int_rem(GLOBAL(A()).i, static_cast<int32_t>(B()));
+  ip += 2;
+  DISPATCH();
+op_INCG: {
+  int32_t& counter = GLOBAL(A()).i;
+  counter = arith::wrap_add(counter, static_cast<int32_t>(B()));
+  ip += 2;
+  DISPATCH();
+}
+op_JZG:
+  if (GLOBAL(B()).i == 0) JUMP_TO(code + A()); else ip += 2;
+  DISPATCH();
+op_JNZG:
+  if (GLOBAL(B()).i != 0) JUMP_TO(code + A()); else ip += 2;
+  DISPATCH();
+#define JUMP_GLOBAL_CONST(op)                                                  \
+  {                                                                            \
+    const uint32_t pair = B();                                                 \
+    const int32_t a = GLOBAL(bytecode::packed_first(pair)).i;                  \
+    if (a op constants_[bytecode::packed_second(pair)].i) JUMP_TO(code + A()); \
+    else ip += 2;                                                              \
+    DISPATCH();                                                                \
+  }
+// "Jump unless", as the float forms on locals: NaN compares false and falls through.
+#define JUMP_UNLESS_GLOBAL_CONST(op)                                           \
+  {                                                                            \
+    const uint32_t pair = B();                                                 \
+    const float a = GLOBAL(bytecode::packed_first(pair)).f;                    \
+    const float b = constants_[bytecode::packed_second(pair)].f;               \
+    if (!(a op b)) JUMP_TO(code + A()); else ip += 2;                          \
+    DISPATCH();                                                                \
+  }
+op_JEQGK: JUMP_GLOBAL_CONST(==)
+op_JNEGK: JUMP_GLOBAL_CONST(!=)
+op_JLTGK: JUMP_GLOBAL_CONST(<)
+op_JLEGK: JUMP_GLOBAL_CONST(<=)
+op_JGTGK: JUMP_GLOBAL_CONST(>)
+op_JGEGK: JUMP_GLOBAL_CONST(>=)
+op_JNEQFGK: JUMP_UNLESS_GLOBAL_CONST(==)
+op_JNNEFGK: JUMP_UNLESS_GLOBAL_CONST(!=)
+op_JNLTFGK: JUMP_UNLESS_GLOBAL_CONST(<)
+op_JNLEFGK: JUMP_UNLESS_GLOBAL_CONST(<=)
+op_JNGTFGK: JUMP_UNLESS_GLOBAL_CONST(>)
+op_JNGEFGK: JUMP_UNLESS_GLOBAL_CONST(>=)
+#undef JUMP_GLOBAL_CONST
+#undef JUMP_UNLESS_GLOBAL_CONST
+#define GLOBALS_ARITH(type, field, expr)                                   \
+  {                                                                        \
+    const uint32_t pair = B();                                             \
+    const type a = GLOBAL(bytecode::packed_first(pair)).field;             \
+    const type b = GLOBAL(bytecode::packed_second(pair)).field;            \
+    (sp++)->field = (expr);                                                \
+    ip += 2;                                                               \
+    DISPATCH();                                                            \
+  }
+op_ADDIGG: GLOBALS_ARITH(int32_t, i, arith::wrap_add(a, b))
+op_SUBIGG: GLOBALS_ARITH(int32_t, i, arith::wrap_sub(a, b))
+op_ADDFGG: GLOBALS_ARITH(float, f, a + b)
+op_SUBFGG: GLOBALS_ARITH(float, f, a - b)
+op_MULFGG: GLOBALS_ARITH(float, f, a * b)
+#undef GLOBALS_ARITH
+#undef GLOBAL
 
 op_CMDGET: {
   Value v;
