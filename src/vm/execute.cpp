@@ -63,6 +63,26 @@ bool compare(int32_t how, int32_t a, int32_t b) {
   }
 }
 
+// For each comparison (== != < <= > >=, four bits each), the outcomes for which it holds:
+// bit 0 a < b, bit 1 a == b, bit 2 a > b, bit 3 unordered (a NaN; only != holds).
+constexpr uint32_t kCompareMasks = 0x2u | (0xDu << 4) | (0x1u << 8) | (0x3u << 12) |
+                                   (0x4u << 16) | (0x6u << 20);
+// Whether comparison `how` (0..5: == != < <= > >=) holds for an outcome: 0 a < b, 1 a == b,
+// 2 a > b, 3 unordered.
+constexpr bool holds(uint32_t how, uint32_t outcome) {
+  return ((kCompareMasks >> (4 * how + outcome)) & 1u) != 0;
+}
+// The outcome of comparing two floats; a NaN on either side is unordered, and then only !=
+// holds, as C++'s operators say.
+inline uint32_t float_outcome(float a, float b) {
+  return a < b ? 0u : a == b ? 1u : a > b ? 2u : 3u;
+}
+static_assert(static_cast<int>(Op::JGEGK) - static_cast<int>(Op::JEQGK) == 5 &&
+                  static_cast<int>(Op::JNGEFGK) - static_cast<int>(Op::JNEQFGK) == 5 &&
+                  static_cast<int>(Op::JNGEFLL) - static_cast<int>(Op::JNEQFLL) == 5 &&
+                  static_cast<int>(Op::JNGEFLK) - static_cast<int>(Op::JNEQFLK) == 5,
+              "a family of fused comparisons is six opcodes in the order == != < <= > >=");
+
 }  // namespace
 
 SliceResult Machine::run_slice(uint32_t thread, Budget budget) {
@@ -590,21 +610,6 @@ op_REMLK:
     if (a op bytecode::packed_imm(pair)) JUMP_TO(code + A()); else ip += 2;    \
     DISPATCH();                                                                \
   }
-// Float comparisons jump "unless" (see peephole.cpp): NaN compares false and falls through.
-#define JUMP_UNLESS_FLOATS(a_expr, b_expr, op)                                 \
-  {                                                                            \
-    const uint32_t pair = B();                                                 \
-    const float a = a_expr;                                                    \
-    const float b = b_expr;                                                    \
-    if (!(a op b)) JUMP_TO(code + A()); else ip += 2;                          \
-    DISPATCH();                                                                \
-  }
-#define JUMP_UNLESS_LOCALS(op)                                                 \
-  JUMP_UNLESS_FLOATS(locals[bytecode::packed_first(pair)].f,                   \
-                     locals[bytecode::packed_second(pair)].f, op)
-#define JUMP_UNLESS_LOCAL_CONST(op)                                            \
-  JUMP_UNLESS_FLOATS(locals[bytecode::packed_first(pair)].f,                   \
-                     constants_[bytecode::packed_second(pair)].f, op)
 #define JUMP_COMPARE(type, field, cond)                                        \
   {                                                                            \
     const type a = sp[-2].field;                                               \
@@ -637,24 +642,41 @@ op_JNLTF: JUMP_COMPARE(float, f, !(a < b))
 op_JNLEF: JUMP_COMPARE(float, f, !(a <= b))
 op_JNGTF: JUMP_COMPARE(float, f, !(a > b))
 op_JNGEF: JUMP_COMPARE(float, f, !(a >= b))
-op_JNEQFLL: JUMP_UNLESS_LOCALS(==)
-op_JNNEFLL: JUMP_UNLESS_LOCALS(!=)
-op_JNLTFLL: JUMP_UNLESS_LOCALS(<)
-op_JNLEFLL: JUMP_UNLESS_LOCALS(<=)
-op_JNGTFLL: JUMP_UNLESS_LOCALS(>)
-op_JNGEFLL: JUMP_UNLESS_LOCALS(>=)
-op_JNEQFLK: JUMP_UNLESS_LOCAL_CONST(==)
-op_JNNEFLK: JUMP_UNLESS_LOCAL_CONST(!=)
-op_JNLTFLK: JUMP_UNLESS_LOCAL_CONST(<)
-op_JNLEFLK: JUMP_UNLESS_LOCAL_CONST(<=)
-op_JNGTFLK: JUMP_UNLESS_LOCAL_CONST(>)
-op_JNGEFLK: JUMP_UNLESS_LOCAL_CONST(>=)
+// The float forms on locals jump "unless" (see peephole.cpp): NaN compares false and falls
+// through. One handler a family, the opcode's place in it the comparison (the core's size).
+op_JNEQFLL:
+op_JNNEFLL:
+op_JNLTFLL:
+op_JNLEFLL:
+op_JNGTFLL:
+op_JNGEFLL: {
+  const uint32_t pair = B();
+  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFLL);
+  if (!holds(how, float_outcome(locals[bytecode::packed_first(pair)].f,
+                                locals[bytecode::packed_second(pair)].f)))
+    JUMP_TO(code + A());
+  else
+    ip += 2;
+  DISPATCH();
+}
+op_JNEQFLK:
+op_JNNEFLK:
+op_JNLTFLK:
+op_JNLEFLK:
+op_JNGTFLK:
+op_JNGEFLK: {
+  const uint32_t pair = B();
+  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFLK);
+  if (!holds(how, float_outcome(locals[bytecode::packed_first(pair)].f,
+                                constants_[bytecode::packed_second(pair)].f)))
+    JUMP_TO(code + A());
+  else
+    ip += 2;
+  DISPATCH();
+}
 #undef JUMP_LOCALS
 #undef JUMP_LOCAL_IMM
 #undef JUMP_COMPARE
-#undef JUMP_UNLESS_FLOATS
-#undef JUMP_UNLESS_LOCALS
-#undef JUMP_UNLESS_LOCAL_CONST
 // A line that ends by jumping (a loop's step, an if arm's last assignment) stops the slice
 // at the jump's target, as EOL; JMP would.
 #define END_LINE_AND_JUMP()                                \
@@ -762,57 +784,64 @@ op_INCG: {
   DISPATCH();
 }
 op_JZG:
-  if (GLOBAL(B()).i == 0) JUMP_TO(code + A()); else ip += 2;
-  DISPATCH();
 op_JNZG:
-  if (GLOBAL(B()).i != 0) JUMP_TO(code + A()); else ip += 2;
+  // JNZG follows JZG: it jumps when the global's being zero is not what JZG looks for.
+  if ((GLOBAL(B()).i == 0) != ((word & 0xFFu) == static_cast<uint32_t>(Op::JNZG)))
+    JUMP_TO(code + A());
+  else
+    ip += 2;
   DISPATCH();
-#define JUMP_GLOBAL_CONST(op)                                                  \
-  {                                                                            \
-    const uint32_t pair = B();                                                 \
-    const int32_t a = GLOBAL(bytecode::packed_first(pair)).i;                  \
-    if (a op constants_[bytecode::packed_second(pair)].i) JUMP_TO(code + A()); \
-    else ip += 2;                                                              \
-    DISPATCH();                                                                \
-  }
+// A global against a constant: one handler a family, the opcode's place in it the comparison
+// (holds(), above), so that the embeddable core stays within its 32 KiB.
+op_JEQGK:
+op_JNEGK:
+op_JLTGK:
+op_JLEGK:
+op_JGTGK:
+op_JGEGK: {
+  const uint32_t pair = B();
+  const int32_t a = GLOBAL(bytecode::packed_first(pair)).i;
+  const int32_t b = constants_[bytecode::packed_second(pair)].i;
+  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JEQGK);
+  if (holds(how, a < b ? 0u : a == b ? 1u : 2u)) JUMP_TO(code + A()); else ip += 2;
+  DISPATCH();
+}
 // "Jump unless", as the float forms on locals: NaN compares false and falls through.
-#define JUMP_UNLESS_GLOBAL_CONST(op)                                           \
-  {                                                                            \
-    const uint32_t pair = B();                                                 \
-    const float a = GLOBAL(bytecode::packed_first(pair)).f;                    \
-    const float b = constants_[bytecode::packed_second(pair)].f;               \
-    if (!(a op b)) JUMP_TO(code + A()); else ip += 2;                          \
-    DISPATCH();                                                                \
+op_JNEQFGK:
+op_JNNEFGK:
+op_JNLTFGK:
+op_JNLEFGK:
+op_JNGTFGK:
+op_JNGEFGK: {
+  const uint32_t pair = B();
+  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFGK);
+  if (!holds(how, float_outcome(GLOBAL(bytecode::packed_first(pair)).f,
+                                constants_[bytecode::packed_second(pair)].f)))
+    JUMP_TO(code + A());
+  else
+    ip += 2;
+  DISPATCH();
+}
+// Two globals' arithmetic: one handler, the opcode choosing the operation (the core's size).
+op_ADDIGG:
+op_SUBIGG:
+op_ADDFGG:
+op_SUBFGG:
+op_MULFGG: {
+  const uint32_t pair = B();
+  const Value a = GLOBAL(bytecode::packed_first(pair));
+  const Value b = GLOBAL(bytecode::packed_second(pair));
+  switch (bytecode::word_op(word)) {
+    case Op::ADDIGG: sp->i = arith::wrap_add(a.i, b.i); break;
+    case Op::SUBIGG: sp->i = arith::wrap_sub(a.i, b.i); break;
+    case Op::ADDFGG: sp->f = a.f + b.f; break;
+    case Op::SUBFGG: sp->f = a.f - b.f; break;
+    default: sp->f = a.f * b.f; break;
   }
-op_JEQGK: JUMP_GLOBAL_CONST(==)
-op_JNEGK: JUMP_GLOBAL_CONST(!=)
-op_JLTGK: JUMP_GLOBAL_CONST(<)
-op_JLEGK: JUMP_GLOBAL_CONST(<=)
-op_JGTGK: JUMP_GLOBAL_CONST(>)
-op_JGEGK: JUMP_GLOBAL_CONST(>=)
-op_JNEQFGK: JUMP_UNLESS_GLOBAL_CONST(==)
-op_JNNEFGK: JUMP_UNLESS_GLOBAL_CONST(!=)
-op_JNLTFGK: JUMP_UNLESS_GLOBAL_CONST(<)
-op_JNLEFGK: JUMP_UNLESS_GLOBAL_CONST(<=)
-op_JNGTFGK: JUMP_UNLESS_GLOBAL_CONST(>)
-op_JNGEFGK: JUMP_UNLESS_GLOBAL_CONST(>=)
-#undef JUMP_GLOBAL_CONST
-#undef JUMP_UNLESS_GLOBAL_CONST
-#define GLOBALS_ARITH(type, field, expr)                                   \
-  {                                                                        \
-    const uint32_t pair = B();                                             \
-    const type a = GLOBAL(bytecode::packed_first(pair)).field;             \
-    const type b = GLOBAL(bytecode::packed_second(pair)).field;            \
-    (sp++)->field = (expr);                                                \
-    ip += 2;                                                               \
-    DISPATCH();                                                            \
-  }
-op_ADDIGG: GLOBALS_ARITH(int32_t, i, arith::wrap_add(a, b))
-op_SUBIGG: GLOBALS_ARITH(int32_t, i, arith::wrap_sub(a, b))
-op_ADDFGG: GLOBALS_ARITH(float, f, a + b)
-op_SUBFGG: GLOBALS_ARITH(float, f, a - b)
-op_MULFGG: GLOBALS_ARITH(float, f, a * b)
-#undef GLOBALS_ARITH
+  ++sp;
+  ip += 2;
+  DISPATCH();
+}
 #undef GLOBAL
 
 op_CMDGET: {
