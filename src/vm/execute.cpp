@@ -78,9 +78,7 @@ inline uint32_t float_outcome(float a, float b) {
   return a < b ? 0u : a == b ? 1u : a > b ? 2u : 3u;
 }
 static_assert(static_cast<int>(Op::JGEGK) - static_cast<int>(Op::JEQGK) == 5 &&
-                  static_cast<int>(Op::JNGEFGK) - static_cast<int>(Op::JNEQFGK) == 5 &&
-                  static_cast<int>(Op::JNGEFLL) - static_cast<int>(Op::JNEQFLL) == 5 &&
-                  static_cast<int>(Op::JNGEFLK) - static_cast<int>(Op::JNEQFLK) == 5,
+                  static_cast<int>(Op::JNGEFGK) - static_cast<int>(Op::JNEQFGK) == 5,
               "a family of fused comparisons is six opcodes in the order == != < <= > >=");
 
 }  // namespace
@@ -354,32 +352,26 @@ op_F2IT: UNARY(Value::of_int(arith::trunc_to_int(a.f)))
 op_MULID: {
   const arith::PromotedProduct p = arith::promoting_mul(sp[-2].i, sp[-1].i);
   write_pair(sp - 2, p.is_float ? TypedValue::of_float(p.f) : TypedValue::of_int(p.i));
-  ++ip;
-  DISPATCH();
+  goto next_1;
 }
 op_I2D:
   (sp++)->i = 0;
-  ++ip;
-  DISPATCH();
+  goto next_1;
 op_F2D:
   (sp++)->i = 1;
-  ++ip;
-  DISPATCH();
+  goto next_1;
 op_D2F:
   --sp;
   if (sp[0].i == 0) sp[-1] = Value::of_float(static_cast<float>(sp[-1].i));
-  ++ip;
-  DISPATCH();
+  goto next_1;
 op_D2IR:
   --sp;
   if (sp[0].i != 0) sp[-1] = Value::of_int(arith::round_to_int(sp[-1].f));
-  ++ip;
-  DISPATCH();
+  goto next_1;
 op_D2IT:
   --sp;
   if (sp[0].i != 0) sp[-1] = Value::of_int(arith::trunc_to_int(sp[-1].f));
-  ++ip;
-  DISPATCH();
+  goto next_1;
 op_ADDD:
 op_SUBD:
 op_MULD:
@@ -416,22 +408,19 @@ op_DIVD: {
   }
   sp -= 2;
   write_pair(sp - 2, r);
-  ++ip;
-  DISPATCH();
+  goto next_1;
 }
 op_NEGD: {
   const TypedValue a = read_pair(sp - 2);
   write_pair(sp - 2, a.is_float() ? TypedValue::of_float(-a.value.f)
                                   : TypedValue::of_int(arith::saturating_neg(a.value.i)));
-  ++ip;
-  DISPATCH();
+  goto next_1;
 }
 op_ABSD: {
   const TypedValue a = read_pair(sp - 2);
   write_pair(sp - 2, a.is_float() ? TypedValue::of_float(std::fabs(a.value.f))
                                   : TypedValue::of_int(arith::saturating_abs(a.value.i)));
-  ++ip;
-  DISPATCH();
+  goto next_1;
 }
 op_CMPD: {
   const TypedValue a = read_pair(sp - 4);
@@ -441,8 +430,7 @@ op_CMPD: {
                                                 : compare(how, a.as_float(), b.as_float());
   sp -= 3;
   sp[-1] = Value::of_int(r ? 1 : 0);
-  ++ip;
-  DISPATCH();
+  goto next_1;
 }
 
 op_JMP:
@@ -526,8 +514,7 @@ op_RET: {
 }
 op_NARGOUT:
   (sp++)->i = t.frames[t.frame_count - 1].nargout;
-  ++ip;
-  DISPATCH();
+  goto next_1;
 op_EXIT:
   goto finished;
 op_RESET:
@@ -569,22 +556,18 @@ op_TRYALL: {
   if (t.handler_count >= config_.handlers) FAIL(RunError::TryDepth);
   t.handlers[t.handler_count++] = {A(), t.frame_count, sp, t.locals_top,
                                    bytecode::word_op(word) == Op::TRYALL};
-  ++ip;
-  DISPATCH();
+  goto next_1;
 }
 op_ENDTRY:
   if (t.handler_count == 0) FAIL(RunError::TryMismatch);
   t.handler_count--;
-  ++ip;
-  DISPATCH();
+  goto next_1;
 op_ERRCODE:
   (sp++)->i = static_cast<int32_t>(t.last_error);
-  ++ip;
-  DISPATCH();
+  goto next_1;
 op_CLOCK:
   (sp++)->i = static_cast<int32_t>(host_->now_us());
-  ++ip;
-  DISPATCH();
+  goto next_1;
 
 op_ADDLK:
   (sp++)->i = arith::wrap_add(locals[A()].i, static_cast<int32_t>(B()));
@@ -610,6 +593,21 @@ op_REMLK:
     if (a op bytecode::packed_imm(pair)) JUMP_TO(code + A()); else ip += 2;    \
     DISPATCH();                                                                \
   }
+// Float comparisons jump "unless" (see peephole.cpp): NaN compares false and falls through.
+#define JUMP_UNLESS_FLOATS(a_expr, b_expr, op)                                 \
+  {                                                                            \
+    const uint32_t pair = B();                                                 \
+    const float a = a_expr;                                                    \
+    const float b = b_expr;                                                    \
+    if (!(a op b)) JUMP_TO(code + A()); else ip += 2;                          \
+    DISPATCH();                                                                \
+  }
+#define JUMP_UNLESS_LOCALS(op)                                                 \
+  JUMP_UNLESS_FLOATS(locals[bytecode::packed_first(pair)].f,                   \
+                     locals[bytecode::packed_second(pair)].f, op)
+#define JUMP_UNLESS_LOCAL_CONST(op)                                            \
+  JUMP_UNLESS_FLOATS(locals[bytecode::packed_first(pair)].f,                   \
+                     constants_[bytecode::packed_second(pair)].f, op)
 #define JUMP_COMPARE(type, field, cond)                                        \
   {                                                                            \
     const type a = sp[-2].field;                                               \
@@ -642,41 +640,24 @@ op_JNLTF: JUMP_COMPARE(float, f, !(a < b))
 op_JNLEF: JUMP_COMPARE(float, f, !(a <= b))
 op_JNGTF: JUMP_COMPARE(float, f, !(a > b))
 op_JNGEF: JUMP_COMPARE(float, f, !(a >= b))
-// The float forms on locals jump "unless" (see peephole.cpp): NaN compares false and falls
-// through. One handler a family, the opcode's place in it the comparison (the core's size).
-op_JNEQFLL:
-op_JNNEFLL:
-op_JNLTFLL:
-op_JNLEFLL:
-op_JNGTFLL:
-op_JNGEFLL: {
-  const uint32_t pair = B();
-  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFLL);
-  if (!holds(how, float_outcome(locals[bytecode::packed_first(pair)].f,
-                                locals[bytecode::packed_second(pair)].f)))
-    JUMP_TO(code + A());
-  else
-    ip += 2;
-  DISPATCH();
-}
-op_JNEQFLK:
-op_JNNEFLK:
-op_JNLTFLK:
-op_JNLEFLK:
-op_JNGTFLK:
-op_JNGEFLK: {
-  const uint32_t pair = B();
-  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFLK);
-  if (!holds(how, float_outcome(locals[bytecode::packed_first(pair)].f,
-                                constants_[bytecode::packed_second(pair)].f)))
-    JUMP_TO(code + A());
-  else
-    ip += 2;
-  DISPATCH();
-}
+op_JNEQFLL: JUMP_UNLESS_LOCALS(==)
+op_JNNEFLL: JUMP_UNLESS_LOCALS(!=)
+op_JNLTFLL: JUMP_UNLESS_LOCALS(<)
+op_JNLEFLL: JUMP_UNLESS_LOCALS(<=)
+op_JNGTFLL: JUMP_UNLESS_LOCALS(>)
+op_JNGEFLL: JUMP_UNLESS_LOCALS(>=)
+op_JNEQFLK: JUMP_UNLESS_LOCAL_CONST(==)
+op_JNNEFLK: JUMP_UNLESS_LOCAL_CONST(!=)
+op_JNLTFLK: JUMP_UNLESS_LOCAL_CONST(<)
+op_JNLEFLK: JUMP_UNLESS_LOCAL_CONST(<=)
+op_JNGTFLK: JUMP_UNLESS_LOCAL_CONST(>)
+op_JNGEFLK: JUMP_UNLESS_LOCAL_CONST(>=)
 #undef JUMP_LOCALS
 #undef JUMP_LOCAL_IMM
 #undef JUMP_COMPARE
+#undef JUMP_UNLESS_FLOATS
+#undef JUMP_UNLESS_LOCALS
+#undef JUMP_UNLESS_LOCAL_CONST
 // A line that ends by jumping (a loop's step, an if arm's last assignment) stops the slice
 // at the jump's target, as EOL; JMP would.
 #define END_LINE_AND_JUMP()                                \
@@ -761,18 +742,15 @@ op_STGEOL:
   DISPATCH();
 op_STGK:
   GLOBAL(A()) = constants_[B()];
-  ip += 2;
-  DISPATCH();
+  goto next_2;
 op_LDG2:
   sp[0] = GLOBAL(A());
   sp[1] = GLOBAL(B());
   sp += 2;
-  ip += 2;
-  DISPATCH();
+  goto next_2;
 op_ADDGK:
   (sp++)->i = arith::wrap_add(GLOBAL(A()).i, static_cast<int32_t>(B()));
-  ip += 2;
-  DISPATCH();
+  goto next_2;
 op_REMGK:
   (sp++)->i = arith::int_rem(GLOBAL(A()).i, static_cast<int32_t>(B()));
   ip += 2;
@@ -907,32 +885,37 @@ op_CMPU: {
 op_I2W:
   sp[0] = Value::of_int(sp[-1].i < 0 ? -1 : 0);
   ++sp;
-  ++ip;
-  DISPATCH();
+  goto next_1;
 op_ADDW:
   write_wide(sp - 4, read_wide(sp - 4) + read_wide(sp - 2));
   sp -= 2;
-  ++ip;
-  DISPATCH();
+  goto next_1;
 op_SUBW:
   write_wide(sp - 4, read_wide(sp - 4) - read_wide(sp - 2));
   sp -= 2;
-  ++ip;
-  DISPATCH();
+  goto next_1;
 op_MULDIV: {
   if (sp[-1].i == 0) FAIL(RunError::DivisionByZero);
   int32_t q;
   if (!arith::mul_div(sp[-3].i, sp[-2].i, sp[-1].i, q)) FAIL(RunError::Overflow);
   sp -= 2;
   sp[-1] = Value::of_int(q);
-  ++ip;
-  DISPATCH();
+  goto next_1;
 }
 
 op_BREAK:
   t.status = ThreadStatus::AtBreakpoint;
   end = SliceEnd::Breakpoint;
   goto stop;
+
+// The shared end of the instructions that are seldom hot: one copy of the dispatch for them
+// keeps the embeddable core within 32 KiB (each DISPATCH is code in both copies of the loop).
+next_1:
+  ++ip;
+  DISPATCH();
+next_2:
+  ip += 2;
+  DISPATCH();
 
 // A spent 32-bit count takes the next chunk of its budget and the slice goes on as if nothing
 // happened; only when the whole budget is spent does the slice end.
