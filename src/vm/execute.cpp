@@ -800,26 +800,22 @@ op_JNGEFGK: {
     ip += 2;
   DISPATCH();
 }
-// Two globals' arithmetic: one handler, the opcode choosing the operation (the core's size).
-op_ADDIGG:
-op_SUBIGG:
-op_ADDFGG:
-op_SUBFGG:
-op_MULFGG: {
-  const uint32_t pair = B();
-  const Value a = GLOBAL(bytecode::packed_first(pair));
-  const Value b = GLOBAL(bytecode::packed_second(pair));
-  switch (bytecode::word_op(word)) {
-    case Op::ADDIGG: sp->i = arith::wrap_add(a.i, b.i); break;
-    case Op::SUBIGG: sp->i = arith::wrap_sub(a.i, b.i); break;
-    case Op::ADDFGG: sp->f = a.f + b.f; break;
-    case Op::SUBFGG: sp->f = a.f - b.f; break;
-    default: sp->f = a.f * b.f; break;
+// Two globals' arithmetic, a handler each (one shared through a switch slowed Gold's loop
+// by some 10 %, though it never runs there); they end in the shared dispatch.
+#define GLOBALS_ARITH(type, field, expr)                                   \
+  {                                                                        \
+    const uint32_t pair = B();                                             \
+    const type a = GLOBAL(bytecode::packed_first(pair)).field;             \
+    const type b = GLOBAL(bytecode::packed_second(pair)).field;            \
+    (sp++)->field = (expr);                                                \
+    goto next_2;                                                           \
   }
-  ++sp;
-  ip += 2;
-  DISPATCH();
-}
+op_ADDIGG: GLOBALS_ARITH(int32_t, i, arith::wrap_add(a, b))
+op_SUBIGG: GLOBALS_ARITH(int32_t, i, arith::wrap_sub(a, b))
+op_ADDFGG: GLOBALS_ARITH(float, f, a + b)
+op_SUBFGG: GLOBALS_ARITH(float, f, a - b)
+op_MULFGG: GLOBALS_ARITH(float, f, a * b)
+#undef GLOBALS_ARITH
 #undef GLOBAL
 
 op_CMDGET: {
