@@ -3,6 +3,8 @@
 // --histogram counts executed opcodes and opcode pairs instead (one instruction per slice);
 // A .s file (uprog assembly, e.g. hand-edited --asm output) is assembled and run through the
 // same peephole pass, to measure a code-generation change before the compiler makes it.
+// A .st file (ST) runs PLCMAIN, which restarts by itself when it ends: give --histogram a
+// --limit (its --asm shows the code).
 // --check only compiles (the compile-speed comparison while `uprog check` does not exist).
 #include <algorithm>
 #include <chrono>
@@ -21,6 +23,7 @@
 #include "dialects/gold/compile.h"
 #include "dialects/pdl/compile.h"
 #include "dialects/pdl/layout.h"
+#include "dialects/st/compile.h"
 #include "support/diagnostic.h"
 #include "vm/machine.h"
 
@@ -110,6 +113,10 @@ int main(int argc, char** argv) {
     uprog::pdl::CompileResult pdl = uprog::pdl::compile_file(file);
     compiled.image = std::move(pdl.image);
     compiled.diagnostics = std::move(pdl.diagnostics);
+  } else if (file.size() > 3 && file.compare(file.size() - 3, 3, ".st") == 0) {
+    uprog::st::CompileResult st = uprog::st::compile_file(file);
+    compiled.image = std::move(st.image);
+    compiled.diagnostics = std::move(st.diagnostics);
   } else {
     uprog::gold::CompileOptions options;
     options.optimize = peephole;
@@ -155,7 +162,7 @@ int main(int argc, char** argv) {
                                            Value::of_int(pdl::kTaskAddressUnit - base), Value::of_int(base)};
     machine.start(0, 0, args, pdl::kEntryInputs);
   } else {
-    const int main_routine = image.find_routine("main");
+    const int main_routine = image.find_routine(image.dialect == "st" ? "PLCMAIN" : "main");
     if (main_routine < 0) {
       std::fprintf(stderr, "no function main\n");
       return 1;

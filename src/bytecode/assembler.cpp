@@ -342,7 +342,13 @@ class Assembler {
       int64_t n = 0;
       const bool is_signed = info.b == Operand::Imm;
       const Token& b = ts[info.a != Operand::None ? 2 : 1];
-      if (number(b, n, is_signed ? INT32_MIN : 0, is_signed ? INT32_MAX : UINT32_MAX))
+      const bool is_name = !b.text.empty() && (b.quoted || std::isalpha(static_cast<unsigned char>(b.text[0])) ||
+                                               b.text[0] == '_');
+      if (info.b == Operand::Global && is_name) {
+        // A global as the second word (STGJEOL, LDG2) may be its name too.
+        fixups_.push_back({pc + 1, true, Operand::Global, b.text, line_, b.column});
+        image_.code.push_back(0);
+      } else if (number(b, n, is_signed ? INT32_MIN : 0, is_signed ? INT32_MAX : UINT32_MAX))
         image_.code.push_back(static_cast<uint32_t>(n));
       else
         image_.code.push_back(0);
@@ -392,7 +398,10 @@ class Assembler {
         error(f.column, fmt::format("unknown name '{}'", f.name));
         continue;
       }
-      image_.code[f.pc] |= (value & kOperandMax) << 8;
+      if (f.whole_word)
+        image_.code[f.pc] = value;
+      else
+        image_.code[f.pc] |= (value & kOperandMax) << 8;
     }
     for (size_t i = 0; i < routine_entries_.size(); ++i) {
       const auto& e = routine_entries_[i];

@@ -8,10 +8,11 @@ namespace uprog::bytecode {
 
 enum class Operand : uint8_t {
   None, Imm, Const, Local, Global, Routine, Target, Count, Command, Unit, LocalPair, LocalImm,
-  LocalConst, Width, Text
+  LocalConst, Width, Text, GlobalPair, GlobalConst
 };
 
-// The packed B operands of the fused local comparisons (LocalConst packs like LocalPair).
+// The packed B operands of the fused comparisons and arithmetic (LocalConst, GlobalPair and
+// GlobalConst pack like LocalPair: 16 bits each).
 constexpr uint32_t pack_locals(uint32_t first, uint32_t second) { return first | (second << 16); }
 constexpr uint32_t pack_local_imm(uint32_t local, int32_t imm) {
   return local | (static_cast<uint32_t>(imm) << 16);

@@ -17,6 +17,10 @@ struct Instr {
   Op op;
   uint32_t a;
   uint32_t b;
+  // A fused global comparison with an immediate (PUSHI k) compares with a constant: the
+  // pass finds or adds the int constant k and puts its index into B's second half.
+  bool wants_constant = false;
+  int32_t constant = 0;
 };
 
 bool decode(const std::vector<uint32_t>& code, std::vector<Instr>& out) {
@@ -34,24 +38,28 @@ bool decode(const std::vector<uint32_t>& code, std::vector<Instr>& out) {
 
 // Int comparisons and the fused jumps taken when they are true; for JZ, their negation.
 struct CompareFamily {
-  Op compare, when_true, when_false, locals_true, locals_false, imm_true, imm_false;
+  Op compare, when_true, when_false, locals_true, locals_false, imm_true, imm_false,
+      global_true, global_false;
 };
 constexpr CompareFamily kIntCompares[] = {
-    {Op::EQI, Op::JEQI, Op::JNEI, Op::JEQLL, Op::JNELL, Op::JEQLK, Op::JNELK},
-    {Op::NEI, Op::JNEI, Op::JEQI, Op::JNELL, Op::JEQLL, Op::JNELK, Op::JEQLK},
-    {Op::LTI, Op::JLTI, Op::JGEI, Op::JLTLL, Op::JGELL, Op::JLTLK, Op::JGELK},
-    {Op::LEI, Op::JLEI, Op::JGTI, Op::JLELL, Op::JGTLL, Op::JLELK, Op::JGTLK},
-    {Op::GTI, Op::JGTI, Op::JLEI, Op::JGTLL, Op::JLELL, Op::JGTLK, Op::JLELK},
-    {Op::GEI, Op::JGEI, Op::JLTI, Op::JGELL, Op::JLTLL, Op::JGELK, Op::JLTLK},
+    {Op::EQI, Op::JEQI, Op::JNEI, Op::JEQLL, Op::JNELL, Op::JEQLK, Op::JNELK, Op::JEQGK, Op::JNEGK},
+    {Op::NEI, Op::JNEI, Op::JEQI, Op::JNELL, Op::JEQLL, Op::JNELK, Op::JEQLK, Op::JNEGK, Op::JEQGK},
+    {Op::LTI, Op::JLTI, Op::JGEI, Op::JLTLL, Op::JGELL, Op::JLTLK, Op::JGELK, Op::JLTGK, Op::JGEGK},
+    {Op::LEI, Op::JLEI, Op::JGTI, Op::JLELL, Op::JGTLL, Op::JLELK, Op::JGTLK, Op::JLEGK, Op::JGTGK},
+    {Op::GTI, Op::JGTI, Op::JLEI, Op::JGTLL, Op::JLELL, Op::JGTLK, Op::JLELK, Op::JGTGK, Op::JLEGK},
+    {Op::GEI, Op::JGEI, Op::JLTI, Op::JGELL, Op::JLTLL, Op::JGELK, Op::JLTLK, Op::JGEGK, Op::JLTGK},
 };
 // Float comparisons fuse only with JZ: "jump unless" keeps NaN's answers exact.
 struct FloatCompareFamily {
-  Op compare, jump_unless, locals_unless, constant_unless;
+  Op compare, jump_unless, locals_unless, constant_unless, global_constant_unless;
 };
 constexpr FloatCompareFamily kFloatCompares[] = {
-    {Op::EQF, Op::JNEQF, Op::JNEQFLL, Op::JNEQFLK}, {Op::NEF, Op::JNNEF, Op::JNNEFLL, Op::JNNEFLK},
-    {Op::LTF, Op::JNLTF, Op::JNLTFLL, Op::JNLTFLK}, {Op::LEF, Op::JNLEF, Op::JNLEFLL, Op::JNLEFLK},
-    {Op::GTF, Op::JNGTF, Op::JNGTFLL, Op::JNGTFLK}, {Op::GEF, Op::JNGEF, Op::JNGEFLL, Op::JNGEFLK},
+    {Op::EQF, Op::JNEQF, Op::JNEQFLL, Op::JNEQFLK, Op::JNEQFGK},
+    {Op::NEF, Op::JNNEF, Op::JNNEFLL, Op::JNNEFLK, Op::JNNEFGK},
+    {Op::LTF, Op::JNLTF, Op::JNLTFLL, Op::JNLTFLK, Op::JNLTFGK},
+    {Op::LEF, Op::JNLEF, Op::JNLEFLL, Op::JNLEFLK, Op::JNLEFGK},
+    {Op::GTF, Op::JNGTF, Op::JNGTFLL, Op::JNGTFLK, Op::JNGTFGK},
+    {Op::GEF, Op::JNGEF, Op::JNGEFLL, Op::JNGEFLK, Op::JNGEFGK},
 };
 
 bool fits_int16(int32_t v) { return v >= -32768 && v <= 32767; }
@@ -59,14 +67,19 @@ int32_t imm_of(const Instr& i) { return static_cast<int32_t>(i.a << 8) >> 8; }
 
 class Fuser {
  public:
-  Fuser(const std::vector<Instr>& in, const std::vector<bool>& boundary)
-      : in_(in), boundary_(boundary) {}
+  // room_for_constants: the pass may add int constants (one a fusion at most) and still index
+  // every constant in 16 bits.
+  Fuser(const std::vector<Instr>& in, const std::vector<bool>& boundary, bool room_for_constants)
+      : in_(in), boundary_(boundary), room_for_constants_(room_for_constants) {}
 
   // The fused instruction for the sequence at `i` and how many instructions it replaces.
   std::optional<std::pair<Instr, size_t>> match(size_t i) const {
     for (auto m : {&Fuser::compare_locals, &Fuser::arithmetic_locals, &Fuser::local_constant,
-                   &Fuser::two_locals, &Fuser::store_constant, &Fuser::compare_branch,
-                   &Fuser::test_zero, &Fuser::line_ending_jump, &Fuser::eol_jump}) {
+                   &Fuser::two_locals, &Fuser::store_constant, &Fuser::test_global,
+                   &Fuser::compare_global, &Fuser::global_constant, &Fuser::arithmetic_globals,
+                   &Fuser::two_globals, &Fuser::store_global_constant, &Fuser::store_global_eol,
+                   &Fuser::compare_branch, &Fuser::test_zero, &Fuser::line_ending_jump,
+                   &Fuser::eol_jump}) {
       if (auto r = (this->*m)(i)) return r;
     }
     return std::nullopt;
@@ -200,6 +213,111 @@ class Fuser {
     return std::pair{Instr{at(i).pc, Op::STLK, at(i + 1).a, at(i).a}, size_t{2}};
   }
 
+  // The global forms, for dialects whose variables are globals (element 0 of a scalar; the
+  // opcodes read and write what LDG and STG do). A packed operand holds a global in 16 bits.
+  bool packs_global(const Instr& i) const { return i.op == Op::LDG && i.a <= 0xFFFF; }
+
+  // LDG g; PUSHK k | PUSHI k; <int compare>; JZ/JNZ T
+  // LDG g; PUSHK k; <float compare>; JZ T
+  std::optional<std::pair<Instr, size_t>> compare_global(size_t i) const {
+    if (!free(i, 3) || !packs_global(at(i)) || !is_branch(at(i + 3).op)) return std::nullopt;
+    const Instr& second = at(i + 1);
+    const bool constant = second.op == Op::PUSHK && second.a <= 0xFFFF;
+    const bool immediate = second.op == Op::PUSHI && room_for_constants_;
+    if (!constant && !immediate) return std::nullopt;
+    for (const auto& f : kFloatCompares) {
+      if (at(i + 2).op != f.compare) continue;
+      if (at(i + 3).op != Op::JZ || !constant) return std::nullopt;
+      return std::pair{Instr{at(i).pc, f.global_constant_unless, at(i + 3).a,
+                             pack_locals(at(i).a, second.a)},
+                       size_t{4}};
+    }
+    for (const auto& f : kIntCompares) {
+      if (at(i + 2).op != f.compare) continue;
+      const Op fused = at(i + 3).op == Op::JNZ ? f.global_true : f.global_false;
+      Instr out{at(i).pc, fused, at(i + 3).a, pack_locals(at(i).a, constant ? second.a : 0)};
+      if (immediate) {
+        out.wants_constant = true;
+        out.constant = imm_of(second);
+      }
+      return std::pair{out, size_t{4}};
+    }
+    return std::nullopt;
+  }
+
+  // LDG g; JZ|JNZ T, and LDG g; PUSHI 0; NEI|EQI; JZ|JNZ T
+  std::optional<std::pair<Instr, size_t>> test_global(size_t i) const {
+    if (!free(i, 1) || at(i).op != Op::LDG) return std::nullopt;
+    if (is_branch(at(i + 1).op)) {
+      const Op fused = at(i + 1).op == Op::JNZ ? Op::JNZG : Op::JZG;
+      return std::pair{Instr{at(i).pc, fused, at(i + 1).a, at(i).a}, size_t{2}};
+    }
+    if (!free(i, 3) || at(i + 1).op != Op::PUSHI || imm_of(at(i + 1)) != 0) return std::nullopt;
+    const Op compare = at(i + 2).op;
+    const Op branch = at(i + 3).op;
+    if ((compare != Op::NEI && compare != Op::EQI) || !is_branch(branch)) return std::nullopt;
+    const bool jump_if_nonzero = (compare == Op::NEI) == (branch == Op::JNZ);
+    return std::pair{Instr{at(i).pc, jump_if_nonzero ? Op::JNZG : Op::JZG, at(i + 3).a, at(i).a},
+                     size_t{4}};
+  }
+
+  // LDG g; PUSHI k; ADDI|SUBI [; STG g] | LDG g; PUSHI k; REMI
+  std::optional<std::pair<Instr, size_t>> global_constant(size_t i) const {
+    if (!free(i, 2) || at(i).op != Op::LDG || at(i + 1).op != Op::PUSHI) return std::nullopt;
+    const int32_t k = imm_of(at(i + 1));
+    const Op op = at(i + 2).op;
+    if (op == Op::ADDI || op == Op::SUBI) {
+      const auto addend = static_cast<uint32_t>(op == Op::ADDI ? k : -k);  // |k| < 2^23
+      if (free(i, 3) && at(i + 3).op == Op::STG && at(i + 3).a == at(i).a)
+        return std::pair{Instr{at(i).pc, Op::INCG, at(i).a, addend}, size_t{4}};
+      return std::pair{Instr{at(i).pc, Op::ADDGK, at(i).a, addend}, size_t{3}};
+    }
+    if (op == Op::REMI && k != 0)
+      return std::pair{Instr{at(i).pc, Op::REMGK, at(i).a, static_cast<uint32_t>(k)}, size_t{3}};
+    return std::nullopt;
+  }
+
+  // LDG a; LDG b; ADDI|SUBI|ADDF|SUBF|MULF
+  std::optional<std::pair<Instr, size_t>> arithmetic_globals(size_t i) const {
+    if (!free(i, 2) || !packs_global(at(i)) || !packs_global(at(i + 1))) return std::nullopt;
+    static constexpr std::array<std::array<Op, 2>, 5> kForms = {{{Op::ADDI, Op::ADDIGG},
+                                                                 {Op::SUBI, Op::SUBIGG},
+                                                                 {Op::ADDF, Op::ADDFGG},
+                                                                 {Op::SUBF, Op::SUBFGG},
+                                                                 {Op::MULF, Op::MULFGG}}};
+    for (const auto& [plain, fused] : kForms) {
+      if (at(i + 2).op == plain)
+        return std::pair{Instr{at(i).pc, fused, 0, pack_locals(at(i).a, at(i + 1).a)}, size_t{3}};
+    }
+    return std::nullopt;
+  }
+
+  // LDG a; LDG b — unless the second starts a longer pattern of its own.
+  std::optional<std::pair<Instr, size_t>> two_globals(size_t i) const {
+    if (!free(i, 1) || at(i).op != Op::LDG || at(i + 1).op != Op::LDG) return std::nullopt;
+    if (arithmetic_globals(i + 1) || compare_global(i + 1) || test_global(i + 1) ||
+        global_constant(i + 1))
+      return std::nullopt;
+    return std::pair{Instr{at(i).pc, Op::LDG2, at(i).a, at(i + 1).a}, size_t{2}};
+  }
+
+  // PUSHK k; STG g
+  std::optional<std::pair<Instr, size_t>> store_global_constant(size_t i) const {
+    if (!free(i, 1) || at(i).op != Op::PUSHK || at(i + 1).op != Op::STG) return std::nullopt;
+    return std::pair{Instr{at(i).pc, Op::STGK, at(i + 1).a, at(i).a}, size_t{2}};
+  }
+
+  // STG g; EOL; JMP T | STG g; JMPEOL T | STG g; EOL — the end of an assignment's line.
+  std::optional<std::pair<Instr, size_t>> store_global_eol(size_t i) const {
+    if (!free(i, 1) || at(i).op != Op::STG) return std::nullopt;
+    const Instr& next = at(i + 1);
+    if (next.op == Op::JMPEOL) return std::pair{Instr{at(i).pc, Op::STGJEOL, next.a, at(i).a}, size_t{2}};
+    if (next.op != Op::EOL) return std::nullopt;
+    if (free(i, 2) && at(i + 2).op == Op::JMP)
+      return std::pair{Instr{at(i).pc, Op::STGJEOL, at(i + 2).a, at(i).a}, size_t{3}};
+    return std::pair{Instr{at(i).pc, Op::STGEOL, at(i).a, 0}, size_t{2}};
+  }
+
   // INCL a k | STL a; EOL; JMP T — a loop's step, or the last assignment of an if arm.
   std::optional<std::pair<Instr, size_t>> line_ending_jump(size_t i) const {
     if (!free(i, 2) || at(i + 1).op != Op::EOL || at(i + 2).op != Op::JMP) return std::nullopt;
@@ -220,7 +338,17 @@ class Fuser {
 
   const std::vector<Instr>& in_;
   const std::vector<bool>& boundary_;
+  bool room_for_constants_;
 };
+
+// The index of the int constant `value`, added to the image when it has none.
+uint32_t int_constant(Image& image, int32_t value) {
+  const Constant wanted{ValueType::Int, static_cast<uint32_t>(value)};
+  for (size_t k = 0; k < image.constants.size(); ++k)
+    if (image.constants[k] == wanted) return static_cast<uint32_t>(k);
+  image.constants.push_back(wanted);
+  return static_cast<uint32_t>(image.constants.size() - 1);
+}
 
 // A jump to a JMP goes straight to its target; a jump-and-end-of-line to a RET becomes
 // RETEOL. Targets are followed a bounded number of steps, so a cycle of jumps stays a cycle.
@@ -261,9 +389,11 @@ PeepholeStats optimize(Image& image) {
 
   // One pass, longest patterns first.
   std::vector<Instr> out;
-  const Fuser fuser(in, boundary);
+  const Fuser fuser(in, boundary, image.constants.size() + in.size() <= 0xFFFF);
   for (size_t i = 0; i < in.size();) {
     if (auto m = fuser.match(i)) {
+      if (m->first.wants_constant)
+        m->first.b = pack_locals(packed_first(m->first.b), int_constant(image, m->first.constant));
       out.push_back(m->first);
       i += m->second;
       ++stats.fused;

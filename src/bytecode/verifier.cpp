@@ -97,14 +97,39 @@ class Verifier {
       if (info.b == Operand::LocalConst &&
           bytecode::packed_second(image_.code[pc + 1]) >= image_.constants.size())
         return fail(VerifyError::BadConstant, pc);
+      if (info.b != Operand::None) {
+        if (VerifyResult r = check_global_b(info.b, image_.code[pc + 1], pc); !r.ok()) return r;
+      }
       if (word_op(word) == Op::CALL) {
         const RoutineRecord callee = image_.routines[a];
         if (image_.code[pc + 1] > callee.outputs) return fail(VerifyError::BadOperand, pc);
       }
-      if (word_op(word) == Op::REMLK && image_.code[pc + 1] == 0)
+      if ((word_op(word) == Op::REMLK || word_op(word) == Op::REMGK) && image_.code[pc + 1] == 0)
         return fail(VerifyError::BadOperand, pc);
       if (pops_host_arguments(word_op(word)) && image_.code[pc + 1] > limits_.max_stack)
         return fail(VerifyError::BadOperand, pc);
+    }
+    return {};
+  }
+
+  // A B operand that names globals (and a constant): every index in range. The image's
+  // globals all have at least one element (the loader refuses a length of 0), so element 0,
+  // which these opcodes read and write, exists.
+  VerifyResult check_global_b(Operand kind, uint32_t b, uint32_t pc) const {
+    const size_t globals = image_.globals.size();
+    switch (kind) {
+      case Operand::Global:
+        if (b >= globals) return fail(VerifyError::BadGlobal, pc);
+        break;
+      case Operand::GlobalPair:
+        if (packed_first(b) >= globals || packed_second(b) >= globals)
+          return fail(VerifyError::BadGlobal, pc);
+        break;
+      case Operand::GlobalConst:
+        if (packed_first(b) >= globals) return fail(VerifyError::BadGlobal, pc);
+        if (packed_second(b) >= image_.constants.size()) return fail(VerifyError::BadConstant, pc);
+        break;
+      default: break;
     }
     return {};
   }

@@ -140,10 +140,10 @@ TEST(Peephole, FusesTheLoop) {
       Op::PUSHI, Op::STL, Op::PUSHI, Op::STL, Op::EOL,
       Op::JGTLL,                        // LDL i; LDL n; LEI; JZ done
       Op::REMLK, Op::JZ,                // LDL i; PUSHI 3; REMI — then PUSHI 0; NEI; JZ
-      Op::LDG, Op::REMLK, Op::ADDI, Op::STG, Op::EOL,
+      Op::LDG, Op::REMLK, Op::ADDI, Op::STGEOL,  // STG total; EOL
       Op::ADDLK, Op::STL,               // next: is a target, so the EOL before it stays
       Op::JGTLK,                        // LDL i; PUSHI 50; GTI; JNZ skip
-      Op::LDG, Op::PUSHK, Op::JNLTF,    // LTF; JZ skip
+      Op::JNLTFGK,                      // LDG x; PUSHK 0; LTF; JZ skip
       Op::LDG, Op::PUSHK, Op::ADDF, Op::STG,
       Op::JMPEOL,                       // skip: EOL; JMP top
       Op::RET};
@@ -298,7 +298,7 @@ skip3:
   const std::vector<Op> expected = {Op::STLK, Op::STLK, Op::STLK,
                                     Op::JNLTFLL, Op::PUSHI, Op::STG,   // a < b
                                     Op::JNGEFLK, Op::PUSHI, Op::STG,   // q >= 0.5: NaN, skipped
-                                    Op::JNGEFLK, Op::LDG, Op::PUSHI, Op::ADDI, Op::STG,  // a >= 0.5
+                                    Op::JNGEFLK, Op::INCG,                   // a >= 0.5: count += 10
                                     Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   expect_same_behaviour(text, "float compares");
@@ -354,15 +354,165 @@ end:
   const bytecode::Image image = optimized(text);
   const std::vector<Op> expected = {Op::STLK, Op::EOL, Op::PUSHI, Op::STL,
                                     Op::JGTLK,                                  // k > 3
-                                    Op::LDG, Op::LDL, Op::ADDI, Op::STG, Op::EOL,
+                                    Op::LDG, Op::LDL, Op::ADDI, Op::STGEOL,
                                     Op::INCLJEOL,                               // k += 1; back
-                                    Op::LDG, Op::PUSHI, Op::JNEI,               // total == 6
+                                    Op::JNEGK,                                  // total == 6
                                     Op::PUSHI, Op::STLJEOL,                     // k = 100; to end
                                     Op::PUSHI, Op::STL, Op::EOL,
                                     Op::LDL, Op::STG, Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   expect_same_behaviour(text, "line-ending jumps");
   EXPECT_EQ(run_and_read(image, "total"), 100);
+}
+
+// How many slices of one line each `image` takes from routine 0 to its end: the fused line
+// ends (STGEOL, STGJEOL, ...) must end exactly the lines that EOL did.
+uint64_t line_slices(const bytecode::Image& image) {
+  LoadedProgram loaded;
+  EXPECT_TRUE(loaded.load(bytecode::disassemble(image)));
+  loaded.machine.start(0, 0);
+  uint64_t slices = 0;
+  for (; slices < 100000; ++slices) {
+    const vm::SliceResult r = loaded.machine.run_slice(0, vm::Budget::of_lines(1));
+    if (r.end != vm::SliceEnd::LineEnd) break;
+  }
+  return slices;
+}
+
+// A loop whose variables are all globals, as PDL and ST compile theirs: the global forms of
+// compare-and-branch, constant arithmetic, increment, pairs, and the stores that end a line.
+TEST(Peephole, FusesGlobals) {
+  const char* text = R"(
+.global int "i" 1
+.global int "s" 1
+.global int "r" 1
+.global float "p" 1
+.global float "v" 1
+.const int 100
+.const float 0.5
+.routine function "main" in=0 out=0 entry=main
+main:
+  PUSHI 1
+  STG i
+  EOL
+  PUSHK 1
+  STG v
+  EOL
+  PUSHK 1
+  STG p
+  EOL
+top:
+  LDG i
+  PUSHK 0
+  GTI
+  JNZ done
+  EOL
+  LDG i
+  PUSHI 3
+  REMI
+  STG r
+  EOL
+  LDG r
+  PUSHI 0
+  NEI
+  JZ skip
+  LDG s
+  LDG r
+  ADDI
+  STG s
+  EOL
+  JMP next
+skip:
+  LDG p
+  LDG v
+  MULF
+  STG p
+next:
+  LDG i
+  PUSHI 1
+  ADDI
+  STG i
+  EOL
+  JMP top
+done:
+  LDG p
+  PUSHK 1
+  LTF
+  JZ end
+  LDG s
+  LDG i
+  MULI
+  STG r
+  LDG i
+  PUSHI 5
+  SUBI
+  STG s
+  LDG r
+  PUSHI 7
+  LEI
+  JNZ end
+  PUSHI 1
+  STG v
+end:
+  RET
+)";
+  const bytecode::Image image = optimized(text);
+  const std::vector<Op> expected = {
+      Op::PUSHI, Op::STGEOL,          // i = 1
+      Op::STGK, Op::EOL,              // v = 0.5
+      Op::STGK, Op::EOL,              // p = 0.5
+      Op::JGTGK, Op::EOL,             // while i <= 100 (the constant 100)
+      Op::REMGK, Op::STGEOL,          // r = i % 3
+      Op::JZG,                        // if r <> 0
+      Op::ADDIGG, Op::STGJEOL,        // s = s + r; end of line, to next
+      Op::MULFGG, Op::STG,            // skip: p = p * v (next: is a target)
+      Op::INCG, Op::JMPEOL,           // next: i = i + 1; end of line, back to top
+      Op::JNLTFGK,                    // done: if p < 0.5
+      Op::LDG2, Op::MULI, Op::STG,    // r = s * i
+      Op::ADDGK, Op::STG,             // s = i - 5
+      Op::JLEGK,                      // if r > 7 (the immediate 7 as an added constant)
+      Op::PUSHI, Op::STG,
+      Op::RET};
+  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  // PUSHI 7 became a constant of its own; 100 and 0.5 were there already.
+  ASSERT_EQ(image.constants.size(), 3u);
+  EXPECT_EQ(static_cast<int32_t>(image.constants[2].bits), 7);
+  expect_same_behaviour(text, "globals");
+  EXPECT_EQ(run_and_read(image, "r"), 100 * 101);  // s = 100 (i % 3 summed), i = 101
+  EXPECT_EQ(run_and_read(image, "s"), 96);
+  EXPECT_EQ(run_and_read(image, "v"), 1);
+  LoadedProgram plain;
+  ASSERT_TRUE(plain.load(text));
+  EXPECT_EQ(line_slices(image), line_slices(plain.image));
+}
+
+// No global form is made across a place control can enter: `inside` is a routine's entry.
+TEST(Peephole, NeverFusesGlobalsAcrossAnEntry) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.global int "g" 1
+.global int "h" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  LDG g
+inside:
+  PUSHI 1
+  ADDI
+  STG g
+  LDG h
+  JZ inside2
+inside2:
+  LDG g
+  STG h
+  EOL
+  RET
+)"));
+  bytecode::Image image = p.image;
+  image.routines.push_back({"other", bytecode::RoutineKind::Label, 0, 0, {}, 1});
+  bytecode::optimize(image);
+  const std::vector<Op> expected = {Op::LDG, Op::PUSHI, Op::ADDI, Op::STG, Op::JZG,
+                                    Op::LDG, Op::STGEOL, Op::RET};
+  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
 }
 
 }  // namespace

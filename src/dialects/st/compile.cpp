@@ -5,6 +5,7 @@
 #include <cctype>
 #include <set>
 
+#include "bytecode/peephole.h"
 #include "dialects/st/ascii_table.h"
 #include "dialects/st/codegen.h"
 #include "dialects/st/lexer.h"
@@ -160,6 +161,8 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   if (!reporter.has_errors() && !options.check_only) {
     result.image = generate(program, locator, source.name);
     result.image.created_unix_s = options.created_unix_s;
+    // The superinstructions on globals (ST has no locals); lines and their ends are kept.
+    bytecode::optimize(result.image);
   }
   result.diagnostics = reporter.take();
   // In the order of their places, as the drive lists them; "too many" stays last.
