@@ -181,6 +181,7 @@ dialect::Answer Firmware::line_stack(const Message& m, const Keyword& k) {
       // Pop i (1..S, else 4) and use AKey[N+i-1]; APopParamIdx then pops the value.
       if (name == nullptr) return refusal(m.tail_is_name ? 1 : 9);
       if (!name->indexed()) return refusal(5);
+      if (static_cast<int64_t>(m.name.index) + m.target.index - 1 > name->index_max) return refusal(4);  // as the loader
       if (!pop(a)) return refusal(27);
       const int64_t element = static_cast<int64_t>(m.name.index) + a - 1;
       if (a < 1 || a > m.target.index || element > name->index_max) return refusal(4);
