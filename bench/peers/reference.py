@@ -37,14 +37,22 @@ def floatmath(rounding):
     return x
 
 
-def arrays():
-    a = [0] * 2040
+def arrays(n=2040):
+    a = [0] * n
     total = 0
     for rnd in range(1, 3001):
-        for i in range(2040):
-            a[i] = (i * 7919 + rnd) % 2040
+        for i in range(n):
+            a[i] = (i * 7919 + rnd) % n
         total = (total + sum(a) + min(a) + max(a)) % 1_000_000
     return total
+
+
+def fibloop(n=27):
+    # fibloop.pup: fib as a loop (its rounds all give the same value).
+    a, b = 0, 1
+    for _ in range(n):
+        a, b = b, a + b
+    return a
 
 
 def profile(r):
@@ -87,6 +95,8 @@ def main():
     print(f"loop {loop()} {loop()}")
     print(f"floatmath {floatmath(f32)!r} {floatmath(exact)!r}")
     print(f"arrays {arrays()} {arrays()}")
+    print(f"arrays960 {arrays(960)} {arrays(960)}")
+    print(f"fibloop {fibloop()} {fibloop()}")
     m32, p32 = profile(f32)
     m64, p64 = profile(exact)
     print(f"profile_moves {m32} {m64}")

@@ -1,5 +1,7 @@
 // The peers' bench driver: compiles a Gold (or PDL) file, runs `main` to its end with an unlimited budget
 // on the bare VM (a fake Host, no drive simulation), prints the globals named by --then.
+// A .pup file is compiled to CUP and loaded as the AG300 loads it; it runs task 1 on a host that
+// keeps AGenData[1..1000] (--then AGenData[N]), every other keyword reading 0.
 // --histogram counts executed opcodes and opcode pairs instead (one instruction per slice);
 // A .s file (uprog assembly, e.g. hand-edited --asm output) is assembled and run through the
 // same peephole pass, to measure a code-generation change before the compiler makes it.
@@ -11,6 +13,8 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <optional>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -21,6 +25,8 @@
 #include "bytecode/opcodes.h"
 #include "bytecode/peephole.h"
 #include "dialects/gold/compile.h"
+#include "dialects/pup/cup_loader.h"
+#include "dialects/pup/pup_compiler.h"
 #include "dialects/pdl/compile.h"
 #include "dialects/pdl/layout.h"
 #include "dialects/st/compile.h"
@@ -47,6 +53,40 @@ class FakeHost final : public vm::Host {
   uint32_t now_us() override { return now; }
   uint32_t now = 0;
   ~FakeHost() = default;
+};
+
+// The AG300's general data as the firmware keeps it, for a CUP image: AGenData by keyword and
+// index, and the indexed accesses (APushParamIdx/APopParamIdx) of the loaded program.
+class PupHost final : public vm::Host {
+ public:
+  explicit PupHost(const std::vector<uprog::pup::IndexedAccess>& indexed) : indexed_(indexed) {}
+  vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override {
+    int32_t* cell = at(command, index);
+    out = Value::of_int(cell != nullptr ? *cell : 0);
+    return vm::kCommandOk;
+  }
+  vm::CommandStatus write(uint32_t command, int32_t index, Value value) override {
+    if (int32_t* cell = at(command, index)) *cell = value.i;
+    return vm::kCommandOk;
+  }
+  vm::CommandStatus execute(uint32_t, int32_t, const Value*, uint32_t) override { return vm::kCommandOk; }
+  uint32_t now_us() override { return now; }
+  uint32_t now = 0;
+  int32_t gen_data[1000] = {};
+
+ private:
+  int32_t* at(uint32_t command, int32_t index) {
+    int32_t n = index;
+    if (command >= uprog::pup::kIndexedBase && command - uprog::pup::kIndexedBase < indexed_.size()) {
+      const uprog::pup::IndexedAccess& a = indexed_[command - uprog::pup::kIndexedBase];
+      if (a.key != uprog::pup::KeywordId::GenData || index < 1 || index > a.size) return nullptr;
+      n = a.base + index - 1;
+    } else if (command != static_cast<uint32_t>(uprog::pup::KeywordId::GenData)) {
+      return nullptr;
+    }
+    return n >= 1 && n <= 1000 ? &gen_data[n - 1] : nullptr;
+  }
+  const std::vector<uprog::pup::IndexedAccess>& indexed_;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -100,6 +140,7 @@ int main(int argc, char** argv) {
   }
   const auto compile_start = std::chrono::steady_clock::now();
   uprog::gold::CompileResult compiled;
+  std::optional<uprog::pup::LoadedCup> pup_loaded;
   if (file.size() > 2 && file.compare(file.size() - 2, 2, ".s") == 0) {
     std::ifstream in(file);
     std::stringstream text;
@@ -117,6 +158,18 @@ int main(int argc, char** argv) {
     uprog::st::CompileResult st = uprog::st::compile_file(file);
     compiled.image = std::move(st.image);
     compiled.diagnostics = std::move(st.diagnostics);
+  } else if (file.size() > 4 && file.compare(file.size() - 4, 4, ".pup") == 0) {
+    uprog::pup::PupOutput pup = uprog::pup::compile_pup_file(file, 0);
+    compiled.diagnostics = std::move(pup.diagnostics);
+    std::string why;
+    if (compiled.ok()) {
+      pup_loaded = uprog::pup::load_cup(pup.program, &why);
+      if (!pup_loaded) {
+        std::fprintf(stderr, "%s: the loader refuses it: %s\n", file.c_str(), why.c_str());
+        return 1;
+      }
+      compiled.image = pup_loaded->image;
+    }
   } else {
     uprog::gold::CompileOptions options;
     options.optimize = peephole;
@@ -144,16 +197,27 @@ int main(int argc, char** argv) {
   }
   const vm::MachineConfig config;
   std::vector<uint64_t> memory(vm::Machine::memory_needed(view, config) / 8 + 1);
-  FakeHost host;
+  FakeHost fake_host;
+  static const std::vector<uprog::pup::IndexedAccess> kNoAccess;
+  PupHost pup_host(pup_loaded ? pup_loaded->indexed : kNoAccess);
+  vm::Host& vm_host = pup_loaded ? static_cast<vm::Host&>(pup_host) : static_cast<vm::Host&>(fake_host);
+  uint32_t& now = pup_loaded ? pup_host.now : fake_host.now;
   vm::Machine machine;
   const vm::LoadStatus status =
-      machine.load(bytes.data(), bytes.size(), config, memory.data(), memory.size() * 8, host);
+      machine.load(bytes.data(), bytes.size(), config, memory.data(), memory.size() * 8, vm_host);
   if (!status.ok()) {
     std::fprintf(stderr, "the VM refuses the image (verify error %d at pc %u)\n",
                  static_cast<int>(status.verify), status.pc);
     return 1;
   }
-  if (image.dialect == "pdl") {
+  if (pup_loaded) {
+    const int32_t task = pup_loaded->task_routine.size() > 1 ? pup_loaded->task_routine[1] : -1;
+    if (task < 0) {
+      std::fprintf(stderr, "no AProgTask[1]\n");
+      return 1;
+    }
+    machine.start(0, static_cast<uint32_t>(task));
+  } else if (image.dialect == "pdl") {
     // A PDL program runs from the start of its code with task 1's stack registers.
     namespace pdl = uprog::pdl;
     const int32_t base = pdl::stack_base(1);
@@ -194,7 +258,7 @@ int main(int argc, char** argv) {
                    machine.pc(0));
       return 1;
     }
-    if (r.end == vm::SliceEnd::Waiting) host.now += 1000;
+    if (r.end == vm::SliceEnd::Waiting) now += 1000;
   }
   const double run_s = seconds_since(run_start);
   if (histogram) print_histogram(ops, pairs, executed);
@@ -202,6 +266,15 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "compile %.6f s, run %.6f s, %llu instructions\n", compile_s, run_s,
                  static_cast<unsigned long long>(executed));
   for (const std::string& name : then) {
+    if (pup_loaded && name.rfind("AGenData[", 0) == 0) {
+      const int n = std::atoi(name.c_str() + 9);
+      if (n < 1 || n > 1000) {
+        std::fprintf(stderr, "no %s\n", name.c_str());
+        return 1;
+      }
+      std::printf("%s=%d\n", name.c_str(), pup_host.gen_data[n - 1]);
+      continue;
+    }
     const int g = image.find_global(name);
     Value v = Value::of_int(0);
     if (g < 0 || !machine.read_global(static_cast<uint32_t>(g), 0, v)) {

@@ -103,6 +103,14 @@ class Firmware {
   virtual std::string state_summary() const = 0;
   virtual std::vector<ThreadInfo> threads() const = 0;
 
+  // A transcript directive for the world outside the axis that only this dialect's drive has
+  // (PUP's `analog = MV`, `comm-error`; docs/transcripts.md): false when it is not one of its
+  // directives; a directive it refuses says why in `failure`.
+  virtual bool world_directive(std::string_view name, std::string_view arg, std::string& failure) {
+    (void)name, (void)arg, (void)failure;
+    return false;
+  }
+
   // --- for the recorder (drive/recorder.h); defaults for a dialect that has not said ---
   // The program in RAM, whose globals the recorder's channels may read; null for none.
   virtual const LoadedProgram* loaded_program() const { return nullptr; }

@@ -208,6 +208,10 @@ class Runner {
       else if (drive().program_error() != code) {
         fail(number, "expected program error " + arg + ", got " + std::to_string(drive().program_error()));
       }
+    } else if (std::string failure; drive().firmware().world_directive(directive, arg, failure)) {
+      // A directive of the dialect's drive (docs/transcripts.md: PUP's analog, comm-error).
+      if (!failure.empty()) fail(number, directive + ": " + failure);
+      collect_output();
     } else if (std::string why; extension_ != nullptr && extension_->directive(drive(), directive, arg, why)) {
       ++result_.checks;
       if (!why.empty()) fail(number, why);

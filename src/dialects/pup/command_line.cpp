@@ -176,7 +176,26 @@ dialect::Answer Firmware::line_stack(const Message& m, const Keyword& k) {
       if (arity == 2) pop(b);
       return push(condition_holds(m.target.index, b, a) ? 1 : 0);
     }
+    case KeywordId::PushParamIdx:
+    case KeywordId::PopParamIdx: {
+      // Pop i (1..S, else 4) and use AKey[N+i-1]; APopParamIdx then pops the value.
+      if (name == nullptr) return refusal(m.tail_is_name ? 1 : 9);
+      if (!name->indexed()) return refusal(5);
+      if (static_cast<int64_t>(m.name.index) + m.target.index - 1 > name->index_max) return refusal(4);  // as the loader
+      if (!pop(a)) return refusal(27);
+      const int64_t element = static_cast<int64_t>(m.name.index) + a - 1;
+      if (a < 1 || a > m.target.index || element > name->index_max) return refusal(4);
+      const int32_t at = static_cast<int32_t>(element);
+      if (k.id == KeywordId::PushParamIdx) {
+        code = read_key(name->id, at, b);
+        return code == 0 ? push(b) : refusal(code);
+      }
+      if (!pop(b)) return refusal(27);
+      code = write_key(name->id, at, b);
+      return code == 0 ? dialect::Answer{} : refusal(code);
+    }
     case KeywordId::GetStatus: {
+      if (m.tail != Message::Tail::Argument || m.tail_is_name) return refusal(9);
       const int32_t s = status_of(m.target.index, m.value);
       return s < 0 ? refusal(-s) : dialect::Answer{std::to_string(s), 0};
     }

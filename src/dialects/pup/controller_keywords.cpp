@@ -37,8 +37,9 @@ int32_t Firmware::read_key(KeywordId key, int32_t index, int32_t& out) {
     case KeywordId::MotorOn: out = a.motor_on() ? 1 : 0; return 0;
     case KeywordId::MotorReady: out = a.servo_ready() ? 1 : 0; return 0;
     case KeywordId::MotionMode: out = motion_mode_; return 0;
-    case KeywordId::AbsTrgt: out = a.absolute_target(); return 0;
-    case KeywordId::RelTrgt: out = a.relative_move(); return 0;
+    case KeywordId::AbsTrgt: out = abs_trgt_; return 0;
+    case KeywordId::RelTrgt: out = rel_trgt_; return 0;
+    case KeywordId::CurrCmd: out = curr_cmd_; return 0;
     case KeywordId::Pos: out = a.position(); return 0;
     case KeywordId::Speed: out = speed_; return 0;
     case KeywordId::Accel: out = p.accel_counts_per_s2; return 0;
@@ -62,6 +63,8 @@ int32_t Firmware::read_key(KeywordId key, int32_t index, int32_t& out) {
     }
     case KeywordId::DoutPort:
     case KeywordId::OutPort: out = static_cast<int32_t>(a.output_port()); return 0;
+    case KeywordId::InFunc: out = in_func_[static_cast<size_t>(index - 1)]; return 0;
+    case KeywordId::AinPort: out = analog_mv_; return 0;
     case KeywordId::AinFactor: out = ain_factor_; return 0;
     case KeywordId::AinOffset: out = ain_offset_; return 0;
     case KeywordId::GenData: out = gen_data_[static_cast<size_t>(index - 1)]; return 0;
@@ -89,11 +92,16 @@ int32_t Firmware::write_key(KeywordId key, int32_t index, int32_t value) {
       return code_of(a.set_motor_on(value == 1));
     case KeywordId::MotionMode:
       if (moving) return 20;
-      if (value < 0 || value > 4) return 10;
-      motion_mode_ = value;
+      return set_motion_mode(value);
+    // The targets take effect at ABegin (modes 0 and 1), as the mode decides which one moves.
+    case KeywordId::AbsTrgt: abs_trgt_ = value; return 0;
+    case KeywordId::RelTrgt: rel_trgt_ = value; return 0;
+    case KeywordId::CurrCmd:
+      // mA; the drive clamps the current to its limit. It drives the motor in mode 4 only.
+      curr_cmd_ = value;
+      a.set_torque_command(static_cast<float>(value) / 1000.0f);
       return 0;
-    case KeywordId::AbsTrgt: a.set_absolute_target(value); return 0;
-    case KeywordId::RelTrgt: a.set_relative_move(value); return 0;
+    case KeywordId::InFunc: return set_input_function(index, value);
     case KeywordId::Pos:
       if (moving) return 20;
       a.set_position(value);
@@ -134,14 +142,14 @@ int32_t Firmware::run_key(KeywordId key, int32_t index, bool, int32_t arg, uint3
   switch (key) {
     case KeywordId::Begin: {
       drive::Parameters& p = a.parameters();
+      if (motion_mode_ == 4) return 25;  // the current loop has no motion to begin
+      if (!a.motor_on()) return 21;
       p.speed_counts_per_s = speed_ < 0 ? -speed_ : speed_;
-      if (motion_mode_ == 2 || motion_mode_ == 3) a.set_jog_velocity(speed_);
-      if (motion_mode_ == 4) return 25;
-      const int32_t unit = motion_mode_ >= 2 ? 2 : 5;
-      if (p.unit_mode != unit) {
-        if (const int32_t c = code_of(a.set_unit_mode(unit)); c != 0) return c;
+      switch (motion_mode_) {
+        case 0: a.set_absolute_target(abs_trgt_); break;
+        case 1: a.set_relative_move(rel_trgt_); break;
+        default: a.set_jog_velocity(speed_); break;  // 2 a position-loop jog, 3 the velocity loop
       }
-      if (motion_mode_ == 1) a.set_relative_move(a.relative_move());
       return code_of(a.begin());
     }
     case KeywordId::Stop: a.stop(); return 0;
@@ -192,6 +200,55 @@ int32_t Firmware::run_key(KeywordId key, int32_t index, bool, int32_t arg, uint3
     case KeywordId::ProgClrExp: return clear_stacks(static_cast<uint32_t>(index), true);
     default: return 8;
   }
+}
+
+namespace {
+// The drive's unit mode (UM) of each AMotionMode: 0..2 the position loop, 3 velocity, 4 current.
+int32_t unit_mode_of(int32_t mode) { return mode <= 2 ? 5 : mode == 3 ? 2 : 1; }
+}  // namespace
+
+// AMotionMode: a mode of another loop (0-2, 3, 4) switches the drive's loop, which it takes
+// only with the motor off (22).
+int32_t Firmware::set_motion_mode(int32_t mode) {
+  if (mode < 0 || mode > 4) return 10;
+  drive::Axis& a = *axis_;
+  const int32_t unit = unit_mode_of(mode);
+  if (a.parameters().unit_mode != unit) {
+    if (a.motor_on()) return 22;
+    if (const int32_t c = code_of(a.set_unit_mode(unit)); c != 0) return c;
+  }
+  motion_mode_ = mode;
+  return 0;
+}
+
+// AInFunc[n]: 0 general purpose, 1 forward limit, 2 reverse limit, 3 inhibit, 4 hard stop, all
+// active high, as the drive's input logic (IL) of that function with the odd (high) polarity.
+int32_t Firmware::set_input_function(int32_t n, int32_t function) {
+  static constexpr int32_t kLogic[] = {7, 11, 9, 1, 3};
+  if (function < 0 || function > 4) return 10;
+  if (const int32_t c = code_of(axis_->set_input_logic(n, kLogic[function])); c != 0) return c;
+  in_func_[static_cast<size_t>(n - 1)] = function;
+  return 0;
+}
+
+// `analog = MV` sets the analog input AAINPort reads; `comm-error` is a line the framer refused
+// (event 23; the transcript expects no answer from it).
+bool Firmware::world_directive(std::string_view name, std::string_view arg, std::string& failure) {
+  if (name == "analog") {
+    std::string_view v = arg;
+    if (!v.empty() && v.front() == '=') v.remove_prefix(1);
+    while (!v.empty() && v.front() == ' ') v.remove_prefix(1);
+    const auto mv = parse_number(v);
+    if (!mv) failure = "analog needs 'analog = MV' (an integer, mV)";
+    else analog_mv_ = *mv;
+    return true;
+  }
+  if (name == "comm-error") {
+    if (!arg.empty()) failure = "comm-error takes no argument";
+    else on_framing_error();
+    return true;
+  }
+  return false;
 }
 
 // AWaitStatus/AGetStatus: 1 or 0, or minus the error code.

@@ -39,13 +39,18 @@ int32_t code_of(vm::RunError e, int32_t detail) {
 }  // namespace
 
 Firmware::Firmware(dialect::Runtime& runtime, const dialect::FirmwareOptions&)
-    : runtime_(runtime), wire_(dialect::FramerOptions{}), schedule_(scheduling::RatePrioritiesConfig{}) {}
+    : runtime_(runtime), wire_(dialect::FramerOptions{}, [this] { on_framing_error(); }), schedule_(scheduling::RatePrioritiesConfig{}) {}
 
 void Firmware::boot(std::vector<std::string>& messages) {
   axis_ = &runtime_.axis();
   gen_data_.fill(0);
   timers_.fill(0);
   line_stack_.clear();
+  // The keywords' values are RAM (a fresh axis takes the drive's defaults); the analog input is
+  // the world's and keeps its level.
+  motion_mode_ = 0, speed_ = 10000, ain_factor_ = 1, ain_offset_ = 0, curr_cmd_ = 0;
+  abs_trgt_ = 0, rel_trgt_ = 0;
+  in_func_.fill(0);
   if (!flash_read_) {
     flash_read_ = true;
     std::string error;

@@ -12,11 +12,11 @@
 #include "dialect/loaded_program.h"
 #include "dialect/runtime.h"
 #include "dialect/scheduling/rate_priorities.h"
-#include "dialect/semicolon_wire.h"
 #include "dialects/pup/cup_file.h"
 #include "dialects/pup/cup_loader.h"
 #include "dialects/pup/debug_map.h"
 #include "dialects/pup/message.h"
+#include "dialects/pup/pup_wire.h"
 
 namespace uprog::pup {
 
@@ -98,6 +98,16 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   int32_t write_key(KeywordId key, int32_t index, int32_t value);
   int32_t run_key(KeywordId key, int32_t index, bool has_arg, int32_t arg, uint32_t thread);
   int32_t status_of(int32_t s, int32_t v);
+  int32_t set_motion_mode(int32_t mode);
+  int32_t set_input_function(int32_t n, int32_t function);
+
+ public:
+  // --- the world a transcript changes (docs/transcripts.md: analog, comm-error) ---
+  bool world_directive(std::string_view name, std::string_view arg, std::string& failure) override;
+  // A line the framer refused (too long, a bad byte): event 23, the communication error.
+  void on_framing_error() { latch(23); }
+
+ private:
 
   // --- command_line.cpp ---
   dialect::Answer serve_message(std::string_view text, DownloadState* download);
@@ -107,7 +117,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   dialect::Answer line_stack(const Message& m, const Keyword& k);
 
   dialect::Runtime& runtime_;
-  dialect::SemicolonWire wire_;
+  PupWire wire_;
   scheduling::RatePriorities schedule_;
   drive::Axis* axis_ = nullptr;
 
@@ -142,6 +152,10 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   int32_t motion_mode_ = 0;
   int32_t speed_ = 10000;
   int32_t ain_factor_ = 1, ain_offset_ = 0;
+  int32_t analog_mv_ = 0;                 // the analog input (the transcript's `analog = MV`)
+  std::array<int32_t, 6> in_func_{};      // AInFunc[1..6]: 0 general purpose
+  int32_t curr_cmd_ = 0;                  // ACurrCmd, mA
+  int32_t abs_trgt_ = 0, rel_trgt_ = 0;   // what the next ABegin moves to, or by
 };
 
 }  // namespace uprog::pup
