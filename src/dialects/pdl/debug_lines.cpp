@@ -2,6 +2,7 @@
 // of run/t and kill/t: `stat/t` a task's state and place, `hold/t` holds it where it stands,
 // `cont/t` lets it go on, `step/t` runs a held task's next command and holds it again. Task 0 of
 // hold and cont is every task.
+#include <algorithm>
 #include <charconv>
 
 #include "dialects/pdl/firmware.h"
@@ -13,6 +14,7 @@ namespace {
 using dialect::Answer;
 
 constexpr int32_t kNotHeld = 13;  // step/t of a task that is not held
+constexpr uint32_t kMaxGlueInstructions = 10'000;  // a prologue zeroes at most 256 locals
 
 bool held(vm::ThreadStatus s) { return s == vm::ThreadStatus::Halted || s == vm::ThreadStatus::AtBreakpoint; }
 
@@ -61,8 +63,20 @@ bool Firmware::debug_line(std::string_view text, std::vector<Answer>& answers) {
     return true;
   }
   // Its next command, as its turn would run it (up to the command's end or a wait inside it).
+  // Then on to the next command's start, through what joins commands without a command of its own
+  // (a procedure's prologue, a loop's jump back, the return dispatch).
   m.resume(task);
-  const vm::SliceResult r = m.run_slice(task, vm::Budget::of_lines(1));
+  vm::SliceResult r = m.run_slice(task, vm::Budget::of_lines(1));
+  const std::vector<bytecode::LineEntry>& lines = program_->image().lines;
+  const auto at_line_start = [&] {
+    const auto it = std::lower_bound(lines.begin(), lines.end(), m.pc(task),
+                                     [](const bytecode::LineEntry& l, uint32_t pc) { return l.code < pc; });
+    return it != lines.end() && it->code == m.pc(task);
+  };
+  for (uint32_t i = 0; i < kMaxGlueInstructions && !at_line_start() &&
+                     (r.end == vm::SliceEnd::LineEnd || r.end == vm::SliceEnd::BudgetSpent);
+       ++i)
+    r = m.run_slice(task, vm::Budget::of_instructions(1));
   if (r.end == vm::SliceEnd::Error) report_error(task);
   const vm::ThreadStatus after = m.status(task);
   if (after == vm::ThreadStatus::Running || after == vm::ThreadStatus::Waiting) m.halt(task);
