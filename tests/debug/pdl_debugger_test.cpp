@@ -18,6 +18,7 @@ using json = nlohmann::json;
 const std::string kDir = UPROG_SOURCE_DIR "/tests/transcripts/debug/programs/";
 const std::string kProgram = kDir + "pdl_debug.pdl";
 const std::string kScale = kDir + "pdl/scale.h";
+constexpr int64_t kTask1 = 2;  // a DAP thread id is the VM's thread + 1: task t is t + 1
 
 struct Client {
   std::vector<json> out;
@@ -63,12 +64,14 @@ struct Client {
   }
   json frames(int64_t thread) { return body("stackTrace", {{"threadId", thread}})["stackFrames"]; }
   json variables(int64_t frame_id, const std::string& scope) {
-    for (const json& s : body("scopes", {{"frameId", frame_id}})["scopes"])
+    const json scopes = body("scopes", {{"frameId", frame_id}})["scopes"];
+    for (const json& s : scopes)
       if (s["name"] == scope) return body("variables", {{"variablesReference", s["variablesReference"]}})["variables"];
     return json::array();
   }
   std::string value(int64_t frame_id, const std::string& scope, const std::string& name) {
-    for (const json& v : variables(frame_id, scope))
+    const json vars = variables(frame_id, scope);
+    for (const json& v : vars)
       if (v["name"] == name) return v["value"];
     return "<none>";
   }
@@ -85,7 +88,7 @@ TEST(PdlDebugger, TheTasksAreTheThreads) {
   const json threads = c.body("threads")["threads"];
   ASSERT_EQ(threads.size(), 3u);
   for (int t = 1; t <= 3; ++t) {
-    EXPECT_EQ(threads[t - 1]["id"], t);
+    EXPECT_EQ(threads[t - 1]["id"], kTask1 + t - 1);
     EXPECT_EQ(threads[t - 1]["name"], "task " + std::to_string(t));
   }
 }
@@ -96,8 +99,8 @@ TEST(PdlDebugger, FramesOfProceduresWithTheirParametersAndLocals) {
   c.start(json::array({{{"line", 5}}}));
   const json stop = c.stopped();
   EXPECT_EQ(stop["reason"], "breakpoint");
-  EXPECT_EQ(stop["threadId"], 1);
-  const json frames = c.frames(1);
+  EXPECT_EQ(stop["threadId"], kTask1);
+  const json frames = c.frames(kTask1);
   ASSERT_EQ(frames.size(), 3u);
   EXPECT_EQ(frames[0]["name"], "twice");
   EXPECT_EQ(frames[0]["line"], 5);
@@ -141,15 +144,15 @@ TEST(PdlDebugger, StepOverAndOutOfProcedureCalls) {
   Client c;
   c.start(json::array({{{"line", 12}}}));  // scale's call of twice
   c.stopped();
-  c.request("next", {{"threadId", 1}});
+  c.request("next", {{"threadId", kTask1}});
   EXPECT_EQ(c.stopped()["reason"], "step");
-  json frames = c.frames(1);
+  json frames = c.frames(kTask1);
   EXPECT_EQ(frames[0]["name"], "scale");
   EXPECT_EQ(frames[0]["line"], 13);  // over twice: its frame came and went
   EXPECT_EQ(c.value(frames[0]["id"], "Locals", "prod"), "6");
-  c.request("stepOut", {{"threadId", 1}});
+  c.request("stepOut", {{"threadId", kTask1}});
   c.stopped();
-  frames = c.frames(1);
+  frames = c.frames(kTask1);
   ASSERT_EQ(frames.size(), 1u);
   EXPECT_EQ(frames[0]["line"], 12);
   EXPECT_EQ(c.value(frames[0]["id"], "Globals", "total"), "6");
@@ -159,7 +162,7 @@ TEST(PdlDebugger, SetALocalAndAGlobalAndTheProgramUsesThem) {
   Client c;
   c.start(json::array({{{"line", 13}}}));
   c.stopped();
-  const int64_t scale = c.frames(1)[0]["id"];
+  const int64_t scale = c.frames(kTask1)[0]["id"];
   json scopes = c.body("scopes", {{"frameId", scale}})["scopes"];
   json r = c.body("setVariable", {{"variablesReference", scopes[0]["variablesReference"]}, {"name", "prod"}, {"value", "40"}});
   EXPECT_EQ(r["value"], "40");
@@ -171,9 +174,9 @@ TEST(PdlDebugger, SetALocalAndAGlobalAndTheProgramUsesThem) {
   EXPECT_EQ(r["value"], "9");
   c.body("setBreakpoints", {{"source", {{"path", kScale}}}, {"breakpoints", json::array()}});
   c.body("setBreakpoints", {{"source", {{"path", kProgram}}}, {"breakpoints", json::array({{{"line", 13}}})}});
-  c.request("continue", {{"threadId", 1}});
+  c.request("continue", {{"threadId", kTask1}});
   c.stopped();
-  const int64_t task = c.frames(1)[0]["id"];
+  const int64_t task = c.frames(kTask1)[0]["id"];
   EXPECT_EQ(c.value(task, "Globals", "total"), "40");   // *res=prod stored the value set
   EXPECT_EQ(c.value(task, "Globals", "ratio"), "10.0");  // and the next line used it
   EXPECT_EQ(c.value(task, "Globals", "count"), "9");
@@ -184,7 +187,7 @@ TEST(PdlDebugger, SetALocalAndAGlobalAndTheProgramUsesThem) {
 TEST(PdlDebugger, ConditionHitCountAndLogMessage) {
   Client c;
   c.start(json::array({{{"line", 11}, {"condition", "v > 2"}, {"hitCondition", "2"}},
-                       {{"line", 13}, {"logMessage", "half={half}"}}}));
+                       {{"line", 13}, {"logMessage", "prod={prod} half={half}"}}}));
   std::vector<std::string> logged;
   bool stopped = false;
   for (const json& m : c.run()) {
@@ -193,11 +196,12 @@ TEST(PdlDebugger, ConditionHitCountAndLogMessage) {
     stopped = stopped || (m["type"] == "event" && m["event"] == "stopped");
   }
   ASSERT_TRUE(stopped);
-  const int64_t scale = c.frames(1)[0]["id"];
+  const int64_t scale = c.frames(kTask1)[0]["id"];
   EXPECT_EQ(c.eval(scale, "v"), "4");  // v = 3 was the first hit of the condition, 4 the second
   ASSERT_EQ(logged.size(), 3u);
-  EXPECT_EQ(logged[0], "half=3.0\n");
-  EXPECT_EQ(logged[2], "half=9.0\n");
+  // before line 13 runs: prod is 2 * 3 * v, half not yet computed in this call's fresh frame
+  EXPECT_EQ(logged[0], "prod=6 half=0.0\n");
+  EXPECT_EQ(logged[2], "prod=18 half=0.0\n");
 }
 
 }  // namespace
