@@ -44,11 +44,14 @@ void Debugger::resolve(Armed& b) const {
   const bytecode::Image& image = p->image();
   if (!b.spec.function.empty()) {
     const int r = image.find_routine(b.spec.function);
-    if (r < 0) {
+    if (r >= 0) {
+      b.pc = image.routines[static_cast<size_t>(r)].entry;
+    } else if (const auto pc = drive_.firmware().debug_function_entry(b.spec.function)) {
+      b.pc = *pc;
+    } else {
       b.state.message = "no function named '" + b.spec.function + "'";
       return;
     }
-    b.pc = image.routines[static_cast<size_t>(r)].entry;
     if (const bytecode::LineEntry* e = image.line_at(*b.pc)) {
       b.state.file = e->file;
       b.state.line = e->line;

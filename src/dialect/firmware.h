@@ -140,6 +140,9 @@ class Firmware {
   // The number of frames debug_frames() would give, for stepping over and out: asked at each line
   // start while a step runs, so cheaper than the frames. nullopt: the VM's frame count.
   virtual std::optional<uint32_t> debug_call_depth(uint32_t /*thread*/) { return std::nullopt; }
+  // The code word where a function breakpoint on `name` stands, for a routine of the dialect's
+  // that is no image routine (a PDL procedure); nullopt (the default): none.
+  virtual std::optional<uint32_t> debug_function_entry(std::string_view /*name*/) { return std::nullopt; }
   // Sets a local of a frame of debug_frames(): the value now stored, or why not (.ok false).
   virtual Evaluation set_debug_local(uint32_t /*thread*/, uint32_t /*depth*/, std::string_view /*name*/,
                                      std::string_view /*value*/) {

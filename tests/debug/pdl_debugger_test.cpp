@@ -204,5 +204,23 @@ TEST(PdlDebugger, ConditionHitCountAndLogMessage) {
   EXPECT_EQ(logged[2], "prod=18 half=0.0\n");
 }
 
+TEST(PdlDebugger, AFunctionBreakpointOnAProcedureAndOnALabel) {
+  Client c;
+  c.start(json::array());
+  json r = c.body("setFunctionBreakpoints", {{"breakpoints", json::array({{{"name", "twice"}}, {{"name", "nosuch"}}})}});
+  ASSERT_EQ(r["breakpoints"].size(), 2u);
+  EXPECT_TRUE(r["breakpoints"][0]["verified"]);
+  EXPECT_EQ(r["breakpoints"][0]["line"], 5);  // its first command, past the prologue
+  EXPECT_FALSE(r["breakpoints"][1]["verified"]);
+  const json stop = c.stopped();
+  EXPECT_EQ(stop["reason"], "function breakpoint");
+  EXPECT_EQ(c.frames(kTask1)[0]["name"], "twice");
+  // a global label is an entry routine of the image
+  r = c.body("setFunctionBreakpoints", {{"breakpoints", json::array({{{"name", "_t2"}}})}});
+  EXPECT_TRUE(r["breakpoints"][0]["verified"]);
+  c.request("continue", {{"threadId", kTask1}});
+  EXPECT_EQ(c.stopped()["threadId"], kTask1 + 1);
+}
+
 }  // namespace
 }  // namespace uprog::debug

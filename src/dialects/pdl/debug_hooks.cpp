@@ -126,6 +126,17 @@ std::optional<uint32_t> Firmware::debug_call_depth(uint32_t thread) {
   return static_cast<uint32_t>(walk_frames(thread).size());
 }
 
+// A procedure's first command, past the prologue that builds its frame (which has no line).
+std::optional<uint32_t> Firmware::debug_function_entry(std::string_view name) {
+  if (!program_) return std::nullopt;
+  for (const ProcInfo& p : debug_info_.procs) {
+    if (p.name != name) continue;
+    for (const bytecode::LineEntry& e : program_->image().lines)
+      if (e.code >= p.first && e.code < p.end) return e.code;
+  }
+  return std::nullopt;
+}
+
 dialect::Evaluation Firmware::evaluate(uint32_t thread, uint32_t depth, std::string_view expression) {
   dialect::Evaluation out;
   if (!program_) {

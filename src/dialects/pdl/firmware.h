@@ -72,6 +72,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   dialect::Evaluation evaluate(uint32_t thread, uint32_t depth, std::string_view expression) override;
   std::optional<std::vector<dialect::DebugFrame>> debug_frames(uint32_t thread) override;
   std::optional<uint32_t> debug_call_depth(uint32_t thread) override;
+  std::optional<uint32_t> debug_function_entry(std::string_view name) override;
   dialect::Evaluation set_debug_local(uint32_t thread, uint32_t depth, std::string_view name,
                                       std::string_view value) override;
 
