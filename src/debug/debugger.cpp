@@ -44,11 +44,14 @@ void Debugger::resolve(Armed& b) const {
   const bytecode::Image& image = p->image();
   if (!b.spec.function.empty()) {
     const int r = image.find_routine(b.spec.function);
-    if (r < 0) {
+    if (r >= 0) {
+      b.pc = image.routines[static_cast<size_t>(r)].entry;
+    } else if (const auto pc = drive_.firmware().debug_function_entry(b.spec.function)) {
+      b.pc = *pc;
+    } else {
       b.state.message = "no function named '" + b.spec.function + "'";
       return;
     }
-    b.pc = image.routines[static_cast<size_t>(r)].entry;
     if (const bytecode::LineEntry* e = image.line_at(*b.pc)) {
       b.state.file = e->file;
       b.state.line = e->line;
@@ -216,7 +219,7 @@ void Debugger::step(uint32_t thread, StepKind kind, bool single_thread) {
   dialect::LoadedProgram* p = program();
   if (p == nullptr) return resume();
   vm::Machine& m = p->machine();
-  stepping_ = Stepping{thread, kind, m.frame_count(thread), m.pc(thread)};
+  stepping_ = Stepping{thread, kind, call_depth(thread), m.pc(thread)};
   start_running(single_thread ? std::optional<uint32_t>(thread) : std::nullopt);
   if (m.status(thread) == vm::ThreadStatus::Halted) m.resume(thread);
 }
@@ -321,9 +324,10 @@ bool Debugger::step_done(uint32_t thread) const {
   const vm::Machine& m = program()->machine();
   const vm::ThreadStatus s = m.status(thread);
   if (s != vm::ThreadStatus::Running && s != vm::ThreadStatus::AtBreakpoint) return false;
-  const uint32_t depth = m.frame_count(thread), pc = m.pc(thread);
-  if (depth == 0 || (depth == stepping_->depth && pc == stepping_->pc)) return false;
-  if (!is_line_start(program()->image(), pc)) return false;
+  const uint32_t pc = m.pc(thread);
+  if (m.frame_count(thread) == 0 || !is_line_start(program()->image(), pc)) return false;
+  const uint32_t depth = call_depth(thread);
+  if (depth == stepping_->depth && pc == stepping_->pc) return false;
   switch (stepping_->kind) {
     case StepKind::In:
       return true;
@@ -333,6 +337,12 @@ bool Debugger::step_done(uint32_t thread) const {
       return depth < stepping_->depth;
   }
   return false;
+}
+
+// The dialect's own count where it builds frames itself (PDL), else the VM's.
+uint32_t Debugger::call_depth(uint32_t thread) const {
+  if (const auto d = drive_.firmware().debug_call_depth(thread)) return *d;
+  return program()->machine().frame_count(thread);
 }
 
 bool Debugger::at_trap(uint32_t thread) {

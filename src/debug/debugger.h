@@ -147,6 +147,7 @@ class Debugger {
   // A thread stands at a trap: true when it stops the program.
   bool at_trap(uint32_t thread);
   bool step_done(uint32_t thread) const;
+  uint32_t call_depth(uint32_t thread) const;
   // Runs the stepping thread up to its next line end or wait, then one cycle: the time that passed.
   uint64_t step_slice();
   uint64_t advance_one_cycle();

@@ -21,6 +21,22 @@ std::vector<StackFrame> Debugger::stack(uint32_t thread) const {
   if (p == nullptr) return out;
   const vm::Machine& m = p->machine();
   const bytecode::Image& image = p->image();
+  if (const auto frames = drive_.firmware().debug_frames(thread)) {
+    // The dialect's own frames (PDL's procedures): each names the code word of its line.
+    for (uint32_t depth = 0; depth < frames->size(); ++depth) {
+      const dialect::DebugFrame& f = (*frames)[depth];
+      StackFrame s;
+      s.depth = depth;
+      s.routine = f.routine;
+      s.pc = f.pc;
+      if (const bytecode::LineEntry* e = image.line_at(f.pc)) {
+        s.file = e->file;
+        s.line = e->line;
+      }
+      out.push_back(std::move(s));
+    }
+    return out;
+  }
   for (uint32_t depth = 0; depth < m.frame_count(thread); ++depth) {
     const vm::FrameInfo f = m.frame(thread, depth);
     StackFrame s;
@@ -42,7 +58,13 @@ std::vector<StackFrame> Debugger::stack(uint32_t thread) const {
 std::vector<Variable> Debugger::locals(uint32_t thread, uint32_t depth) const {
   std::vector<Variable> out;
   const dialect::LoadedProgram* p = program();
-  if (p == nullptr || depth >= p->machine().frame_count(thread)) return out;
+  if (p == nullptr) return out;
+  if (const auto frames = drive_.firmware().debug_frames(thread)) {
+    if (depth < frames->size())
+      for (const dialect::DebugVariable& v : (*frames)[depth].locals) out.push_back({v.name, v.value, v.type, 0});
+    return out;
+  }
+  if (depth >= p->machine().frame_count(thread)) return out;
   const vm::Machine& m = p->machine();
   const bytecode::Routine& r = p->image().routines[m.frame(thread, depth).routine];
   for (uint32_t i = 0; i < r.locals.size(); ++i) {
@@ -116,6 +138,10 @@ SetResult Debugger::set_local(uint32_t thread, uint32_t depth, const std::string
                               const std::string& text) {
   SetResult out;
   dialect::LoadedProgram* p = program();
+  if (p != nullptr && drive_.firmware().debug_frames(thread)) {
+    const dialect::Evaluation e = drive_.firmware().set_debug_local(thread, depth, name, text);
+    return {e.ok, e.value, e.error};
+  }
   if (p == nullptr || depth >= p->machine().frame_count(thread)) {
     out.error = "no such frame";
     return out;

@@ -1,8 +1,12 @@
-// The debugger in transcripts: `debug ...` directives (attach, break, clear, continue, pause,
-// step, and the checks stopped and running), and `wait` through the debugger, so that a
+// The debugger in transcripts: `debug ...` directives (attach, break with a condition, hit count
+// or log message, exceptions, clear, continue, pause, step, single, thread, frame, set, and the
+// checks stopped, running, stack, eval and log), and `wait` through the debugger, so that a
 // transcript shows what a user at a breakpoint sees: time standing still.
 #pragma once
+#include <map>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "debug/debugger.h"
 #include "transcript/transcript.h"
@@ -20,8 +24,15 @@ class TranscriptDebugger final : public transcript::Extension {
   std::string command(controller::Controller& drive, const std::string& verb,
                       const std::string& rest);
   std::string check_stopped(const std::string& rest);
+  std::string check_stack(const std::string& rest);
+  uint32_t thread() const;  // `debug thread`'s, else the stopped one
 
   std::unique_ptr<Debugger> debugger_;
+  std::map<std::string, std::vector<BreakpointSpec>> breakpoints_;  // by file, as set
+  std::vector<std::string> logged_;
+  uint32_t thread_ = 0;  // 0: the thread that stopped
+  uint32_t depth_ = 0;
+  bool single_thread_ = false;
 };
 
 }  // namespace uprog::debug

@@ -61,6 +61,14 @@ struct DebugVariable {
   std::string type;
 };
 
+// A frame of a thread that the dialect builds itself rather than the VM (PDL's procedures, whose
+// frames are words in the task's stack), for the debugger's call stack.
+struct DebugFrame {
+  std::string routine;
+  uint32_t pc = 0;  // the code word whose line it stands at: the innermost's own, a caller's call
+  std::vector<DebugVariable> locals;  // its parameters, then its locals
+};
+
 // One host's conversation with the drive: what belongs to that host alone (a download in
 // progress, a host level) lives here and dies with the connection.
 class Session {
@@ -134,6 +142,20 @@ class Firmware {
   virtual void set_debug_map(std::string_view /*map*/) {}
   // Variables beyond the image's globals, by the dialect's names; the default has none.
   virtual std::vector<DebugVariable> debug_variables() { return {}; }
+  // The frames of `thread`, innermost first, where the dialect keeps them itself; nullopt (the
+  // default) when the VM's frames are the program's.
+  virtual std::optional<std::vector<DebugFrame>> debug_frames(uint32_t /*thread*/) { return std::nullopt; }
+  // The number of frames debug_frames() would give, for stepping over and out: asked at each line
+  // start while a step runs, so cheaper than the frames. nullopt: the VM's frame count.
+  virtual std::optional<uint32_t> debug_call_depth(uint32_t /*thread*/) { return std::nullopt; }
+  // The code word where a function breakpoint on `name` stands, for a routine of the dialect's
+  // that is no image routine (a PDL procedure); nullopt (the default): none.
+  virtual std::optional<uint32_t> debug_function_entry(std::string_view /*name*/) { return std::nullopt; }
+  // Sets a local of a frame of debug_frames(): the value now stored, or why not (.ok false).
+  virtual Evaluation set_debug_local(uint32_t /*thread*/, uint32_t /*depth*/, std::string_view /*name*/,
+                                     std::string_view /*value*/) {
+    return {false, {}, false, "this dialect has no frames of its own"};
+  }
   // As start(), with inputs for the entry routine (the debugger's `args`): "" or why not.
   virtual std::string start_with_arguments(std::string_view entry, const std::vector<double>& args) {
     return args.empty() ? start(entry) : "this dialect starts a program without arguments";

@@ -287,6 +287,55 @@ test('a PUP session on two threads', async () => {
   }
 });
 
+test('a PDL session: procedures in an included file, the tasks as threads', async () => {
+  const dir = path.resolve(__dirname, '..', 'transcripts', 'debug', 'programs');
+  const pdl = path.join(dir, 'pdl_debug.pdl');
+  const scale = path.join(dir, 'pdl', 'scale.h');
+  const client = newClient();
+  await client.start();
+  try {
+    // twice's first line, called from scale, called from task 1
+    await client.hitBreakpoint({ program: pdl }, { path: scale, line: 5 });
+    const threads = await client.threadsRequest();
+    assert.deepStrictEqual(threads.body.threads.map((t) => t.name), ['task 1', 'task 2', 'task 3']);
+    const task1 = threads.body.threads[0].id;
+    let trace = await client.stackTraceRequest({ threadId: task1 });
+    assert.deepStrictEqual(trace.body.stackFrames.map((f) => [f.name, f.line]), [['twice', 5], ['scale', 12], ['_t1', 11]]);
+    const scaleFrame = trace.body.stackFrames[1].id;
+    const scopes = await client.scopesRequest({ frameId: scaleFrame });
+    const locals = scopes.body.scopes.find((s) => s.name === 'Locals');
+    const vars = await client.variablesRequest({ variablesReference: locals.variablesReference });
+    assert.deepStrictEqual(vars.body.variables.map((v) => [v.name, v.value]),
+      [['v', '1'], ['k', '3'], ['res', '1'], ['prod', '3'], ['half', '0.0']]);
+    const product = await client.evaluateRequest({ expression: 'v*k+count', frameId: scaleFrame, context: 'watch' });
+    assert.strictEqual(product.body.result, '4');
+
+    // Out of twice, then over the rest of scale and out of it: total is 2 * 3 * count.
+    await client.setBreakpointsRequest({ source: { path: scale }, breakpoints: [] });
+    await Promise.all([client.stepOutRequest({ threadId: task1 }), client.assertStoppedLocation('step', { path: scale, line: 13 })]);
+    await Promise.all([client.stepOutRequest({ threadId: task1 }), client.assertStoppedLocation('step', { path: pdl, line: 12 })]);
+    trace = await client.stackTraceRequest({ threadId: task1 });
+    const top = trace.body.stackFrames[0].id;
+    const total = await client.evaluateRequest({ expression: 'total', frameId: top, context: 'watch' });
+    assert.strictEqual(total.body.result, '6');
+
+    // A condition in PDL (`=` compares), then a global set and used.
+    await client.setBreakpointsRequest({ source: { path: scale }, breakpoints: [{ line: 11, condition: 'v = 3' }] });
+    await Promise.all([client.continueRequest({ threadId: task1 }), client.assertStoppedLocation('breakpoint', { path: scale, line: 11 })]);
+    trace = await client.stackTraceRequest({ threadId: task1 });
+    const globals = (await client.scopesRequest({ frameId: trace.body.stackFrames[0].id })).body.scopes.find((s) => s.name === 'Globals');
+    const set = await client.setVariableRequest({ variablesReference: globals.variablesReference, name: 'count', value: '20' });
+    assert.strictEqual(set.body.value, '20');
+    await client.setBreakpointsRequest({ source: { path: scale }, breakpoints: [] });
+    await client.setBreakpointsRequest({ source: { path: pdl }, breakpoints: [{ line: 13 }] });
+    await Promise.all([client.continueRequest({ threadId: task1 }), client.assertStoppedLocation('breakpoint', { path: pdl, line: 13 })]);
+    const after = await client.evaluateRequest({ expression: 'total', frameId: (await client.stackTraceRequest({ threadId: task1 })).body.stackFrames[0].id, context: 'watch' });
+    assert.strictEqual(after.body.result, '18');  // this round's scale still had v = 3
+  } finally {
+    await client.stop();
+  }
+});
+
 // PUP through its stored form: `uprog build` writes X.cup and its debug map X.cup.json, `uprog sim
 // --program X.cup` reads both, and an attached debugger stops at the PUP line while the command
 // line reports the thread at its breakpoint (AProgStatus 4).

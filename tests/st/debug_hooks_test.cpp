@@ -67,7 +67,8 @@ TEST(st_debug, ABreakpointOnAPlc1LineWithAnStCondition) {
   debug::BreakpointSpec b;
   b.line = 5;
   b.condition = "N = 3";
-  const auto states = debugger.set_line_breakpoints("program.st", {b});
+  // The drive compiles the source under its file's name (the controller gave it with the download).
+  const auto states = debugger.set_line_breakpoints(kProgram, {b});
   ASSERT_EQ(states.size(), 1u);
   ASSERT_TRUE(states[0].verified) << states[0].message;
   ASSERT_EQ(debugger.run(1'000'000'000), debug::RunState::Stopped);

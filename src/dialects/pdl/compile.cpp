@@ -149,7 +149,22 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   if (ok && result.ok() && !options.check_only) {
     image.source_name = source.name;
     image.created_unix_s = options.created_unix_s;
+    // The peephole pass moves code words and keeps routine entries where they go: the debug
+    // info's code words ride along as routines for the time of the pass (they are all jump
+    // targets already, so nothing fuses differently).
+    DebugInfo info = compiler.debug_info();
+    const std::vector<uint32_t*> words = info.code_words();
+    const size_t routines = image.routines.size();
+    for (uint32_t* word : words) {
+      bytecode::Routine carrier;
+      carrier.name = "(debug)";
+      carrier.entry = *word;
+      image.routines.push_back(std::move(carrier));
+    }
     bytecode::optimize(image);
+    for (size_t i = 0; i < words.size(); ++i) *words[i] = image.routines[routines + i].entry;
+    image.routines.resize(routines);
+    for (std::string& line : info.info_lines()) image.info.push_back(std::move(line));
     result.image = std::move(image);
   }
   attach_source_lines(result.diagnostics, source);

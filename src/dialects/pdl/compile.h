@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "bytecode/image.h"
+#include "dialects/pdl/debug_info.h"
 #include "support/diagnostic.h"
 #include "support/source.h"
 
@@ -29,5 +30,16 @@ struct CompileResult {
 
 CompileResult compile(const SourceFile& source, const CompileOptions& options = {});
 CompileResult compile_file(const std::string& path, const CompileOptions& options = {});
+
+// For the debugger: one expression, condition or assignment (`set PLACE = value`, `x += 1`) in
+// the variables of `program` and of a procedure frame (`frame`, null in task code), compiled into
+// an image with the program's globals whose routine 0 leaves the value in its last global.
+struct EvaluationCode {
+  bool ok = false;
+  bytecode::Image image;
+  bool is_float = false;
+  std::string error;  // the first diagnostic's text, when !ok
+};
+EvaluationCode compile_evaluation(std::string_view text, const bytecode::Image& program, const ProcInfo* frame);
 
 }  // namespace uprog::pdl

@@ -134,6 +134,15 @@ bool Compiler::compile(bytecode::Image& out) {
     if (info.routine >= 0 && info.defined)
       image_.routines[static_cast<size_t>(info.routine)].entry = code_.target(info.label);
   }
+  if (error_count_ == 0) {
+    for (ProcMark& m : proc_marks_) {
+      m.info.first = code_.target(m.entry);
+      m.info.end = code_.target(m.after);
+      debug_info_.procs.push_back(m.info);
+    }
+    for (const CodeBuilder::Label& site : return_sites_) debug_info_.return_sites.push_back(code_.target(site));
+    for (const auto& [body, exit] : loop_marks_) debug_info_.loops.push_back({code_.target(body), code_.target(exit)});
+  }
   // The free user memory and the tasks' stacks follow the variables, so that addresses count
   // words from the first variable (1.3) and LDM/STM reach every word.
   if (user_words_ < kUserWords) image_.globals.push_back({"(free)", ValueType::Int, static_cast<uint32_t>(kUserWords - user_words_)});
@@ -401,6 +410,12 @@ void Compiler::procedure() {
     error(Error::UnclosedBlock, at, "procedure " + name.text);
   }
   finish_scope();
+  ProcMark mark{{proc.name, 0, 0, frame_words_, static_cast<uint32_t>(params.size()), {}}, proc.entry, after};
+  for (const Var& v : locals_) {
+    const char kind = v.kind == Kind::Float ? 'f' : v.kind == Kind::Short ? 's' : 'l';
+    mark.info.vars.push_back({v.name, kind, v.pointer, v.length, v.address});
+  }
+  proc_marks_.push_back(std::move(mark));
   scope_ = 0;
   current_proc_ = nullptr;
   locals_.clear();
@@ -486,6 +501,38 @@ void Compiler::emit_indirect_stubs() {
     }
     emit_dispatch(kGotoN, cases);
   }
+}
+
+// --- the debugger's evaluations
+
+bool Compiler::compile_evaluation(EvalForm form, std::vector<Var> globals, std::vector<Var> locals,
+                                  const std::vector<bytecode::Global>& image_globals, bytecode::Image& out,
+                                  bool& is_float) {
+  globals_ = std::move(globals);
+  locals_ = std::move(locals);
+  // The program's globals as they are, so that LDG/STG and LDM/STM reach the same words.
+  image_.globals = image_globals;
+  const auto result = static_cast<uint32_t>(image_.globals.size());
+  image_.globals.push_back({"(result)", ValueType::Int, 1});
+  if (form == EvalForm::Assignment) {
+    assignment();
+    pos_ = 0;  // then its left side's value
+  }
+  Ty type = Ty::Int;
+  if (form == EvalForm::Condition) {
+    condition();
+  } else {
+    type = expr();
+  }
+  if (form != EvalForm::Assignment && peek().kind != Tok::End)
+    error(Error::Syntax, peek().offset, "'" + peek().text + "' does not continue the expression");
+  is_float = type == Ty::Float;
+  code_.emit(Op::STG, result);
+  code_.emit(Op::RET);
+  if (!code_.finish()) error(Error::Syntax, 0, "a jump to a label never defined");
+  image_.dialect = "pdl";
+  out = std::move(image_);
+  return error_count_ == 0;
 }
 
 }  // namespace uprog::pdl

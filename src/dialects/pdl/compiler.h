@@ -12,6 +12,7 @@
 
 #include "bytecode/code_builder.h"
 #include "bytecode/image.h"
+#include "dialects/pdl/debug_info.h"
 #include "dialects/pdl/errors.h"
 #include "dialects/pdl/layout.h"
 #include "dialects/pdl/lexer.h"
@@ -105,6 +106,16 @@ class Compiler {
   Compiler(std::vector<Token> tokens, std::function<Location(size_t)> locate, std::string source_name);
   bool compile(bytecode::Image& image);  // false on errors
   std::vector<Diagnostic>& diagnostics() { return diagnostics_; }
+  // The procedures, return sites and loops of the image compile() made, for the debugger.
+  const DebugInfo& debug_info() const { return debug_info_; }
+
+  // For the debugger (compile_evaluation() in compile.h): the tokens are one expression, condition
+  // or assignment, seeing `globals` and the procedure frame's `locals` (none in task code); the
+  // code stores its value in a last global, `(result)`, and ends. False on errors.
+  enum class EvalForm : uint8_t { Expression, Condition, Assignment };
+  bool compile_evaluation(EvalForm form, std::vector<Var> globals, std::vector<Var> locals,
+                          const std::vector<bytecode::Global>& image_globals, bytecode::Image& out,
+                          bool& is_float);
 
  private:
   // --- tokens and diagnostics (compiler.cpp)
@@ -212,6 +223,15 @@ class Compiler {
 
   bytecode::Image image_;
   CodeBuilder code_{image_.code};
+
+  // Where the debug info's code words are, bound once the code is finished.
+  struct ProcMark {
+    ProcInfo info;
+    CodeBuilder::Label entry{}, after{};
+  };
+  std::vector<ProcMark> proc_marks_;
+  std::vector<std::pair<CodeBuilder::Label, CodeBuilder::Label>> loop_marks_;
+  DebugInfo debug_info_;
 
   std::vector<Var> globals_;
   std::vector<Var> locals_;  // the current procedure's parameters and locals

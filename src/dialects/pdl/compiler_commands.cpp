@@ -248,6 +248,7 @@ void Compiler::loop_command(int depth, bool in_proc) {
   end_line();
   code_.emit_to(Op::JMP, body);
   code_.bind(exit);
+  loop_marks_.push_back({body, exit});
   code_.emit(Op::INCL, kSp, static_cast<uint32_t>(-1));
   end_line();
   accept_op(";");

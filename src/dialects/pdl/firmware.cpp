@@ -93,6 +93,7 @@ bool Firmware::load_stored(std::string* error) {
     return false;
   }
   const bytecode::Image& image = program_->image();
+  debug_info_ = DebugInfo::read(image.info);
   for (const std::string& info : image.info) {
     // "var NAME KIND RO R W", one per user variable in declaration order (compiler.cpp).
     if (!info.starts_with("var ")) continue;
@@ -212,6 +213,9 @@ int32_t Firmware::task_state(uint32_t task) const {
   switch (m->status(task)) {
     case vm::ThreadStatus::Running: return 1;
     case vm::ThreadStatus::Waiting: return 2;
+    // Held by the debugger or hold/t (docs/dialects/pdl.md, "Debug lines").
+    case vm::ThreadStatus::Halted:
+    case vm::ThreadStatus::AtBreakpoint: return 4;
     default: return 0;
   }
 }

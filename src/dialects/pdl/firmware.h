@@ -15,6 +15,7 @@
 #include "dialect/scheduling/phase_round_robin.h"
 #include "dialect/semicolon_wire.h"
 #include "dialects/gold/download_receiver.h"
+#include "dialects/pdl/debug_info.h"
 #include "dialects/pdl/layout.h"
 #include "vm/machine.h"
 
@@ -66,6 +67,15 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::string state_summary() const override;
   std::vector<dialect::ThreadInfo> threads() const override;
 
+  // --- the debugger's hooks (debug_hooks.cpp)
+  dialect::LoadedProgram* debug_program() override { return program_.get(); }
+  dialect::Evaluation evaluate(uint32_t thread, uint32_t depth, std::string_view expression) override;
+  std::optional<std::vector<dialect::DebugFrame>> debug_frames(uint32_t thread) override;
+  std::optional<uint32_t> debug_call_depth(uint32_t thread) override;
+  std::optional<uint32_t> debug_function_entry(std::string_view name) override;
+  dialect::Evaluation set_debug_local(uint32_t thread, uint32_t depth, std::string_view name,
+                                      std::string_view value) override;
+
   // --- vm::Host
   vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override;
   vm::CommandStatus write(uint32_t command, int32_t index, Value value) override;
@@ -86,6 +96,17 @@ class Firmware final : public dialect::Firmware, public vm::Host {
                                             const std::vector<double>& values, int32_t level);
   std::optional<dialect::Answer> run_label(uint32_t task, std::string_view label);
   void reset_drive();
+  // PDL's debug lines (debug_lines.cpp): stat, hold, cont and step for a task or all.
+  bool debug_line(std::string_view text, std::vector<dialect::Answer>& answers);
+
+  // A task's frame as walk_frames() finds it: a procedure's (fp its first word) or task code's.
+  struct TaskFrame {
+    const ProcInfo* proc = nullptr;
+    uint32_t pc = 0;  // the code word of its line
+    int32_t fp = 0;
+  };
+  std::vector<TaskFrame> walk_frames(uint32_t task) const;
+  std::string frame_name(const TaskFrame& f) const;
 
   bool load_stored(std::string* error);
   void start_reset_tasks();
@@ -121,6 +142,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   };
   std::vector<Override> overrides_;
   int32_t last_error_ = 0;
+  DebugInfo debug_info_;  // the loaded program's (debug_info.h)
 };
 
 }  // namespace uprog::pdl

@@ -129,6 +129,7 @@ void Firmware::answer_one(std::string_view text, int32_t& level, gold::DownloadR
     return;
   }
   if (equal_ignoring_case(text, "reset")) return reset_drive();
+  if (debug_line(text, answers)) return;
   if (word("level/")) {
     int32_t n = 0;
     if (!parse_int(text.substr(6), n) || n < 0) return answers.push_back(error(kBadValue, "level/n takes n >= 0"));

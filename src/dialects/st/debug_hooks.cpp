@@ -3,6 +3,8 @@
 // conditions, watches, hovers), compiled by the drive's own compiler.
 #include <fmt/core.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <optional>
 #include <string>
@@ -51,6 +53,16 @@ std::string evaluation_source(const std::string& source, std::string_view expres
 
 }  // namespace
 
+void Firmware::set_debug_map(std::string_view map) {
+  const nlohmann::json j = nlohmann::json::parse(map, nullptr, false);
+  if (!source_ || !j.is_object() || !j.contains("source") || !j["source"].is_string()) {
+    runtime_.log("debug map refused: not an ST debug map");
+    return;
+  }
+  source_name_ = j["source"].get<std::string>();
+  named_source_ = *source_;
+}
+
 dialect::Evaluation Firmware::evaluate(uint32_t, uint32_t, std::string_view expression) {
   dialect::Evaluation out;
   if (!program_ || !source_) {
@@ -82,7 +94,7 @@ dialect::Evaluation Firmware::evaluate(uint32_t, uint32_t, std::string_view expr
   }
   CompileOptions options;
   options.parameter = [this](std::string_view name) { return parameter_value(name); };
-  const CompileResult r = compile(SourceFile{"program.st", evaluation_source(*source_, trimmed)}, options);
+  const CompileResult r = compile(SourceFile{source_name(), evaluation_source(*source_, trimmed)}, options);
   if (!r.ok()) {
     out.error = r.diagnostics.empty() ? "syntax error" : r.diagnostics.back().message;
     return out;

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstdlib>
+#include <nlohmann/json.hpp>
 
 #include "dialects/st/compile.h"
 #include "dialects/st/errors.h"
@@ -86,6 +87,9 @@ class StDialect final : public dialect::Dialect {
         std::fclose(f);
       }
       out.image = std::move(r.image);
+      // The download carries the source alone: its file name goes to the drive beside it, so
+      // that the drive compiles it under that name and breakpoints in it resolve.
+      out.debug_map = nlohmann::json{{"source", path}}.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     }
     return out;
   }

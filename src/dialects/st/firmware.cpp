@@ -63,6 +63,11 @@ void Firmware::boot(std::vector<std::string>& messages) {
   compile_and_start();
 }
 
+std::string Firmware::source_name() const {
+  if (source_ && !source_name_.empty() && *source_ == named_source_) return source_name_;
+  return std::string(kSourceRecord);
+}
+
 dialect::DownloadResult Firmware::download(const std::vector<uint8_t>& source) {
   dialect::DownloadResult r;
   if (source.size() > kMaxStoredSource) {
@@ -108,7 +113,7 @@ int32_t Firmware::compile_and_start() {
   }
   CompileOptions options;
   options.parameter = [this](std::string_view name) { return parameter_value(name); };
-  const CompileResult r = compile(SourceFile{"program.st", *source_}, options);
+  const CompileResult r = compile(SourceFile{source_name(), *source_}, options);
   compile_failed_ = !r.ok();
   report_compile(r);
   program_.reset();  // the old program's globals go with it

@@ -59,6 +59,10 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::vector<dialect::ThreadInfo> threads() const override;
   // The debugger (docs/debugging.md): the PLC programs are its threads; an expression in ST.
   dialect::LoadedProgram* debug_program() override { return program_.get(); }
+  // {"source": PATH}: the name of the file the source just stored came from (debug_hooks.cpp).
+  void set_debug_map(std::string_view map) override;
+  // The name the stored source compiles under: its file's, when the controller said it.
+  std::string source_name() const;
   dialect::Evaluation evaluate(uint32_t thread, uint32_t depth, std::string_view expression) override;  // debug_hooks.cpp
 
   // --- vm::Host ---
@@ -114,6 +118,10 @@ class Firmware final : public dialect::Firmware, public vm::Host {
 
   // The stored source, and the compiled program in RAM.
   std::optional<std::string> source_;
+  // The file name set_debug_map() gave and the source it was given for: a source stored later
+  // without a name (PLCDL lines) compiles as program.st again.
+  std::string source_name_;
+  std::string named_source_;
   std::unique_ptr<dialect::LoadedProgram> program_;
   std::vector<bytecode::Global> globals_;  // the loaded program's, for the command line
   scheduling::CyclicTasks schedule_;
