@@ -159,9 +159,8 @@ dialect::Evaluation Firmware::evaluate(uint32_t thread, uint32_t depth, std::str
   }
   vm::Machine& pm = *machine();
   vm::Machine& em = loaded->machine();
-  const auto words = static_cast<uint32_t>(kMemoryWords);
-  const auto copy = [words](const vm::Machine& from, vm::Machine& to) {
-    for (uint32_t a = 0; a < words; ++a) {
+  const auto copy = [](const vm::Machine& from, vm::Machine& to) {
+    for (uint32_t a = 0; a < static_cast<uint32_t>(kMemoryWords); ++a) {
       Value v;
       if (from.read_memory(a, v)) to.write_memory(a, v);
     }
