@@ -36,7 +36,7 @@ struct Profile {
   double start_velocity_counts_per_s = 0.0;
   std::array<Segment, kMaxSegments> segments{};
   int segment_count = 0;
-  double end_position_counts = 0.0;  // where the last segment ends (the start with none)
+  double end_position_counts = 0.0;  // where the last segment ends (with segments only)
   double end_velocity_counts_per_s = 0.0;  // exact, so a move ends at rest without rounding
   bool has_target = false;                 // a move: from its end on, the position is exactly
   double target_counts = 0.0;              // the target, free of the segments' rounding

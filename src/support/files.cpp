@@ -2,6 +2,7 @@
 #include "support/files.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -28,6 +29,13 @@ std::string parent_dir(const std::string& path) {
 }  // namespace
 
 std::optional<std::string> read_text_file(const std::string& path, std::string* error) {
+  // A directory opens as a stream and reads as nothing (or, measured, as a huge file).
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+    errno = EISDIR;
+    set_error(error, "cannot open " + path);
+    return std::nullopt;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     set_error(error, "cannot open " + path);

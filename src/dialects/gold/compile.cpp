@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include <sys/stat.h>
+
 #include "bytecode/peephole.h"
 
 #include "dialects/gold/lexer.h"
@@ -91,7 +93,9 @@ namespace {
 // which copies a large file several times (and every new page costs a fault).
 std::optional<std::string> read_source(const std::string& path, std::string* why) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (f != nullptr && std::fseek(f, 0, SEEK_END) == 0) {
+  // Only a regular file's size is its length (a directory's "size" asked an exabyte string).
+  struct stat st {};
+  if (f != nullptr && ::fstat(::fileno(f), &st) == 0 && S_ISREG(st.st_mode) && std::fseek(f, 0, SEEK_END) == 0) {
     const long size = std::ftell(f);
     std::string text;
     if (size >= 0 && std::fseek(f, 0, SEEK_SET) == 0) {
