@@ -55,6 +55,13 @@ int Image::find_routine(const std::string& name) const {
   return -1;
 }
 
+uint32_t Image::constant_index(Constant c) {
+  for (size_t k = 0; k < constants.size(); ++k)
+    if (constants[k] == c) return static_cast<uint32_t>(k);
+  constants.push_back(c);
+  return static_cast<uint32_t>(constants.size() - 1);
+}
+
 int Image::find_global(const std::string& name) const {
   for (size_t i = 0; i < globals.size(); ++i)
     if (globals[i].name == name) return static_cast<int>(i);

@@ -80,6 +80,8 @@ struct Image {
   // -1 when there is none.
   int find_routine(const std::string& name) const;
   int find_global(const std::string& name) const;
+  // The index of constant `c` in the table, added at its end when the image has none.
+  uint32_t constant_index(Constant c);
   // The source line of code word `pc`, or nullptr.
   const LineEntry* line_at(uint32_t pc) const;
 };

@@ -341,15 +341,6 @@ class Fuser {
   bool room_for_constants_;
 };
 
-// The index of the int constant `value`, added to the image when it has none.
-uint32_t int_constant(Image& image, int32_t value) {
-  const Constant wanted{ValueType::Int, static_cast<uint32_t>(value)};
-  for (size_t k = 0; k < image.constants.size(); ++k)
-    if (image.constants[k] == wanted) return static_cast<uint32_t>(k);
-  image.constants.push_back(wanted);
-  return static_cast<uint32_t>(image.constants.size() - 1);
-}
-
 // A jump to a JMP goes straight to its target; a jump-and-end-of-line to a RET becomes
 // RETEOL. Targets are followed a bounded number of steps, so a cycle of jumps stays a cycle.
 void thread_jumps(std::vector<uint32_t>& code) {
@@ -392,8 +383,10 @@ PeepholeStats optimize(Image& image) {
   const Fuser fuser(in, boundary, image.constants.size() + in.size() <= 0xFFFF);
   for (size_t i = 0; i < in.size();) {
     if (auto m = fuser.match(i)) {
-      if (m->first.wants_constant)
-        m->first.b = pack_locals(packed_first(m->first.b), int_constant(image, m->first.constant));
+      if (m->first.wants_constant) {
+        const Constant k{ValueType::Int, static_cast<uint32_t>(m->first.constant)};
+        m->first.b = pack_locals(packed_first(m->first.b), image.constant_index(k));
+      }
       out.push_back(m->first);
       i += m->second;
       ++stats.fused;

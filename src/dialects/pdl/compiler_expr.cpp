@@ -46,11 +46,7 @@ void Compiler::push_float(float v) {
 }
 
 int32_t Compiler::add_constant(ValueType type, uint32_t bits) {
-  for (size_t i = 0; i < image_.constants.size(); ++i) {
-    if (image_.constants[i].type == type && image_.constants[i].bits == bits) return static_cast<int32_t>(i);
-  }
-  image_.constants.push_back({type, bits});
-  return static_cast<int32_t>(image_.constants.size() - 1);
+  return static_cast<int32_t>(image_.constant_index({type, bits}));
 }
 
 uint32_t Compiler::scratch() {
