@@ -315,6 +315,102 @@ TEST(CyclicTasks, ABreakpointSuspendsTheRunUntilResumed) {
   EXPECT_EQ(t.policy.stats(0).last_run_lines, 3u);
 }
 
+// The debug commands' hold (PLCHOLD, PLCSTEP, PLCCONT): a task held between runs begins none,
+// a step runs one line of a new run, and the run it ends counts; released, it runs when next due.
+TEST(CyclicTasks, AHeldTaskBeginsNoRunAndStepsLineByLine) {
+  Ticks t;
+  ASSERT_TRUE(t.load(counted_writer("plc62", 62, 3)));
+  ASSERT_TRUE(t.policy.add_task(1, t.routine("plc62"), kTickNs));
+  ASSERT_TRUE(t.policy.start(t.d.machine, 0));
+  t.policy.hold(t.d.machine, 1);
+  for (uint64_t k = 1; k <= 4; ++k) EXPECT_TRUE(t.run_at(k * kTickNs).empty()) << k;
+  EXPECT_TRUE(t.d.take_trace().empty());
+  EXPECT_TRUE(t.policy.held(t.d.machine, 1));
+  Report report;
+  for (uint64_t line = 1; line <= 3; ++line) {
+    ASSERT_TRUE(t.policy.step_held(t.d.machine, 1, report)) << line;
+    EXPECT_EQ(t.d.take_trace(), std::vector<int32_t>{62}) << line;
+    EXPECT_EQ(t.policy.stats(0).runs, line == 3 ? 1u : 0u) << line;
+    EXPECT_TRUE(t.policy.held(t.d.machine, 1)) << line;
+  }
+  EXPECT_EQ(t.d.machine.status(1), ThreadStatus::Idle);  // between runs, still held
+  EXPECT_TRUE(t.run_at(5 * kTickNs).empty());
+  EXPECT_EQ(t.policy.stats(0).overruns, 0u);
+  t.policy.release(t.d.machine, 1);
+  EXPECT_FALSE(t.policy.held(t.d.machine, 1));
+  t.run_at(6 * kTickNs);
+  EXPECT_EQ(t.d.take_trace(), (std::vector<int32_t>{62, 62, 62}));
+  EXPECT_EQ(t.policy.stats(0).runs, 2u);
+}
+
+// A run held in its middle goes on as the same run once released; a task not held cannot step.
+TEST(CyclicTasks, AReleasedRunGoesOnAtItsNextDueTick) {
+  Ticks t;
+  ASSERT_TRUE(t.load(counted_writer("plc250", 250, 3)));
+  ASSERT_TRUE(t.policy.add_task(1, t.routine("plc250"), 250'000));
+  ASSERT_TRUE(t.policy.start(t.d.machine, 0));
+  t.run_at(kTickNs);  // run 1, on tick 1
+  EXPECT_EQ(t.d.take_trace(), (std::vector<int32_t>{250, 250, 250}));
+  Report report;
+  EXPECT_FALSE(t.policy.step_held(t.d.machine, 1, report));
+  t.policy.hold(t.d.machine, 1);
+  ASSERT_TRUE(t.policy.step_held(t.d.machine, 1, report));  // run 2 begins
+  EXPECT_EQ(t.d.take_trace(), std::vector<int32_t>{250});
+  EXPECT_EQ(t.d.machine.status(1), ThreadStatus::Halted);
+  t.policy.release(t.d.machine, 1);
+  t.run_at(4 * kTickNs);  // not due until tick 5
+  EXPECT_TRUE(t.d.take_trace().empty());
+  t.run_at(5 * kTickNs);
+  EXPECT_EQ(t.d.take_trace(), (std::vector<int32_t>{250, 250}));
+  EXPECT_EQ(t.policy.stats(0).runs, 2u);
+  EXPECT_EQ(t.policy.stats(0).last_run_lines, 2u);  // the stepped line costs no budget
+}
+
+// Stepping the init task to its end starts the others; a real-time task cannot step before.
+TEST(CyclicTasks, AStepThatEndsTheInitTaskStartsTheOthers) {
+  Ticks t;
+  ASSERT_TRUE(t.load(counted_writer("init", 7, 2) + counted_writer("plc62", 62, 1) +
+                     counted_writer("main", 5, 1)));
+  ASSERT_TRUE(t.policy.set_init(1, t.routine("init")));
+  ASSERT_TRUE(t.policy.add_task(2, t.routine("plc62"), kTickNs));
+  ASSERT_TRUE(t.policy.set_background(3, t.routine("main")));
+  ASSERT_TRUE(t.policy.start(t.d.machine, 0));
+  t.policy.hold(t.d.machine, 1);
+  t.policy.hold(t.d.machine, 2);
+  EXPECT_TRUE(t.run_at(kStepNs).empty());
+  Report report;
+  EXPECT_FALSE(t.policy.step_held(t.d.machine, 2, report));
+  ASSERT_TRUE(t.policy.step_held(t.d.machine, 1, report));
+  EXPECT_FALSE(t.policy.init_done());
+  ASSERT_TRUE(t.policy.step_held(t.d.machine, 1, report));
+  EXPECT_TRUE(report.has(1, ThreadEvent::Finished));
+  EXPECT_TRUE(t.policy.init_done());
+  EXPECT_EQ(t.d.take_trace(), (std::vector<int32_t>{7, 7}));
+  EXPECT_FALSE(t.policy.step_held(t.d.machine, 1, report));  // nothing left to run
+  // The background runs; the held real-time task does not.
+  t.run_at(2 * kStepNs);
+  const std::vector<int32_t> trace = t.d.take_trace();
+  EXPECT_FALSE(trace.empty());
+  for (int32_t v : trace) EXPECT_EQ(v, 5);
+}
+
+// The background's last line, stepped, goes on to its top, held there.
+TEST(CyclicTasks, AStepAtTheBackgroundsEndGoesToItsTop) {
+  Ticks t;
+  ASSERT_TRUE(t.load(counted_writer("main", 5, 1)));
+  ASSERT_TRUE(t.policy.set_background(1, t.routine("main")));
+  ASSERT_TRUE(t.policy.start(t.d.machine, 0));
+  t.policy.hold(t.d.machine, 1);
+  EXPECT_TRUE(t.run_at(kStepNs).empty());
+  Report report;
+  for (int pass = 0; pass < 2; ++pass) {
+    ASSERT_TRUE(t.policy.step_held(t.d.machine, 1, report));
+    EXPECT_EQ(t.d.take_trace(), std::vector<int32_t>{5});
+    EXPECT_EQ(t.d.machine.status(1), ThreadStatus::Halted);
+    EXPECT_EQ(t.d.machine.pc(1), t.d.machine.image().routines[t.routine("main")].entry);
+  }
+}
+
 TEST(CyclicTasks, StopEndsEverything) {
   Ticks t;
   ASSERT_TRUE(t.load(forever_writer("plc62", 62) + plain_lines("main", 10)));

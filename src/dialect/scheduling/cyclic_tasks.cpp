@@ -116,6 +116,7 @@ bool CyclicTasks::start(vm::Machine& machine, uint64_t now_ns) {
   stop(machine);
   if (!machine.loaded() || !threads_valid(machine) || !routines_start(machine)) return false;
   started_ = true;
+  held_ = 0;
   init_done_ = !init_.set();
   start_ns_ = now_ns;
   next_tick_ = 1;
@@ -145,6 +146,7 @@ void CyclicTasks::stop(vm::Machine& machine) {
   if (init_.set()) machine.kill(init_.thread);
   if (main_.set()) machine.kill(main_.thread);
   started_ = false;
+  held_ = 0;
 }
 
 Report CyclicTasks::run(vm::Machine& machine, uint64_t now_ns) {
@@ -160,7 +162,7 @@ Report CyclicTasks::run(vm::Machine& machine, uint64_t now_ns) {
 }
 
 CyclicTasks::Step CyclicTasks::step(vm::Machine& machine, uint32_t thread, uint64_t lines,
-                                     Report& report) {
+                                    Report& report) {
   running_ = thread;
   charged_ = 0;
   const LineStep s = step_lines(machine, thread, lines, config_.back_jump_cap);
@@ -175,7 +177,7 @@ CyclicTasks::Step CyclicTasks::step(vm::Machine& machine, uint32_t thread, uint6
 // one) has its line finished in the same step, so that the budget is looked at only where a line
 // ends; the program's own yield pauses the run as a wait does.
 CyclicTasks::Step CyclicTasks::slice(vm::Machine& machine, uint32_t thread, uint64_t lines,
-                                      Report& report) {
+                                     Report& report) {
   Step s = step(machine, thread, lines, report);
   while (s.end == vm::SliceEnd::Yielded && s.charged) {
     const Step rest = step(machine, thread, 1, report);
@@ -197,7 +199,8 @@ CyclicTasks::Flow CyclicTasks::run_task(vm::Machine& machine, Task& task, Report
   const uint32_t thread = task.stats.thread;
   if (task.state == RunState::Stopped) return Flow::Continue;
   if (task.state == RunState::Ready) {
-    machine.start(thread, task.routine);  // start() proved that it starts
+    if (held(machine, thread)) return Flow::Continue;  // held between runs
+    machine.start(thread, task.routine);               // start() proved that it starts
     task.state = RunState::InRun;
     task.run_lines = 0;
   }
@@ -218,11 +221,7 @@ CyclicTasks::Flow CyclicTasks::run_task(vm::Machine& machine, Task& task, Report
         continue;  // the run goes on; the next turn of the loop checks its budget
       case vm::SliceEnd::Finished:
         if (task.run_lines > task.stats.budget_lines) return overrun(machine, task, report);
-        task.state = RunState::Ready;
-        ++task.stats.runs;
-        task.stats.last_run_lines = task.run_lines;
-        if (task.run_lines > task.stats.largest_run_lines)
-          task.stats.largest_run_lines = task.run_lines;
+        end_run(task);
         return Flow::Continue;
       case vm::SliceEnd::Error:
         task.state = RunState::Stopped;
@@ -231,6 +230,13 @@ CyclicTasks::Flow CyclicTasks::run_task(vm::Machine& machine, Task& task, Report
         return Flow::Continue;  // a wait, a yield, a breakpoint: the run pauses
     }
   }
+}
+
+void CyclicTasks::end_run(Task& task) {
+  task.state = RunState::Ready;
+  ++task.stats.runs;
+  task.stats.last_run_lines = task.run_lines;
+  if (task.run_lines > task.stats.largest_run_lines) task.stats.largest_run_lines = task.run_lines;
 }
 
 CyclicTasks::Flow CyclicTasks::overrun(vm::Machine& machine, Task& task, Report& report) {
@@ -271,7 +277,10 @@ void CyclicTasks::run_init(vm::Machine& machine, Report& report) {
     if (s.end != vm::SliceEnd::LineEnd && s.end != vm::SliceEnd::BudgetSpent) break;
   }
   // Out of lines, waiting, halted or failed: not done yet. Idle: it finished (or was killed).
-  if (machine.status(init_.thread) != vm::ThreadStatus::Idle) return;
+  if (machine.status(init_.thread) == vm::ThreadStatus::Idle) end_init(machine, report);
+}
+
+void CyclicTasks::end_init(vm::Machine& machine, Report& report) {
   report.add(init_.thread, ThreadEvent::Finished);
   init_done_ = true;
   // The real-time tasks and the background begin together; the rest of this slice is lost.
@@ -290,13 +299,17 @@ void CyclicTasks::run_main(vm::Machine& machine, Report& report) {
       case vm::SliceEnd::BudgetSpent:
         break;
       case vm::SliceEnd::Finished:
-        ++loops_this_second_;
-        machine.start(main_.thread, main_.routine);  // at its top again
+        end_pass(machine);
         break;
       default:
         return;  // a wait, a yield, a breakpoint, an error, not running: the slice ends
     }
   }
+}
+
+void CyclicTasks::end_pass(vm::Machine& machine) {
+  ++loops_this_second_;
+  machine.start(main_.thread, main_.routine);  // at its top again
 }
 
 // The looping background's passes finished: those begun, less the one under way (unless the
@@ -329,6 +342,71 @@ void CyclicTasks::latch_seconds(const vm::Machine& machine, uint64_t now_ns) {
     loops_this_second_ = 0;
     second_end_ns_ += kSecondNs;
   }
+}
+
+// --- the debug commands' holds and steps ---
+
+uint32_t CyclicTasks::task_index(uint32_t thread) const {
+  uint32_t i = 0;
+  while (i < task_count_ && tasks_[i].stats.thread != thread) ++i;
+  return i;
+}
+
+bool CyclicTasks::stopped(uint32_t thread) const {
+  const uint32_t i = task_index(thread);
+  return i < task_count_ && tasks_[i].state == RunState::Stopped;
+}
+
+void CyclicTasks::hold(vm::Machine& machine, uint32_t thread) {
+  if (!started_ || thread >= kMaxThreads) return;
+  held_ |= 1u << thread;
+  if (can_step(machine.status(thread))) machine.halt(thread);
+}
+
+void CyclicTasks::release(vm::Machine& machine, uint32_t thread) {
+  if (!started_ || thread >= kMaxThreads) return;
+  held_ &= ~(1u << thread);
+  const vm::ThreadStatus s = machine.status(thread);
+  if (!stopped(thread) && (s == vm::ThreadStatus::Halted || s == vm::ThreadStatus::AtBreakpoint))
+    machine.resume(thread);
+}
+
+bool CyclicTasks::held(const vm::Machine& machine, uint32_t thread) const {
+  if (!started_ || thread >= kMaxThreads || stopped(thread)) return false;
+  const vm::ThreadStatus s = machine.status(thread);
+  return ((held_ >> thread) & 1u) != 0 || s == vm::ThreadStatus::Halted ||
+         s == vm::ThreadStatus::AtBreakpoint;
+}
+
+bool CyclicTasks::step_held(vm::Machine& machine, uint32_t thread, Report& report) {
+  if (!held(machine, thread)) return false;
+  const uint32_t index = task_index(thread);
+  Task* task = index < task_count_ ? &tasks_[index] : nullptr;
+  if (task != nullptr && !init_done_) return false;
+  const vm::ThreadStatus before = machine.status(thread);
+  if (before == vm::ThreadStatus::Halted || before == vm::ThreadStatus::AtBreakpoint) {
+    machine.resume(thread);
+  } else if (task != nullptr && task->state == RunState::Ready) {
+    machine.start(thread, task->routine);  // start() proved that it starts
+    task->state = RunState::InRun;
+    task->run_lines = 0;
+  }
+  if (!can_step(machine.status(thread))) return false;  // the init task's thread after its end
+  held_ |= 1u << thread;
+  const Step s = slice(machine, thread, 1, report);
+  if (s.end == vm::SliceEnd::Finished) {
+    if (task != nullptr) {
+      end_run(*task);
+    } else if (!init_done_) {
+      end_init(machine, report);
+    } else {
+      end_pass(machine);
+    }
+  } else if (s.end == vm::SliceEnd::Error && task != nullptr) {
+    task->state = RunState::Stopped;
+  }
+  if (can_step(machine.status(thread))) machine.halt(thread);
+  return true;
 }
 
 }  // namespace uprog::scheduling

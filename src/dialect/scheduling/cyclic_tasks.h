@@ -89,6 +89,22 @@ class CyclicTasks {
   uint64_t background_loops_last_second() const { return started_ ? loops_last_second_ : 0; }
   void reset_statistics();
 
+  // The drive's debug commands (docs/dialects/st.md, "Debug commands"). A held program stops
+  // where it stands, and a held real-time task begins no run: its due ticks pass without it.
+  // release() lets it go on (a run held in the middle at its next due tick); start() and stop()
+  // release every thread. A thread the debugger halted or stopped at a breakpoint counts as held.
+  void hold(vm::Machine& machine, uint32_t thread);
+  void release(vm::Machine& machine, uint32_t thread);
+  bool held(const vm::Machine& machine, uint32_t thread) const;
+  // Runs a held program's next line and holds it again: a real-time task between runs begins
+  // its next run, a run that ends counts, the background begins its next pass at its top, the
+  // init task's end starts the others. The line costs no budget. False, with nothing run, when
+  // the thread is not held or has no line to run (stopped; a real-time task before the init task
+  // has ended; the init task after it).
+  bool step_held(vm::Machine& machine, uint32_t thread, Report& report);
+  // A real-time task that an overrun or an error stopped.
+  bool stopped(uint32_t thread) const;
+
  private:
   enum class RunState : uint8_t { Ready, InRun, Stopped };
   struct Task {
@@ -112,6 +128,10 @@ class CyclicTasks {
     bool charged;   // a host call charged lines (and may have ended the slice inside its line)
   };
 
+  uint32_t task_index(uint32_t thread) const;  // task_count_ when no real-time task runs on it
+  void end_run(Task& task);
+  void end_init(vm::Machine& machine, Report& report);
+  void end_pass(vm::Machine& machine);
   bool threads_valid(const vm::Machine& machine) const;
   bool routines_start(vm::Machine& machine) const;
   Step step(vm::Machine& machine, uint32_t thread, uint64_t lines, Report& report);
@@ -145,6 +165,7 @@ class CyclicTasks {
   uint64_t rt_lines_ = 0;     // lines the real-time tasks used since the last background slice
   uint64_t charged_ = 0;
   uint32_t running_ = kNoThread;
+  uint32_t held_ = 0;  // a bit per thread: held by hold()
   uint64_t second_end_ns_ = 0;
   uint64_t loops_this_second_ = 0;
   uint64_t loops_last_second_ = 0;

@@ -66,6 +66,10 @@ constexpr AsciiEntry kTable[] = {
     {"PLCSTART", K::Command, A::Write, 0, false, false},
     {"PLCDL", K::Command, A::Write, 0, false, false},
     {"PLIST", K::Text, A::Read, 0, false, false},
+    {"PLCSTAT", K::Text, A::Read, 0, false, false},
+    {"PLCHOLD", K::Command, A::Write, 0, false, false},
+    {"PLCCONT", K::Command, A::Write, 0, false, false},
+    {"PLCSTEP", K::Command, A::Write, 0, false, false},
 };
 
 

@@ -66,13 +66,15 @@ class Generator {
   // PLCMAIN restarts at its top when it ends: the routine loops by itself, counting its passes
   // in its last local at the top (the drive's TASK reads them), so that the background runs
   // whole slices in the machine and never returns to be started again. A pass without a line
-  // still costs one, as the bare end of an empty program does.
+  // still costs one, as the bare end of an empty program does. The count stands on the
+  // PROGRAM line, so that a thread at the top of a pass is shown there, not on the line before.
   void main_loop(const Routine& r, bytecode::Routine& out) {
     const auto passes = static_cast<uint32_t>(out.locals.size());
     out.locals.push_back({std::string(kMainPassesLocal), ValueType::Int});
-    const size_t lines_before = image_.lines.size();
     const L top = b_.new_label();
     b_.bind(top);
+    line(r.offset);
+    const size_t lines_before = image_.lines.size();
     b_.emit_imm(bytecode::Op::INCL, static_cast<int32_t>(passes), 1u);
     for (int s : r.body) statement(s);
     if (image_.lines.size() == lines_before) eol();

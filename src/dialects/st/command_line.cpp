@@ -76,7 +76,7 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   for (size_t i = 1; i < w.size(); ++i) {
     int64_t v = 0;
     if (!to_int(w[i], v)) {
-      if (name == "PLCDL") break;
+      if (name == "PLCDL" || is_debug_command(name)) break;
       return {err(kErrSyntax, "syntax error")};
     }
     args.push_back(v);
@@ -110,9 +110,10 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   if (e == nullptr) return {err(kErrUnknown, "unknown command")};
   // A program cannot stop, replace or reboot itself from inside its own run.
   if (in_program_ && (name == "PLCSTOP" || name == "PLCRUN" || name == "PLCSTART" || name == "COLDSTART" ||
-                      name == "PLCDL"))
+                      name == "PLCDL" || is_debug_command(name)))
     return {err(kErrSyntax, "not from a PLC program")};
   if (argc > 0 && e->access == AsciiAccess::Read) return {err(kErrReadOnly, "read only")};
+  if (is_debug_command(name)) return debug_command(name, w);
 
   if (auto n = user_variable_number(name)) {
     const auto i = static_cast<size_t>(*n - 1);

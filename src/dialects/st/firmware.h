@@ -28,7 +28,12 @@ enum AsciiError : int32_t {
   kErrUnknown = 1, kErrSyntax = 2, kErrRange = 3, kErrReadOnly = 4, kErrNeedsDisabled = 5,
   kErrNeedsEnabled = 6, kErrOpmode = 7, kErrFault = 8, kErrTask = 9, kErrStorage = 10,
   kErrCompileFailed = 11,
+  // 12–15 are the download's (session.cpp); the debug commands' own:
+  kErrNotHeld = 16, kErrPlcStopped = 17,
 };
+
+// PLCSTAT, PLCHOLD, PLCCONT, PLCSTEP (debug_commands.cpp): their argument is a program's name.
+bool is_debug_command(std::string_view name);
 
 constexpr uint64_t kStepNs = 125'000;  // the axis steps every 125 µs, two 62.5 µs ticks
 constexpr size_t kMaxStoredSource = 61'440;
@@ -88,6 +93,10 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   void sync_user_variables_out();
   std::optional<int32_t> parameter_value(std::string_view name);
   void say(const std::string& line) { runtime_.output(line + "\n"); }
+
+  // --- the debug commands (debug_commands.cpp) ---
+  std::vector<dialect::Answer> debug_command(const std::string& name, const std::vector<std::string>& words);
+  std::string program_state(uint32_t thread) const;
 
   // --- parameters (settings.cpp) ---
   void defaults();
