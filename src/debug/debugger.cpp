@@ -176,10 +176,16 @@ void Debugger::pause() {
 }
 
 void Debugger::start_running(std::optional<uint32_t> only_thread) {
+  const bool was_stopped = state_ == RunState::Stopped;
   state_ = RunState::Running;
   dialect::LoadedProgram* p = program();
   if (p == nullptr) return;
   vm::Machine& m = p->machine();
+  // A thread at a breakpoint's trap steps over it in the VM; one halted elsewhere (a step's end,
+  // a pause) is told here.
+  standing_.reset();
+  if (was_stopped && m.status(stop_.thread) == vm::ThreadStatus::Halted)
+    standing_ = Standing{stop_.thread, m.pc(stop_.thread)};
   std::vector<uint32_t> still_halted;
   for (uint32_t t : halted_) {
     if (only_thread && t != *only_thread)
@@ -301,6 +307,7 @@ void Debugger::after_cycle() {
     return;
   }
   vm::Machine& m = p->machine();
+  if (standing_ && m.pc(standing_->thread) != standing_->pc) standing_.reset();  // it has left
   bool alive = false;
   for (const dialect::ThreadInfo& t : drive_.firmware().threads()) {
     const vm::ThreadStatus s = m.status(t.thread);
@@ -348,6 +355,11 @@ uint32_t Debugger::call_depth(uint32_t thread) const {
 bool Debugger::at_trap(uint32_t thread) {
   vm::Machine& m = program()->machine();
   const uint32_t pc = m.pc(thread);
+  if (standing_ && standing_->thread == thread && standing_->pc == pc) {
+    standing_.reset();  // leaving the place it stood on
+    m.resume(thread);
+    return false;
+  }
   std::vector<uint32_t> hit;
   bool is_function = false;
   for (Armed& b : breakpoints_) {

@@ -167,6 +167,13 @@ class Debugger {
   RunState state_ = RunState::Running;
   Stop stop_;
   std::vector<uint32_t> halted_;     // threads the debugger halted, to resume
+  // The thread a stop showed, where it stood, when it goes on: a breakpoint set on that very
+  // place while it stood there is no hit as it leaves (as in gdb), only when it comes back.
+  struct Standing {
+    uint32_t thread;
+    uint32_t pc;
+  };
+  std::optional<Standing> standing_;
   std::vector<uint8_t> seen_error_;  // per thread: its error has been reported
   dialect::LoadedProgram* armed_for_ = nullptr;
   std::set<uint32_t> armed_pcs_;

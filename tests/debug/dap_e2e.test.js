@@ -2,7 +2,8 @@
 // run by `node --test` from ctest (tests/debug/CMakeLists.txt): stop at a breakpoint in a Gold
 // function, read a local and a global, step over, step into a function and out, a conditional
 // breakpoint that stops on the third hit, set a variable and see the program use it, break on a
-// division by zero, continue to the end. UPROG names the uprog binary.
+// division by zero, continue to the end; then sessions on the other dialects (PUP, PDL, ST), over
+// TCP and attached to `uprog sim`. UPROG names the uprog binary.
 'use strict';
 const { test, before, after } = require('node:test');
 const assert = require('node:assert');
@@ -331,6 +332,77 @@ test('a PDL session: procedures in an included file, the tasks as threads', asyn
     await Promise.all([client.continueRequest({ threadId: task1 }), client.assertStoppedLocation('breakpoint', { path: pdl, line: 13 })]);
     const after = await client.evaluateRequest({ expression: 'total', frameId: (await client.stackTraceRequest({ threadId: task1 })).body.stackFrames[0].id, context: 'watch' });
     assert.strictEqual(after.body.result, '18');  // this round's scale still had v = 3
+  } finally {
+    await client.stop();
+  }
+});
+
+test('an ST session: a FUNCTION called from PLC1, the PLC programs as threads', async () => {
+  const st = path.resolve(__dirname, 'programs', 'scenario.st');
+  const client = newClient();
+  await client.start();
+  const top = async (threadId) => (await client.stackTraceRequest({ threadId })).body.stackFrames[0];
+  const evaluate = async (expression, frameId) =>
+    (await client.evaluateRequest({ expression, frameId, context: 'watch' })).body.result;
+  // A scope's reference holds for the stop it came from.
+  const globalsOf = async (frameId) =>
+    (await client.scopesRequest({ frameId })).body.scopes.find((s) => s.name === 'Globals').variablesReference;
+  try {
+    // PLC1's first run, before it calls TWICE (ST has no locals: the globals are its variables).
+    await client.hitBreakpoint({ program: st }, { path: st, line: 12 });
+    const threads = await client.threadsRequest();
+    assert.deepStrictEqual(threads.body.threads.map((t) => t.name), ['PLCINIT', 'PLC1', 'PLCMAIN']);
+    const plc1 = threads.body.threads[1].id;
+    let frame = await top(plc1);
+    const vars = await client.variablesRequest({ variablesReference: await globalsOf(frame.id) });
+    const byName = Object.fromEntries(vars.body.variables.map((v) => [v.name, v.value]));
+    assert.strictEqual(byName.N, '1');
+    assert.strictEqual(byName.DIV, '1');
+
+    // Into TWICE, out of it, and over the last line of the run.
+    const step = async (request, line) =>
+      Promise.all([client[request]({ threadId: plc1 }), client.assertStoppedLocation('step', { path: st, line })]);
+    await step('stepInRequest', 8);
+    const trace = await client.stackTraceRequest({ threadId: plc1 });
+    assert.deepStrictEqual(trace.body.stackFrames.map((f) => [f.name, f.line]), [['TWICE', 8], ['PLC1', 12]]);
+    await step('stepOutRequest', 13);
+    frame = await top(plc1);
+    assert.strictEqual(await evaluate('D', frame.id), '2');
+
+    // A breakpoint on the third hit: PLC1's runs 2, 3 and 4 reach line 13; run 4 stops.
+    await client.setBreakpointsRequest({ source: { path: st }, breakpoints: [] });
+    await client.setBreakpointsRequest({ source: { path: st }, breakpoints: [{ line: 13, hitCondition: '3' }] });
+    await Promise.all([client.continueRequest({ threadId: plc1 }), client.assertStoppedLocation('breakpoint', { path: st, line: 13 })]);
+    frame = await top(plc1);
+    assert.strictEqual(await evaluate('N', frame.id), '4');
+    assert.strictEqual(await evaluate('Q', frame.id), '7');  // run 3's D + 1
+
+    // Set N and see the next run use it: N 101, D 202 at line 13 of run 5.
+    const set = await client.setVariableRequest({ variablesReference: await globalsOf(frame.id), name: 'N', value: '100' });
+    assert.strictEqual(set.body.value, '100');
+    await client.setBreakpointsRequest({ source: { path: st }, breakpoints: [{ line: 13 }] });
+    await Promise.all([client.continueRequest({ threadId: plc1 }), client.assertStoppedLocation('breakpoint', { path: st, line: 13 })]);
+    frame = await top(plc1);
+    assert.strictEqual(await evaluate('D', frame.id), '202');
+    assert.strictEqual(await evaluate('D / 2 - N', frame.id), '0');
+
+    // DIV set to 0: PLCMAIN's division stops on the run-time error.
+    await client.setBreakpointsRequest({ source: { path: st }, breakpoints: [] });
+    await client.setVariableRequest({ variablesReference: await globalsOf(frame.id), name: 'DIV', value: '0' });
+    await client.setExceptionBreakpointsRequest({ filters: ['error'] });
+    const [, stopped] = await Promise.all([client.continueRequest({ threadId: plc1 }), client.waitForEvent('stopped')]);
+    assert.strictEqual(stopped.body.reason, 'exception');
+    assert.match(stopped.body.description, /division by zero/i);
+    const failed = await top(stopped.body.threadId);
+    assert.deepStrictEqual([failed.name, failed.line], ['PLCMAIN', 16]);
+
+    // Continue to the end: the drive stops the PLC on F31, exit code 1.
+    const [, exited] = await Promise.all([
+      client.continueRequest({ threadId: plc1 }),
+      client.waitForEvent('exited'),
+      client.waitForEvent('terminated'),
+    ]);
+    assert.strictEqual(exited.body.exitCode, 1);
   } finally {
     await client.stop();
   }

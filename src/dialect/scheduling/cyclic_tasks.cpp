@@ -141,10 +141,13 @@ bool CyclicTasks::start(vm::Machine& machine, uint64_t now_ns) {
   return true;
 }
 
-void CyclicTasks::stop(vm::Machine& machine) {
-  for (uint32_t i = 0; i < task_count_; ++i) machine.kill(tasks_[i].stats.thread);
-  if (init_.set()) machine.kill(init_.thread);
-  if (main_.set()) machine.kill(main_.thread);
+void CyclicTasks::stop(vm::Machine& machine, uint32_t failed) {
+  const auto kill = [&](uint32_t thread) {
+    if (thread != failed) machine.kill(thread);
+  };
+  for (uint32_t i = 0; i < task_count_; ++i) kill(tasks_[i].stats.thread);
+  if (init_.set()) kill(init_.thread);
+  if (main_.set()) kill(main_.thread);
   started_ = false;
   held_ = 0;
 }

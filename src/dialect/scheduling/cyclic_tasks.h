@@ -65,8 +65,9 @@ class CyclicTasks {
   // background loop. False, with nothing started, when a thread is out of range or used
   // twice, or the machine refuses to start a routine.
   bool start(vm::Machine& machine, uint64_t now_ns);
-  // Kills every thread of the programs; nothing runs until start().
-  void stop(vm::Machine& machine);
+  // Kills every thread of the programs but `failed` (one stopped by its error, kept for the
+  // debugger to show where); nothing runs until start().
+  void stop(vm::Machine& machine, uint32_t failed = kNoThread);
   bool started() const { return started_; }
   bool init_done() const { return init_done_; }
 

@@ -185,10 +185,10 @@ void Firmware::report_compile(const CompileResult& r) {
   }
 }
 
-void Firmware::stop_plc() {
+void Firmware::stop_plc(uint32_t failed) {
   if (program_) {
     sync_user_variables_out();
-    schedule_.stop(program_->machine());
+    schedule_.stop(program_->machine(), failed);
   }
   plc_started_ = false;
 }
@@ -229,7 +229,7 @@ void Firmware::on_report(const scheduling::Report& report) {
       run_error_ = program_->machine().last_error(thread);
       runtime_.log(fmt::format("{}: run-time error {} ({}) at {}: F31", name, static_cast<int>(run_error_),
                                vm::run_error_text(run_error_), program_->where(program_->machine().pc(thread))));
-      stop_plc();
+      stop_plc(thread);
       latch(31);
       return;
     }

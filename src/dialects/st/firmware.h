@@ -87,7 +87,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   int32_t plc_state() const;  // PLC: 1 running, 0 stopped, -1 failed, -2 no source
   int32_t compile_and_start();  // 0, or the ASCII error (11 compile failed)
   void report_compile(const CompileResult& r);
-  void stop_plc();
+  void stop_plc(uint32_t failed = scheduling::kNoThread);  // a failed program stays where it failed
   void latch(int fault);
   void on_report(const scheduling::Report& report);
   void sync_user_variables_out();
