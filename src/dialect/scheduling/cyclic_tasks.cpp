@@ -202,8 +202,8 @@ CyclicTasks::Flow CyclicTasks::run_task(vm::Machine& machine, Task& task, Report
   const uint32_t thread = task.stats.thread;
   if (task.state == RunState::Stopped) return Flow::Continue;
   if (task.state == RunState::Ready) {
-    if (held(machine, thread)) return Flow::Continue;  // held between runs
-    machine.start(thread, task.routine);               // start() proved that it starts
+    if (held_bit(thread)) return Flow::Continue;  // held between runs
+    machine.start(thread, task.routine);          // start() proved that it starts
     task.state = RunState::InRun;
     task.run_lines = 0;
   }
@@ -377,8 +377,7 @@ void CyclicTasks::release(vm::Machine& machine, uint32_t thread) {
 bool CyclicTasks::held(const vm::Machine& machine, uint32_t thread) const {
   if (!started_ || thread >= kMaxThreads || stopped(thread)) return false;
   const vm::ThreadStatus s = machine.status(thread);
-  return ((held_ >> thread) & 1u) != 0 || s == vm::ThreadStatus::Halted ||
-         s == vm::ThreadStatus::AtBreakpoint;
+  return held_bit(thread) || s == vm::ThreadStatus::Halted || s == vm::ThreadStatus::AtBreakpoint;
 }
 
 bool CyclicTasks::step_held(vm::Machine& machine, uint32_t thread, Report& report) {

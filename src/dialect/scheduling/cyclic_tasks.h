@@ -129,6 +129,9 @@ class CyclicTasks {
     bool charged;   // a host call charged lines (and may have ended the slice inside its line)
   };
 
+  bool held_bit(uint32_t thread) const {
+    return thread < kMaxThreads && ((held_ >> thread) & 1u) != 0;
+  }
   uint32_t task_index(uint32_t thread) const;  // task_count_ when no real-time task runs on it
   void end_run(Task& task);
   void end_init(vm::Machine& machine, Report& report);
