@@ -1,5 +1,6 @@
 // Shared by the fuzz targets: load image bytes into a Machine (with a memory cap, as a drive
-// has) and, if it loads, run every routine for a bounded budget, with an event entered midway.
+// has) and, if it loads, run every routine for a bounded budget, with an event entered midway and
+// the thread halted and moved.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -39,12 +40,19 @@ inline vm::LoadStatus load_and_run(const uint8_t* bytes, size_t size) {
 
   const uint32_t routines = view.routines.size();
   Value args[16] = {};
+  std::vector<uint32_t> scratch(bytecode::verify_scratch_size(view) / 4 + 1);
   for (uint32_t r = 0; r < routines && r < kMaxRoutinesRun; ++r) {
     const uint32_t inputs = view.routines[r].inputs;
     machine.start(0, r, args, inputs <= 16 ? inputs : 0);
     for (uint32_t s = 0; s < kSlicesPerRoutine; ++s) {
       if (s == 2) machine.interrupt(0, (r + 1) % routines);
-      if (s == 4) machine.halt(0);
+      if (s == 4) {
+        // Halted and moved to a code word the VM must refuse unless it is safe to go on from.
+        machine.halt(0);
+        const uint32_t pc = (machine.pc(0) * 7u + r) % static_cast<uint32_t>(view.code.size());
+        machine.move_pc(0, pc, scratch.data(), scratch.size() * 4);
+        (void)machine.operand_stack(0);
+      }
       if (s == 5) machine.resume(0);
       const vm::SliceResult res =
           machine.run_slice(0, vm::Budget::of_instructions(kInstructionsPerSlice));

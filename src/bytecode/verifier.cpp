@@ -27,19 +27,32 @@ class Verifier {
     if (size_ == 0) return fail(VerifyError::EmptyCode, 0);
     if (VerifyResult r = decode(); !r.ok()) return r;
     for (uint32_t i = 0; i < image_.routines.size(); ++i) {
-      const RoutineRecord r = image_.routines[i];
-      if (s_.depth[r.entry] == kNotStart) return fail(VerifyError::BadEntry, r.entry);
-      if (VerifyResult res = reach(r.entry, 0, r.locals, r.entry); !res.ok()) return res;
-      while (s_.work_size > 0) {
-        if (VerifyResult res = step(s_.work[--s_.work_size]); !res.ok()) return res;
-      }
+      if (VerifyResult r = walk(i); !r.ok()) return r;
     }
     VerifyResult ok;
     ok.max_depth = max_depth_;
     return ok;
   }
 
+  // The depth on entry to `pc` on the paths of routine `routine` alone; -1 when none reaches it.
+  int32_t depth_at(uint32_t routine, uint32_t pc) {
+    if (size_ == 0 || routine >= image_.routines.size() || pc >= size_) return -1;
+    if (!decode().ok() || !walk(routine).ok()) return -1;
+    return s_.depth[pc];  // kNotStart and kUnseen are negative
+  }
+
  private:
+  // Every path from routine i's entry (and the catch blocks it enters).
+  VerifyResult walk(uint32_t i) {
+    const RoutineRecord r = image_.routines[i];
+    if (s_.depth[r.entry] == kNotStart) return fail(VerifyError::BadEntry, r.entry);
+    if (VerifyResult res = reach(r.entry, 0, r.locals, r.entry); !res.ok()) return res;
+    while (s_.work_size > 0) {
+      if (VerifyResult res = step(s_.work[--s_.work_size]); !res.ok()) return res;
+    }
+    return {};
+  }
+
   VerifyResult fail(VerifyError e, uint32_t pc) const {
     VerifyResult r;
     r.error = e;
@@ -241,17 +254,33 @@ size_t verify_scratch_size(const ImageView& image) {
   return static_cast<size_t>(image.code.size()) * (sizeof(int32_t) + 2 * sizeof(uint32_t));
 }
 
+namespace {
+
+Scratch scratch_of(const ImageView& image, void* scratch) {
+  const size_t n = image.code.size();
+  auto* words = static_cast<uint32_t*>(scratch);
+  return {reinterpret_cast<int32_t*>(words), words + n, words + 2 * n};
+}
+
+}  // namespace
+
 VerifyResult verify(const ImageView& image, const VerifyLimits& limits, void* scratch,
                     size_t scratch_size) {
-  const size_t n = image.code.size();
   if (scratch == nullptr || scratch_size < verify_scratch_size(image)) {
     VerifyResult r;
-    r.error = n == 0 ? VerifyError::EmptyCode : VerifyError::NoScratch;
+    r.error = image.code.size() == 0 ? VerifyError::EmptyCode : VerifyError::NoScratch;
     return r;
   }
-  auto* words = static_cast<uint32_t*>(scratch);
-  Scratch s{reinterpret_cast<int32_t*>(words), words + n, words + 2 * n};
-  return Verifier(image, limits, s).run();
+  return Verifier(image, limits, scratch_of(image, scratch)).run();
+}
+
+bool stack_depth_at(const ImageView& image, const VerifyLimits& limits, uint32_t routine,
+                    uint32_t pc, void* scratch, size_t scratch_size, uint32_t& depth) {
+  if (scratch == nullptr || scratch_size < verify_scratch_size(image)) return false;
+  const int32_t d = Verifier(image, limits, scratch_of(image, scratch)).depth_at(routine, pc);
+  if (d < 0) return false;
+  depth = static_cast<uint32_t>(d);
+  return true;
 }
 
 }  // namespace uprog::bytecode

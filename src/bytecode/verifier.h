@@ -49,4 +49,11 @@ size_t verify_scratch_size(const ImageView& image);
 VerifyResult verify(const ImageView& image, const VerifyLimits& limits, void* scratch,
                     size_t scratch_size);
 
+// The expression-stack depth on entry to the instruction at `pc` on the paths from routine
+// `routine`'s entry (and the catch blocks they enter), as verify() proves it: where a debugger
+// may move a thread of that routine without breaking what the VM relies on. False when no such
+// path reaches `pc`, the routine's paths do not verify, or `scratch` is too small (as verify()).
+bool stack_depth_at(const ImageView& image, const VerifyLimits& limits, uint32_t routine,
+                    uint32_t pc, void* scratch, size_t scratch_size, uint32_t& depth);
+
 }  // namespace uprog::bytecode

@@ -324,6 +324,28 @@ bool Machine::write_local(uint32_t thread, uint32_t depth, uint32_t local, Value
   return true;
 }
 
+std::span<const Value> Machine::operand_stack(uint32_t thread) const {
+  if (thread >= thread_count_) return {};
+  const Thread& t = threads_[thread];
+  return {t.stack, static_cast<size_t>(t.sp - t.stack)};
+}
+
+bool Machine::move_pc(uint32_t thread, uint32_t pc, void* scratch, size_t scratch_size) {
+  if (!loaded_ || thread >= thread_count_) return false;
+  Thread& t = threads_[thread];
+  if (t.status != ThreadStatus::Halted || t.frame_count == 0) return false;
+  const Frame& f = t.frames[t.frame_count - 1];
+  bytecode::VerifyLimits limits;
+  limits.max_stack = config_.stack;
+  uint32_t depth = 0;
+  if (!bytecode::stack_depth_at(image_, limits, f.routine, pc, scratch, scratch_size, depth))
+    return false;
+  if (static_cast<uint32_t>(t.sp - f.stack_base) != depth) return false;
+  t.pc = pc;
+  t.status_before_halt = ThreadStatus::Running;
+  return true;
+}
+
 bool Machine::is_instruction_start(uint32_t pc) const {
   for (uint32_t at = 0; at < code_size_;) {
     if (at == pc) return true;

@@ -124,6 +124,14 @@ class Machine {
   // Locals of a frame, for the debugger.
   bool read_local(uint32_t thread, uint32_t depth, uint32_t local, Value& out) const;
   bool write_local(uint32_t thread, uint32_t depth, uint32_t local, Value value);
+  // The thread's expression stack, every frame's, bottom first (empty when idle).
+  std::span<const Value> operand_stack(uint32_t thread) const;
+  // Moves a halted thread to `pc` in its innermost frame's routine, its stack kept, when the
+  // verifier's paths from that routine's entry reach `pc` with the stack as deep as the frame's
+  // is now (a debugger's "set next statement"; Akribis' AProgPointer). A wait it stood in is
+  // left. `scratch`: bytecode::verify_scratch_size(image()) bytes, aligned for uint32_t. False,
+  // with nothing changed, otherwise.
+  bool move_pc(uint32_t thread, uint32_t pc, void* scratch, size_t scratch_size);
 
   // False when pc is not an instruction or the table is full.
   bool set_breakpoint(uint32_t pc);

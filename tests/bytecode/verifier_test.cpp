@@ -118,6 +118,36 @@ TEST(Verifier, ReportsTheDeepestStack) {
   EXPECT_EQ(r.max_depth, 3u);
 }
 
+// The depth on entry to each instruction on one routine's paths: what a debugger that moves a
+// thread's pc must keep; none for an instruction that only another routine reaches.
+TEST(Verifier, StackDepthAtFollowsOneRoutinesPaths) {
+  Image image;
+  std::vector<Diagnostic> errors;
+  ASSERT_TRUE(assemble(".routine function \"m\" in=0 out=0 entry=m\n"
+                       ".routine function \"f\" in=0 out=0 entry=f\n"
+                       "m:\n PUSHI 1\n PUSHI 2\n ADDI\n POP\n RET\n"
+                       "f:\n RET\n",
+                       "t", image, errors));
+  const auto bytes = encode(image);
+  ImageView view;
+  ASSERT_EQ(load_image(bytes.data(), bytes.size(), view), LoadError::Ok);
+  std::vector<uint32_t> scratch(verify_scratch_size(view) / 4 + 1);
+  const size_t size = scratch.size() * 4;
+  // m's code words: PUSHI 1 (0), PUSHI 2 (1), ADDI (2), POP (3), RET (4); f's RET (5).
+  const uint32_t expected[] = {0, 1, 2, 1, 0};
+  for (uint32_t pc = 0; pc < 5; ++pc) {
+    uint32_t depth = 99;
+    ASSERT_TRUE(stack_depth_at(view, {}, 0, pc, scratch.data(), size, depth)) << pc;
+    EXPECT_EQ(depth, expected[pc]) << pc;
+  }
+  uint32_t depth = 0;
+  EXPECT_FALSE(stack_depth_at(view, {}, 0, 5, scratch.data(), size, depth));  // f's
+  EXPECT_TRUE(stack_depth_at(view, {}, 1, 5, scratch.data(), size, depth));
+  EXPECT_FALSE(stack_depth_at(view, {}, 0, 6, scratch.data(), size, depth));  // past the end
+  EXPECT_FALSE(stack_depth_at(view, {}, 2, 0, scratch.data(), size, depth));  // no such routine
+  EXPECT_FALSE(stack_depth_at(view, {}, 0, 0, scratch.data(), 4, depth));     // too little scratch
+}
+
 // Random code words with valid tables: the verifier must never crash, and what it accepts must
 // be what it promises: the image decodes to the same code, the Machine's own load accepts it,
 // and it runs (every routine, with an event, a halt and a breakpoint: fuzz/run_image.h) within a

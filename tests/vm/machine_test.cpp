@@ -102,6 +102,48 @@ TEST(Machine, HaltResumeAndKill) {
   EXPECT_EQ(p.machine.run_slice(0, Budget::of_lines(1)).end, SliceEnd::NotRunning);
 }
 
+// A halted thread's stack is readable, and its pc moves only where the routine's own paths
+// arrive with the stack as deep as it is now.
+TEST(Machine, OperandStackAndMovingAHaltedThread) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.global int "sum" 1
+.routine function "main" in=0 out=0 entry=main
+.routine function "other" in=0 out=0 entry=other
+main:
+  PUSHI 7
+  PUSHI 9
+  EOL
+  ADDI
+  STG sum
+  EOL
+  RET
+other:
+  RET
+)"));
+  // main's code words: PUSHI 7 (0), PUSHI 9 (1), EOL (2), ADDI (3), STG sum (4), EOL (5), RET (6).
+  std::vector<uint32_t> scratch(bytecode::verify_scratch_size(p.machine.image()) / 4 + 1);
+  const size_t size = scratch.size() * 4;
+  p.machine.start(0, 0);
+  EXPECT_FALSE(p.machine.move_pc(0, 2, scratch.data(), size));  // running: not moved
+  p.machine.run_slice(0, Budget::of_lines(1));
+  p.machine.halt(0);
+  const auto stack = p.machine.operand_stack(0);
+  ASSERT_EQ(stack.size(), 2u);
+  EXPECT_EQ(stack[0].i, 7);
+  EXPECT_EQ(stack[1].i, 9);
+  EXPECT_FALSE(p.machine.move_pc(0, 5, scratch.data(), size));  // entered with nothing
+  EXPECT_FALSE(p.machine.move_pc(0, 7, scratch.data(), size));  // other's
+  EXPECT_FALSE(p.machine.move_pc(0, 2, scratch.data(), 4));     // too little scratch
+  EXPECT_EQ(p.machine.pc(0), 3u);
+  ASSERT_TRUE(p.machine.move_pc(0, 2, scratch.data(), size));   // the EOL, entered with both
+  EXPECT_EQ(p.machine.pc(0), 2u);
+  p.machine.resume(0);
+  EXPECT_EQ(p.machine.run_slice(0, Budget::unlimited()).end, SliceEnd::Finished);
+  EXPECT_EQ(p.global("sum").i, 16);
+  EXPECT_TRUE(p.machine.operand_stack(0).empty());
+}
+
 TEST(Machine, BreakpointStopsAndContinues) {
   LoadedProgram p;
   ASSERT_TRUE(p.load(kCounter));

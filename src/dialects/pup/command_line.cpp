@@ -113,13 +113,10 @@ dialect::Answer Firmware::serve_message(std::string_view text, DownloadState* do
   }
   if (k->id == KeywordId::ProgBreaks) return {breaks_list(static_cast<uint32_t>(index)), 0};
   if (k->id == KeywordId::ProgCallStack) return {call_stack(static_cast<uint32_t>(index)), 0};
-  if (k->id == KeywordId::ProgExpStack && index != 0) return refusal(8);  // see docs/dialects/pup.md
   if (k->id == KeywordId::ProgExpStack) {
     std::string list;
-    if (index == 0) {
-      for (auto it = line_stack_.rbegin(); it != line_stack_.rend(); ++it) list += (list.empty() ? "" : ",") + std::to_string(*it);
-    }
-    return {list, 0};
+    code = expression_stack(static_cast<uint32_t>(index), list);
+    return code == 0 ? dialect::Answer{list, 0} : refusal(code);
   }
   int32_t v = 0;
   code = read_key(k->id, index, v);

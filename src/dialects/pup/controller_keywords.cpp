@@ -133,6 +133,7 @@ int32_t Firmware::write_key(KeywordId key, int32_t index, int32_t value) {
       return schedule_.set_priority(static_cast<uint32_t>(index), static_cast<uint32_t>(value)) ? 0 : 10;
     case KeywordId::ProgEventMask: event_mask_ = static_cast<uint32_t>(value); return 0;
     case KeywordId::ProgBreaks: return program_ ? set_breaks(static_cast<uint32_t>(index), value) : 15;
+    case KeywordId::ProgPointer: return set_pointer(static_cast<uint32_t>(index), value);
     default: return 11;
   }
 }

@@ -87,6 +87,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   int32_t clear_stacks(uint32_t thread, bool expression_stack);
   std::string breaks_list(uint32_t thread) const;
   std::string call_stack(uint32_t thread) const;
+  int32_t set_pointer(uint32_t thread, int32_t line);
+  int32_t expression_stack(uint32_t thread, std::string& list) const;
   void after_cycle(const scheduling::Report& report);
   // A line of ProgBreaks in any thread's list: a trap elsewhere is the debugger's to handle.
   bool break_line_in_use(uint32_t line) const;

@@ -1,10 +1,13 @@
-// AProgSingle, AProgBreaks, AProgCallStack, AProgClrCall and AProgClrExp. A single step lets the
-// halted thread run in its own turns until it has executed one line (Type 0) or left the line
-// at its call depth (else, stepping over calls and waits), then halts it again. Breakpoints are
-// per thread: the VM traps any thread at the line, and one without the line in its list goes on.
+// AProgSingle, AProgBreaks, AProgCallStack, AProgExpStack, AProgPointer=, AProgClrCall and
+// AProgClrExp. A single step lets the halted thread run in its own turns until it has executed
+// one line (Type 0) or left the line at its call depth (else, stepping over calls and waits),
+// then halts it again. Breakpoints are per thread: the VM traps any thread at the line, and one
+// without the line in its list goes on.
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <span>
+#include <vector>
 
 #include "bytecode/opcodes.h"
 #include "dialects/pup/firmware.h"
@@ -112,6 +115,51 @@ std::string Firmware::call_stack(uint32_t thread) const {
     out += (out.empty() ? "" : ",") + std::to_string(cup_.line_of(pc));
   }
   return out;
+}
+
+// AProgExpStack[t]: the thread's expression stack, top first; thread 0's is the line's. A thread
+// that runs has none to show (17).
+int32_t Firmware::expression_stack(uint32_t thread, std::string& list) const {
+  const auto add = [&](int32_t v) { list += (list.empty() ? "" : ",") + std::to_string(v); };
+  if (thread == 0) {
+    for (auto it = line_stack_.rbegin(); it != line_stack_.rend(); ++it) add(*it);
+    return 0;
+  }
+  if (!program_) return 0;
+  const int32_t s = program_status(thread);
+  if (s == 1 || s == 2 || s == 6) return 17;
+  const std::span<const Value> stack = program_->machine().operand_stack(thread);
+  for (auto it = stack.rbegin(); it != stack.rend(); ++it) add(it->i);
+  return 0;
+}
+
+// AProgPointer[t]=line: a halted thread goes on from the line; an idle one stands halted at it,
+// in the first task whose own code reaches it. The line must be one the thread can stand on as
+// it is: at its call depth and with its expression stack as deep as the loader found the line's
+// (32 otherwise), as the VM checks; 19 for a thread neither halted nor idle.
+int32_t Firmware::set_pointer(uint32_t thread, int32_t line) {
+  if (!program_) return 15;
+  const int32_t s = program_status(thread);
+  if (s != 0 && s != 3) return 19;
+  if (line < 1 || static_cast<size_t>(line) + 1 >= cup_.line_pc.size()) return 32;
+  vm::Machine& m = program_->machine();
+  const uint32_t pc = cup_.line_pc[static_cast<size_t>(line)];
+  std::vector<uint32_t> scratch(bytecode::verify_scratch_size(m.image()) / sizeof(uint32_t) + 1);
+  const size_t scratch_bytes = scratch.size() * sizeof(uint32_t);
+  single_[thread].active = false;
+  if (s == 3) return m.move_pc(thread, pc, scratch.data(), scratch_bytes) ? 0 : 32;
+  for (const int32_t routine : cup_.task_routine) {
+    if (routine < 0) continue;
+    m.start(thread, static_cast<uint32_t>(routine));
+    m.halt(thread);
+    if (m.move_pc(thread, pc, scratch.data(), scratch_bytes)) {
+      schedule_.started(thread);
+      thread_error_[thread] = 0;
+      return 0;
+    }
+    m.kill(thread);
+  }
+  return 32;
 }
 
 }  // namespace uprog::pup
