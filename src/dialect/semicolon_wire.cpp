@@ -37,6 +37,11 @@ void SemicolonWire::write_output(std::string_view text, std::string& out) const 
   out += "\r\n";
 }
 
+void SemicolonWire::write_lost_output(uint64_t count, std::string& out) const {
+  if (lost_prefix_.empty()) return;
+  write_output(lost_prefix_ + std::to_string(count), out);
+}
+
 Answer parse_semicolon_answer(std::string_view answer) {
   if (answer.empty() || answer.front() != '?') return {std::string(answer), 0};
   answer.remove_prefix(1);

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "dialect/wire_form.h"
 
@@ -12,15 +13,19 @@ namespace uprog::dialect {
 
 class SemicolonWire final : public WireForm {
  public:
-  explicit SemicolonWire(FramerOptions framing) : framing_(framing) {}
+  // `lost_prefix`: what starts the line that counts dropped texts (`%L ` for PDL); empty, none.
+  explicit SemicolonWire(FramerOptions framing, std::string lost_prefix = {})
+      : framing_(framing), lost_prefix_(std::move(lost_prefix)) {}
   FramerOptions framing() const override { return framing_; }
   void write_answer(const Answer& answer, std::string& out) const override;
   void write_silent_line(std::string& out) const override { out.push_back(';'); }
   void write_line_end(std::string& out) const override { out += "\r\n"; }
   void write_output(std::string_view text, std::string& out) const override;
+  void write_lost_output(uint64_t count, std::string& out) const override;
 
  private:
   FramerOptions framing_;
+  std::string lost_prefix_;
 };
 
 // Appends the wire form of `answer`. `;`, CR, LF and control bytes inside the text become a space

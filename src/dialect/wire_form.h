@@ -23,6 +23,12 @@ class WireForm {
   virtual void write_line_end(std::string& out) const = 0;
   // Appends text the drive sends on its own (a program's message); it starts and ends a line.
   virtual void write_output(std::string_view text, std::string& out) const = 0;
+  // Appends what tells a host that `count` of the drive's own texts were dropped because it read
+  // none of them while they piled up (PDL's `%L n`); nothing by default.
+  virtual void write_lost_output(uint64_t count, std::string& out) const {
+    (void)count;
+    (void)out;
+  }
   // Appends what the drive sends back the moment it receives `bytes` (a real Elmo drive echoes
   // every character while EO=1); nothing by default.
   virtual void write_echo(std::string_view bytes, std::string& out) const {

@@ -17,6 +17,10 @@ void HostSession::deliver_output(std::string_view text, std::string& out) const 
   service_.wire().write_output(text, out);
 }
 
+void HostSession::deliver_lost_output(uint64_t count, std::string& out) const {
+  service_.wire().write_lost_output(count, out);
+}
+
 void HostSession::receive(std::string_view bytes, std::string& out) {
   // A drive that echoes sends each byte back before it answers the line the byte ends.
   if (!service_.wire().echoes()) return take(bytes, out);

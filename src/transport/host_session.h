@@ -20,6 +20,8 @@ class HostSession {
   void receive(std::string_view bytes, std::string& out);
   // Appends text the drive sent on its own, in the wire's form.
   void deliver_output(std::string_view text, std::string& out) const;
+  // Appends the wire's notice that `count` such texts were dropped (it may have none).
+  void deliver_lost_output(uint64_t count, std::string& out) const;
   // The host went away: any partial line is dropped, and with the channel whatever the service
   // kept for this host (a download in progress); a host that comes back starts afresh.
   void disconnect();

@@ -3,6 +3,7 @@
 // (a host that never reads cannot make the server grow). All on the server's one thread.
 #pragma once
 #include <array>
+#include <cstdint>
 #include "transport/asio.h"
 #include <functional>
 #include <memory>
@@ -23,9 +24,15 @@ class StreamSession : public std::enable_shared_from_this<StreamSession<Stream>>
   void start() { read(); }
 
   // Text the drive sent on its own: queued behind what is already due to this host. A host
-  // that reads nothing loses what exceeds the output limit rather than growing the server.
+  // that reads nothing loses what exceeds the output limit rather than growing the server; once
+  // there is room again, the wire may say how many texts it lost (PDL's `%L n`).
   void deliver_output(std::string_view text) {
-    if (closed_ || queued() >= kMaxQueuedOutput) return;
+    if (closed_) return;
+    if (queued() >= kMaxQueuedOutput) {
+      ++lost_;
+      return;
+    }
+    report_lost();
     host_.deliver_output(text, pending_);
     write();
   }
@@ -89,6 +96,7 @@ class StreamSession : public std::enable_shared_from_this<StreamSession<Stream>>
       close();
       return;
     }
+    if (queued() < kMaxQueuedOutput) report_lost();
     write();
     if (read_done_ && !writing_ && pending_.empty()) {
       close();
@@ -98,6 +106,12 @@ class StreamSession : public std::enable_shared_from_this<StreamSession<Stream>>
   }
 
   std::size_t queued() const { return pending_.size() + writing_buffer_.size(); }
+
+  void report_lost() {
+    if (lost_ == 0) return;
+    host_.deliver_lost_output(lost_, pending_);
+    lost_ = 0;
+  }
 
   Stream stream_;
   HostSession host_;
@@ -109,6 +123,7 @@ class StreamSession : public std::enable_shared_from_this<StreamSession<Stream>>
   bool writing_ = false;
   bool read_done_ = false;
   bool closed_ = false;
+  std::uint64_t lost_ = 0;  // texts dropped since the host last had room
 };
 
 }  // namespace uprog::transport

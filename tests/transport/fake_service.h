@@ -1,6 +1,6 @@
 // A LineService for the transport's tests: echoes a line back, "err N" answers error N, "quiet"
 // answers nothing, "two" answers twice; counts lines and the virtual time it was given. Its wire
-// is the semicolon wire with Gold's framing (`;`, `**`, 511).
+// is the semicolon wire with Gold's framing (`;`, `**`, 511), with PDL's `%L n` when asked.
 #pragma once
 #include <charconv>
 #include <cstdint>
@@ -22,6 +22,12 @@ inline const dialect::WireForm& semicolon_wire() {
   return wire;
 }
 
+// The same with PDL's count of dropped texts (`%L n`).
+inline const dialect::WireForm& lost_counting_wire() {
+  static const dialect::SemicolonWire wire(semicolon_wire().framing(), "%L ");
+  return wire;
+}
+
 class FakeService final : public LineService {
  public:
   std::vector<Reply> handle_line(std::string_view line) override {
@@ -40,13 +46,16 @@ class FakeService final : public LineService {
     advanced_us += us;
     ++advances;
   }
-  const dialect::WireForm& wire() const override { return semicolon_wire(); }
+  const dialect::WireForm& wire() const override {
+    return counts_lost ? lost_counting_wire() : semicolon_wire();
+  }
   // Sends `text` to every host as the drive's own output.
   void emit(std::string_view text) { publish_output(text); }
 
   std::uint64_t lines = 0;
   std::uint64_t advanced_us = 0;
   std::uint64_t advances = 0;
+  bool counts_lost = false;
 };
 
 }  // namespace uprog::transport::testing

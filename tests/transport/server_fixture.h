@@ -44,6 +44,18 @@ class ServerFixture {
       return 0;
     });
   }
+  // Texts `first` … `first + count - 1` (`text N`), sent one after another in one turn of the
+  // server's thread, so that no host can read between them.
+  void emit_numbered(int first, int count) {
+    on_server([this, first, count] {
+      for (int i = first; i < first + count; ++i) service_.emit("text " + std::to_string(i));
+      return 0;
+    });
+  }
+  // The wire counts the texts a host lost (`%L n`); before any host connects.
+  void count_lost_output() {
+    on_server([this] { return service_.counts_lost = true; });
+  }
   std::uint64_t lines_handled() {
     return on_server([this] { return service_.lines; });
   }

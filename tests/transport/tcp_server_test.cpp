@@ -155,6 +155,37 @@ TEST(transport_tcp, ClientThatNeverReadsDoesNotStallOthers) {
   writer.join();
 }
 
+// Past 256 KiB queued for a host, the drive's texts are dropped; once there is room again, a
+// wire that counts them says how many (PDL's `%L n`), before the texts that follow.
+TEST(transport_tcp, AHostThatFallsBehindIsToldHowManyTextsItLost) {
+  ServerFixture server;
+  server.count_lost_output();
+  TestClient client(server.port());
+  ASSERT_TRUE(client.send("a\r\n"));
+  ASSERT_EQ(client.line_answers(), (std::vector<Reply>{{"a", 0}}));
+  constexpr int kTexts = 100'000;  // ~1.2 MB, in one turn: most cannot be queued
+  server.emit_numbered(0, kTexts);
+  int kept = 0;
+  std::string notice;
+  while (notice.empty()) {
+    const std::vector<std::string> line = client.output_lines(1, 5s);
+    ASSERT_EQ(line.size(), 1u) << "after " << kept << " texts";
+    if (line[0].starts_with("%L ")) {
+      notice = line[0];
+    } else {
+      ASSERT_EQ(line[0], "text " + std::to_string(kept));  // in order, none lost before the notice
+      ++kept;
+    }
+  }
+  EXPECT_GT(kept, 0);
+  EXPECT_LT(kept, kTexts);
+  EXPECT_EQ(notice, "%L " + std::to_string(kTexts - kept));
+  // With room, the next texts come whole, and no notice again.
+  server.emit_numbered(kTexts, 3);
+  EXPECT_EQ(client.output_lines(3, 5s),
+            (std::vector<std::string>{"text 100000", "text 100001", "text 100002"}));
+}
+
 TEST(transport_tcp, PacerAdvancesVirtualTimeWithTheWallClock) {
   ServerFixture server;
   TestClient client(server.port());

@@ -40,7 +40,7 @@ std::string one_line(std::string text) {
 }  // namespace
 
 Firmware::Firmware(dialect::Runtime& runtime, const dialect::FirmwareOptions&)
-    : runtime_(runtime), wire_(pdl_framing()), schedule_(scheduling::PhaseRoundRobinConfig{1, kTasks, 1'000'000}) {}
+    : runtime_(runtime), wire_(pdl_framing(), "%L "), schedule_(scheduling::PhaseRoundRobinConfig{1, kTasks, 1'000'000}) {}
 
 // Power-up and reset: the controller made fresh axes; tasks idle, memory and states 0, fclk 0,
 // then every #task task starts at its place.
