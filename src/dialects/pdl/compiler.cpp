@@ -126,6 +126,8 @@ bool Compiler::compile(bytecode::Image& out) {
   code_.emit(Op::RET);  // the end of the code ends the task
   emit_return_dispatch();
   emit_indirect_stubs();
+  for (const LabelValue& v : label_values_)
+    image_.constants[v.constant].bits = scopes_[static_cast<size_t>(v.scope)][v.label].slot;
   for (auto& [name, proc] : procs_) {
     if (!proc.defined) error(Error::ProcNotImplemented, proc.declared_at, name);
   }

@@ -73,6 +73,13 @@ struct CommandStart {
   int scope;
 };
 
+// `var = <label>` (2.1 form 5): a constant that becomes the label's slot once it is defined.
+struct LabelValue {
+  int scope;
+  std::string label;
+  uint32_t constant;
+};
+
 struct IndirectGoto {
   int scope;
   std::string label;
@@ -244,6 +251,7 @@ class Compiler {
   std::vector<CodeBuilder::Label> return_sites_;
   std::vector<CommandStart> commands_;
   std::vector<IndirectGoto> indirect_;
+  std::vector<LabelValue> label_values_;
   CodeBuilder::Label dispatch_{};
   bool tasks_seen_[kTasks + 1] = {};
   uint32_t slots_ = 0;

@@ -187,7 +187,8 @@ Ty Compiler::primary(bool in_condition) {
     return a;
   }
   if (at_op("<")) {
-    // <STATE> is the state's number (st=<LEFT_LIM>); <var> the state whose number var holds.
+    // <STATE> is the state's number (st=<LEFT_LIM>); <label> the slot of the label's command;
+    // <var> the state whose number var holds.
     next();
     const bool invert = accept_op("~");
     const Token& name = peek();
@@ -196,6 +197,17 @@ Ty Compiler::primary(bool in_condition) {
       expect_op(">");
       if (invert) error(Error::Syntax, name.offset, "'~' of a state number");
       push_int(find_state(name.text)->number);
+      return Ty::Int;
+    }
+    if (name.kind == Tok::Name && !invert && !find_var(name.text) && at_op(">", 1)) {
+      // <label>: its slot, which a label defined further on gives at the end (compile()).
+      next();
+      next();
+      label_named(name.text, scope_, name.offset);
+      image_.constants.push_back({ValueType::Int, 0});
+      const auto constant = static_cast<uint32_t>(image_.constants.size() - 1);
+      label_values_.push_back({scope_, name.text, constant});
+      code_.emit(Op::PUSHK, constant);
       return Ty::Int;
     }
     int_operand(primary(false), name.offset);
