@@ -82,14 +82,19 @@ class Controller::Drive final : public dialect::Runtime, public drive::ProgramWo
 
 void Controller::Drive::reboot() {
   axes_.clear();
-  axes_.push_back(std::make_unique<drive::Axis>());
-  axes_[0]->recorder().set_program_words(this);
+  for (uint32_t a = 0; a < std::clamp(options_.axes, 1u, kMaxAxes); ++a) {
+    axes_.push_back(std::make_unique<drive::Axis>());
+    axes_.back()->recorder().set_program_words(this);
+  }
   events_.assign(axes_.size(), 0);
   std::string error;
   if (auto params = saved_axis_parameters(&error)) {
     axes_[0]->load_parameters(*params);
   } else if (!error.empty()) {
     boot_messages_.push_back("saved parameters refused: " + error + "; using defaults");
+  }
+  if (options_.servo_period_us != 0) {
+    for (auto& axis : axes_) axis->set_period_us(static_cast<int32_t>(options_.servo_period_us));
   }
   firmware_->boot(boot_messages_);
   next_cycle_ns_ = now_ns_ + cycle_ns();

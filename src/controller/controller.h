@@ -25,6 +25,8 @@ using dialect::DownloadResult;
 using dialect::LogEntry;
 using dialect::Timing;
 
+constexpr uint32_t kMaxAxes = 4;
+
 struct ControllerOptions {
   const dialect::Dialect* dialect = nullptr;  // required: whose firmware the drive runs
   // Holds the flash's records (the stored program, saved parameters). Empty: nothing persists,
@@ -33,6 +35,11 @@ struct ControllerOptions {
   bool safe_boot = false;  // boot without starting the program
   Timing timing;
   dialect::WireStyle wire_style = dialect::WireStyle::kDrive;  // what the transports speak
+  // The drive's axes, 1..4: the first keeps the saved parameters, the others start from the
+  // defaults (a transcript's `drive axes=N`).
+  uint32_t axes = 1;
+  // Every axis's servo period in µs, 25..2000, over the saved one; 0 keeps it (`phase_us=N`).
+  uint32_t servo_period_us = 0;
 };
 
 class Controller {

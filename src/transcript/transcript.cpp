@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <sstream>
 
 #include "controller/controller.h"
 #include "dialects/registry.h"
@@ -74,6 +75,8 @@ class Runner {
       controller::ControllerOptions o;
       o.dialect = dialect_;
       o.timing = timing_;
+      o.axes = axes_;
+      o.servo_period_us = servo_period_us_;
       drive_ = std::make_unique<controller::Controller>(o);
       host_ = drive_->open_session();
     }
@@ -163,6 +166,8 @@ class Runner {
     const std::string arg = space == std::string::npos ? std::string() : trim(body.substr(space));
     if (directive == "dialect") {
       choose_dialect(number, arg);
+    } else if (directive == "drive") {
+      configure_drive(number, arg);
     } else if (directive == "output" || directive == "quiet") {
       expect_output(number, directive == "quiet", arg);
     } else if (directive == "load") {
@@ -288,6 +293,27 @@ class Runner {
     if (out.stored_form != *expected) return fail(number, "compile " + source + ": the stored form differs from " + expected_path);
   }
 
+  // `drive axes=N phase_us=N`, either or both: the drive's axes (1..4) and their servo period
+  // (25..2000 µs), before anything uses the drive.
+  void configure_drive(int number, const std::string& arg) {
+    if (drive_) return fail(number, "drive must come before anything that uses the drive");
+    std::istringstream words(arg);
+    for (std::string word; words >> word;) {
+      const size_t eq = word.find('=');
+      double value = 0;
+      const std::string key = word.substr(0, eq);
+      const bool number_ok = eq != std::string::npos && parse_number(word.substr(eq + 1), value) &&
+                             value == static_cast<double>(static_cast<uint32_t>(value));
+      if (key == "axes" && number_ok && value >= 1 && value <= controller::kMaxAxes) {
+        axes_ = static_cast<uint32_t>(value);
+      } else if (key == "phase_us" && number_ok && value >= 25 && value <= 2000) {
+        servo_period_us_ = static_cast<uint32_t>(value);
+      } else {
+        return fail(number, "drive takes axes=1..4 and phase_us=25..2000, not '" + word + "'");
+      }
+    }
+  }
+
   void choose_dialect(int number, const std::string& arg) {
     const dialect::Dialect* d = dialects::find(arg);
     if (d == nullptr) {
@@ -381,6 +407,8 @@ class Runner {
   const dialect::Dialect* dialect_;
   Extension* extension_;
   std::unique_ptr<controller::Controller> drive_;
+  uint32_t axes_ = 1;
+  uint32_t servo_period_us_ = 0;  // 0: the drive's own
   std::unique_ptr<dialect::Session> host_;
   std::vector<std::string> output_;  // lines the drive sent on its own, not yet expected
   std::string partial_output_;
