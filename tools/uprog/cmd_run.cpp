@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "controller/controller.h"
 #include "dialect_choice.h"
+#include "drive_shape.h"
 #include "drive/axis.h"
 #include "drive/recording_csv.h"
 #include "plot_recording.h"
@@ -25,6 +26,7 @@ namespace {
 struct RunOptions {
   std::string file;
   std::string dialect;
+  DriveShape shape;
   std::string entry;
   std::string duration;  // empty: until the program has ended and the axis is still
   std::string limit = "60s";
@@ -153,6 +155,7 @@ int run(const RunOptions& o) {
   controller::ControllerOptions copts;
   copts.dialect = choose_dialect(o.dialect, o.file, "run");
   if (copts.dialect == nullptr) return 2;
+  apply(o.shape, copts);
   if (o.budget == "unlimited") {
     copts.timing.unlimited = true;
   } else {
@@ -263,6 +266,7 @@ void add_run(CLI::App* cmd, Action& action) {
                   "virtual time to run (default: until the program has ended and the axis is still)");
   cmd->add_option("--limit", o->limit, "without --for, the longest virtual time to run")
       ->capture_default_str();
+  add_drive_shape_options(cmd, o->shape);
   cmd->add_option("--budget", o->budget, "source lines per servo cycle, or 'unlimited' (default 1)");
   cmd->add_option("--input", o->inputs, "N=LEVEL@TIME: set digital input N at TIME");
   cmd->add_option("--fault", o->faults, "NAME@TIME: latch a drive fault at TIME");

@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "controller/controller.h"
 #include "dialect_choice.h"
+#include "drive_shape.h"
 #include "support/files.h"
 #include "transport/controller_service.h"
 #include "transport/pacer.h"
@@ -27,6 +28,7 @@ struct SimOptions {
   std::string state_dir;
   std::string program;
   std::string dialect;
+  DriveShape shape;
   bool safe_boot = false;
   std::string wire = "drive";
   bool log = false;
@@ -94,6 +96,7 @@ int run_sim(const SimOptions& options) {
   if (controller_options.dialect == nullptr) return 2;
   controller_options.state_dir = options.state_dir;
   controller_options.safe_boot = options.safe_boot;
+  apply(options.shape, controller_options);
   controller_options.wire_style = options.wire == "readable" ? dialect::WireStyle::kReadable : dialect::WireStyle::kDrive;
   controller::Controller drive(controller_options);
   for (const auto& message : drive.boot_messages()) fmt::print(stderr, "uprog sim: {}\n", message);
@@ -161,6 +164,7 @@ void add_sim(CLI::App* cmd, Action& action) {
   cmd->add_option("--state", options->state_dir, "folder for the stored program and parameters");
   cmd->add_option("--program", options->program, "source or stored form (.upi) to download and load");
   add_dialect_option(cmd, options->dialect);
+  add_drive_shape_options(cmd, options->shape);
   cmd->add_flag("--safe-boot", options->safe_boot, "boot without running AUTOEXEC");
   cmd->add_option("--wire", options->wire,
                   "drive: the bytes the vendor's drive sends (default); readable: error texts and a "

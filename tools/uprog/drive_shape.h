@@ -1,0 +1,20 @@
+// The simulated drive's shape for `uprog run` and `uprog sim`: how many axes, and their servo
+// period (PDL's phase), as a transcript's `drive axes=N phase_us=N` sets them.
+#pragma once
+#include <CLI/CLI.hpp>
+#include <cstdint>
+
+#include "controller/controller.h"
+
+namespace uprog::cli {
+
+struct DriveShape {
+  uint32_t axes = 1;
+  uint32_t servo_us = 0;  // 0: the saved period, else the axis's default
+};
+
+// Adds `--axes N` and `--servo-us N` to `cmd`, stored in `shape`.
+void add_drive_shape_options(CLI::App* cmd, DriveShape& shape);
+void apply(const DriveShape& shape, controller::ControllerOptions& options);
+
+}  // namespace uprog::cli
