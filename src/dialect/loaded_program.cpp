@@ -46,4 +46,10 @@ std::string LoadedProgram::where(uint32_t pc) const {
   return "code word " + std::to_string(pc);
 }
 
+std::string LoadedProgram::place(uint32_t pc) const {
+  std::string at = where(pc);
+  if (const size_t slash = at.find_last_of('/'); slash != std::string::npos) at.erase(0, slash + 1);
+  return at;
+}
+
 }  // namespace uprog::dialect

@@ -30,6 +30,9 @@ class LoadedProgram {
   const std::vector<uint8_t>& bytes() const { return bytes_; }
   // The source place of code word `pc` ("f.ehl:12"), or "code word N" without a line table.
   std::string where(uint32_t pc) const;
+  // where(pc) with the file's directories dropped ("f.ehl:12"): what a drive reports does not
+  // depend on where the program was built.
+  std::string place(uint32_t pc) const;
 
  private:
   LoadedProgram() = default;

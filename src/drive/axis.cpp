@@ -49,7 +49,8 @@ Status Axis::set_input_logic(int n, int32_t logic) {
 }
 
 Status Axis::set_period_us(int32_t period_us) {
-  if (period_us < 25 || period_us > 2000) return Status::kOutOfRange;
+  if (period_us < static_cast<int32_t>(kMinPeriod_us) || period_us > static_cast<int32_t>(kMaxPeriod_us))
+    return Status::kOutOfRange;
   params_.servo_period_us = period_us;
   return Status::kOk;
 }

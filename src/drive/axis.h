@@ -33,6 +33,8 @@ enum class Status : uint8_t {
 };
 
 constexpr uint32_t kEnableDelay_us = 20000;        // MO=1 to SO=1
+constexpr uint32_t kMinPeriod_us = 25;             // TS's range
+constexpr uint32_t kMaxPeriod_us = 2000;
 constexpr double kPeakCurrentTime_s = 3.0;          // PL[1] allowed this long, then CL[1]
 
 // The status register (SR) as the Elmo reference lays it out (docs/dialects/gold.md, "SR").
@@ -68,7 +70,7 @@ class Axis {
   Status load_parameters(const Parameters& params);
   Status set_unit_mode(int32_t mode);           // UM: 1, 2 or 5, motor off only
   Status set_input_logic(int n, int32_t logic); // IL[n]
-  Status set_period_us(int32_t period_us);      // TS, 25..2000
+  Status set_period_us(int32_t period_us);      // TS, kMinPeriod_us..kMaxPeriod_us
   Status set_counts_per_revolution(int32_t counts);  // the encoder; spaces the index pulses
 
   // --- enable ---

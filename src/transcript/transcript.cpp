@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fmt/core.h>
 #include <sstream>
 
 #include "controller/controller.h"
@@ -293,8 +294,8 @@ class Runner {
     if (out.stored_form != *expected) return fail(number, "compile " + source + ": the stored form differs from " + expected_path);
   }
 
-  // `drive axes=N phase_us=N`, either or both: the drive's axes (1..4) and their servo period
-  // (25..2000 µs), before anything uses the drive.
+  // `drive axes=N phase_us=N`, either or both: the drive's axes and their servo period, before
+  // anything uses the drive.
   void configure_drive(int number, const std::string& arg) {
     if (drive_) return fail(number, "drive must come before anything that uses the drive");
     std::istringstream words(arg);
@@ -306,10 +307,13 @@ class Runner {
                              value == static_cast<double>(static_cast<uint32_t>(value));
       if (key == "axes" && number_ok && value >= 1 && value <= controller::kMaxAxes) {
         axes_ = static_cast<uint32_t>(value);
-      } else if (key == "phase_us" && number_ok && value >= 25 && value <= 2000) {
+      } else if (key == "phase_us" && number_ok && value >= drive::kMinPeriod_us &&
+                 value <= drive::kMaxPeriod_us) {
         servo_period_us_ = static_cast<uint32_t>(value);
       } else {
-        return fail(number, "drive takes axes=1..4 and phase_us=25..2000, not '" + word + "'");
+        return fail(number, fmt::format("drive takes axes=1..{} and phase_us={}..{}, not '{}'",
+                                        controller::kMaxAxes, drive::kMinPeriod_us,
+                                        drive::kMaxPeriod_us, word));
       }
     }
   }

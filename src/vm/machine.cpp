@@ -45,6 +45,13 @@ uint64_t global_cells(const ImageView& image) {
   return cells;
 }
 
+// What the verifier allows a program on this machine: its operand stack is the configured one.
+bytecode::VerifyLimits limits_for(const MachineConfig& config) {
+  bytecode::VerifyLimits limits;
+  limits.max_stack = config.stack;
+  return limits;
+}
+
 }  // namespace
 
 const char* thread_status_name(ThreadStatus s) {
@@ -92,9 +99,7 @@ LoadStatus Machine::load(const uint8_t* bytes, size_t size, const MachineConfig&
     status.no_memory = true;
     return status;
   }
-  bytecode::VerifyLimits limits;
-  limits.max_stack = config.stack;
-  const bytecode::VerifyResult verified = bytecode::verify(view, limits, memory, memory_size);
+  const bytecode::VerifyResult verified = bytecode::verify(view, limits_for(config), memory, memory_size);
   status.verify = verified.error;
   status.pc = verified.pc;
   if (!verified.ok()) return status;
@@ -335,10 +340,8 @@ bool Machine::move_pc(uint32_t thread, uint32_t pc, void* scratch, size_t scratc
   Thread& t = threads_[thread];
   if (t.status != ThreadStatus::Halted || t.frame_count == 0) return false;
   const Frame& f = t.frames[t.frame_count - 1];
-  bytecode::VerifyLimits limits;
-  limits.max_stack = config_.stack;
   uint32_t depth = 0;
-  if (!bytecode::stack_depth_at(image_, limits, f.routine, pc, scratch, scratch_size, depth))
+  if (!bytecode::stack_depth_at(image_, limits_for(config_), f.routine, pc, scratch, scratch_size, depth))
     return false;
   if (static_cast<uint32_t>(t.sp - f.stack_base) != depth) return false;
   t.pc = pc;

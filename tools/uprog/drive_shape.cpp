@@ -1,6 +1,8 @@
 // The --axes and --servo-us options (drive_shape.h).
 #include "drive_shape.h"
 
+#include "drive/axis.h"
+
 namespace uprog::cli {
 
 void add_drive_shape_options(CLI::App* cmd, DriveShape& shape) {
@@ -9,7 +11,7 @@ void add_drive_shape_options(CLI::App* cmd, DriveShape& shape) {
       ->capture_default_str();
   cmd->add_option("--servo-us", shape.servo_us,
                   "every axis's servo period in microseconds (PDL's phase; default: the saved one)")
-      ->check(CLI::Range(25u, 2000u));
+      ->check(CLI::Range(drive::kMinPeriod_us, drive::kMaxPeriod_us));
 }
 
 void apply(const DriveShape& shape, controller::ControllerOptions& options) {

@@ -203,9 +203,7 @@ CyclicTasks::Flow CyclicTasks::run_task(vm::Machine& machine, Task& task, Report
   if (task.state == RunState::Stopped) return Flow::Continue;
   if (task.state == RunState::Ready) {
     if (held_bit(thread)) return Flow::Continue;  // held between runs
-    machine.start(thread, task.routine);          // start() proved that it starts
-    task.state = RunState::InRun;
-    task.run_lines = 0;
+    begin_run(machine, task);
   }
   for (;;) {
     const vm::ThreadStatus status = machine.status(thread);
@@ -233,6 +231,12 @@ CyclicTasks::Flow CyclicTasks::run_task(vm::Machine& machine, Task& task, Report
         return Flow::Continue;  // a wait, a yield, a breakpoint: the run pauses
     }
   }
+}
+
+void CyclicTasks::begin_run(vm::Machine& machine, Task& task) {
+  machine.start(task.stats.thread, task.routine);  // start() proved that it starts
+  task.state = RunState::InRun;
+  task.run_lines = 0;
 }
 
 void CyclicTasks::end_run(Task& task) {
@@ -389,9 +393,7 @@ bool CyclicTasks::step_held(vm::Machine& machine, uint32_t thread, Report& repor
   if (before == vm::ThreadStatus::Halted || before == vm::ThreadStatus::AtBreakpoint) {
     machine.resume(thread);
   } else if (task != nullptr && task->state == RunState::Ready) {
-    machine.start(thread, task->routine);  // start() proved that it starts
-    task->state = RunState::InRun;
-    task->run_lines = 0;
+    begin_run(machine, *task);
   }
   if (!can_step(machine.status(thread))) return false;  // the init task's thread after its end
   held_ |= 1u << thread;

@@ -133,6 +133,7 @@ class CyclicTasks {
     return thread < kMaxThreads && ((held_ >> thread) & 1u) != 0;
   }
   uint32_t task_index(uint32_t thread) const;  // task_count_ when no real-time task runs on it
+  void begin_run(vm::Machine& machine, Task& task);
   void end_run(Task& task);
   void end_init(vm::Machine& machine, Report& report);
   void end_pass(vm::Machine& machine);

@@ -43,12 +43,8 @@ bool Firmware::debug_line(std::string_view text, std::vector<Answer>& answers) {
   vm::Machine& m = *machine();
   const auto task = static_cast<uint32_t>(t);
   if (verb == "stat/") {
-    // task_st's number (4 held), then where it stands: the file without its directories.
-    std::string where = "-";
-    if (m.status(task) != vm::ThreadStatus::Idle) {
-      where = program_->where(m.pc(task));
-      if (const size_t slash = where.find_last_of('/'); slash != std::string::npos) where.erase(0, slash + 1);
-    }
+    // task_st's number (4 held), then where it stands.
+    const std::string where = m.status(task) != vm::ThreadStatus::Idle ? program_->place(m.pc(task)) : "-";
     answers.push_back({std::to_string(task_state(task)) + " " + where, 0});
     return true;
   }

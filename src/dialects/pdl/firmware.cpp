@@ -226,10 +226,7 @@ void Firmware::report_error(uint32_t task) {
   last_error_ = static_cast<int32_t>(e);
   std::string text = vm::run_error_text(e);
   if (e == vm::RunError::CommandRefused) text += fmt::format(" (code {})", machine()->error_detail(task));
-  // The file's name without its directories: the event does not depend on where it was built.
-  std::string where = program_->where(machine()->pc(task));
-  if (const size_t slash = where.find_last_of('/'); slash != std::string::npos) where.erase(0, slash + 1);
-  text += " at " + where;
+  text += " at " + program_->place(machine()->pc(task));
   runtime_.log(fmt::format("task {}: run-time error {} ({})", task, static_cast<int32_t>(e), text));
   runtime_.output(fmt::format("%E {} {} {}\r\n", task, static_cast<int32_t>(e), one_line(text)));
 }

@@ -7,18 +7,8 @@
 #include "dialects/st/names.h"
 
 namespace uprog::st {
-namespace {
 
 using dialect::Answer;
-
-std::string file_and_line(const dialect::LoadedProgram& program, uint32_t pc) {
-  std::string where = program.where(pc);
-  if (const size_t slash = where.find_last_of('/'); slash != std::string::npos)
-    where.erase(0, slash + 1);
-  return where;
-}
-
-}  // namespace
 
 bool is_debug_command(std::string_view name) {
   return name == "PLCSTAT" || name == "PLCHOLD" || name == "PLCCONT" || name == "PLCSTEP";
@@ -44,7 +34,7 @@ std::vector<Answer> Firmware::debug_command(const std::string& name,
     for (const auto& [thread, program] : threads_) {
       const bool placed = m.status(thread) != vm::ThreadStatus::Idle;
       out.push_back(Answer{fmt::format("{} {} {}", program, program_state(thread),
-                                       placed ? file_and_line(*program_, m.pc(thread)) : "-"),
+                                       placed ? program_->place(m.pc(thread)) : "-"),
                            0});
     }
     return out;
