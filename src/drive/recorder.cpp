@@ -123,7 +123,9 @@ bool Recorder::arm(const RecorderSettings& settings, std::string* why) {
   pre_ = static_cast<uint32_t>(uint64_t{settings.length} * settings.pretrigger_percent / 100);
   if (pre_ >= settings.length) pre_ = settings.length - 1;  // the trigger sample needs its slot
   pre_taken_ = 0;
+  ring_slot_ = 0;
   post_taken_ = 0;
+  post_length_ = settings.length - pre_;
   phase_ = 0;  // the first cycle after arming takes a sample
   begun_ = false;
   fired_ = false;
@@ -274,26 +276,26 @@ bool Recorder::trigger_fired(const Axis& axis) {
   return fired && (state_ == RecorderState::kWaiting || (state_ == RecorderState::kArmed && settings_.early_trigger));
 }
 
-void Recorder::take_sample(const Axis& axis) {
-  const size_t n = row_words_;
-  size_t slot = 0;
-  if (state_ == RecorderState::kTriggered) {
-    slot = pre_ + post_taken_;
-  } else {
-    slot = static_cast<size_t>(pre_taken_ % pre_);
-  }
-  uint32_t* out = memory_.data() + slot * n;
+void Recorder::write_row(uint32_t* out, const Axis& axis) const {
   write_signals(needed_signals_, axis, channel_of_signal_.data(), out, std::make_index_sequence<kSignalCount>{});
   if (!global_channels_.empty()) {
     const std::span<const Value> memory = program_memory();
     for (const auto& [c, address] : global_channels_) out[c] = word_bits(memory, address);
   }
   for (const auto& [to, from] : repeated_channels_) out[to] = out[from];
+}
+
+// After the trigger the rows follow the ring in order; before it, the ring's slot wraps without
+// a division (the servo cycle's cost, bench/micro).
+void Recorder::take_sample(const Axis& axis) {
   if (state_ == RecorderState::kTriggered) {
-    if (++post_taken_ == settings_.length - pre_) state_ = RecorderState::kDone;
-  } else if (++pre_taken_ == pre_) {
-    state_ = RecorderState::kWaiting;
+    write_row(memory_.data() + size_t{pre_ + post_taken_} * row_words_, axis);
+    if (++post_taken_ == post_length_) state_ = RecorderState::kDone;
+    return;
   }
+  write_row(memory_.data() + size_t{ring_slot_} * row_words_, axis);
+  if (++ring_slot_ == pre_) ring_slot_ = 0;
+  if (++pre_taken_ == pre_) state_ = RecorderState::kWaiting;
 }
 
 void Recorder::on_cycle(const Axis& axis) {
@@ -308,6 +310,7 @@ void Recorder::on_cycle(const Axis& axis) {
   phase_ = settings_.gap_cycles - 1;
   if (fired_ && (state_ == RecorderState::kWaiting || state_ == RecorderState::kArmed)) {
     if (state_ == RecorderState::kArmed) pre_ = static_cast<uint32_t>(pre_taken_);  // in order from slot 0
+    post_length_ = settings_.length - pre_;
     state_ = RecorderState::kTriggered;
     trigger_time_us_ = axis.time_us();
   }

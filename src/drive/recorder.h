@@ -152,6 +152,7 @@ class Recorder {
   bool trigger_fired(const Axis& axis);
   void plan_sampling();
   void take_sample(const Axis& axis);
+  void write_row(uint32_t* out, const Axis& axis) const;  // one sample of every channel
 
   RecorderSettings settings_;
   RecorderState state_ = RecorderState::kIdle;
@@ -167,6 +168,8 @@ class Recorder {
   std::vector<std::pair<uint8_t, uint8_t>> repeated_channels_;
   uint32_t pre_ = 0;              // samples before the trigger sample
   uint64_t pre_taken_ = 0;        // samples written into the pre-trigger ring
+  uint32_t ring_slot_ = 0;        // pre_taken_ % pre_: where the ring's next sample goes
+  uint32_t post_length_ = 0;      // length - pre_: the samples from the trigger sample on
   uint32_t post_taken_ = 0;       // samples from the trigger sample on
   uint32_t phase_ = 0;            // cycles until the next sample
   bool begun_ = false;
