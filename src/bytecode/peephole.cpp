@@ -93,6 +93,11 @@ class Fuser {
     return true;
   }
   const Instr& at(size_t i) const { return in_[i]; }
+  // Instruction i + k is an EOL that fuses with what is before it, and not with a JMP after it
+  // (JMPEOL, which costs the same).
+  bool lone_eol(size_t i, size_t k) const {
+    return free(i, k) && at(i + k).op == Op::EOL && !(free(i, k + 1) && at(i + k + 1).op == Op::JMP);
+  }
   static bool is_branch(Op op) { return op == Op::JZ || op == Op::JNZ; }
 
   // LDL a; LDL b | PUSHI k; <int compare>; JZ/JNZ T
@@ -261,15 +266,18 @@ class Fuser {
                      size_t{4}};
   }
 
-  // LDG g; PUSHI k; ADDI|SUBI [; STG g] | LDG g; PUSHI k; REMI
+  // LDG g; PUSHI k; ADDI|SUBI [; STG g [; EOL]] | LDG g; PUSHI k; REMI
   std::optional<std::pair<Instr, size_t>> global_constant(size_t i) const {
     if (!free(i, 2) || at(i).op != Op::LDG || at(i + 1).op != Op::PUSHI) return std::nullopt;
     const int32_t k = imm_of(at(i + 1));
     const Op op = at(i + 2).op;
     if (op == Op::ADDI || op == Op::SUBI) {
       const auto addend = static_cast<uint32_t>(op == Op::ADDI ? k : -k);  // |k| < 2^23
-      if (free(i, 3) && at(i + 3).op == Op::STG && at(i + 3).a == at(i).a)
+      if (free(i, 3) && at(i + 3).op == Op::STG && at(i + 3).a == at(i).a) {
+        if (lone_eol(i, 4))
+          return std::pair{Instr{at(i).pc, Op::INCGEOL, at(i).a, addend}, size_t{5}};
         return std::pair{Instr{at(i).pc, Op::INCG, at(i).a, addend}, size_t{4}};
+      }
       return std::pair{Instr{at(i).pc, Op::ADDGK, at(i).a, addend}, size_t{3}};
     }
     if (op == Op::REMI && k != 0)
@@ -301,9 +309,11 @@ class Fuser {
     return std::pair{Instr{at(i).pc, Op::LDG2, at(i).a, at(i + 1).a}, size_t{2}};
   }
 
-  // PUSHK k; STG g
+  // PUSHK k; STG g [; EOL]
   std::optional<std::pair<Instr, size_t>> store_global_constant(size_t i) const {
     if (!free(i, 1) || at(i).op != Op::PUSHK || at(i + 1).op != Op::STG) return std::nullopt;
+    if (lone_eol(i, 2))
+      return std::pair{Instr{at(i).pc, Op::STGKEOL, at(i + 1).a, at(i).a}, size_t{3}};
     return std::pair{Instr{at(i).pc, Op::STGK, at(i + 1).a, at(i).a}, size_t{2}};
   }
 

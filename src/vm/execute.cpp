@@ -761,6 +761,18 @@ op_INCG: {
   ip += 2;
   DISPATCH();
 }
+op_INCGEOL: {
+  int32_t& counter = GLOBAL(A()).i;
+  counter = arith::wrap_add(counter, static_cast<int32_t>(B()));
+  ip += 2;
+  if (--lines.now == 0) goto out_of_lines;
+  DISPATCH();
+}
+op_STGKEOL:
+  GLOBAL(A()) = constants_[B()];
+  ip += 2;
+  if (--lines.now == 0) goto out_of_lines;
+  DISPATCH();
 op_JZG:
 op_JNZG:
   // JNZG follows JZG: it jumps when the global's being zero is not what JZG looks for.

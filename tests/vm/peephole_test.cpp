@@ -459,8 +459,8 @@ end:
   const bytecode::Image image = optimized(text);
   const std::vector<Op> expected = {
       Op::PUSHI, Op::STGEOL,          // i = 1
-      Op::STGK, Op::EOL,              // v = 0.5
-      Op::STGK, Op::EOL,              // p = 0.5
+      Op::STGKEOL,                    // v = 0.5
+      Op::STGKEOL,                    // p = 0.5
       Op::JGTGK, Op::EOL,             // while i <= 100 (the constant 100)
       Op::REMGK, Op::STGEOL,          // r = i % 3
       Op::JZG,                        // if r <> 0
@@ -484,6 +484,53 @@ end:
   LoadedProgram plain;
   ASSERT_TRUE(plain.load(text));
   EXPECT_EQ(line_slices(image), line_slices(plain.image));
+}
+
+// A counter's step and a constant's store that end their lines (PDL's `n++;` and `f=0.0;`) are
+// one instruction each, ending the same lines; before a JMP the EOL goes with the JMP instead.
+TEST(Peephole, EndsLinesWithACounterAndAConstant) {
+  const char* text = R"(
+.global int "n" 1
+.global int "m" 1
+.global float "f" 1
+.const float 0.0
+.routine function "main" in=0 out=0 entry=main
+main:
+top:
+  LDG n
+  PUSHI 5
+  GEI
+  JNZ done
+  EOL
+  PUSHK 0
+  STG f
+  EOL
+  LDG n
+  PUSHI 1
+  ADDI
+  STG n
+  EOL
+  LDG n
+  STG m
+  EOL
+  JMP top
+done:
+  RET
+)";
+  const bytecode::Image image = optimized(text);
+  const std::vector<Op> expected = {Op::JGEGK, Op::EOL,     // while n < 5
+                                    Op::STGKEOL,            // f = 0.0
+                                    Op::INCGEOL,            // n = n + 1
+                                    Op::LDG, Op::STGJEOL,   // m = n; end of line, back to top
+                                    Op::RET};
+  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  expect_same_behaviour(text, "line-ending counter and constant");
+  EXPECT_EQ(run_and_read(image, "n"), 5);
+  EXPECT_EQ(run_and_read(image, "m"), 5);
+  LoadedProgram plain;
+  ASSERT_TRUE(plain.load(text));
+  EXPECT_EQ(line_slices(image), line_slices(plain.image));
+  EXPECT_EQ(line_slices(image), 5u * 4);  // four lines a turn; the last test jumps to the end
 }
 
 // No global form is made across a place control can enter: `inside` is a routine's entry.

@@ -17,6 +17,7 @@
 .global int "pushed" 1
 .global int "last" 1
 .global float "nan" 1
+.global float "kept" 1
 .const int 5       ; k0
 .const int 6       ; k1
 .const float 1.5   ; k2
@@ -152,6 +153,8 @@ n14:
   STG rem
   INCG count 3
   INCG count -1       ; count = 2
+  INCGEOL count 5     ; count = 7, end of line
+  STGKEOL kept 3      ; kept = 4.0, end of line
   LDG2 x y
   SUBI
   STG pushed          ; x - y: LDG2 pushes x first
@@ -187,6 +190,7 @@ after:
 ; expect fprod = 6.0
 ; expect plus = -3
 ; expect rem = 3
-; expect count = 2
+; expect count = 7
+; expect kept = 4.0
 ; expect pushed = -2
 ; expect last = 42
