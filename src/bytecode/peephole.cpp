@@ -62,6 +62,34 @@ constexpr FloatCompareFamily kFloatCompares[] = {
     {Op::GEF, Op::JNGEF, Op::JNGEFLL, Op::JNGEFLK, Op::JNGEFGK},
 };
 
+// A branch's form that ends the line on both paths (opcodes.def), or nullopt.
+std::optional<Op> ending_line_form(Op op) {
+  const auto in = [&](Op first, Op last) { return op >= first && op <= last; };
+  const auto shifted = [&](Op first, Op to) {
+    return static_cast<Op>(static_cast<int>(to) + static_cast<int>(op) - static_cast<int>(first));
+  };
+  if (in(Op::JEQGK, Op::JGEGK)) return shifted(Op::JEQGK, Op::JEQGKEOL);
+  if (in(Op::JNEQFGK, Op::JNGEFGK)) return shifted(Op::JNEQFGK, Op::JNEQFGKEOL);
+  if (in(Op::JNEQF, Op::JNGEF)) return shifted(Op::JNEQF, Op::JNEQFEOL);
+  if (op == Op::JZG) return Op::JZGEOL;
+  if (op == Op::JNZG) return Op::JNZGEOL;
+  return std::nullopt;
+}
+
+// "Jcc T; EOL" with an EOL at T: a condition's line, ending after its branch on both paths.
+// The instruction after T's EOL becomes a boundary, so that a fused branch can jump to it.
+void mark_after_target_eols(const std::vector<Instr>& in, std::vector<bool>& boundary) {
+  std::vector<size_t> index_of(boundary.size(), SIZE_MAX);
+  for (size_t k = 0; k < in.size(); ++k) index_of[in[k].pc] = k;
+  for (size_t k = 0; k + 1 < in.size(); ++k) {
+    if (op_info(in[k].op).flow != Flow::Branch || in[k + 1].op != Op::EOL) continue;
+    const uint32_t target = in[k].a;
+    if (target >= index_of.size() || index_of[target] == SIZE_MAX) continue;
+    const size_t t = index_of[target];
+    if (in[t].op == Op::EOL && t + 1 < in.size()) boundary[in[t + 1].pc] = true;
+  }
+}
+
 bool fits_int16(int32_t v) { return v >= -32768 && v <= 32767; }
 int32_t imm_of(const Instr& i) { return static_cast<int32_t>(i.a << 8) >> 8; }
 
@@ -74,6 +102,13 @@ class Fuser {
 
   // The fused instruction for the sequence at `i` and how many instructions it replaces.
   std::optional<std::pair<Instr, size_t>> match(size_t i) const {
+    auto r = fuse(i);
+    if (r) ending_line_branch(i, *r);
+    return r;
+  }
+
+ private:
+  std::optional<std::pair<Instr, size_t>> fuse(size_t i) const {
     for (auto m : {&Fuser::compare_locals, &Fuser::arithmetic_locals, &Fuser::local_constant,
                    &Fuser::two_locals, &Fuser::store_constant, &Fuser::test_global,
                    &Fuser::compare_global, &Fuser::global_constant, &Fuser::arithmetic_globals,
@@ -85,7 +120,26 @@ class Fuser {
     return std::nullopt;
   }
 
- private:
+  // A fused branch at i of `n` instructions, followed by the EOL of its line, whose target is
+  // an EOL too (mark_after_target_eols): one instruction that ends the line either way.
+  void ending_line_branch(size_t i, std::pair<Instr, size_t>& fused) const {
+    const std::optional<Op> form = ending_line_form(fused.first.op);
+    if (!form || !free(i, fused.second) || at(i + fused.second).op != Op::EOL) return;
+    const size_t target = index_at(fused.first.a);
+    if (target + 1 >= in_.size() || at(target).op != Op::EOL || !boundary_[at(target + 1).pc]) return;
+    fused.first.op = *form;
+    fused.first.a = at(target + 1).pc;
+    ++fused.second;
+  }
+  size_t index_at(uint32_t pc) const {
+    size_t low = 0, high = in_.size();
+    while (low < high) {
+      const size_t mid = (low + high) / 2;
+      if (in_[mid].pc < pc) low = mid + 1; else high = mid;
+    }
+    return low < in_.size() && in_[low].pc == pc ? low : in_.size();
+  }
+
   // Instruction i + k exists and control cannot arrive at it except from i + k - 1.
   bool free(size_t i, size_t k) const {
     for (size_t j = 1; j <= k; ++j)
@@ -387,6 +441,7 @@ PeepholeStats optimize(Image& image) {
     if (r.entry <= size) boundary[r.entry] = true;
   for (const LineEntry& l : image.lines)
     if (l.code <= size) boundary[l.code] = true;
+  mark_after_target_eols(in, boundary);
 
   // One pass, longest patterns first.
   std::vector<Instr> out;

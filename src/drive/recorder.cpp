@@ -125,7 +125,6 @@ bool Recorder::arm(const RecorderSettings& settings, std::string* why) {
   pre_taken_ = 0;
   ring_slot_ = 0;
   post_taken_ = 0;
-  post_length_ = settings.length - pre_;
   phase_ = 0;  // the first cycle after arming takes a sample
   begun_ = false;
   fired_ = false;

@@ -78,7 +78,10 @@ inline uint32_t float_outcome(float a, float b) {
   return a < b ? 0u : a == b ? 1u : a > b ? 2u : 3u;
 }
 static_assert(static_cast<int>(Op::JGEGK) - static_cast<int>(Op::JEQGK) == 5 &&
-                  static_cast<int>(Op::JNGEFGK) - static_cast<int>(Op::JNEQFGK) == 5,
+                  static_cast<int>(Op::JNGEFGK) - static_cast<int>(Op::JNEQFGK) == 5 &&
+                  static_cast<int>(Op::JGEGKEOL) - static_cast<int>(Op::JEQGKEOL) == 5 &&
+                  static_cast<int>(Op::JNGEFGKEOL) - static_cast<int>(Op::JNEQFGKEOL) == 5 &&
+                  static_cast<int>(Op::JNGEFEOL) - static_cast<int>(Op::JNEQFEOL) == 5,
               "a family of fused comparisons is six opcodes in the order == != < <= > >=");
 
 }  // namespace
@@ -812,6 +815,58 @@ op_JNGEFGK: {
     ip += 2;
   DISPATCH();
 }
+// The branches that end their line on both paths: a handler a family (the embeddable core's
+// 32 KiB), the taken path as JMPEOL, the other as the instruction and its EOL. `width` is the
+// instruction's length in words.
+#define BRANCH_ENDING_LINE(taken, width)                     \
+  {                                                          \
+    if (taken) {                                             \
+      JUMP_OR(code + A(), out_of_back_jumps_at_line_end);    \
+    } else {                                                 \
+      ip += (width);                                         \
+    }                                                        \
+    if (--lines.now == 0) goto out_of_lines;                 \
+    DISPATCH();                                              \
+  }
+op_JEQGKEOL:
+op_JNEGKEOL:
+op_JLTGKEOL:
+op_JLEGKEOL:
+op_JGTGKEOL:
+op_JGEGKEOL: {
+  const uint32_t pair = B();
+  const int32_t a = GLOBAL(bytecode::packed_first(pair)).i;
+  const int32_t b = constants_[bytecode::packed_second(pair)].i;
+  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JEQGKEOL);
+  BRANCH_ENDING_LINE(holds(how, a < b ? 0u : a == b ? 1u : 2u), 2)
+}
+op_JNEQFGKEOL:
+op_JNNEFGKEOL:
+op_JNLTFGKEOL:
+op_JNLEFGKEOL:
+op_JNGTFGKEOL:
+op_JNGEFGKEOL: {
+  const uint32_t pair = B();
+  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFGKEOL);
+  BRANCH_ENDING_LINE(!holds(how, float_outcome(GLOBAL(bytecode::packed_first(pair)).f,
+                                               constants_[bytecode::packed_second(pair)].f)),
+                     2)
+}
+op_JNEQFEOL:
+op_JNNEFEOL:
+op_JNLTFEOL:
+op_JNLEFEOL:
+op_JNGTFEOL:
+op_JNGEFEOL: {
+  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFEOL);
+  const uint32_t outcome = float_outcome(sp[-2].f, sp[-1].f);
+  sp -= 2;
+  BRANCH_ENDING_LINE(!holds(how, outcome), 1)
+}
+op_JZGEOL:
+op_JNZGEOL:
+  BRANCH_ENDING_LINE((GLOBAL(B()).i == 0) != ((word & 0xFFu) == static_cast<uint32_t>(Op::JNZGEOL)), 2)
+#undef BRANCH_ENDING_LINE
 // Two globals' arithmetic, a handler each (one shared through a switch slowed Gold's loop
 // by some 10 %, though it never runs there); they end in the shared dispatch.
 #define GLOBALS_ARITH(type, field, expr)                                   \

@@ -533,6 +533,108 @@ done:
   EXPECT_EQ(line_slices(image), 5u * 4);  // four lines a turn; the last test jumps to the end
 }
 
+// A condition's line ends after its branch on both paths (PDL's `if` and `while`): "Jcc T; EOL"
+// with an EOL at T is one branch that ends the line and jumps past T's EOL, for each family of
+// fused branches; the lines end where they did.
+TEST(Peephole, BranchesEndTheirLines) {
+  const char* text = R"(
+.global int "i" 1
+.global int "s" 1
+.global int "r" 1
+.global float "p" 1
+.global float "q" 1
+.const float 0.5
+.const float 1.0
+.routine function "main" in=0 out=0 entry=main
+main:
+  PUSHI 0
+  STG i
+  EOL
+  PUSHK 1
+  STG q
+  EOL
+top:
+  LDG i
+  PUSHI 10
+  GEI
+  JNZ done
+  EOL
+  LDG p
+  PUSHK 0
+  GEF
+  JZ else1
+  EOL
+  LDG s
+  PUSHI 1
+  ADDI
+  STG s
+  EOL
+  JMP join1
+else1:
+  EOL
+  LDG p
+  PUSHK 0
+  ADDF
+  STG p
+  EOL
+join1:
+  LDG p
+  LDG q
+  LTF
+  JZ skip2
+  EOL
+  PUSHI 1
+  STG r
+  EOL
+skip2:
+  EOL
+  LDG r
+  JZ skip3
+  EOL
+  LDG i
+  PUSHI 1
+  ADDI
+  STG i
+  EOL
+  JMP top
+skip3:
+  EOL
+  LDG i
+  PUSHI 1
+  ADDI
+  STG i
+  EOL
+  JMP top
+done:
+  EOL
+  RET
+)";
+  const bytecode::Image image = optimized(text);
+  const std::vector<Op> expected = {
+      Op::PUSHI, Op::STGEOL,                        // i = 0
+      Op::STGKEOL,                                  // q = 1.0
+      Op::JGEGKEOL,                                 // while i < 10
+      Op::JNGEFGKEOL,                               // if p >= 0.5
+      Op::INCG, Op::JMPEOL,                         // s = s + 1
+      Op::EOL,                                      // else1: reached by nothing now
+      Op::LDG, Op::PUSHK, Op::ADDF, Op::STGEOL,     // p = p + 0.5
+      Op::LDG2, Op::JNLTFEOL,                       // join1: if p < q
+      Op::PUSHI, Op::STGEOL,                        // r = 1
+      Op::EOL,                                      // skip2
+      Op::JZGEOL,                                   // if r
+      Op::INCG, Op::JMPEOL,                         // i = i + 1
+      Op::EOL, Op::INCG, Op::JMPEOL,                // skip3: i = i + 1
+      Op::EOL, Op::RET};                            // done
+  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  expect_same_behaviour(text, "branches that end their lines");
+  EXPECT_EQ(run_and_read(image, "i"), 10);
+  EXPECT_EQ(run_and_read(image, "s"), 9);  // p reaches 0.5 in the first turn's else
+  EXPECT_EQ(run_and_read(image, "r"), 1);
+  LoadedProgram plain;
+  ASSERT_TRUE(plain.load(text));
+  EXPECT_EQ(line_slices(image), line_slices(plain.image));
+}
+
 // No global form is made across a place control can enter: `inside` is a routine's entry.
 TEST(Peephole, NeverFusesGlobalsAcrossAnEntry) {
   LoadedProgram p;
