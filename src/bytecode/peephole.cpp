@@ -77,8 +77,14 @@ std::optional<Op> ending_line_form(Op op) {
 }
 
 // "Jcc T; EOL" with an EOL at T: a condition's line, ending after its branch on both paths.
-// The instruction after T's EOL becomes a boundary, so that a fused branch can jump to it.
-void mark_after_target_eols(const std::vector<Instr>& in, std::vector<bool>& boundary) {
+// The instruction after T's EOL becomes a boundary, so that a fused branch can jump to it. An
+// EOL that starts a source line stays where the branch goes: a breakpoint on it must be hit.
+bool skippable_eol(const Instr& at_target, const std::vector<bool>& line_start) {
+  return at_target.op == Op::EOL && !line_start[at_target.pc];
+}
+
+void mark_after_target_eols(const std::vector<Instr>& in, const std::vector<bool>& line_start,
+                            std::vector<bool>& boundary) {
   std::vector<size_t> index_of(boundary.size(), SIZE_MAX);
   for (size_t k = 0; k < in.size(); ++k) index_of[in[k].pc] = k;
   for (size_t k = 0; k + 1 < in.size(); ++k) {
@@ -86,7 +92,7 @@ void mark_after_target_eols(const std::vector<Instr>& in, std::vector<bool>& bou
     const uint32_t target = in[k].a;
     if (target >= index_of.size() || index_of[target] == SIZE_MAX) continue;
     const size_t t = index_of[target];
-    if (in[t].op == Op::EOL && t + 1 < in.size()) boundary[in[t + 1].pc] = true;
+    if (skippable_eol(in[t], line_start) && t + 1 < in.size()) boundary[in[t + 1].pc] = true;
   }
 }
 
@@ -97,8 +103,9 @@ class Fuser {
  public:
   // room_for_constants: the pass may add int constants (one a fusion at most) and still index
   // every constant in 16 bits.
-  Fuser(const std::vector<Instr>& in, const std::vector<bool>& boundary, bool room_for_constants)
-      : in_(in), boundary_(boundary), room_for_constants_(room_for_constants) {}
+  Fuser(const std::vector<Instr>& in, const std::vector<bool>& boundary,
+        const std::vector<bool>& line_start, bool room_for_constants)
+      : in_(in), boundary_(boundary), line_start_(line_start), room_for_constants_(room_for_constants) {}
 
   // The fused instruction for the sequence at `i` and how many instructions it replaces.
   std::optional<std::pair<Instr, size_t>> match(size_t i) const {
@@ -126,7 +133,9 @@ class Fuser {
     const std::optional<Op> form = ending_line_form(fused.first.op);
     if (!form || !free(i, fused.second) || at(i + fused.second).op != Op::EOL) return;
     const size_t target = index_at(fused.first.a);
-    if (target + 1 >= in_.size() || at(target).op != Op::EOL || !boundary_[at(target + 1).pc]) return;
+    if (target + 1 >= in_.size() || !skippable_eol(at(target), line_start_) ||
+        !boundary_[at(target + 1).pc])
+      return;
     fused.first.op = *form;
     fused.first.a = at(target + 1).pc;
     ++fused.second;
@@ -402,6 +411,7 @@ class Fuser {
 
   const std::vector<Instr>& in_;
   const std::vector<bool>& boundary_;
+  const std::vector<bool>& line_start_;
   bool room_for_constants_;
 };
 
@@ -439,13 +449,14 @@ PeepholeStats optimize(Image& image) {
     if (op_info(i.op).a == Operand::Target && i.a <= size) boundary[i.a] = true;
   for (const Routine& r : image.routines)
     if (r.entry <= size) boundary[r.entry] = true;
+  std::vector<bool> line_start(size + 1, false);
   for (const LineEntry& l : image.lines)
-    if (l.code <= size) boundary[l.code] = true;
-  mark_after_target_eols(in, boundary);
+    if (l.code <= size) boundary[l.code] = line_start[l.code] = true;
+  mark_after_target_eols(in, line_start, boundary);
 
   // One pass, longest patterns first.
   std::vector<Instr> out;
-  const Fuser fuser(in, boundary, image.constants.size() + in.size() <= 0xFFFF);
+  const Fuser fuser(in, boundary, line_start, image.constants.size() + in.size() <= 0xFFFF);
   for (size_t i = 0; i < in.size();) {
     if (auto m = fuser.match(i)) {
       if (m->first.wants_constant) {

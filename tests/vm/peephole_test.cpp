@@ -635,6 +635,26 @@ done:
   EXPECT_EQ(line_slices(image), line_slices(plain.image));
 }
 
+// Where the branch's target EOL starts a source line, the branch still goes to it: a breakpoint
+// on that line must be hit on the way.
+TEST(Peephole, BranchesKeepATargetThatStartsALine) {
+  const bytecode::Image image = optimized(R"(
+.global int "g" 1
+.routine function "main" in=0 out=0 entry=main
+.line "t.pdl" 1
+main:
+  LDG g
+  JZ other
+  EOL
+.line "t.pdl" 2
+other:
+  EOL
+  RET
+)");
+  const std::vector<Op> expected = {Op::JZG, Op::EOL, Op::EOL, Op::RET};
+  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+}
+
 // No global form is made across a place control can enter: `inside` is a routine's entry.
 TEST(Peephole, NeverFusesGlobalsAcrossAnEntry) {
   LoadedProgram p;
