@@ -1,5 +1,6 @@
-// The compiler's tokens, diagnostics and program structure: declarations, tasks, procedures,
-// scopes, and what is resolved at the end (return sites, indirect gotos, entry routines).
+// The compiler's tokens, diagnostics and program structure: declarations, tasks, procedures
+// (VM routines, their frames on the task stack), scopes, and what is resolved at the end
+// (return sites, indirect gotos, entry routines).
 #include "dialects/pdl/compiler.h"
 
 #include <algorithm>
@@ -19,10 +20,11 @@ constexpr std::string_view kKeywords[] = {
     "sign", "sin", "cos", "sqrt", "divi", "shift", "bitset", "bitclr", "bittog", "memcpy", "memset",
     "memmin", "memmax", "memsum"};
 
-std::vector<bytecode::Local> entry_locals() {
+// The first `count` locals of an entry routine; a procedure's routine has as many as it uses.
+std::vector<bytecode::Local> entry_locals(uint32_t count = kEntryLocals) {
   static constexpr const char* kNames[] = {"sp", "base", "limit", "bias", "fp", "ret", "goto"};
   std::vector<bytecode::Local> out;
-  for (uint32_t i = 0; i < kEntryLocals; ++i) {
+  for (uint32_t i = 0; i < count; ++i) {
     bytecode::Local l;
     l.name = i < kFirstScratch ? kNames[i] : "s" + std::to_string(i - kFirstScratch);
     out.push_back(l);
@@ -40,7 +42,6 @@ Compiler::Compiler(std::vector<Token> tokens, std::function<Location(size_t)> lo
   start.inputs = kEntryInputs;
   start.locals = entry_locals();
   image_.routines.push_back(start);
-  dispatch_ = code_.new_label();
 }
 
 // --- tokens and diagnostics
@@ -124,14 +125,17 @@ void Compiler::skip_to_command_end() {
 bool Compiler::compile(bytecode::Image& out) {
   program();
   code_.emit(Op::RET);  // the end of the code ends the task
-  emit_return_dispatch();
-  emit_indirect_stubs();
+  emit_return_dispatch(0);
+  emit_indirect_stubs(0);
   for (const LabelValue& v : label_values_)
     image_.constants[v.constant].bits = scopes_[static_cast<size_t>(v.scope)][v.label].slot;
   for (auto& [name, proc] : procs_) {
     if (!proc.defined) error(Error::ProcNotImplemented, proc.declared_at, name);
   }
   if (!code_.finish()) error(Error::UnknownLabel, toks_.back().offset, "a jump to a label never defined");
+  for (auto& [name, proc] : procs_) {
+    if (proc.defined && code_.bound(proc.start)) image_.routines[static_cast<size_t>(proc.routine)].entry = code_.target(proc.start);
+  }
   for (auto& [name, info] : scopes_[0]) {
     if (info.routine >= 0 && info.defined)
       image_.routines[static_cast<size_t>(info.routine)].entry = code_.target(info.label);
@@ -325,17 +329,7 @@ void Compiler::procedure() {
     if (!accept_op(",")) break;
   }
   expect_op(")");
-  auto found = procs_.find(name.text);
-  if (found != procs_.end()) {
-    if (found->second.params != params) error(Error::PrototypeMismatch, name.offset, name.text);
-  }
-  Proc& proc = procs_[name.text];
-  if (found == procs_.end()) {
-    proc.name = name.text;
-    proc.params = params;
-    proc.entry = code_.new_label();
-    proc.declared_at = name.offset;
-  }
+  Proc& proc = proc_named(name.text, params, name.offset);
   if (accept_op(";")) return;  // a prototype
   if (!accept_word("do")) {
     if (peek().line_start || peek().kind == Tok::End) return;  // a prototype without ';'
@@ -346,6 +340,7 @@ void Compiler::procedure() {
   if (current_proc_ != nullptr) {
     // Its body still closes with its own end, so that the outer procedure's stays its own.
     proc.defined = true;
+    proc.start = proc.entry;
     statement_list(1, true);
     accept_word("end");
     accept_op(";");
@@ -358,7 +353,7 @@ void Compiler::procedure() {
   scopes_.emplace_back();
   scope_ = static_cast<int>(scopes_.size() - 1);
   locals_.clear();
-  frame_words_ = 2;
+  frame_words_ = 2;  // the words a return id and a saved fp took: reserved, as pdl-drive.md counts
   for (const Param& p : params) {
     Var v;
     v.name = p.name;
@@ -368,42 +363,13 @@ void Compiler::procedure() {
     v.address = frame_words_++;
     locals_.push_back(v);
   }
+  scratch_high_ = kFirstScratch;
+  proc_end_ = code_.new_label();
+  // The caller checked the whole frame's room, stored the arguments and called with the stack
+  // registers of the frame (compiler_commands.cpp, proc_call).
   code_.bind(proc.entry);
-  // The prologue: room for the locals (their count is known at the end), zeroed.
-  const uint32_t patch = code_.here();
-  code_.emit(Op::PUSHI, 0);
-  const uint32_t n = kFirstScratch;  // the prologue runs before any command: scratch is free
-  code_.emit(Op::STL, n);
-  code_.emit(Op::LDL, kSp);
-  code_.emit(Op::LDL, n);
-  code_.emit(Op::ADDI);
-  code_.emit(Op::LDL, kLimit);
-  CodeBuilder::Label fits = code_.new_label();
-  code_.emit_to(Op::JLEI, fits);
-  code_.emit(Op::RAISE, static_cast<uint32_t>(vm::RunError::CallDepth));
-  code_.bind(fits);
-  CodeBuilder::Label top = code_.new_label(), done = code_.new_label();
-  code_.bind(top);
-  code_.emit(Op::LDL, n);
-  code_.emit_to(Op::JZ, done);
-  code_.emit(Op::INCL, n, static_cast<uint32_t>(-1));
-  code_.emit(Op::LDL, kSp);
-  code_.emit(Op::LDL, n);
-  code_.emit(Op::ADDI);
-  code_.emit(Op::PUSHI, 0);
-  code_.emit(Op::STM);
-  code_.emit_to(Op::JMP, top);
-  code_.bind(done);
-  code_.emit(Op::LDL, kSp);
-  code_.emit(Op::PUSHI, 0);
-  const uint32_t patch2 = code_.here() - 1;
-  code_.emit(Op::ADDI);
-  code_.emit(Op::STL, kSp);
-  const uint32_t params_words = 2 + static_cast<uint32_t>(params.size());
+  const auto params_words = static_cast<uint32_t>(frame_words_);
   statement_list(1, true);
-  const int32_t locals_words = frame_words_ - static_cast<int32_t>(params_words);
-  image_.code[patch] = bytecode::make_word(Op::PUSHI, static_cast<uint32_t>(locals_words));
-  image_.code[patch2] = bytecode::make_word(Op::PUSHI, static_cast<uint32_t>(locals_words));
   if (accept_word("end")) {
     begin_command(1);
     proc_return();
@@ -411,6 +377,24 @@ void Compiler::procedure() {
   } else {
     error(Error::UnclosedBlock, at, "procedure " + name.text);
   }
+  code_.bind(proc_end_);
+  code_.emit(Op::RET);
+  if (dispatchers_.count(scope_)) emit_return_dispatch(scope_);
+  emit_indirect_stubs(scope_);
+  // The locals start at 0 (their count is known only now, so the routine starts here and jumps
+  // to the body; a procedure without locals starts at its body).
+  const uint32_t locals_words = static_cast<uint32_t>(frame_words_) - params_words;
+  proc.start = proc.entry;
+  if (locals_words > 0) {
+    proc.start = code_.new_label();
+    code_.bind(proc.start);
+    emit_locals_zeroing(params_words, locals_words, proc.entry);
+  }
+  proc.frame_words = frame_words_;
+  for (uint32_t at_word : proc.frame_patches)
+    image_.code[at_word] = bytecode::make_word(Op::PUSHI, static_cast<uint32_t>(proc.frame_words));
+  proc.frame_patches.clear();
+  image_.routines[static_cast<size_t>(proc.routine)].locals = entry_locals(scratch_high_);
   finish_scope();
   ProcMark mark{{proc.name, 0, 0, frame_words_, static_cast<uint32_t>(params.size()), {}}, proc.entry, after};
   for (const Var& v : locals_) {
@@ -422,6 +406,63 @@ void Compiler::procedure() {
   current_proc_ = nullptr;
   locals_.clear();
   code_.bind(after);
+}
+
+// A procedure by its head, made on its first prototype or definition with its routine (a
+// prototype's calls need the routine's number); a head that differs from the first is [pdl 86].
+Proc& Compiler::proc_named(const std::string& name, const std::vector<Param>& params, size_t offset) {
+  auto found = procs_.find(name);
+  if (found != procs_.end()) {
+    if (found->second.params != params) error(Error::PrototypeMismatch, offset, name);
+    return found->second;
+  }
+  Proc& proc = procs_[name];
+  proc.name = name;
+  proc.params = params;
+  proc.entry = code_.new_label();
+  proc.declared_at = offset;
+  bytecode::Routine r;
+  r.name = "proc " + name;  // not a label's name: `run`, `--entry` and function breakpoints skip it
+  r.kind = bytecode::RoutineKind::Function;
+  r.inputs = kEntryInputs;
+  r.locals = entry_locals();
+  image_.routines.push_back(r);
+  proc.routine = static_cast<int>(image_.routines.size() - 1);
+  return proc;
+}
+
+// Words first..first+words-1 of the frame to 0, then on to the body: a store each for a few, a
+// loop for more.
+void Compiler::emit_locals_zeroing(uint32_t first, uint32_t words, CodeBuilder::Label body) {
+  constexpr uint32_t kUnrolled = 4;
+  if (words <= kUnrolled) {
+    for (uint32_t i = 0; i < words; ++i) {
+      code_.emit(Op::LDL, kFp);
+      push_int(static_cast<int32_t>(first + i));
+      code_.emit(Op::ADDI);
+      push_int(0);
+      code_.emit(Op::STM);
+    }
+    code_.emit_to(Op::JMP, body);
+    return;
+  }
+  const uint32_t n = kFirstScratch;  // before the body's first command: scratch is free
+  if (scratch_high_ <= n) scratch_high_ = n + 1;
+  push_int(static_cast<int32_t>(words));
+  code_.emit(Op::STL, n);
+  CodeBuilder::Label top = code_.new_label();
+  code_.bind(top);
+  code_.emit(Op::INCL, n, static_cast<uint32_t>(-1));
+  code_.emit(Op::LDL, kFp);
+  push_int(static_cast<int32_t>(first));
+  code_.emit(Op::ADDI);
+  code_.emit(Op::LDL, n);
+  code_.emit(Op::ADDI);
+  push_int(0);
+  code_.emit(Op::STM);
+  code_.emit(Op::LDL, n);
+  code_.emit_to(Op::JNZ, top);
+  code_.emit_to(Op::JMP, body);
 }
 
 void Compiler::finish_scope() {
@@ -479,16 +520,26 @@ void Compiler::emit_dispatch(uint32_t local, const std::vector<std::pair<int32_t
   emit_dispatch(local, {cases.begin() + static_cast<std::ptrdiff_t>(mid), cases.end()});
 }
 
-void Compiler::emit_return_dispatch() {
-  code_.bind(dispatch_);
+CodeBuilder::Label Compiler::dispatch_label(int scope) {
+  auto it = dispatchers_.find(scope);
+  if (it == dispatchers_.end()) it = dispatchers_.emplace(scope, code_.new_label()).first;
+  return it->second;
+}
+
+// `ret` and the end of a `call`ed label: back to a return site of the scope's own `call`s (a
+// procedure's routine jumps only within itself).
+void Compiler::emit_return_dispatch(int scope) {
+  code_.bind(dispatch_label(scope));
   std::vector<std::pair<int32_t, CodeBuilder::Label>> cases;
-  for (size_t i = 0; i < return_sites_.size(); ++i) cases.push_back({static_cast<int32_t>(i), return_sites_[i]});
+  for (size_t i = 0; i < return_sites_.size(); ++i)
+    if (return_scopes_[i] == scope) cases.push_back({static_cast<int32_t>(i), return_sites_[i]});
   emit_dispatch(kRetId, cases);
 }
 
 // `goto L[n]`: n counts slots from L; only a command's start in L's scope is a target.
-void Compiler::emit_indirect_stubs() {
+void Compiler::emit_indirect_stubs(int scope) {
   for (const IndirectGoto& g : indirect_) {
+    if (g.scope != scope) continue;
     line_entry(g.offset);  // an n that is no command's start is the goto's error
     code_.bind(g.stub);
     auto& labels = scopes_[static_cast<size_t>(g.scope)];

@@ -1,6 +1,7 @@
 // The PDL compiler's state: one pass over the tokens, emitting code as it parses (names are
 // known from where they are declared, procedures from their definition or prototype), with the
-// return sites, indirect gotos and entry routines resolved at the end. Split over
+// return sites, indirect gotos and entry routines resolved at the end. A procedure is a VM
+// routine (CALL/RET) whose frame words are on the task's stack in the data memory. Split over
 // compiler*.cpp: declarations and structure, commands, expressions and conditions, memory.
 #pragma once
 #include <cstdint>
@@ -54,9 +55,13 @@ struct Param {
 struct Proc {
   std::string name;
   std::vector<Param> params;
-  CodeBuilder::Label entry{};
+  CodeBuilder::Label entry{};  // its body's first command
+  CodeBuilder::Label start{};  // where its routine starts: the locals' zeroing, or the body
+  int routine = -1;            // its image routine, called with CALL
   bool defined = false;
   size_t declared_at = 0;  // token offset
+  int32_t frame_words = -1;  // 2 + parameters + locals, once its definition is compiled
+  std::vector<uint32_t> frame_patches;  // PUSHIs of calls compiled before that, patched then
 };
 
 struct LabelInfo {
@@ -147,8 +152,11 @@ class Compiler {
   void task_directive(size_t at);
   void procedure();
   void finish_scope();
-  void emit_return_dispatch();
-  void emit_indirect_stubs();
+  void emit_return_dispatch(int scope);
+  void emit_indirect_stubs(int scope);
+  CodeBuilder::Label dispatch_label(int scope);
+  Proc& proc_named(const std::string& name, const std::vector<Param>& params, size_t offset);
+  void emit_locals_zeroing(uint32_t first, uint32_t words, CodeBuilder::Label body);
   void emit_dispatch(uint32_t local, const std::vector<std::pair<int32_t, CodeBuilder::Label>>& cases);
   LabelInfo& label_named(const std::string& name, int scope, size_t offset);
   int routine_for_label(const std::string& name, size_t offset);
@@ -173,7 +181,8 @@ class Compiler {
   void kill_command();
   void set_state_command(int mode);
   void printl_command(bool ret);
-  void proc_call(const Proc& proc);
+  void proc_call(Proc& proc);
+  void push_frame_words(Proc& proc);
   void assignment();
   uint32_t short_command_slots();
   void check_code_size();
@@ -248,16 +257,18 @@ class Compiler {
   int scope_ = 0;
   Proc* current_proc_ = nullptr;
   int32_t frame_words_ = 0;  // 2 + parameters + locals of the current procedure
-  std::vector<CodeBuilder::Label> return_sites_;
+  std::vector<CodeBuilder::Label> return_sites_;  // of `call`s, by return id
+  std::vector<int> return_scopes_;                // the scope of each
+  std::map<int, CodeBuilder::Label> dispatchers_;  // each scope's dispatch over its return ids
   std::vector<CommandStart> commands_;
   std::vector<IndirectGoto> indirect_;
   std::vector<LabelValue> label_values_;
-  CodeBuilder::Label dispatch_{};
+  CodeBuilder::Label proc_end_{};  // the current procedure's RET
   bool tasks_seen_[kTasks + 1] = {};
   uint32_t slots_ = 0;
   size_t text_bytes_ = 0;
   uint32_t scratch_next_ = kFirstScratch;
-  uint32_t scratch_high_ = kFirstScratch;
+  uint32_t scratch_high_ = kFirstScratch;  // one past the highest scratch local of the procedure
   bool in_lock_ = false;
   int32_t slave_reads_ = 0;
   int32_t operations_ = 0;

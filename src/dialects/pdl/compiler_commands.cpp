@@ -344,6 +344,7 @@ void Compiler::call_command() {
   code_.bind(room);
   const int32_t id = static_cast<int32_t>(return_sites_.size());
   return_sites_.push_back(code_.new_label());
+  return_scopes_.push_back(scope_);
   code_.emit(Op::LDL, kSp);
   push_int(id);
   code_.emit(Op::STM);
@@ -373,47 +374,40 @@ void Compiler::emit_ret() {
   code_.emit(Op::LDM);
   code_.emit(Op::STL, kRetId);
   end_line();
-  code_.emit_to(Op::JMP, dispatch_);
+  code_.emit_to(Op::JMP, dispatch_label(scope_));
 }
 
-// A procedure's end and exitproc: drop the frame, back to the caller's return site.
+// A procedure's end and exitproc: the VM's RET (the peephole pass makes the line's end and the
+// jump to it one RETEOL). The caller's frame registers are its own locals: nothing to restore.
 void Compiler::proc_return() {
-  code_.emit(Op::LDL, kFp);
-  code_.emit(Op::LDM);
-  code_.emit(Op::STL, kRetId);
-  code_.emit(Op::LDL, kFp);
-  code_.emit(Op::STL, kSp);
-  code_.emit(Op::LDL, kFp);
-  push_int(1);
-  code_.emit(Op::ADDI);
-  code_.emit(Op::LDM);
-  code_.emit(Op::STL, kFp);
   end_line();
-  code_.emit_to(Op::JMP, dispatch_);
+  code_.emit_to(Op::JMP, proc_end_);
 }
 
-void Compiler::proc_call(const Proc& proc) {
+// The frame's size, 2 + parameters + locals; a call compiled before the procedure's end (its own
+// recursion, or after a prototype) gets it patched in then.
+void Compiler::push_frame_words(Proc& proc) {
+  if (proc.frame_words >= 0) return push_int(proc.frame_words);
+  proc.frame_patches.push_back(code_.here());
+  code_.emit(Op::PUSHI, 0);
+}
+
+// A call: room for the whole frame on the task's stack (else CallDepth, before an argument is
+// evaluated), the arguments stored into its parameter words, then, in the next phase, CALL
+// with the callee's stack registers: sp past its frame, the task's base, limit and bias, and fp
+// at the frame (whose first two words stay reserved, as pdl-drive.md counts them).
+void Compiler::proc_call(Proc& proc) {
   const size_t at = peek().offset;
   begin_command(1);
   const int32_t params = static_cast<int32_t>(proc.params.size());
   code_.emit(Op::LDL, kSp);
-  push_int(2 + params);
+  push_frame_words(proc);
   code_.emit(Op::ADDI);
   code_.emit(Op::LDL, kLimit);
   CodeBuilder::Label room = code_.new_label();
   code_.emit_to(Op::JLEI, room);
   code_.emit(Op::RAISE, static_cast<uint32_t>(vm::RunError::CallDepth));
   code_.bind(room);
-  const int32_t id = static_cast<int32_t>(return_sites_.size());
-  return_sites_.push_back(code_.new_label());
-  code_.emit(Op::LDL, kSp);
-  push_int(id);
-  code_.emit(Op::STM);
-  code_.emit(Op::LDL, kSp);
-  push_int(1);
-  code_.emit(Op::ADDI);
-  code_.emit(Op::LDL, kFp);
-  code_.emit(Op::STM);
   expect_op("(");
   int32_t count = 0;
   while (!at_op(")") && peek().kind != Tok::End) {
@@ -443,15 +437,17 @@ void Compiler::proc_call(const Proc& proc) {
   if (count != params) {
     error(Error::ArgumentCount, at, proc.name + " takes " + std::to_string(params) + ", got " + std::to_string(count));
   }
-  code_.emit(Op::LDL, kSp);
-  code_.emit(Op::STL, kFp);
-  code_.emit(Op::LDL, kSp);
-  push_int(2 + params);
-  code_.emit(Op::ADDI);
-  code_.emit(Op::STL, kSp);
   end_line();
-  code_.emit_to(Op::JMP, proc.entry);
-  code_.bind(return_sites_.back());
+  static_assert(kSp == 0 && kBase == 1 && kLimit == 2 && kBias == 3 && kFp == 4 && kEntryInputs == 5,
+                "the callee's inputs in the order of its locals");
+  code_.emit(Op::LDL, kSp);
+  push_frame_words(proc);
+  code_.emit(Op::ADDI);
+  code_.emit(Op::LDL, kBase);
+  code_.emit(Op::LDL, kLimit);
+  code_.emit(Op::LDL, kBias);
+  code_.emit(Op::LDL, kSp);
+  code_.emit(Op::CALL, static_cast<uint32_t>(proc.routine), 0);
 }
 
 void Compiler::run_command() {

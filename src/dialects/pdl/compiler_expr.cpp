@@ -54,6 +54,7 @@ uint32_t Compiler::scratch() {
     error(Error::Syntax, peek().offset, "command too complex");
     return kEntryLocals - 1;
   }
+  if (scratch_next_ + 1 > scratch_high_) scratch_high_ = scratch_next_ + 1;
   return scratch_next_++;
 }
 

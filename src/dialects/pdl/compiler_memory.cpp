@@ -81,44 +81,39 @@ void Compiler::emit_user_check() {
 }
 
 // A program's address (bit 29 ignored) to the flat memory: 0..399 as it is, 0x1000*t + k
-// (t = 1..3, k < 256) into task t's stack; anything else is BadAddress.
+// (t = 1..3, k < 256) into task t's stack, 400 + 256*(t-1) + k; anything else is BadAddress.
+// The stack's case (the pointers to a procedure's locals) goes straight through.
 void Compiler::emit_translate() {
   push_int(~kFloatAddressBit);
   code_.emit(Op::ANDI);
-  CodeBuilder::Label done = code_.new_label(), bad1 = code_.new_label(), bad2 = code_.new_label();
+  CodeBuilder::Label stack = code_.new_label(), bad = code_.new_label(), done = code_.new_label();
   code_.emit(Op::DUP);
+  push_int(kTaskAddressUnit);
+  code_.emit_to(Op::JGEI, stack);
+  code_.emit(Op::DUP);  // below 0x1000 (or negative): the user memory's words only
   push_int(kUserWords);
   code_.emit(Op::CMPU, kCmpLess);
   code_.emit_to(Op::JNZ, done);
+  code_.bind(bad);
+  code_.emit(Op::RAISE, static_cast<uint32_t>(vm::RunError::BadAddress));
+  code_.bind(stack);
+  // 0x1000..0x3FFF with bits 8..11 clear: t = a >> 12 is 1..3 and k = a & 0xFF.
+  constexpr int32_t kNotStackBits = ~(kTaskAddressUnit * 4 - 1) | (kTaskAddressUnit - kStackWords);
+  static_assert(kTasks == 3 && kStackWords == 256, "t in bits 12..13, k in bits 0..7");
   code_.emit(Op::DUP);
-  push_int(kTaskAddressUnit - 1);
+  push_int(kNotStackBits);
   code_.emit(Op::ANDI);
-  push_int(kStackWords);
-  code_.emit(Op::CMPU, kCmpLess);
-  code_.emit_to(Op::JZ, bad1);
+  code_.emit_to(Op::JNZ, bad);
+  // flat = a - 0x1000*t + 400 + 256*(t-1) = a - (0x1000-256)*t + (400-256)
   code_.emit(Op::DUP);
   push_int(12);
   code_.emit(Op::SHRU);
-  push_int(1);
-  code_.emit(Op::SUBI);
-  code_.emit(Op::DUP);
-  push_int(static_cast<int32_t>(kTasks));
-  code_.emit(Op::CMPU, kCmpLess);
-  code_.emit_to(Op::JZ, bad2);
-  // flat = a - 0x1000*t + 400 + 256*(t-1) = a - (t-1)*(0x1000-256) - (0x1000 - 400)
   push_int(kTaskAddressUnit - kStackWords);
   code_.emit(Op::MULI);
   code_.emit(Op::SUBI);
-  push_int(kTaskAddressUnit - kUserWords);
-  code_.emit(Op::SUBI);
-  CodeBuilder::Label end = code_.new_label();
-  code_.emit_to(Op::JMP, end);
-  code_.bind(bad1);
-  code_.emit(Op::RAISE, static_cast<uint32_t>(vm::RunError::BadAddress));
-  code_.bind(bad2);
-  code_.emit(Op::RAISE, static_cast<uint32_t>(vm::RunError::BadAddress));
+  push_int(kUserWords - kStackWords);
+  code_.emit(Op::ADDI);
   code_.bind(done);
-  code_.bind(end);
 }
 
 // `&v`, `&v[i]`, `*p`, `*p[i]` and a bare array name: the program's address of the first word.

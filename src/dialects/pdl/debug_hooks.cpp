@@ -1,8 +1,9 @@
 // What the D-series firmware offers the debugger (dialect::Firmware's debug hooks): the program
-// in RAM; each task's procedure frames, walked from the words of its stack in the data memory
-// with the image's debug info (debug_info.h), since PDL builds them by hand rather than with the
-// VM's CALL; and PDL expressions, conditions and assignments compiled by the drive's own
-// compiler (compile_evaluation) and run on a scratch machine over a copy of the data memory.
+// in RAM; each task's frames, walked from its VM frames (a procedure's routine each) and the
+// words of its stack in the data memory (loop counts, the return ids of `call`s, the procedures'
+// parameters and locals) with the image's debug info (debug_info.h); and PDL expressions,
+// conditions and assignments compiled by the drive's own compiler (compile_evaluation) and run
+// on a scratch machine over a copy of the data memory.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -41,51 +42,52 @@ std::string type_of(const FrameVar& v) {
 
 }  // namespace
 
-// From the innermost out: a procedure's frame starts at fp (return id, saved fp, parameters,
-// locals); above it (or above the stack's base in task code) stand the counts of the loops open
-// at pc, then, if anything is left, the return id of a `call` to a label. A word that does not
-// fit (a goto out of a loop leaves its count behind) ends the walk there.
+// From the innermost out, VM frame by VM frame: a procedure's routine has its frame at fp
+// (2 reserved words, parameters, locals), task code the stack's base; above that stand the counts
+// of the loops open at pc, then, if anything is left, the return id of a `call` to a label, which
+// is a frame too. A word that does not fit (a goto out of a loop leaves its count behind) ends
+// the walk there.
 std::vector<Firmware::TaskFrame> Firmware::walk_frames(uint32_t task) const {
   std::vector<TaskFrame> out;
   const vm::Machine* m = machine();
   if (m == nullptr || task < 1 || task > kTasks || m->frame_count(task) == 0) return out;
   const vm::ThreadStatus s = m->status(task);
   if (s == vm::ThreadStatus::Idle) return out;
-  Value reg;
-  auto local = [&](uint32_t i) { return m->read_local(task, 0, i, reg) ? reg.i : 0; };
-  auto word = [&](int32_t flat, int32_t& v) {
-    if (!m->read_memory(static_cast<uint32_t>(flat), reg)) return false;
-    v = reg.i;
-    return true;
-  };
   const int32_t base = stack_base(task), limit = base + kStackWords;
-  int32_t sp = local(kSp), fp = local(kFp);
-  uint32_t pc = m->pc(task), line_pc = pc;
-  auto back_to = [&](int32_t id) {
-    if (id < 0 || static_cast<size_t>(id) >= debug_info_.return_sites.size()) return false;
-    pc = debug_info_.return_sites[static_cast<size_t>(id)];
-    line_pc = pc == 0 ? 0 : pc - 1;  // the call's last word, on the calling line
-    return true;
-  };
+  for (uint32_t depth = 0; depth < m->frame_count(task) && out.size() < kMaxFrames; ++depth) {
+    Value reg;
+    auto local = [&](uint32_t i) { return m->read_local(task, depth, i, reg) ? reg.i : 0; };
+    // A caller resumes after its CALL, whose last word is still on the calling line.
+    const uint32_t pc = depth == 0 ? m->pc(task) : m->frame(task, depth).pc;
+    const uint32_t line_pc = depth == 0 || pc == 0 ? pc : pc - 1;
+    const ProcInfo* proc = debug_info_.proc_at(pc);
+    if (!walk_routine_frame(pc, line_pc, local(kSp), local(kFp), base, limit, out)) break;
+    if (proc == nullptr) break;  // task code is the outermost
+  }
+  return out;
+}
+
+// One VM frame's frames: its own, then the `call`s to labels inside it. False when a word did
+// not fit (the walk ends).
+bool Firmware::walk_routine_frame(uint32_t pc, uint32_t line_pc, int32_t sp, int32_t fp, int32_t base,
+                                  int32_t limit, std::vector<TaskFrame>& out) const {
+  const vm::Machine* m = machine();
   while (out.size() < kMaxFrames) {
     const ProcInfo* proc = debug_info_.proc_at(pc);
     out.push_back({proc, line_pc, fp});
-    if (sp < base || sp > limit || (proc && (fp < base || fp + proc->frame_words > limit))) break;
+    if (sp < base || sp > limit || (proc && (fp < base || fp + proc->frame_words > limit))) return false;
     const int32_t bottom = proc ? fp + proc->frame_words : base;
     const int32_t above = sp - static_cast<int32_t>(debug_info_.loops_open(pc));
-    int32_t id = 0;
-    if (above > bottom) {
-      if (!word(above - 1, id) || !back_to(id)) break;
-      sp = above - 1;
-      continue;
-    }
-    if (!proc || above < bottom) break;
-    int32_t saved_fp = 0;
-    if (!word(fp, id) || !word(fp + 1, saved_fp) || !back_to(id)) break;
-    sp = fp;
-    fp = saved_fp;
+    if (above == bottom) return true;
+    Value id;
+    if (above < bottom || !m->read_memory(static_cast<uint32_t>(above - 1), id) || id.i < 0 ||
+        static_cast<size_t>(id.i) >= debug_info_.return_sites.size())
+      return false;
+    pc = debug_info_.return_sites[static_cast<size_t>(id.i)];
+    line_pc = pc == 0 ? 0 : pc - 1;  // the call's last word, on the calling line
+    sp = above - 1;
   }
-  return out;
+  return false;
 }
 
 std::string Firmware::frame_name(const TaskFrame& f) const {

@@ -1,8 +1,9 @@
 // What the debugger needs of a PDL program beyond the image's line table, written by the compiler
 // into the image's info lines and read by the firmware: each procedure's code range and frame
 // (its parameters and locals by word), the code word of each return site (the return ids a
-// `call` or a procedure call pushes), and each loop's body range (where its count is on the task
-// stack). From these the firmware walks a task's hand-built frames (debug_hooks.cpp).
+// `call` pushes), and each loop's body range (where its count is on the task stack). From these
+// and the VM's frames (a procedure's routine each) the firmware walks a task's frames
+// (debug_hooks.cpp).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -20,8 +21,8 @@ struct FrameVar {
 
 struct ProcInfo {
   std::string name;
-  uint32_t first = 0;  // its prologue's first code word
-  uint32_t end = 0;    // the code word after its body
+  uint32_t first = 0;  // its body's first code word
+  uint32_t end = 0;    // the code word after its code (its RET, dispatches, locals' zeroing)
   int32_t frame_words = 2;
   uint32_t params = 0;
   std::vector<FrameVar> vars;  // the parameters, then the locals

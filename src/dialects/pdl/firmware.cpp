@@ -16,10 +16,14 @@ namespace {
 constexpr std::string_view kProgramRecord = "program.pdi";
 constexpr std::string_view kDialectName = "pdl";
 
+// A procedure is a VM routine whose frame takes 2 words of the task's stack at least, so a task
+// has no more VM frames than its entry's and 128 procedures': the stack's own check (CallDepth,
+// pdl-drive.md's accounting) always comes before the VM's limits.
 vm::MachineConfig machine_config() {
   vm::MachineConfig c;
   c.threads = kTasks + 1;  // task 0 is the system's: it never runs user code
-  c.locals = 4 * kEntryLocals;
+  c.frames = 1 + static_cast<uint32_t>(kStackWords) / kMinFrameWords;
+  c.locals = c.frames * kEntryLocals;
   return c;
 }
 
@@ -160,7 +164,9 @@ std::string Firmware::start(std::string_view entry) {
   const bytecode::Image& image = program_->image();
   if (!entry.empty()) {
     const int r = image.find_routine(std::string(entry));
-    if (r < 0) return fmt::format("no label '{}' in the program", entry);
+    // A procedure's routine is no entry: it wants a caller's frame.
+    if (r < 0 || (r > 0 && image.routines[static_cast<size_t>(r)].kind == bytecode::RoutineKind::Function))
+      return fmt::format("no label '{}' in the program", entry);
     return start_task(1, static_cast<uint32_t>(r)) == 0 ? "" : "cannot start task 1";
   }
   if (!image.tasks.empty()) {

@@ -106,6 +106,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
     int32_t fp = 0;
   };
   std::vector<TaskFrame> walk_frames(uint32_t task) const;
+  bool walk_routine_frame(uint32_t pc, uint32_t line_pc, int32_t sp, int32_t fp, int32_t base, int32_t limit,
+                          std::vector<TaskFrame>& out) const;
   std::string frame_name(const TaskFrame& f) const;
 
   bool load_stored(std::string* error);

@@ -16,19 +16,25 @@ constexpr int32_t kTaskAddressUnit = 0x1000;   // &local of task t: 0x1000*t + w
 // The first word of task t's stack (t = 1..3) in the flat memory.
 constexpr int32_t stack_base(uint32_t task) { return kUserWords + static_cast<int32_t>(task - 1) * kStackWords; }
 
-// Locals of every entry routine; the first kEntryInputs are set by the firmware at start.
+// Locals of every entry routine; the first kEntryInputs are set by the firmware at start, or
+// by a procedure call for the procedure's routine (which has the first kFirstScratch and the
+// scratch words it uses).
 enum EntryLocal : uint32_t {
   kSp = 0,     // flat address of the next free stack word
   kBase = 1,   // flat address of the stack's first word
   kLimit = 2,  // one past its last word
   kBias = 3,   // 0x1000*t - base: flat + bias is a local's address as a program sees it
-  kFp = 4,     // flat address of the current procedure's frame
+  kFp = 4,     // flat address of the current procedure's frame (its first reserved word)
   kEntryInputs = 5,
   kRetId = 5,   // the return site a ret or a procedure's end goes back to
   kGotoN = 6,   // the slot offset of an indirect goto
   kFirstScratch = 7,
   kEntryLocals = 16,
 };
+
+// A procedure's frame: a return id's and a saved fp's words (reserved, pdl-drive.md), then its
+// parameters and locals.
+constexpr uint32_t kMinFrameWords = 2;
 
 constexpr uint32_t kMaxTasksNumber = 3;
 constexpr uint32_t kPdlCodeBytes = 32 * 1024;
