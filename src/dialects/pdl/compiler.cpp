@@ -366,9 +366,14 @@ void Compiler::procedure() {
   scratch_high_ = kFirstScratch;
   proc_end_ = code_.new_label();
   // The caller checked the whole frame's room, stored the arguments and called with the stack
-  // registers of the frame (compiler_commands.cpp, proc_call).
+  // registers of the frame (compiler_commands.cpp, proc_call). The routine zeroes the locals
+  // declared first, where they usually are, then runs the body.
   code_.bind(proc.entry);
   const auto params_words = static_cast<uint32_t>(frame_words_);
+  while (at_op(";") || (at_op("#") && (at_word("long", 1) || at_word("short", 1) || at_word("float", 1))))
+    command(1, true);
+  const auto first_words = static_cast<uint32_t>(frame_words_) - params_words;
+  emit_locals_zeroing(params_words, first_words);
   statement_list(1, true);
   if (accept_word("end")) {
     begin_command(1);
@@ -381,14 +386,15 @@ void Compiler::procedure() {
   code_.emit(Op::RET);
   if (dispatchers_.count(scope_)) emit_return_dispatch(scope_);
   emit_indirect_stubs(scope_);
-  // The locals start at 0 (their count is known only now, so the routine starts here and jumps
-  // to the body; a procedure without locals starts at its body).
-  const uint32_t locals_words = static_cast<uint32_t>(frame_words_) - params_words;
+  // Locals declared further on start at 0 too: the routine starts here for them, then zeroes
+  // the first ones and runs the body.
+  const uint32_t later_words = static_cast<uint32_t>(frame_words_) - params_words - first_words;
   proc.start = proc.entry;
-  if (locals_words > 0) {
+  if (later_words > 0) {
     proc.start = code_.new_label();
     code_.bind(proc.start);
-    emit_locals_zeroing(params_words, locals_words, proc.entry);
+    emit_locals_zeroing(params_words + first_words, later_words);
+    code_.emit_to(Op::JMP, proc.entry);
   }
   proc.frame_words = frame_words_;
   for (uint32_t at_word : proc.frame_patches)
@@ -431,9 +437,8 @@ Proc& Compiler::proc_named(const std::string& name, const std::vector<Param>& pa
   return proc;
 }
 
-// Words first..first+words-1 of the frame to 0, then on to the body: a store each for a few, a
-// loop for more.
-void Compiler::emit_locals_zeroing(uint32_t first, uint32_t words, CodeBuilder::Label body) {
+// Words first..first+words-1 of the frame to 0: a store each for a few, a loop for more.
+void Compiler::emit_locals_zeroing(uint32_t first, uint32_t words) {
   constexpr uint32_t kUnrolled = 4;
   if (words <= kUnrolled) {
     for (uint32_t i = 0; i < words; ++i) {
@@ -443,7 +448,6 @@ void Compiler::emit_locals_zeroing(uint32_t first, uint32_t words, CodeBuilder::
       push_int(0);
       code_.emit(Op::STM);
     }
-    code_.emit_to(Op::JMP, body);
     return;
   }
   const uint32_t n = kFirstScratch;  // before the body's first command: scratch is free
@@ -462,7 +466,6 @@ void Compiler::emit_locals_zeroing(uint32_t first, uint32_t words, CodeBuilder::
   code_.emit(Op::STM);
   code_.emit(Op::LDL, n);
   code_.emit_to(Op::JNZ, top);
-  code_.emit_to(Op::JMP, body);
 }
 
 void Compiler::finish_scope() {

@@ -156,7 +156,7 @@ class Compiler {
   void emit_indirect_stubs(int scope);
   CodeBuilder::Label dispatch_label(int scope);
   Proc& proc_named(const std::string& name, const std::vector<Param>& params, size_t offset);
-  void emit_locals_zeroing(uint32_t first, uint32_t words, CodeBuilder::Label body);
+  void emit_locals_zeroing(uint32_t first, uint32_t words);
   void emit_dispatch(uint32_t local, const std::vector<std::pair<int32_t, CodeBuilder::Label>>& cases);
   LabelInfo& label_named(const std::string& name, int scope, size_t offset);
   int routine_for_label(const std::string& name, size_t offset);
@@ -213,13 +213,14 @@ class Compiler {
   void emit_store(const Place& p);
   void emit_post_increments(const Place& p);
   void emit_increment(const Var& v, int32_t by);
-  void emit_translate();                 // logical address -> flat (checked)
+  void emit_translate(bool float_address);  // logical address -> flat (checked)
+  void emit_general_translate();
   void emit_user_check();                // flat address in user memory (checked)
   bool logical_address(bool for_store);  // pushes a memory place's logical address
   void read_var(const Var& v);
   const Var* find_var(const std::string& name) const;
   void memory_block_assignment(size_t lhs_start);
-  void emit_copy_loop(bool set, uint32_t dst, uint32_t src, uint32_t n);
+  void emit_copy_loop(bool set, bool is_float, uint32_t dst, uint32_t src, uint32_t n);
   void emit_phase_yields(uint32_t n_local, int32_t per_phase);
   Ty memory_reduction(const std::string& name, size_t at, CodeBuilder::Label skip, bool has_prefix);
   bool has_prefix(const Place& p) const;

@@ -82,8 +82,37 @@ void Compiler::emit_user_check() {
 
 // A program's address (bit 29 ignored) to the flat memory: 0..399 as it is, 0x1000*t + k
 // (t = 1..3, k < 256) into task t's stack, 400 + 256*(t-1) + k; anything else is BadAddress.
-// The stack's case (the pointers to a procedure's locals) goes straight through.
-void Compiler::emit_translate() {
+// The two common cases first, each one unsigned comparison: the user memory, then the task's own
+// stack, where the address less the task's bias is the flat one (a pointer to a caller's local).
+// A float's address (float_address) has its bit 29 cleared first; any other comes through the
+// general translation.
+void Compiler::emit_translate(bool float_address) {
+  CodeBuilder::Label done = code_.new_label();
+  if (float_address) {
+    push_int(~kFloatAddressBit);
+    code_.emit(Op::ANDI);
+  }
+  code_.emit(Op::DUP);
+  push_int(kUserWords);
+  code_.emit(Op::CMPU, kCmpLess);
+  code_.emit_to(Op::JNZ, done);
+  code_.emit(Op::LDL, kBias);
+  code_.emit(Op::SUBI);
+  code_.emit(Op::DUP);
+  code_.emit(Op::LDL, kBase);
+  code_.emit(Op::SUBI);
+  push_int(kStackWords);
+  code_.emit(Op::CMPU, kCmpLess);
+  code_.emit_to(Op::JNZ, done);
+  code_.emit(Op::LDL, kBias);
+  code_.emit(Op::ADDI);
+  emit_general_translate();
+  code_.bind(done);
+}
+
+// The translation of any address: another task's stack, bit 29 set where the type did not say
+// so, or BadAddress.
+void Compiler::emit_general_translate() {
   push_int(~kFloatAddressBit);
   code_.emit(Op::ANDI);
   CodeBuilder::Label stack = code_.new_label(), bad = code_.new_label(), done = code_.new_label();
@@ -181,7 +210,7 @@ std::optional<Place> Compiler::parse_place(bool for_store) {
   Place p;
   if (at_op("*")) {
     if (!logical_address(for_store)) return std::nullopt;
-    emit_translate();
+    emit_translate(address_float_);
     p.form = Place::Form::Memory;
     p.type = address_float_ ? Ty::Float : Ty::Int;
     return p;
@@ -427,7 +456,7 @@ void Compiler::memory_block_assignment(size_t lhs_start) {
     code_.emit(Op::LDL, d);
     push_int(i);
     code_.emit(Op::ADDI);
-    emit_translate();
+    emit_translate(dest_float);
   };
   if (accept_op("{")) {
     int32_t k = 0;
@@ -482,7 +511,7 @@ void Compiler::memory_block_assignment(size_t lhs_start) {
     int_operand(expr(), f.offset);
     code_.emit(Op::STL, n);
     expect_op(")");
-    emit_copy_loop(set, d, s, n);
+    emit_copy_loop(set, dest_float, d, s, n);
     emit_phase_yields(n, set ? 40 : 20);
     release(2);
   }
@@ -491,7 +520,7 @@ void Compiler::memory_block_assignment(size_t lhs_start) {
   end_line();
 }
 
-void Compiler::emit_copy_loop(bool set, uint32_t d, uint32_t s, uint32_t n) {
+void Compiler::emit_copy_loop(bool set, bool is_float, uint32_t d, uint32_t s, uint32_t n) {
   const uint32_t i = scratch();
   push_int(0);
   code_.emit(Op::STL, i);
@@ -503,12 +532,12 @@ void Compiler::emit_copy_loop(bool set, uint32_t d, uint32_t s, uint32_t n) {
   code_.emit(Op::LDL, d);
   code_.emit(Op::LDL, i);
   code_.emit(Op::ADDI);
-  emit_translate();
+  emit_translate(is_float);
   code_.emit(Op::LDL, s);
   if (!set) {
     code_.emit(Op::LDL, i);
     code_.emit(Op::ADDI);
-    emit_translate();
+    emit_translate(is_float);
     code_.emit(Op::LDM);
   }
   code_.emit(Op::STM);
@@ -558,7 +587,7 @@ Ty Compiler::memory_reduction(const std::string& raw, size_t at, CodeBuilder::La
   push_int(0);
   code_.emit_to(Op::JLEI, skip);
   code_.emit(Op::LDL, s);
-  emit_translate();
+  emit_translate(f);
   code_.emit(Op::LDM);
   code_.emit(Op::STL, acc);
   push_int(1);
@@ -572,7 +601,7 @@ Ty Compiler::memory_reduction(const std::string& raw, size_t at, CodeBuilder::La
   code_.emit(Op::LDL, s);
   code_.emit(Op::LDL, i);
   code_.emit(Op::ADDI);
-  emit_translate();
+  emit_translate(f);
   code_.emit(Op::LDM);
   if (sum) {
     code_.emit(f ? Op::ADDF : Op::ADDI);
