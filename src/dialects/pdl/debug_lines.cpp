@@ -14,7 +14,7 @@ namespace {
 using dialect::Answer;
 
 constexpr int32_t kNotHeld = 13;  // step/t of a task that is not held
-constexpr uint32_t kMaxGlueInstructions = 10'000;  // a prologue zeroes at most 256 locals
+constexpr uint32_t kMaxGlueInstructions = 10'000;  // a procedure zeroes at most 256 locals
 
 bool held(vm::ThreadStatus s) { return s == vm::ThreadStatus::Halted || s == vm::ThreadStatus::AtBreakpoint; }
 
@@ -60,7 +60,8 @@ bool Firmware::debug_line(std::string_view text, std::vector<Answer>& answers) {
   }
   // Its next command, as its turn would run it (up to the command's end or a wait inside it).
   // Then on to the next command's start, through what joins commands without a command of its own
-  // (a procedure's prologue, a loop's jump back, the return dispatch).
+  // (a procedure call's CALL and the zeroing of its locals, a loop's jump back, the return
+  // dispatch).
   m.resume(task);
   vm::SliceResult r = m.run_slice(task, vm::Budget::of_lines(1));
   const std::vector<bytecode::LineEntry>& lines = program_->image().lines;
