@@ -3,6 +3,7 @@
 // every place control can arrive at survives; then every such place is relocated.
 #include "bytecode/peephole.h"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <vector>
@@ -83,16 +84,19 @@ bool skippable_eol(const Instr& at_target, const std::vector<bool>& line_start) 
   return at_target.op == Op::EOL && !line_start[at_target.pc];
 }
 
+// The index of the instruction that starts at `pc`, or in.size().
+size_t index_at(const std::vector<Instr>& in, uint32_t pc) {
+  const auto at = std::lower_bound(in.begin(), in.end(), pc,
+                                   [](const Instr& i, uint32_t p) { return i.pc < p; });
+  return at != in.end() && at->pc == pc ? static_cast<size_t>(at - in.begin()) : in.size();
+}
+
 void mark_after_target_eols(const std::vector<Instr>& in, const std::vector<bool>& line_start,
                             std::vector<bool>& boundary) {
-  std::vector<size_t> index_of(boundary.size(), SIZE_MAX);
-  for (size_t k = 0; k < in.size(); ++k) index_of[in[k].pc] = k;
   for (size_t k = 0; k + 1 < in.size(); ++k) {
     if (op_info(in[k].op).flow != Flow::Branch || in[k + 1].op != Op::EOL) continue;
-    const uint32_t target = in[k].a;
-    if (target >= index_of.size() || index_of[target] == SIZE_MAX) continue;
-    const size_t t = index_of[target];
-    if (skippable_eol(in[t], line_start) && t + 1 < in.size()) boundary[in[t + 1].pc] = true;
+    const size_t t = index_at(in, in[k].a);
+    if (t + 1 < in.size() && skippable_eol(in[t], line_start)) boundary[in[t + 1].pc] = true;
   }
 }
 
@@ -132,21 +136,13 @@ class Fuser {
   void ending_line_branch(size_t i, std::pair<Instr, size_t>& fused) const {
     const std::optional<Op> form = ending_line_form(fused.first.op);
     if (!form || !free(i, fused.second) || at(i + fused.second).op != Op::EOL) return;
-    const size_t target = index_at(fused.first.a);
+    const size_t target = index_at(in_, fused.first.a);
     if (target + 1 >= in_.size() || !skippable_eol(at(target), line_start_) ||
         !boundary_[at(target + 1).pc])
       return;
     fused.first.op = *form;
     fused.first.a = at(target + 1).pc;
     ++fused.second;
-  }
-  size_t index_at(uint32_t pc) const {
-    size_t low = 0, high = in_.size();
-    while (low < high) {
-      const size_t mid = (low + high) / 2;
-      if (in_[mid].pc < pc) low = mid + 1; else high = mid;
-    }
-    return low < in_.size() && in_[low].pc == pc ? low : in_.size();
   }
 
   // Instruction i + k exists and control cannot arrive at it except from i + k - 1.

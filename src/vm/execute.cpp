@@ -77,6 +77,7 @@ constexpr bool holds(uint32_t how, uint32_t outcome) {
 inline uint32_t float_outcome(float a, float b) {
   return a < b ? 0u : a == b ? 1u : a > b ? 2u : 3u;
 }
+inline uint32_t int_outcome(int32_t a, int32_t b) { return a < b ? 0u : a == b ? 1u : 2u; }
 static_assert(static_cast<int>(Op::JGEGK) - static_cast<int>(Op::JEQGK) == 5 &&
                   static_cast<int>(Op::JNGEFGK) - static_cast<int>(Op::JNEQFGK) == 5 &&
                   static_cast<int>(Op::JGEGKEOL) - static_cast<int>(Op::JEQGKEOL) == 5 &&
@@ -793,10 +794,10 @@ op_JLEGK:
 op_JGTGK:
 op_JGEGK: {
   const uint32_t pair = B();
-  const int32_t a = GLOBAL(bytecode::packed_first(pair)).i;
-  const int32_t b = constants_[bytecode::packed_second(pair)].i;
+  const uint32_t outcome =
+      int_outcome(GLOBAL(bytecode::packed_first(pair)).i, constants_[bytecode::packed_second(pair)].i);
   const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JEQGK);
-  if (holds(how, a < b ? 0u : a == b ? 1u : 2u)) JUMP_TO(code + A()); else ip += 2;
+  if (holds(how, outcome)) JUMP_TO(code + A()); else ip += 2;
   DISPATCH();
 }
 // "Jump unless", as the float forms on locals: NaN compares false and falls through.
@@ -835,10 +836,10 @@ op_JLEGKEOL:
 op_JGTGKEOL:
 op_JGEGKEOL: {
   const uint32_t pair = B();
-  const int32_t a = GLOBAL(bytecode::packed_first(pair)).i;
-  const int32_t b = constants_[bytecode::packed_second(pair)].i;
+  const uint32_t outcome =
+      int_outcome(GLOBAL(bytecode::packed_first(pair)).i, constants_[bytecode::packed_second(pair)].i);
   const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JEQGKEOL);
-  BRANCH_ENDING_LINE(holds(how, a < b ? 0u : a == b ? 1u : 2u), 2)
+  BRANCH_ENDING_LINE(holds(how, outcome), 2)
 }
 op_JNEQFGKEOL:
 op_JNNEFGKEOL:
