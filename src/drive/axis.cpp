@@ -634,7 +634,7 @@ uint32_t Axis::step() {
     // feedback so that PE stays 0 and enabling does not jump.
     motor_state_.current_a = 0.0;
     const double back_emf_v = motor_.torque_constant_nm_per_a *
-                              motor_state_.velocity_counts_per_s / motor_step().counts_per_rad;
+                              motor_state_.velocity_counts_per_s * motor_step().rad_per_count;
     step_motor(motor_, motor_step(), motor_state_, back_emf_v);
     motor_state_.current_a = 0.0;
     raw_ = {motor_state_.position_counts, 0.0, 0.0};

@@ -18,6 +18,7 @@ MotorStep motor_step_constants(const MotorModel& model, double dt_s) {
   step.dt_s = dt_s;
   step.winding_decay = std::exp(-dt_s * model.resistance_ohm / model.inductance_h);
   step.counts_per_rad = model.counts_per_rad();
+  step.rad_per_count = 1.0 / step.counts_per_rad;
   // 1 - decay without cancellation: -expm1(-dt R / L).
   const double rise = -std::expm1(-dt_s * model.resistance_ohm / model.inductance_h);
   step.amps_per_volt = rise / model.resistance_ohm;
