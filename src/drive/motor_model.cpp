@@ -24,6 +24,9 @@ MotorStep motor_step_constants(const MotorModel& model, double dt_s) {
   step.amps_per_volt = rise / model.resistance_ohm;
   step.amps_per_counts_per_s = model.torque_constant_nm_per_a * rise / model.resistance_ohm / step.counts_per_rad;
   step.velocity_step_per_nm = step.counts_per_rad / model.inertia_kg_m2 * dt_s;
+  step.velocity_step_per_a = model.torque_constant_nm_per_a * step.velocity_step_per_nm;
+  step.velocity_step_per_v = step.amps_per_volt * step.velocity_step_per_a;
+  step.position_step_per_v = step.velocity_step_per_v * dt_s;
   return step;
 }
 

@@ -43,6 +43,9 @@ struct MotorStep {
   double amps_per_volt = 0.0;             // (1 - decay) / R: the current a held voltage adds
   double amps_per_counts_per_s = 0.0;     // Ke (1 - decay) / (R counts_per_rad): back-EMF's share
   double velocity_step_per_nm = 0.0;      // counts_per_rad / J * dt
+  double velocity_step_per_a = 0.0;       // Kt velocity_step_per_nm: what a cycle's current adds
+  double velocity_step_per_v = 0.0;       // amps_per_volt velocity_step_per_a
+  double position_step_per_v = 0.0;       // velocity_step_per_v dt
 };
 MotorStep motor_step_constants(const MotorModel& model, double dt_s);
 
@@ -66,23 +69,24 @@ void step_motor(const MotorModel& model, MotorState& state, double voltage_v, do
 // The same with the constants of motor_step_constants(model, dt_s). Inline: it ends every servo
 // cycle's chain of dependent operations (axis.cpp).
 inline void step_motor(const MotorModel& model, const MotorStep& step, MotorState& state, double voltage_v) {
-  const double v = std::clamp(voltage_v, -model.bus_voltage_v, model.bus_voltage_v);
+  const double u = std::clamp(voltage_v, -model.bus_voltage_v, model.bus_voltage_v);
   const double omega_rad_per_s = state.velocity_counts_per_s * step.rad_per_count;
-  // di/dt = (v - R i - Ke w) / L, solved exactly for a held voltage and speed:
-  // i' = i decay + (v - Ke w)(1 - decay)/R.
+  // di/dt = (u - R i - Ke w) / L, solved exactly for a held voltage u and speed w:
+  // i' = i decay + (u - Ke w)(1 - decay)/R.
   const double held_a = state.current_a * step.winding_decay -
                         state.velocity_counts_per_s * step.amps_per_counts_per_s;
-  state.current_a = v * step.amps_per_volt + held_a;
+  state.current_a = u * step.amps_per_volt + held_a;
 
   // Coulomb friction is smoothed near zero speed (over 0.05 rad/s, smooth_sign) so a stopped axis
   // does not chatter between the two friction signs.
   const double friction_nm = model.viscous_friction_nm_s_per_rad * omega_rad_per_s +
                              model.coulomb_friction_nm * smooth_sign(omega_rad_per_s * (1.0 / kFrictionSmoothing_rad_per_s));
-  // v' = v + (Kt i' - friction) counts_per_rad / J dt, the friction's share first.
+  // v' = v + (Kt i' - friction) counts_per_rad / J dt and x' = x + v' dt, written out in u: the
+  // voltage meets one multiply-add on its way to each, the rest is ready before it is.
   const double coasting = state.velocity_counts_per_s - friction_nm * step.velocity_step_per_nm;
-  state.velocity_counts_per_s =
-      state.current_a * (model.torque_constant_nm_per_a * step.velocity_step_per_nm) + coasting;
-  state.position_counts += state.velocity_counts_per_s * step.dt_s;
+  const double velocity_without_voltage = held_a * step.velocity_step_per_a + coasting;
+  state.velocity_counts_per_s = u * step.velocity_step_per_v + velocity_without_voltage;
+  state.position_counts = u * step.position_step_per_v + (state.position_counts + velocity_without_voltage * step.dt_s);
 }
 
 }  // namespace uprog::drive

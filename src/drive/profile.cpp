@@ -122,21 +122,4 @@ Profile plan_stop(double start_position_counts, double start_velocity_counts_per
   return p;
 }
 
-ProfileSample sample(const Profile& profile, double t_s) {
-  // The time left is reduced segment by segment, as final_state() adds them up.
-  double remaining = std::max(t_s, 0.0);
-  for (int i = 0; i < profile.segment_count; ++i) {
-    const Segment& seg = profile.segments[static_cast<size_t>(i)];
-    if (remaining < seg.duration_s) {
-      const double vel = seg.start_velocity_counts_per_s;
-      return {seg.start_position_counts + (vel * remaining + 0.5 * seg.accel_counts_per_s2 * remaining * remaining),
-              vel + seg.accel_counts_per_s2 * remaining, seg.accel_counts_per_s2};
-    }
-    remaining -= seg.duration_s;
-  }
-  const ProfileSample end = profile.final_state();
-  if (profile.has_target) return end;
-  return {end.position_counts + end.velocity_counts_per_s * remaining, end.velocity_counts_per_s, 0.0};
-}
-
 }  // namespace uprog::drive

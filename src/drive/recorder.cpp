@@ -287,17 +287,15 @@ void Recorder::write_row(uint32_t* out, const Axis& axis) const {
 // After the trigger the rows follow the ring in order; before it, the ring's slot wraps without
 // a division (the servo cycle's cost, bench/micro).
 void Recorder::take_sample(const Axis& axis) {
-  if (state_ == RecorderState::kTriggered) {
-    write_row(memory_.data() + size_t{pre_ + post_taken_} * row_words_, axis);
-    if (++post_taken_ == post_length_) state_ = RecorderState::kDone;
-    return;
-  }
+  if (state_ == RecorderState::kTriggered) return take_sample_after_trigger(axis);
   write_row(memory_.data() + size_t{ring_slot_} * row_words_, axis);
   if (++ring_slot_ == pre_) ring_slot_ = 0;
   if (++pre_taken_ == pre_) state_ = RecorderState::kWaiting;
 }
 
-void Recorder::on_cycle(const Axis& axis) {
+// Armed or waiting: the trigger is judged every cycle, and the cycle it fires in may be the
+// trigger sample's.
+void Recorder::on_cycle_before_trigger(const Axis& axis) {
   if (!fired_ && trigger_fired(axis)) {
     fired_ = true;
     if (pre_ == 0) phase_ = 0;  // no earlier samples to keep in step with: the trigger cycle is one

@@ -138,7 +138,16 @@ class Recorder {
   // A BG was performed; the next cycle sees it.
   void on_begin() { begun_ = true; }
   // After each servo step while active(): evaluate the trigger, take a sample every gap cycles.
-  void on_cycle(const Axis& axis);
+  // Inline: after the trigger there is nothing to judge, and a cycle is a sample or a count.
+  void on_cycle(const Axis& axis) {
+    if (state_ != RecorderState::kTriggered) return on_cycle_before_trigger(axis);
+    if (phase_ != 0) {
+      --phase_;
+      return;
+    }
+    phase_ = settings_.gap_cycles - 1;
+    take_sample_after_trigger(axis);
+  }
 
   // What was recorded, in time order, once triggered (partly, while still recording); nullopt
   // before the trigger.
@@ -151,7 +160,12 @@ class Recorder {
   double read_value(const Channel& channel, const Axis& axis) const;
   bool trigger_fired(const Axis& axis);
   void plan_sampling();
+  void on_cycle_before_trigger(const Axis& axis);
   void take_sample(const Axis& axis);
+  void take_sample_after_trigger(const Axis& axis) {  // the rows follow the ring in order
+    write_row(memory_.data() + size_t{pre_ + post_taken_} * row_words_, axis);
+    if (++post_taken_ == post_length_) state_ = RecorderState::kDone;
+  }
   void write_row(uint32_t* out, const Axis& axis) const;  // one sample of every channel
 
   RecorderSettings settings_;
