@@ -20,6 +20,14 @@ constexpr uint32_t pack_local_imm(uint32_t local, int32_t imm) {
 constexpr uint32_t packed_first(uint32_t b) { return b & 0xFFFFu; }
 constexpr uint32_t packed_second(uint32_t b) { return b >> 16; }
 constexpr int32_t packed_imm(uint32_t b) { return static_cast<int32_t>(b) >> 16; }
+// UNTILCK's B: the command's index (0..255) in bits 0-7, the comparison (0..5: == != < <= > >=)
+// in bits 8-11, the immediate (-2^19..2^19-1) in bits 12-31.
+constexpr uint32_t pack_command_test(uint32_t index, uint32_t how, int32_t imm) {
+  return index | (how << 8) | (static_cast<uint32_t>(imm) << 12);
+}
+constexpr uint32_t command_test_index(uint32_t b) { return b & 0xFFu; }
+constexpr uint32_t command_test_how(uint32_t b) { return (b >> 8) & 0xFu; }
+constexpr int32_t command_test_imm(uint32_t b) { return static_cast<int32_t>(b) >> 12; }
 enum class Flow : uint8_t { Next, Jump, Branch, Call, Stop };
 
 constexpr int kVar = -1;  // a stack effect that the operands decide

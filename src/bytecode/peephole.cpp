@@ -125,7 +125,7 @@ class Fuser {
                    &Fuser::compare_global, &Fuser::global_constant, &Fuser::arithmetic_globals,
                    &Fuser::two_globals, &Fuser::store_global_constant, &Fuser::store_global_eol,
                    &Fuser::compare_branch, &Fuser::test_zero, &Fuser::line_ending_jump,
-                   &Fuser::eol_jump}) {
+                   &Fuser::eol_jump, &Fuser::wait_for_command}) {
       if (auto r = (this->*m)(i)) return r;
     }
     return std::nullopt;
@@ -397,6 +397,31 @@ class Fuser {
     if (first.op == Op::INCL && first.a <= 0xFFFF && fits_int16(step))
       return std::pair{Instr{first.pc, Op::INCLJEOL, target, pack_local_imm(first.a, step)}, size_t{3}};
     return std::nullopt;
+  }
+
+  // CMDGET c n; [PUSHI k; <int compare>;] JZ|JNZ T; YIELD; JMP back to the CMDGET, with T
+  // right after the JMP: a wait for the command, as UNTILCK, whose test holds where the jump to
+  // T was taken (without a comparison the value is tested against 0).
+  std::optional<std::pair<Instr, size_t>> wait_for_command(size_t i) const {
+    if (at(i).op != Op::CMDGET || at(i).b > 0xFFu) return std::nullopt;
+    size_t n = 1;
+    uint32_t how = 1;  // !=
+    int32_t k = 0;
+    if (free(i, 2) && at(i + 1).op == Op::PUSHI) {
+      const auto f = std::find_if(std::begin(kIntCompares), std::end(kIntCompares),
+                                  [&](const CompareFamily& c) { return c.compare == at(i + 2).op; });
+      k = imm_of(at(i + 1));
+      if (f == std::end(kIntCompares) || k < -(1 << 19) || k >= (1 << 19)) return std::nullopt;
+      how = static_cast<uint32_t>(f - std::begin(kIntCompares));
+      n = 3;
+    }
+    if (!free(i, n + 2) || !is_branch(at(i + n).op) || at(i + n + 1).op != Op::YIELD ||
+        at(i + n + 2).op != Op::JMP || at(i + n + 2).a != at(i).pc || i + n + 3 >= in_.size() ||
+        at(i + n).a != at(i + n + 3).pc)
+      return std::nullopt;
+    static constexpr uint32_t kNegated[] = {1, 0, 5, 4, 3, 2};  // == != < <= > >= when it fails
+    if (at(i + n).op == Op::JZ) how = kNegated[how];
+    return std::pair{Instr{at(i).pc, Op::UNTILCK, at(i).a, pack_command_test(at(i).b, how, k)}, n + 3};
   }
 
   // EOL; JMP T

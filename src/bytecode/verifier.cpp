@@ -105,6 +105,8 @@ class Verifier {
       }
       if ((word_op(word) == Op::CMPD || word_op(word) == Op::CMPU) && a > 5)
         return fail(VerifyError::BadOperand, pc);
+      if (word_op(word) == Op::UNTILCK && command_test_how(image_.code[pc + 1]) > 5)
+        return fail(VerifyError::BadOperand, pc);
       if (info.b == Operand::Const && image_.code[pc + 1] >= image_.constants.size())
         return fail(VerifyError::BadConstant, pc);
       if (info.b == Operand::LocalConst &&

@@ -85,6 +85,11 @@ static_assert(static_cast<int>(Op::JGEGK) - static_cast<int>(Op::JEQGK) == 5 &&
                   static_cast<int>(Op::JNGEFEOL) - static_cast<int>(Op::JNEQFEOL) == 5,
               "a family of fused comparisons is six opcodes in the order == != < <= > >=");
 
+// UNTILCK's test of the command's value (B: opcodes.h, pack_command_test).
+bool command_test_met(uint32_t b, Value v) {
+  return holds(bytecode::command_test_how(b), int_outcome(v.i, bytecode::command_test_imm(b)));
+}
+
 }  // namespace
 
 SliceResult Machine::run_slice(uint32_t thread, Budget budget) {
@@ -101,7 +106,10 @@ SliceResult Machine::run_slice(uint32_t thread, Budget budget) {
       break;
     case ThreadStatus::Running: break;
   }
-  if (!t.step_over) return execute(t, budget);
+  if (!t.step_over) {
+    if (bytecode::word_op(code_[t.pc]) == Op::UNTILCK) return test_then_execute(t, budget);
+    return execute(t, budget);
+  }
 
   // Resumed at a breakpoint: run the original instruction once, then re-arm the trap.
   t.step_over = false;
@@ -119,6 +127,27 @@ SliceResult Machine::run_slice(uint32_t thread, Budget budget) {
   SliceResult more = execute(t, rest);
   more.executed += first.executed;
   more.lines += first.lines;
+  return more;
+}
+
+// A thread waiting at UNTILCK (the usual servo cycle of a program waiting for its move): the
+// instruction's test here, and the execute loop only once it is met. A refused read is left to
+// the loop, which raises it.
+SliceResult Machine::test_then_execute(Thread& t, Budget budget) {
+  const uint32_t word = code_[t.pc];
+  const uint32_t b = code_[t.pc + 1];
+  Value v;
+  const CommandStatus status =
+      host_->read(bytecode::word_a(word), static_cast<int32_t>(bytecode::command_test_index(b)), v);
+  if (status != kCommandOk && status != kCommandEndSlice) return execute(t, budget);
+  const uint64_t counted = budget.instructions != 0 ? 1 : 0;
+  if (!command_test_met(b, v)) return {SliceEnd::Yielded, counted};
+  t.pc += 2;
+  if (status == kCommandEndSlice) return {SliceEnd::Yielded, counted};
+  if (budget.instructions == 1) return {SliceEnd::BudgetSpent, 1};
+  budget.instructions -= counted;
+  SliceResult more = execute(t, budget);
+  more.executed += counted;
   return more;
 }
 
@@ -889,6 +918,17 @@ op_MULFGG: GLOBALS_ARITH(float, f, a * b)
 op_CMDGET: {
   Value v;
   HOST_CALL(host_->read(A(), static_cast<int32_t>(B()), v), (*sp++ = v, ip += 2))
+}
+op_UNTILCK: {
+  Value v;
+  detail = host_->read(A(), static_cast<int32_t>(bytecode::command_test_index(B())), v);
+  if (detail != kCommandOk && detail != kCommandEndSlice) FAIL(RunError::CommandRefused);
+  const bool met = command_test_met(B(), v);
+  if (met) ip += 2;
+  if (met && detail == kCommandOk) DISPATCH();
+  detail = 0;
+  end = SliceEnd::Yielded;  // not yet: here again in the next slice
+  goto stop;
 }
 op_CMDGETX: {
   Value v;

@@ -189,6 +189,7 @@ class Machine {
     ThreadStatus status_before_halt;
   };
 
+  SliceResult test_then_execute(Thread& t, Budget budget);
   SliceResult execute(Thread& t, Budget budget);
   template <bool kCounted>
   SliceResult execute_loop(Thread& t, Budget budget);

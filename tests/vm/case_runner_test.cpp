@@ -9,6 +9,7 @@
 //   ; expect NAME = VALUE         a global (NAME[i] for an element); VALUE int, or float with '.'
 //   ; expect clock = N            the virtual time at the end, in µs
 //   ; expect runs = N             how often the host's action command ran
+//   ; expect counter reads = N    how often command 5, the host's read counter, was read
 //   ; expect action index = N     the index of the last action command
 //   ; expect slices = N           how many slices it took to the end
 //   ; expect messages = N         how many messages the program sent
@@ -99,6 +100,8 @@ TEST_P(VmCase, RunsAsExpected) {
       EXPECT_EQ(p.host.clock_us, std::stoul(m[1]));
     } else if (std::regex_match(line, m, std::regex(R"(; expect runs = (\d+)\s*)"))) {
       EXPECT_EQ(p.host.runs, std::stoi(m[1]));
+    } else if (std::regex_match(line, m, std::regex(R"(; expect counter reads = (\d+)\s*)"))) {
+      EXPECT_EQ(p.host.counter_reads, std::stoi(m[1]));
     } else if (std::regex_match(line, m, std::regex(R"(; expect action index = (-?\d+)\s*)"))) {
       EXPECT_EQ(p.host.action_index, std::stoi(m[1]));
     } else if (std::regex_match(line, m, std::regex(R"(; expect slices = (\d+)\s*)"))) {

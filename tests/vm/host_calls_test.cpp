@@ -126,5 +126,61 @@ main:
   EXPECT_EQ(p.host.runs, 0);
 }
 
+// UNTILCK under an instruction budget counts one instruction a test, and a met test at the start
+// of a slice with one instruction left spends it; a refused read stops the thread at the wait,
+// on arriving and at the start of a slice alike.
+const char* kWaitForCounter = R"(
+.global int "after" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  UNTILCK 5 17664   ; until command 5 (a read counter) >= 4
+  PUSHI 1
+  STG after
+  RET
+)";
+
+TEST(HostCalls, AWaitCountsOneInstructionATest) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(kWaitForCounter));
+  p.machine.start(0, 0);
+  for (int read = 1; read <= 3; ++read) {
+    const vm::SliceResult r = p.machine.run_slice(0, Budget::of_instructions(10));
+    EXPECT_EQ(r.end, SliceEnd::Yielded) << read;
+    EXPECT_EQ(r.executed, 1u) << read;
+    EXPECT_EQ(p.machine.pc(0), 0u) << read;
+  }
+  const vm::SliceResult met = p.machine.run_slice(0, Budget::of_instructions(1));
+  EXPECT_EQ(met.end, SliceEnd::BudgetSpent);
+  EXPECT_EQ(met.executed, 1u);
+  EXPECT_EQ(p.machine.pc(0), 2u);  // past the wait, not yet at PUSHI's effect
+  const vm::SliceResult rest = p.machine.run_slice(0, Budget::of_instructions(10));
+  EXPECT_EQ(rest.end, SliceEnd::Finished);
+  EXPECT_EQ(rest.executed, 3u);
+  EXPECT_EQ(p.host.counter_reads, 4);
+  EXPECT_EQ(p.global("after").i, 1);
+}
+
+TEST(HostCalls, ARefusedReadStopsAWait) {
+  for (const bool at_slice_start : {false, true}) {
+    LoadedProgram p;
+    ASSERT_TRUE(p.load(std::string(R"(
+.routine function "main" in=0 out=0 entry=main
+main:
+)") + (at_slice_start ? "  YIELD\n" : "") + R"(
+  UNTILCK 2 0       ; command 2 refuses every call with 21
+  RET
+)"));
+    p.machine.start(0, 0);
+    if (at_slice_start) {
+      EXPECT_EQ(p.machine.run_slice(0, Budget::unlimited()).end, SliceEnd::Yielded);
+    }
+    EXPECT_EQ(p.machine.run_slice(0, Budget::unlimited()).end, SliceEnd::Error) << at_slice_start;
+    EXPECT_EQ(p.machine.last_error(0), RunError::CommandRefused);
+    EXPECT_EQ(p.machine.error_detail(0), 21);
+    EXPECT_EQ(p.machine.pc(0), at_slice_start ? 1u : 0u);
+  }
+}
+
 }  // namespace
 }  // namespace uprog::test
+

@@ -684,5 +684,110 @@ inside2:
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
 }
 
+// The waits of `until (command <test>)`, with a comparison (kept, or negated for JZ) or a bare
+// test against 0, become UNTILCK; the plain and the fused program take the same slices and
+// read the command as often. Command 5 counts its reads; command 1's register 0 starts at 0.
+const char* kWaits = R"(
+.global int "reached" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+w1:
+  CMDGET 5 0
+  PUSHI 3
+  GEI
+  JNZ d1          ; on when the count >= 3
+  YIELD
+  JMP w1
+d1:
+  PUSHI 1
+  STG reached
+w2:
+  CMDGET 5 0
+  PUSHI 6
+  LTI
+  JZ d2           ; on when not count < 6
+  YIELD
+  JMP w2
+d2:
+  CMDGET 1 0
+  JZ d3           ; on when register 0 == 0
+  YIELD
+  JMP d2
+d3:
+  PUSHI 1
+  CMDSET 1 0
+w4:
+  CMDGET 1 0
+  JNZ d4          ; on when register 0 != 0
+  YIELD
+  JMP w4
+d4:
+  RET
+)";
+
+TEST(Peephole, WaitsOnACommandInPlace) {
+  const bytecode::Image image = optimized(kWaits);
+  const std::vector<Op> expected = {Op::UNTILCK, Op::PUSHI, Op::STG, Op::UNTILCK, Op::UNTILCK,
+                                    Op::PUSHI,   Op::CMDSET, Op::UNTILCK, Op::RET};
+  ASSERT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  std::vector<uint32_t> tests;
+  for (uint32_t pc = 0; pc < image.code.size(); pc += bytecode::op_length(bytecode::word_op(image.code[pc])))
+    if (bytecode::word_op(image.code[pc]) == Op::UNTILCK) tests.push_back(image.code[pc + 1]);
+  const std::vector<uint32_t> packed = {bytecode::pack_command_test(0, 5, 3),   // >= 3
+                                        bytecode::pack_command_test(0, 5, 6),   // >= 6
+                                        bytecode::pack_command_test(0, 0, 0),   // == 0
+                                        bytecode::pack_command_test(0, 1, 0)};  // != 0
+  EXPECT_EQ(tests, packed);
+
+  LoadedProgram plain;
+  ASSERT_TRUE(plain.load(kWaits));
+  LoadedProgram fused;
+  ASSERT_TRUE(fused.load(bytecode::disassemble(image)));
+  for (LoadedProgram* p : {&plain, &fused}) {
+    p->machine.start(0, 0);
+    EXPECT_EQ(p->run_to_end().end, vm::SliceEnd::Finished);
+  }
+  EXPECT_EQ(plain.slices, 5u);  // reads 1 2 3 | 4 | 5 | 6 and on
+  EXPECT_EQ(fused.slices, plain.slices);
+  EXPECT_EQ(plain.host.counter_reads, 6);
+  EXPECT_EQ(fused.host.counter_reads, plain.host.counter_reads);
+  EXPECT_EQ(fused.global("reached").i, 1);
+}
+
+// Not a wait: the JMP goes elsewhere, the branch's target is not after the JMP, an index beyond
+// 255, an immediate beyond 20 bits.
+TEST(Peephole, LeavesOtherLoopsAlone) {
+  const bytecode::Image image = optimized(R"(
+.routine function "main" in=0 out=0 entry=main
+main:
+  NOP
+w1:
+  CMDGET 1 0
+  JZ d1
+  YIELD
+  JMP main
+d1:
+  CMDGET 1 0
+  JZ w1
+  YIELD
+  JMP d1
+w3:
+  CMDGET 1 256
+  JZ d3
+  YIELD
+  JMP w3
+d3:
+  CMDGET 1 0
+  PUSHI 524288
+  EQI
+  JNZ d4
+  YIELD
+  JMP d3
+d4:
+  RET
+)");
+  for (const Op op : ops_of(image)) EXPECT_NE(op, Op::UNTILCK) << bytecode::disassemble(image);
+}
+
 }  // namespace
 }  // namespace uprog::test

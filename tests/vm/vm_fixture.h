@@ -13,7 +13,8 @@ namespace uprog::test {
 
 // Command 1: ten read/write registers. Command 2: always refused with code 21.
 // Command 3: an action that counts its runs, keeps its index and sums its arguments into
-// register 0. Command 4: as 1 and 3 together, but every call ends the slice.
+// register 0. Command 4: as 1 and 3 together, but every call ends the slice. Command 5: a
+// counter of its reads, read-only: the n-th read (at any index) gives n.
 // The first kKeptMessages messages are kept (without allocating: the VM's no-allocation test
 // runs through this host), all are counted, each answered with message_status.
 class ScriptedHost final : public vm::Host {
@@ -31,6 +32,10 @@ class ScriptedHost final : public vm::Host {
   };
 
   vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override {
+    if (command == 5) {
+      out = Value::of_int(++counter_reads);
+      return vm::kCommandOk;
+    }
     if ((command != 1 && command != 4) || index < 0 || index >= 10) return command == 2 ? 21 : 22;
     out = registers[index];
     return done(command);
@@ -61,6 +66,7 @@ class ScriptedHost final : public vm::Host {
   uint32_t now_us() override { return clock_us; }
 
   Value registers[10] = {};
+  int32_t counter_reads = 0;  // command 5
   int runs = 0;
   int32_t action_index = -1;
   Message messages[kKeptMessages];

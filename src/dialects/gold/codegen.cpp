@@ -123,16 +123,17 @@ class Gen {
     }
   }
 
-  // Jumps to `target` when the condition is false.
-  void branch_false(const Expr& e, CodeBuilder::Label target) {
+  // Jumps to `target` when the condition is false (JZ) or true (JNZ): an int is its own truth.
+  void branch(const Expr& e, Op jump, CodeBuilder::Label target) {
     value(e);
     switch (operand_kind(e.type)) {
       case Kind::Int: break;
       case Kind::Float: emit(Op::TRUTHF); break;
       default: emit(Op::D2F); emit(Op::TRUTHF); break;
     }
-    cb_.emit_to(Op::JZ, target);
+    cb_.emit_to(jump, target);
   }
+  void branch_false(const Expr& e, CodeBuilder::Label target) { branch(e, Op::JZ, target); }
 
   void value(const Expr& e) {
     switch (e.kind) {
@@ -440,8 +441,7 @@ class Gen {
         // Suspends the program, not the drive: poll once per slice (2.12.3).
         const auto top = cb_.new_label(), done = cb_.new_label();
         cb_.bind(top);
-        truth(*s.value);
-        cb_.emit_to(Op::JNZ, done);
+        branch(*s.value, Op::JNZ, done);  // `until (MS == 0)` becomes one UNTILCK (peephole)
         emit(Op::YIELD);
         cb_.emit_to(Op::JMP, top);
         cb_.bind(done);
