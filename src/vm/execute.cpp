@@ -106,12 +106,14 @@ SliceResult Machine::run_slice(uint32_t thread, Budget budget) {
       break;
     case ThreadStatus::Running: break;
   }
-  if (!t.step_over) {
-    if (bytecode::word_op(code_[t.pc]) == Op::UNTILCK) return test_then_execute(t, budget);
-    return execute(t, budget);
-  }
+  if (t.step_over) return step_over_breakpoint(t, budget);
+  if (bytecode::word_op(code_[t.pc]) == Op::UNTILCK) return test_then_execute(t, budget);
+  return execute(t, budget);
+}
 
-  // Resumed at a breakpoint: run the original instruction once, then re-arm the trap.
+// Resumed at a breakpoint: run the original instruction once, then re-arm the trap. Out of
+// line, so that the usual slice's entry saves no registers for it.
+[[gnu::noinline]] SliceResult Machine::step_over_breakpoint(Thread& t, Budget budget) {
   t.step_over = false;
   const Breakpoint* b = find_breakpoint(t.pc);
   if (b == nullptr) return execute(t, budget);

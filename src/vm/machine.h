@@ -189,6 +189,7 @@ class Machine {
     ThreadStatus status_before_halt;
   };
 
+  SliceResult step_over_breakpoint(Thread& t, Budget budget);
   SliceResult test_then_execute(Thread& t, Budget budget);
   SliceResult execute(Thread& t, Budget budget);
   template <bool kCounted>
