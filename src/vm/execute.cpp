@@ -92,7 +92,7 @@ bool command_test_met(uint32_t b, Value v) {
 
 }  // namespace
 
-SliceResult Machine::run_slice(uint32_t thread, Budget budget) {
+SliceResult Machine::run_slice(uint32_t thread, const Budget& budget) {
   if (!loaded_ || thread >= thread_count_) return {SliceEnd::NotRunning, 0};
   Thread& t = threads_[thread];
   switch (t.status) {
@@ -113,7 +113,7 @@ SliceResult Machine::run_slice(uint32_t thread, Budget budget) {
 
 // Resumed at a breakpoint: run the original instruction once, then re-arm the trap. Out of
 // line, so that the usual slice's entry saves no registers for it.
-[[gnu::noinline]] SliceResult Machine::step_over_breakpoint(Thread& t, Budget budget) {
+[[gnu::noinline]] SliceResult Machine::step_over_breakpoint(Thread& t, const Budget& budget) {
   t.step_over = false;
   const Breakpoint* b = find_breakpoint(t.pc);
   if (b == nullptr) return execute(t, budget);
@@ -135,7 +135,7 @@ SliceResult Machine::run_slice(uint32_t thread, Budget budget) {
 // A thread waiting at UNTILCK (the usual servo cycle of a program waiting for its move): the
 // instruction's test here, and the execute loop only once it is met. A refused read is left to
 // the loop, which raises it.
-SliceResult Machine::test_then_execute(Thread& t, Budget budget) {
+SliceResult Machine::test_then_execute(Thread& t, const Budget& budget) {
   const uint32_t word = code_[t.pc];
   const uint32_t b = code_[t.pc + 1];
   Value v;
@@ -147,20 +147,21 @@ SliceResult Machine::test_then_execute(Thread& t, Budget budget) {
   t.pc += 2;
   if (status == kCommandEndSlice) return {SliceEnd::Yielded, counted};
   if (budget.instructions == 1) return {SliceEnd::BudgetSpent, 1};
-  budget.instructions -= counted;
-  SliceResult more = execute(t, budget);
+  Budget rest = budget;
+  rest.instructions -= counted;
+  SliceResult more = execute(t, rest);
   more.executed += counted;
   return more;
 }
 
-SliceResult Machine::execute(Thread& t, Budget budget) {
+SliceResult Machine::execute(Thread& t, const Budget& budget) {
   return budget.instructions != 0 ? execute_loop<true>(t, budget) : execute_loop<false>(t, budget);
 }
 
 // kCounted: the slice has an instruction budget. The loop without it is a separate copy, so
 // that running to the next line or wait pays nothing per instruction for counting.
 template <bool kCounted>
-SliceResult Machine::execute_loop(Thread& t, Budget budget) {
+SliceResult Machine::execute_loop(Thread& t, const Budget& budget) {
   static const void* const kDispatch[] = {
 #define OP(name, a, b, pop, push, flow, meaning) &&op_##name,
 #include "bytecode/opcodes.def"
@@ -1088,7 +1089,7 @@ stop:
 #undef HOST_CALL
 }
 
-template SliceResult Machine::execute_loop<true>(Thread& t, Budget budget);
-template SliceResult Machine::execute_loop<false>(Thread& t, Budget budget);
+template SliceResult Machine::execute_loop<true>(Thread& t, const Budget& budget);
+template SliceResult Machine::execute_loop<false>(Thread& t, const Budget& budget);
 
 }  // namespace uprog::vm

@@ -96,7 +96,7 @@ class Machine {
   // the thread continues where it was, as it was (running, waiting or halted). An idle or
   // failed thread simply starts the routine; a failed one keeps its last_error() for it.
   RunError interrupt(uint32_t thread, uint32_t routine);
-  SliceResult run_slice(uint32_t thread, Budget budget);
+  SliceResult run_slice(uint32_t thread, const Budget& budget);
 
   void halt(uint32_t thread);    // a running or waiting thread stops where it is
   void resume(uint32_t thread);  // a halted thread, or one at a breakpoint, runs again
@@ -189,11 +189,11 @@ class Machine {
     ThreadStatus status_before_halt;
   };
 
-  SliceResult step_over_breakpoint(Thread& t, Budget budget);
-  SliceResult test_then_execute(Thread& t, Budget budget);
-  SliceResult execute(Thread& t, Budget budget);
+  SliceResult step_over_breakpoint(Thread& t, const Budget& budget);
+  SliceResult test_then_execute(Thread& t, const Budget& budget);
+  SliceResult execute(Thread& t, const Budget& budget);
   template <bool kCounted>
-  SliceResult execute_loop(Thread& t, Budget budget);
+  SliceResult execute_loop(Thread& t, const Budget& budget);
   // Enters routine r: pushes a frame, moves the inputs into its locals. False on an error,
   // which is then set in `error`.
   bool enter(Thread& t, uint32_t routine, uint32_t return_pc, uint8_t nargout, FrameKind kind,
