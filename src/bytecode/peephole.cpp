@@ -408,8 +408,9 @@ class Fuser {
     uint32_t how = 1;  // !=
     int32_t k = 0;
     if (free(i, 2) && at(i + 1).op == Op::PUSHI) {
+      const Op compare = at(i + 2).op;
       const auto f = std::find_if(std::begin(kIntCompares), std::end(kIntCompares),
-                                  [&](const CompareFamily& c) { return c.compare == at(i + 2).op; });
+                                  [&](const CompareFamily& c) { return c.compare == compare; });
       k = imm_of(at(i + 1));
       if (f == std::end(kIntCompares) || k < -(1 << 19) || k >= (1 << 19)) return std::nullopt;
       how = static_cast<uint32_t>(f - std::begin(kIntCompares));
@@ -421,7 +422,8 @@ class Fuser {
       return std::nullopt;
     static constexpr uint32_t kNegated[] = {1, 0, 5, 4, 3, 2};  // == != < <= > >= when it fails
     if (at(i + n).op == Op::JZ) how = kNegated[how];
-    return std::pair{Instr{at(i).pc, Op::UNTILCK, at(i).a, pack_command_test(at(i).b, how, k)}, n + 3};
+    const uint32_t test = pack_command_test(at(i).b, how, k);
+    return std::pair{Instr{at(i).pc, Op::UNTILCK, at(i).a, test}, n + 3};
   }
 
   // EOL; JMP T

@@ -49,7 +49,8 @@ struct MotorStep {
 };
 MotorStep motor_step_constants(const MotorModel& model, double dt_s);
 
-// Coulomb friction is smoothed over this speed, so that a stopped axis does not chatter.
+// Coulomb friction is smoothed over this speed, so that a stopped axis does not chatter between
+// the two friction signs.
 constexpr double kFrictionSmoothing_rad_per_s = 0.05;
 
 // A smooth sign: tanh's [3/2] Padé approximant x(27 + x²)/(27 + 9x²), which reaches ±1 with a
@@ -77,16 +78,16 @@ inline void step_motor(const MotorModel& model, const MotorStep& step, MotorStat
                         state.velocity_counts_per_s * step.amps_per_counts_per_s;
   state.current_a = u * step.amps_per_volt + held_a;
 
-  // Coulomb friction is smoothed near zero speed (over 0.05 rad/s, smooth_sign) so a stopped axis
-  // does not chatter between the two friction signs.
+  constexpr double kPerSmoothing = 1.0 / kFrictionSmoothing_rad_per_s;  // a multiply, not a divide
   const double friction_nm = model.viscous_friction_nm_s_per_rad * omega_rad_per_s +
-                             model.coulomb_friction_nm * smooth_sign(omega_rad_per_s * (1.0 / kFrictionSmoothing_rad_per_s));
+                             model.coulomb_friction_nm * smooth_sign(omega_rad_per_s * kPerSmoothing);
   // v' = v + (Kt i' - friction) counts_per_rad / J dt and x' = x + v' dt, written out in u: the
   // voltage meets one multiply-add on its way to each, the rest is ready before it is.
   const double coasting = state.velocity_counts_per_s - friction_nm * step.velocity_step_per_nm;
   const double velocity_without_voltage = held_a * step.velocity_step_per_a + coasting;
   state.velocity_counts_per_s = u * step.velocity_step_per_v + velocity_without_voltage;
-  state.position_counts = u * step.position_step_per_v + (state.position_counts + velocity_without_voltage * step.dt_s);
+  state.position_counts =
+      u * step.position_step_per_v + (state.position_counts + velocity_without_voltage * step.dt_s);
 }
 
 }  // namespace uprog::drive

@@ -12,7 +12,8 @@ namespace {
 
 TEST(SmoothSign, IsOddWithTanhsSlopeAtZero) {
   EXPECT_EQ(smooth_sign(0.0), 0.0);
-  for (const double x : {1e-9, 0.1, 0.7, 1.5, 2.9, 3.0, 10.0}) EXPECT_EQ(smooth_sign(-x), -smooth_sign(x)) << x;
+  for (const double x : {1e-9, 0.1, 0.7, 1.5, 2.9, 3.0, 10.0})
+    EXPECT_EQ(smooth_sign(-x), -smooth_sign(x)) << x;
   // x(27 + x²)/(27 + 9x²) = x - 8x³/27 + ...: the slope at 0 is 1, as tanh's.
   const double h = 1e-6;
   EXPECT_NEAR(smooth_sign(h) / h, 1.0, 1e-9);
@@ -51,12 +52,15 @@ TEST(MotorModel, FrictionNearRestIsSmoothed) {
   const double omega = 0.5 * kFrictionSmoothing_rad_per_s;
   state.velocity_counts_per_s = omega * m.counts_per_rad();
   const double before = state.velocity_counts_per_s;
-  // With a zero voltage the back-EMF still drives a tiny current: hold the motor's own view of it.
+  // The voltage is the back-EMF's, so the winding's current stays (nearly) zero and the friction
+  // decelerates the motor; the current's own small share is counted as it came out.
   step_motor(m, step, state, m.torque_constant_nm_per_a * omega);
-  const double friction = m.viscous_friction_nm_s_per_rad * omega + m.coulomb_friction_nm * 0.5 * 27.25 / 29.25;
-  const double expected_change = (m.torque_constant_nm_per_a * state.current_a - friction) / m.inertia_kg_m2 * dt *
-                                 m.counts_per_rad();
-  EXPECT_NEAR(state.velocity_counts_per_s - before, expected_change, 1e-9 * std::abs(expected_change));
+  const double friction =
+      m.viscous_friction_nm_s_per_rad * omega + m.coulomb_friction_nm * 0.5 * 27.25 / 29.25;
+  const double expected_change = (m.torque_constant_nm_per_a * state.current_a - friction) /
+                                 m.inertia_kg_m2 * dt * m.counts_per_rad();
+  EXPECT_NEAR(state.velocity_counts_per_s - before, expected_change,
+              1e-9 * std::abs(expected_change));
 }
 
 }  // namespace
