@@ -89,8 +89,6 @@ int32_t DriveCommands::read(uint16_t id, int32_t index, Value& out) {
   const CommandInfo* info = nullptr;
   if (const int32_t e = check(id, index, info)) return e;
   if (info->flags & kAction) return kErrorNoValue;
-  if (RecorderCommands::serves(id)) return recorder_.read(id, index, out);
-  if (from_reference(id)) return read_reference(id, index, out);
   const drive::Parameters& p = axis_.parameters();
   auto i = [&](int32_t v) { out = Value::of_int(v); return kDriveOk; };
   auto f = [&](float v) { out = Value::of_float(v); return kDriveOk; };
@@ -132,7 +130,10 @@ int32_t DriveCommands::read(uint16_t id, int32_t index, Value& out) {
     case TS: return i(p.servo_period_us);
     case UI: return i(p.user_ints[slot(index)]);
     case UF: return f(p.user_floats[slot(index)]);
-    default: return kErrorBadCommand;
+    default:  // after the feedback a program polls every cycle
+      if (RecorderCommands::serves(id)) return recorder_.read(id, index, out);
+      if (from_reference(id)) return read_reference(id, index, out);
+      return kErrorBadCommand;
   }
 }
 
