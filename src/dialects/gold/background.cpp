@@ -6,15 +6,6 @@
 
 namespace uprog::gold {
 
-void Firmware::cycle(const std::vector<uint32_t>& drive_events) {
-  if (program_ && !drive_events.empty() && drive_events[0] != 0) {
-    const uint32_t events = auto_events_of_drive_events(drive_events[0]);
-    for (uint32_t e = 0; e < kAutoEventCount; ++e) {
-      if ((events >> e) & 1u) autos_.raise(e);
-    }
-  }
-  background_slice();
-}
 
 void Firmware::dispatch_auto_routines() {
   vm::Machine& m = *machine();
@@ -58,7 +49,7 @@ void Firmware::on_run_time_error() {
   autos_.entered_perr(m, kProgramThread);
 }
 
-void Firmware::background_slice() {
+[[gnu::always_inline]] inline void Firmware::background_slice() {
   if (!program_) return;
   // The usual servo cycle has nothing pending and no auto-routine active: no bookkeeping.
   if (!autos_.quiet()) dispatch_auto_routines();
@@ -74,6 +65,19 @@ void Firmware::background_slice() {
   if (r.end == vm::SliceEnd::Error) on_run_time_error();
   if (r.end == vm::SliceEnd::Finished) log("program finished");
   if (!autos_.quiet()) autos_.update_active(m, kProgramThread);
+}
+
+// Every servo cycle: the drive's events raise auto-routines (rarely), then the slice, inline.
+void Firmware::cycle(const std::vector<uint32_t>& drive_events) {
+  if (program_ && !drive_events.empty() && drive_events[0] != 0) raise_auto_events(drive_events[0]);
+  background_slice();
+}
+
+void Firmware::raise_auto_events(uint32_t drive_events) {
+  const uint32_t events = auto_events_of_drive_events(drive_events);
+  for (uint32_t e = 0; e < kAutoEventCount; ++e) {
+    if ((events >> e) & 1u) autos_.raise(e);
+  }
 }
 
 }  // namespace uprog::gold

@@ -137,12 +137,7 @@ const CommandInfo* find_command(std::string_view name) {
   return nullptr;
 }
 
-// Every drive command a program reads or writes comes through here (MS in `until (MS == 0)`
-// once per servo cycle): a direct index, not a scan.
-const CommandInfo* find_command(uint16_t id) {
-  if (id < 1 || id > kCommands.size()) return nullptr;
-  return &kCommands[id - 1u];
-}
+constinit const std::span<const CommandInfo> kCommandRows{kCommands};
 
 std::span<const CommandInfo> all_commands() { return kCommands; }
 

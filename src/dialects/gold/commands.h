@@ -33,7 +33,13 @@ struct CommandInfo {
 
 // Case-insensitive lookup; nullptr when no command has that name.
 const CommandInfo* find_command(std::string_view name);
-const CommandInfo* find_command(uint16_t id);
 std::span<const CommandInfo> all_commands();
+// The table's rows, row i holding id i + 1 (commands.cpp checks it).
+extern const std::span<const CommandInfo> kCommandRows;
+// Inline: every drive command a program reads or writes comes through here (MS in
+// `until (MS == 0)` once per servo cycle), a direct index.
+inline const CommandInfo* find_command(uint16_t id) {
+  return id >= 1 && id <= kCommandRows.size() ? &kCommandRows[id - 1u] : nullptr;
+}
 
 }  // namespace uprog::gold

@@ -80,6 +80,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
 
   // --- the background (background.cpp) ---
   void background_slice();
+  void raise_auto_events(uint32_t drive_events);
   // --- the Elmo debugger's commands, DB##BP, BC, GO, SO, SI, SU, MS, PS, ES (debug_commands.cpp) ---
   bool debug_command(const std::string& word, std::vector<dialect::Answer>& answers);
   void after_debug_slice(vm::SliceEnd end);
