@@ -6,7 +6,6 @@
 
 namespace uprog::gold {
 
-
 void Firmware::dispatch_auto_routines() {
   vm::Machine& m = *machine();
   // A halted program takes no auto-routines until XC; they stay pending.
