@@ -85,9 +85,15 @@ static_assert(static_cast<int>(Op::JGEGK) - static_cast<int>(Op::JEQGK) == 5 &&
                   static_cast<int>(Op::JNGEFEOL) - static_cast<int>(Op::JNEQFEOL) == 5,
               "a family of fused comparisons is six opcodes in the order == != < <= > >=");
 
-// UNTILCK's test of the command's value (B: opcodes.h, pack_command_test).
-bool command_test_met(uint32_t b, Value v) {
-  return holds(bytecode::command_test_how(b), int_outcome(v.i, bytecode::command_test_imm(b)));
+// UNTILCK's read of command A at B's index and its test (B: opcodes.h, pack_command_test);
+// `met` only when the read gave a value (kCommandOk or kCommandEndSlice).
+CommandStatus test_command(Host& host, uint32_t a, uint32_t b, bool& met) {
+  Value v;
+  const auto index = static_cast<int32_t>(bytecode::command_test_index(b));
+  const CommandStatus status = host.read(a, index, v);
+  met = (status == kCommandOk || status == kCommandEndSlice) &&
+        holds(bytecode::command_test_how(b), int_outcome(v.i, bytecode::command_test_imm(b)));
+  return status;
 }
 
 }  // namespace
@@ -136,14 +142,12 @@ SliceResult Machine::run_slice(uint32_t thread, const Budget& budget) {
 // instruction's test here, and the execute loop only once it is met. A refused read is left to
 // the loop, which raises it.
 SliceResult Machine::test_then_execute(Thread& t, const Budget& budget) {
-  const uint32_t word = code_[t.pc];
-  const uint32_t b = code_[t.pc + 1];
-  Value v;
+  bool met = false;
   const CommandStatus status =
-      host_->read(bytecode::word_a(word), static_cast<int32_t>(bytecode::command_test_index(b)), v);
+      test_command(*host_, bytecode::word_a(code_[t.pc]), code_[t.pc + 1], met);
   if (status != kCommandOk && status != kCommandEndSlice) return execute(t, budget);
   const uint64_t counted = budget.instructions != 0 ? 1 : 0;
-  if (!command_test_met(b, v)) return {SliceEnd::Yielded, counted};
+  if (!met) return {SliceEnd::Yielded, counted};
   t.pc += 2;
   if (status == kCommandEndSlice) return {SliceEnd::Yielded, counted};
   if (budget.instructions == 1) return {SliceEnd::BudgetSpent, 1};
@@ -923,10 +927,9 @@ op_CMDGET: {
   HOST_CALL(host_->read(A(), static_cast<int32_t>(B()), v), (*sp++ = v, ip += 2))
 }
 op_UNTILCK: {
-  Value v;
-  detail = host_->read(A(), static_cast<int32_t>(bytecode::command_test_index(B())), v);
+  bool met = false;
+  detail = test_command(*host_, A(), B(), met);
   if (detail != kCommandOk && detail != kCommandEndSlice) FAIL(RunError::CommandRefused);
-  const bool met = command_test_met(B(), v);
   if (met) ip += 2;
   if (met && detail == kCommandOk) DISPATCH();
   detail = 0;
