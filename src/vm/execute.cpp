@@ -158,19 +158,23 @@ SliceResult Machine::test_then_execute(Thread& t, const Budget& budget) {
   return more;
 }
 
+// One loop for both kinds of slice: a slice with an instruction budget dispatches through a
+// table whose every entry counts first, so that a slice without one pays nothing per instruction
+// for counting and the loop's code is there once (a copy for each kind did not leave the
+// embeddable core room for more instructions).
 SliceResult Machine::execute(Thread& t, const Budget& budget) {
-  return budget.instructions != 0 ? execute_loop<true>(t, budget) : execute_loop<false>(t, budget);
-}
-
-// kCounted: the slice has an instruction budget. The loop without it is a separate copy, so
-// that running to the next line or wait pays nothing per instruction for counting.
-template <bool kCounted>
-SliceResult Machine::execute_loop(Thread& t, const Budget& budget) {
   static const void* const kDispatch[] = {
 #define OP(name, a, b, pop, push, flow, meaning) &&op_##name,
 #include "bytecode/opcodes.def"
 #undef OP
   };
+  static const void* const kCountThenDispatch[] = {
+#define OP(name, a, b, pop, push, flow, meaning) &&count_then_dispatch,
+#include "bytecode/opcodes.def"
+#undef OP
+  };
+  const bool counted = budget.instructions != 0;
+  const void* const* const dispatch = counted ? kCountThenDispatch : kDispatch;
 
   const uint32_t* const code = code_;
   const uint32_t* ip = code + t.pc;
@@ -190,11 +194,10 @@ SliceResult Machine::execute_loop(Thread& t, const Budget& budget) {
 #define LINES_ENDED() (budget.lines != 0 ? budget.lines - lines.left() : 0)
 #define SAVE() (t.pc = static_cast<uint32_t>(ip - code), t.sp = sp)
 #define LOAD() (ip = code + t.pc, sp = t.sp, locals = t.frames[t.frame_count - 1].locals)
-#define DISPATCH()                           \
-  do {                                       \
-    if (kCounted && steps.now-- == 0) goto out_of_budget; \
-    word = *ip;                              \
-    goto* kDispatch[word & 0xFFu];           \
+#define DISPATCH()                \
+  do {                            \
+    word = *ip;                   \
+    goto* dispatch[word & 0xFFu]; \
   } while (0)
 // Every jump goes through here: one going back counts against the slice's back_jumps. When
 // they run out it goes to `spent`, which continues as the jump's instruction would.
@@ -1019,13 +1022,17 @@ op_BREAK:
   goto stop;
 
 // The shared end of the instructions that are seldom hot: one copy of the dispatch for them
-// keeps the embeddable core within 32 KiB (each DISPATCH is code in both copies of the loop).
+// keeps the embeddable core within 32 KiB.
 next_1:
   ++ip;
   DISPATCH();
 next_2:
   ip += 2;
   DISPATCH();
+
+count_then_dispatch:
+  if (steps.now-- == 0) goto out_of_budget;
+  goto* kDispatch[word & 0xFFu];
 
 // A spent 32-bit count takes the next chunk of its budget and the slice goes on as if nothing
 // happened; only when the whole budget is spent does the slice end.
@@ -1057,7 +1064,7 @@ finished:
   SAVE();
   reset_thread(t);
   t.last_error = RunError::None;
-  return {SliceEnd::Finished, kCounted ? budget.instructions - steps.left() : 0, LINES_ENDED()};
+  return {SliceEnd::Finished, counted ? budget.instructions - steps.left() : 0, LINES_ENDED()};
 
 raise_error:
   SAVE();
@@ -1069,11 +1076,11 @@ raise_error:
     if (--back_jumps.now == 0) goto out_of_back_jumps;
     DISPATCH();
   }
-  return {SliceEnd::Error, kCounted ? budget.instructions - steps.left() : 0, LINES_ENDED()};
+  return {SliceEnd::Error, counted ? budget.instructions - steps.left() : 0, LINES_ENDED()};
 
 stop:
   SAVE();
-  return {end, kCounted ? budget.instructions - steps.left() : 0, LINES_ENDED()};
+  return {end, counted ? budget.instructions - steps.left() : 0, LINES_ENDED()};
 
 #undef LINES_ENDED
 #undef JUMP_TO
@@ -1092,7 +1099,5 @@ stop:
 #undef HOST_CALL
 }
 
-template SliceResult Machine::execute_loop<true>(Thread& t, const Budget& budget);
-template SliceResult Machine::execute_loop<false>(Thread& t, const Budget& budget);
 
 }  // namespace uprog::vm

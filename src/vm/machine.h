@@ -192,8 +192,6 @@ class Machine {
   SliceResult step_over_breakpoint(Thread& t, const Budget& budget);
   SliceResult test_then_execute(Thread& t, const Budget& budget);
   SliceResult execute(Thread& t, const Budget& budget);
-  template <bool kCounted>
-  SliceResult execute_loop(Thread& t, const Budget& budget);
   // Enters routine r: pushes a frame, moves the inputs into its locals. False on an error,
   // which is then set in `error`.
   bool enter(Thread& t, uint32_t routine, uint32_t return_pc, uint8_t nargout, FrameKind kind,
