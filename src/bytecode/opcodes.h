@@ -8,11 +8,11 @@ namespace uprog::bytecode {
 
 enum class Operand : uint8_t {
   None, Imm, Const, Local, Global, Routine, Target, Count, Command, Unit, LocalPair, LocalImm,
-  LocalConst, Width, Text, GlobalPair, GlobalConst
+  LocalConst, Width, Text, GlobalPair, GlobalConst, GlobalImm
 };
 
-// The packed B operands of the fused comparisons and arithmetic (LocalConst, GlobalPair and
-// GlobalConst pack like LocalPair: 16 bits each).
+// The packed B operands of the fused comparisons and arithmetic (LocalConst, GlobalPair,
+// GlobalConst pack like LocalPair: 16 bits each; GlobalImm like LocalImm).
 constexpr uint32_t pack_locals(uint32_t first, uint32_t second) { return first | (second << 16); }
 constexpr uint32_t pack_local_imm(uint32_t local, int32_t imm) {
   return local | (static_cast<uint32_t>(imm) << 16);

@@ -52,15 +52,15 @@ constexpr CompareFamily kIntCompares[] = {
 };
 // Float comparisons fuse only with JZ: "jump unless" keeps NaN's answers exact.
 struct FloatCompareFamily {
-  Op compare, jump_unless, locals_unless, constant_unless, global_constant_unless;
+  Op compare, jump_unless, locals_unless, constant_unless, global_constant_unless, globals_unless;
 };
 constexpr FloatCompareFamily kFloatCompares[] = {
-    {Op::EQF, Op::JNEQF, Op::JNEQFLL, Op::JNEQFLK, Op::JNEQFGK},
-    {Op::NEF, Op::JNNEF, Op::JNNEFLL, Op::JNNEFLK, Op::JNNEFGK},
-    {Op::LTF, Op::JNLTF, Op::JNLTFLL, Op::JNLTFLK, Op::JNLTFGK},
-    {Op::LEF, Op::JNLEF, Op::JNLEFLL, Op::JNLEFLK, Op::JNLEFGK},
-    {Op::GTF, Op::JNGTF, Op::JNGTFLL, Op::JNGTFLK, Op::JNGTFGK},
-    {Op::GEF, Op::JNGEF, Op::JNGEFLL, Op::JNGEFLK, Op::JNGEFGK},
+    {Op::EQF, Op::JNEQF, Op::JNEQFLL, Op::JNEQFLK, Op::JNEQFGK, Op::JNEQFGG},
+    {Op::NEF, Op::JNNEF, Op::JNNEFLL, Op::JNNEFLK, Op::JNNEFGK, Op::JNNEFGG},
+    {Op::LTF, Op::JNLTF, Op::JNLTFLL, Op::JNLTFLK, Op::JNLTFGK, Op::JNLTFGG},
+    {Op::LEF, Op::JNLEF, Op::JNLEFLL, Op::JNLEFLK, Op::JNLEFGK, Op::JNLEFGG},
+    {Op::GTF, Op::JNGTF, Op::JNGTFLL, Op::JNGTFLK, Op::JNGTFGK, Op::JNGTFGG},
+    {Op::GEF, Op::JNGEF, Op::JNGEFLL, Op::JNGEFLK, Op::JNGEFGK, Op::JNGEFGG},
 };
 
 // A branch's form that ends the line on both paths (opcodes.def), or nullopt.
@@ -72,6 +72,7 @@ std::optional<Op> ending_line_form(Op op) {
   if (in(Op::JEQGK, Op::JGEGK)) return shifted(Op::JEQGK, Op::JEQGKEOL);
   if (in(Op::JNEQFGK, Op::JNGEFGK)) return shifted(Op::JNEQFGK, Op::JNEQFGKEOL);
   if (in(Op::JNEQF, Op::JNGEF)) return shifted(Op::JNEQF, Op::JNEQFEOL);
+  if (in(Op::JNEQFGG, Op::JNGEFGG)) return shifted(Op::JNEQFGG, Op::JNEQFGGEOL);
   if (op == Op::JZG) return Op::JZGEOL;
   if (op == Op::JNZG) return Op::JNZGEOL;
   return std::nullopt;
@@ -123,7 +124,8 @@ class Fuser {
     for (auto m : {&Fuser::compare_locals, &Fuser::arithmetic_locals, &Fuser::local_constant,
                    &Fuser::two_locals, &Fuser::store_constant, &Fuser::test_global,
                    &Fuser::compare_global, &Fuser::global_constant, &Fuser::arithmetic_globals,
-                   &Fuser::two_globals, &Fuser::store_global_constant, &Fuser::store_global_eol,
+                   &Fuser::compare_globals, &Fuser::float_global_constant, &Fuser::two_globals,
+                   &Fuser::store_global_constant, &Fuser::store_global_eol,
                    &Fuser::compare_branch, &Fuser::test_zero, &Fuser::line_ending_jump,
                    &Fuser::eol_jump, &Fuser::wait_for_command}) {
       if (auto r = (this->*m)(i)) return r;
@@ -339,23 +341,61 @@ class Fuser {
       }
       return std::pair{Instr{at(i).pc, Op::ADDGK, at(i).a, addend}, size_t{3}};
     }
-    if (op == Op::REMI && k != 0)
-      return std::pair{Instr{at(i).pc, Op::REMGK, at(i).a, static_cast<uint32_t>(k)}, size_t{3}};
+    if (op != Op::REMI || k == 0) return std::nullopt;
+    const bool stored = free(i, 3) && at(i + 3).op == Op::STG && lone_eol(i, 4);
+    if (stored && fits_int16(k) && at(i).a <= 0xFFFF)
+      return std::pair{Instr{at(i).pc, Op::REMGKEOL, at(i + 3).a, pack_local_imm(at(i).a, k)},
+                       size_t{5}};
+    return std::pair{Instr{at(i).pc, Op::REMGK, at(i).a, static_cast<uint32_t>(k)}, size_t{3}};
+  }
+
+  // LDG a; LDG b; ADDI|SUBI|ADDF|SUBF|MULF [; STG c; EOL]
+  std::optional<std::pair<Instr, size_t>> arithmetic_globals(size_t i) const {
+    if (!free(i, 2) || !packs_global(at(i)) || !packs_global(at(i + 1))) return std::nullopt;
+    static constexpr std::array<std::array<Op, 3>, 5> kForms = {{
+        {Op::ADDI, Op::ADDIGG, Op::ADDIGGEOL}, {Op::SUBI, Op::SUBIGG, Op::SUBIGGEOL},
+        {Op::ADDF, Op::ADDFGG, Op::ADDFGGEOL}, {Op::SUBF, Op::SUBFGG, Op::SUBFGGEOL},
+        {Op::MULF, Op::MULFGG, Op::MULFGGEOL}}};
+    const uint32_t pair = pack_locals(at(i).a, at(i + 1).a);
+    for (const auto& [plain, push, store] : kForms) {
+      if (at(i + 2).op != plain) continue;
+      if (free(i, 3) && at(i + 3).op == Op::STG && lone_eol(i, 4))
+        return std::pair{Instr{at(i).pc, store, at(i + 3).a, pair}, size_t{5}};
+      return std::pair{Instr{at(i).pc, push, 0, pair}, size_t{3}};
+    }
     return std::nullopt;
   }
 
-  // LDG a; LDG b; ADDI|SUBI|ADDF|SUBF|MULF
-  std::optional<std::pair<Instr, size_t>> arithmetic_globals(size_t i) const {
-    if (!free(i, 2) || !packs_global(at(i)) || !packs_global(at(i + 1))) return std::nullopt;
-    static constexpr std::array<std::array<Op, 2>, 5> kForms = {{{Op::ADDI, Op::ADDIGG},
-                                                                 {Op::SUBI, Op::SUBIGG},
-                                                                 {Op::ADDF, Op::ADDFGG},
-                                                                 {Op::SUBF, Op::SUBFGG},
-                                                                 {Op::MULF, Op::MULFGG}}};
-    for (const auto& [plain, fused] : kForms) {
-      if (at(i + 2).op == plain)
-        return std::pair{Instr{at(i).pc, fused, 0, pack_locals(at(i).a, at(i + 1).a)}, size_t{3}};
+  // LDG a; LDG b; <float compare>; JZ T
+  std::optional<std::pair<Instr, size_t>> compare_globals(size_t i) const {
+    if (!free(i, 3) || !packs_global(at(i)) || !packs_global(at(i + 1)) || at(i + 3).op != Op::JZ)
+      return std::nullopt;
+    for (const auto& f : kFloatCompares) {
+      if (at(i + 2).op == f.compare)
+        return std::pair{
+            Instr{at(i).pc, f.globals_unless, at(i + 3).a, pack_locals(at(i).a, at(i + 1).a)},
+            size_t{4}};
     }
+    return std::nullopt;
+  }
+
+  // LDG g; PUSHK k; ADDF|SUBF|MULF | PUSHK k; LDG g; MULF — the operands in their order.
+  std::optional<std::pair<Instr, size_t>> float_global_constant(size_t i) const {
+    if (!free(i, 2)) return std::nullopt;
+    const Instr& first = at(i);
+    const Instr& second = at(i + 1);
+    const Op op = at(i + 2).op;
+    const auto constant = [](const Instr& k) { return k.op == Op::PUSHK && k.a <= 0xFFFF; };
+    if (packs_global(first) && constant(second)) {
+      const Op fused = op == Op::ADDF   ? Op::ADDFGK
+                       : op == Op::SUBF ? Op::SUBFGK
+                       : op == Op::MULF ? Op::MULFGK
+                                        : Op::NOP;
+      if (fused != Op::NOP)
+        return std::pair{Instr{first.pc, fused, 0, pack_locals(first.a, second.a)}, size_t{3}};
+    }
+    if (constant(first) && packs_global(second) && op == Op::MULF)
+      return std::pair{Instr{first.pc, Op::MULFKG, 0, pack_locals(second.a, first.a)}, size_t{3}};
     return std::nullopt;
   }
 
@@ -363,7 +403,7 @@ class Fuser {
   std::optional<std::pair<Instr, size_t>> two_globals(size_t i) const {
     if (!free(i, 1) || at(i).op != Op::LDG || at(i + 1).op != Op::LDG) return std::nullopt;
     if (arithmetic_globals(i + 1) || compare_global(i + 1) || test_global(i + 1) ||
-        global_constant(i + 1))
+        global_constant(i + 1) || compare_globals(i + 1) || float_global_constant(i + 1))
       return std::nullopt;
     return std::pair{Instr{at(i).pc, Op::LDG2, at(i).a, at(i + 1).a}, size_t{2}};
   }
@@ -438,6 +478,49 @@ class Fuser {
   bool room_for_constants_;
 };
 
+// What pushes one value and writes nothing: an expression an accumulation may hold.
+bool pure_push(Op op) {
+  switch (op) {
+    case Op::LDG: case Op::LDL: case Op::PUSHI: case Op::PUSHK:
+    case Op::ADDIGG: case Op::SUBIGG: case Op::ADDFGG: case Op::SUBFGG: case Op::MULFGG:
+    case Op::ADDGK: case Op::REMGK: case Op::ADDLK: case Op::REMLK:
+    case Op::ADDILL: case Op::SUBILL: case Op::ADDFLL: case Op::SUBFLL: case Op::MULFLL:
+    case Op::ADDFGK: case Op::SUBFGK: case Op::MULFGK: case Op::MULFKG:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// "LDG g; e; ADDI|ADDF|SUBF; STGEOL g", with e one fused instruction (`p = p + a * b;`), is e
+// and the accumulation ADDxGEOL g: the global stays the left operand, and e writes nothing, so
+// reading g after it reads the same. Over the fused code, since e is what the fusion made.
+void fold_accumulations(std::vector<Instr>& code, const std::vector<bool>& boundary) {
+  std::vector<Instr> folded;
+  folded.reserve(code.size());
+  for (size_t k = 0; k < code.size(); ++k) {
+    const bool shaped = k + 3 < code.size() && code[k].op == Op::LDG && pure_push(code[k + 1].op) &&
+                        code[k + 3].op == Op::STGEOL && code[k + 3].a == code[k].a &&
+                        !boundary[code[k + 1].pc] && !boundary[code[k + 2].pc] &&
+                        !boundary[code[k + 3].pc];
+    const Op combine = shaped ? code[k + 2].op : Op::NOP;
+    const Op accumulate = combine == Op::ADDI   ? Op::ADDIGEOL
+                          : combine == Op::ADDF ? Op::ADDFGEOL
+                          : combine == Op::SUBF ? Op::SUBFGEOL
+                                                : Op::NOP;
+    if (accumulate == Op::NOP) {
+      folded.push_back(code[k]);
+      continue;
+    }
+    Instr expression = code[k + 1];
+    expression.pc = code[k].pc;  // where the line's code starts
+    folded.push_back(expression);
+    folded.push_back(Instr{code[k + 2].pc, accumulate, code[k].a, 0});
+    k += 3;
+  }
+  code = std::move(folded);
+}
+
 // A jump to a JMP goes straight to its target; a jump-and-end-of-line to a RET becomes
 // RETEOL. Targets are followed a bounded number of steps, so a cycle of jumps stays a cycle.
 void thread_jumps(std::vector<uint32_t>& code) {
@@ -493,6 +576,8 @@ PeepholeStats optimize(Image& image) {
       out.push_back(in[i++]);
     }
   }
+
+  fold_accumulations(out, boundary);
 
   // Old instruction starts (and the end) to new ones.
   std::vector<uint32_t> relocated(size + 1, UINT32_MAX);

@@ -121,6 +121,8 @@ class Verifier {
       }
       if ((word_op(word) == Op::REMLK || word_op(word) == Op::REMGK) && image_.code[pc + 1] == 0)
         return fail(VerifyError::BadOperand, pc);
+      if (word_op(word) == Op::REMGKEOL && packed_imm(image_.code[pc + 1]) == 0)
+        return fail(VerifyError::BadOperand, pc);
       if (pops_host_arguments(word_op(word)) && image_.code[pc + 1] > limits_.max_stack)
         return fail(VerifyError::BadOperand, pc);
     }
@@ -143,6 +145,9 @@ class Verifier {
       case Operand::GlobalConst:
         if (packed_first(b) >= globals) return fail(VerifyError::BadGlobal, pc);
         if (packed_second(b) >= image_.constants.size()) return fail(VerifyError::BadConstant, pc);
+        break;
+      case Operand::GlobalImm:
+        if (packed_first(b) >= globals) return fail(VerifyError::BadGlobal, pc);
         break;
       default: break;
     }

@@ -82,7 +82,9 @@ static_assert(static_cast<int>(Op::JGEGK) - static_cast<int>(Op::JEQGK) == 5 &&
                   static_cast<int>(Op::JNGEFGK) - static_cast<int>(Op::JNEQFGK) == 5 &&
                   static_cast<int>(Op::JGEGKEOL) - static_cast<int>(Op::JEQGKEOL) == 5 &&
                   static_cast<int>(Op::JNGEFGKEOL) - static_cast<int>(Op::JNEQFGKEOL) == 5 &&
-                  static_cast<int>(Op::JNGEFEOL) - static_cast<int>(Op::JNEQFEOL) == 5,
+                  static_cast<int>(Op::JNGEFEOL) - static_cast<int>(Op::JNEQFEOL) == 5 &&
+                  static_cast<int>(Op::JNGEFGG) - static_cast<int>(Op::JNEQFGG) == 5 &&
+                  static_cast<int>(Op::JNGEFGGEOL) - static_cast<int>(Op::JNEQFGGEOL) == 5,
               "a family of fused comparisons is six opcodes in the order == != < <= > >=");
 
 // UNTILCK's read of command A at B's index and its test (B: opcodes.h, pack_command_test);
@@ -906,7 +908,6 @@ op_JNGEFEOL: {
 op_JZGEOL:
 op_JNZGEOL:
   BRANCH_ENDING_LINE((GLOBAL(B()).i == 0) != ((word & 0xFFu) == static_cast<uint32_t>(Op::JNZGEOL)), 2)
-#undef BRANCH_ENDING_LINE
 // Two globals' arithmetic, a handler each (one shared through a switch slowed Gold's loop
 // by some 10 %, though it never runs there); they end in the shared dispatch.
 #define GLOBALS_ARITH(type, field, expr)                                   \
@@ -923,6 +924,87 @@ op_ADDFGG: GLOBALS_ARITH(float, f, a + b)
 op_SUBFGG: GLOBALS_ARITH(float, f, a - b)
 op_MULFGG: GLOBALS_ARITH(float, f, a * b)
 #undef GLOBALS_ARITH
+// The three-address forms: two globals' arithmetic into global A, ending the line.
+#define GLOBALS_ARITH_EOL(type, field, expr)                               \
+  {                                                                        \
+    const uint32_t pair = B();                                             \
+    const type a = GLOBAL(bytecode::packed_first(pair)).field;             \
+    const type b = GLOBAL(bytecode::packed_second(pair)).field;            \
+    GLOBAL(A()).field = (expr);                                            \
+    ip += 2;                                                               \
+    if (--lines.now == 0) goto out_of_lines;                               \
+    DISPATCH();                                                            \
+  }
+op_ADDIGGEOL: GLOBALS_ARITH_EOL(int32_t, i, arith::wrap_add(a, b))
+op_SUBIGGEOL: GLOBALS_ARITH_EOL(int32_t, i, arith::wrap_sub(a, b))
+op_ADDFGGEOL: GLOBALS_ARITH_EOL(float, f, a + b)
+op_SUBFGGEOL: GLOBALS_ARITH_EOL(float, f, a - b)
+op_MULFGGEOL: GLOBALS_ARITH_EOL(float, f, a * b)
+#undef GLOBALS_ARITH_EOL
+op_REMGKEOL: {
+  const uint32_t pair = B();
+  const int32_t dividend = GLOBAL(bytecode::packed_first(pair)).i;
+  GLOBAL(A()).i = arith::int_rem(dividend, bytecode::packed_imm(pair));
+  ip += 2;
+  if (--lines.now == 0) goto out_of_lines;
+  DISPATCH();
+}
+// A global's accumulation of the popped value, the global the left operand.
+#define ACCUMULATE_EOL(field, expr)          \
+  {                                          \
+    auto& a = GLOBAL(A()).field;             \
+    const auto b = (--sp)->field;            \
+    a = (expr);                              \
+    ++ip;                                    \
+    if (--lines.now == 0) goto out_of_lines; \
+    DISPATCH();                              \
+  }
+op_ADDIGEOL: ACCUMULATE_EOL(i, arith::wrap_add(a, b))
+op_ADDFGEOL: ACCUMULATE_EOL(f, a + b)
+op_SUBFGEOL: ACCUMULATE_EOL(f, a - b)
+#undef ACCUMULATE_EOL
+// A float global with a constant (GlobalConst: the global first, the constant second).
+#define GLOBAL_CONSTANT_ARITH(expr)                              \
+  {                                                              \
+    const uint32_t pair = B();                                   \
+    const float g = GLOBAL(bytecode::packed_first(pair)).f;      \
+    const float k = constants_[bytecode::packed_second(pair)].f; \
+    (sp++)->f = (expr);                                          \
+    goto next_2;                                                 \
+  }
+op_ADDFGK: GLOBAL_CONSTANT_ARITH(g + k)
+op_SUBFGK: GLOBAL_CONSTANT_ARITH(g - k)
+op_MULFGK: GLOBAL_CONSTANT_ARITH(g * k)
+op_MULFKG: GLOBAL_CONSTANT_ARITH(k * g)
+#undef GLOBAL_CONSTANT_ARITH
+op_JNEQFGG:
+op_JNNEFGG:
+op_JNLTFGG:
+op_JNLEFGG:
+op_JNGTFGG:
+op_JNGEFGG: {
+  const uint32_t pair = B();
+  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFGG);
+  if (!holds(how, float_outcome(GLOBAL(bytecode::packed_first(pair)).f,
+                                GLOBAL(bytecode::packed_second(pair)).f)))
+    JUMP_TO(code + A());
+  else
+    ip += 2;
+  DISPATCH();
+}
+op_JNEQFGGEOL:
+op_JNNEFGGEOL:
+op_JNLTFGGEOL:
+op_JNLEFGGEOL:
+op_JNGTFGGEOL:
+op_JNGEFGGEOL: {
+  const uint32_t pair = B();
+  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFGGEOL);
+  BRANCH_ENDING_LINE(!holds(how, float_outcome(GLOBAL(bytecode::packed_first(pair)).f,
+                                               GLOBAL(bytecode::packed_second(pair)).f)),
+                     2)
+}
+#undef BRANCH_ENDING_LINE
 #undef GLOBAL
 
 op_CMDGET: {

@@ -140,11 +140,11 @@ TEST(Peephole, FusesTheLoop) {
       Op::PUSHI, Op::STL, Op::PUSHI, Op::STL, Op::EOL,
       Op::JGTLL,                        // LDL i; LDL n; LEI; JZ done
       Op::REMLK, Op::JZ,                // LDL i; PUSHI 3; REMI — then PUSHI 0; NEI; JZ
-      Op::LDG, Op::REMLK, Op::ADDI, Op::STGEOL,  // STG total; EOL
+      Op::REMLK, Op::ADDIGEOL,          // LDG total; ...; ADDI; STG total; EOL
       Op::ADDLK, Op::STL,               // next: is a target, so the EOL before it stays
       Op::JGTLK,                        // LDL i; PUSHI 50; GTI; JNZ skip
       Op::JNLTFGK,                      // LDG x; PUSHK 0; LTF; JZ skip
-      Op::LDG, Op::PUSHK, Op::ADDF, Op::STG,
+      Op::ADDFGK, Op::STG,              // LDG x; PUSHK 0; ADDF
       Op::JMPEOL,                       // skip: EOL; JMP top
       Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
@@ -354,7 +354,7 @@ end:
   const bytecode::Image image = optimized(text);
   const std::vector<Op> expected = {Op::STLK, Op::EOL, Op::PUSHI, Op::STL,
                                     Op::JGTLK,                                  // k > 3
-                                    Op::LDG, Op::LDL, Op::ADDI, Op::STGEOL,
+                                    Op::LDL, Op::ADDIGEOL,                      // total += k
                                     Op::INCLJEOL,                               // k += 1; back
                                     Op::JNEGK,                                  // total == 6
                                     Op::PUSHI, Op::STLJEOL,                     // k = 100; to end
@@ -462,9 +462,9 @@ end:
       Op::STGKEOL,                    // v = 0.5
       Op::STGKEOL,                    // p = 0.5
       Op::JGTGK, Op::EOL,             // while i <= 100 (the constant 100)
-      Op::REMGK, Op::STGEOL,          // r = i % 3
+      Op::REMGKEOL,                   // r = i % 3
       Op::JZG,                        // if r <> 0
-      Op::ADDIGG, Op::STGJEOL,        // s = s + r; end of line, to next
+      Op::ADDIGG, Op::STGJEOL,        // s = s + r; end of line, to next (STGJEOL, not EOL)
       Op::MULFGG, Op::STG,            // skip: p = p * v (next: is a target)
       Op::INCG, Op::JMPEOL,           // next: i = i + 1; end of line, back to top
       Op::JNLTFGK,                    // done: if p < 0.5
@@ -617,8 +617,8 @@ done:
       Op::JNGEFGKEOL,                               // if p >= 0.5
       Op::INCG, Op::JMPEOL,                         // s = s + 1
       Op::EOL,                                      // else1: reached by nothing now
-      Op::LDG, Op::PUSHK, Op::ADDF, Op::STGEOL,     // p = p + 0.5
-      Op::LDG2, Op::JNLTFEOL,                       // join1: if p < q
+      Op::ADDFGK, Op::STGEOL,                       // p = p + 0.5
+      Op::JNLTFGGEOL,                               // join1: if p < q
       Op::PUSHI, Op::STGEOL,                        // r = 1
       Op::EOL,                                      // skip2
       Op::JZGEOL,                                   // if r
@@ -653,6 +653,134 @@ other:
 )");
   const std::vector<Op> expected = {Op::JZG, Op::EOL, Op::EOL, Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+}
+
+// The three-address forms of a loop over globals (PDL's and ST's variables): two globals'
+// arithmetic stored, a remainder by a 16-bit constant stored, a global's accumulation of a fused
+// expression, a float global with a constant, two float globals compared. The same lines end.
+TEST(Peephole, FusesThreeAddressGlobals) {
+  const char* text = R"(
+.global int "i" 1
+.global int "s" 1
+.global int "r" 1
+.global int "d" 1
+.global float "p" 1
+.global float "q" 1
+.global float "v" 1
+.global float "t" 1
+.const float 0.5
+.const float 2.0
+.routine function "main" in=0 out=0 entry=main
+main:
+  PUSHK 1
+  STG v
+  EOL
+top:
+  LDG i
+  PUSHI 12
+  GEI
+  JNZ done
+  EOL
+  LDG i
+  LDG s
+  SUBI
+  STG d
+  EOL
+  LDG i
+  PUSHI 5
+  REMI
+  STG r
+  EOL
+  LDG i
+  PUSHI 100000
+  REMI
+  STG d
+  EOL
+  LDG s
+  LDG i
+  PUSHI 7
+  REMI
+  ADDI
+  STG s
+  EOL
+  LDG p
+  LDG v
+  PUSHK 0
+  MULF
+  ADDF
+  STG p
+  EOL
+  LDG q
+  LDG p
+  LDG v
+  MULF
+  SUBF
+  STG q
+  EOL
+  LDG p
+  LDG v
+  PUSHK 0
+  MULF
+  ADDF
+  STG t
+  EOL
+  LDG p
+  LDG q
+  ADDF
+  STG t
+  EOL
+  PUSHK 1
+  LDG t
+  MULF
+  STG t
+  EOL
+  LDG t
+  PUSHK 1
+  SUBF
+  STG t
+  EOL
+  LDG p
+  LDG q
+  GTF
+  JZ next
+  LDG t
+  PUSHK 0
+  ADDF
+  STG t
+next:
+  LDG i
+  PUSHI 1
+  ADDI
+  STG i
+  EOL
+  JMP top
+done:
+  RET
+)";
+  const bytecode::Image image = optimized(text);
+  const std::vector<Op> expected = {
+      Op::STGKEOL,                    // v = 2.0
+      Op::JGEGK, Op::EOL,             // while i < 12
+      Op::SUBIGGEOL,                  // d = i - s
+      Op::REMGKEOL,                   // r = i % 5
+      Op::REMGK, Op::STGEOL,          // d = i % 100000: beyond a 16-bit immediate
+      Op::REMGK, Op::ADDIGEOL,        // s = s + i % 7
+      Op::MULFGK, Op::ADDFGEOL,       // p = p + v * 0.5
+      Op::MULFGG, Op::SUBFGEOL,       // q = q - p * v
+      Op::LDG, Op::MULFGK, Op::ADDF, Op::STGEOL,  // t = p + v * 0.5: t is not p
+      Op::ADDFGGEOL,                  // t = p + q
+      Op::MULFKG, Op::STGEOL,         // t = 2.0 * t
+      Op::SUBFGK, Op::STGEOL,         // t = t - 2.0
+      Op::JNGTFGG,                    // if p > q
+      Op::ADDFGK, Op::STG,            // t = t + 0.5
+      Op::INCG, Op::JMPEOL,           // next: i = i + 1
+      Op::RET};
+  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  expect_same_behaviour(text, "three-address globals");
+  EXPECT_EQ(run_and_read(image, "i"), 12);
+  LoadedProgram plain;
+  ASSERT_TRUE(plain.load(text));
+  EXPECT_EQ(line_slices(image), line_slices(plain.image));
 }
 
 // No global form is made across a place control can enter: `inside` is a routine's entry.
