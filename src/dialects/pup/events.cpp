@@ -41,6 +41,7 @@ void Firmware::latch_events(uint32_t drive_events) {
   if (was_moving_ && !moving) latch(5);
   was_moving_ = moving;
   const uint32_t levels = input_levels(a);
+  if (levels == previous_inputs_) return;  // no edge: most cycles
   for (int n = 0; n < 6; ++n) {
     const bool now = (levels >> n) & 1u, before = (previous_inputs_ >> n) & 1u;
     if (now && !before) latch(6 + n);

@@ -145,7 +145,7 @@ void Firmware::cycle(const std::vector<uint32_t>& drive_events) {
   latch_events(drive_events.empty() ? 0 : drive_events[0]);
   take_event();
   const scheduling::Report report = schedule_.cycle(program_->machine());
-  for (uint32_t t = 1; t <= kThreads; ++t) {
+  for (uint32_t t = 1; report.threads_with_events() != 0 && t <= kThreads; ++t) {
     if (report.has(t, scheduling::ThreadEvent::Error)) on_thread_error(t);
   }
   check_event_return();
