@@ -521,6 +521,89 @@ void fold_accumulations(std::vector<Instr>& code, const std::vector<bool>& bound
   code = std::move(folded);
 }
 
+// Pushes of values that write nothing and never jump, with their stack effect: what may stand
+// between an address (ADDLK) and the STM that stores at it. LDMLK may fail, as the LDM it was.
+std::optional<int> pure_effect(Op op) {
+  switch (op) {
+    case Op::LDL: case Op::LDG: case Op::PUSHI: case Op::PUSHK: case Op::ADDLK: case Op::LDMLK:
+      return 1;
+    case Op::LDL2: case Op::LDG2:
+      return 2;
+    case Op::ADDI: case Op::SUBI: case Op::MULI:
+      return -1;
+    default:
+      return std::nullopt;
+  }
+}
+
+// Where the STM is that stores at the address ADDLK pushes at k, with pure pushes of one value
+// between them (at most four, none of them a place control can enter); 0 when there is none.
+size_t stored_at(const std::vector<Instr>& code, size_t k, const std::vector<bool>& boundary) {
+  int depth = 0;
+  for (size_t j = k + 1; j < code.size() && j <= k + 4 && !boundary[code[j].pc]; ++j) {
+    const std::optional<int> effect = pure_effect(code[j].op);
+    if (!effect || depth + *effect < 1) return 0;
+    depth += *effect;
+    if (depth == 1 && j + 1 < code.size() && code[j + 1].op == Op::STM && !boundary[code[j + 1].pc])
+      return j + 1;
+  }
+  return 0;
+}
+
+// An address of a frame in the data memory and its use: "ADDLK l k; LDM" is LDMLK, and
+// "ADDLK l k; <pure pushes of one value>; STM" is the pushes and STMLK (the address computed
+// after the value, which changes nothing, since the pushes write nothing). An address's
+// unsigned range tests that keep it: "DUP; PUSHI k; CMPU <; JNZ T" is JULTK, and "DUP; LDL l;
+// SUBI; PUSHI k; CMPU <; JNZ T" is JULTLK. Over the fused code; nothing control can enter is
+// inside a sequence.
+void fuse_memory_frames(std::vector<Instr>& code, const std::vector<bool>& boundary) {
+  constexpr uint32_t kBelow = 2;  // CMPU's "<"
+  const auto inside_free = [&](size_t k, size_t n) {
+    if (k + n >= code.size()) return false;
+    for (size_t j = 1; j <= n; ++j)
+      if (boundary[code[k + j].pc]) return false;
+    return true;
+  };
+  const auto is = [&](size_t k, Op op) { return code[k].op == op; };
+  const auto below_then_jump = [&](size_t k) {  // PUSHI k; CMPU <; JNZ
+    return is(k, Op::PUSHI) && is(k + 1, Op::CMPU) && code[k + 1].a == kBelow && is(k + 2, Op::JNZ);
+  };
+  std::vector<Instr> fused;
+  fused.reserve(code.size());
+  for (size_t k = 0; k < code.size(); ++k) {
+    const Instr& i = code[k];
+    if (i.op == Op::ADDLK && inside_free(k, 1) && is(k + 1, Op::LDM)) {
+      fused.push_back(Instr{i.pc, Op::LDMLK, i.a, i.b});
+      k += 1;
+    } else if (i.op == Op::DUP && inside_free(k, 3) && below_then_jump(k + 1) &&
+               imm_of(code[k + 1]) >= 0) {
+      fused.push_back(Instr{i.pc, Op::JULTK, code[k + 3].a, static_cast<uint32_t>(imm_of(code[k + 1]))});
+      k += 3;
+    } else if (i.op == Op::DUP && inside_free(k, 5) && is(k + 1, Op::LDL) && code[k + 1].a <= 0xFFFF &&
+               is(k + 2, Op::SUBI) && below_then_jump(k + 3) && fits_int16(imm_of(code[k + 3])) &&
+               imm_of(code[k + 3]) >= 0) {
+      fused.push_back(Instr{i.pc, Op::JULTLK, code[k + 5].a,
+                            pack_local_imm(code[k + 1].a, imm_of(code[k + 3]))});
+      k += 5;
+    } else {
+      fused.push_back(i);
+    }
+  }
+  code.clear();
+  for (size_t k = 0; k < fused.size(); ++k) {
+    const size_t store = fused[k].op == Op::ADDLK ? stored_at(fused, k, boundary) : 0;
+    if (store == 0) {
+      code.push_back(fused[k]);
+      continue;
+    }
+    const Instr& address = fused[k];
+    for (size_t j = k + 1; j < store; ++j) code.push_back(fused[j]);
+    code[code.size() - (store - k - 1)].pc = address.pc;  // the sequence starts where the address did
+    code.push_back(Instr{fused[store].pc, Op::STMLK, address.a, address.b});
+    k = store;
+  }
+}
+
 // A jump to a JMP goes straight to its target; a jump-and-end-of-line to a RET becomes
 // RETEOL. Targets are followed a bounded number of steps, so a cycle of jumps stays a cycle.
 void thread_jumps(std::vector<uint32_t>& code) {
@@ -578,6 +661,7 @@ PeepholeStats optimize(Image& image) {
   }
 
   fold_accumulations(out, boundary);
+  fuse_memory_frames(out, boundary);
 
   // Old instruction starts (and the end) to new ones.
   std::vector<uint32_t> relocated(size + 1, UINT32_MAX);

@@ -1060,6 +1060,33 @@ op_STM: {
   DISPATCH();
 }
 
+// A word of a frame in the data memory: local A's address plus B, wrapping as ADDLK does.
+op_LDMLK: {
+  const uint32_t address = static_cast<uint32_t>(locals[A()].i) + B();
+  if (address >= memory_words_) FAIL(RunError::BadAddress);
+  *sp++ = memory_[address];
+  ip += 2;
+  DISPATCH();
+}
+op_STMLK: {
+  const uint32_t address = static_cast<uint32_t>(locals[A()].i) + B();
+  if (address >= memory_words_) FAIL(RunError::BadAddress);
+  memory_[address] = *--sp;
+  ip += 2;
+  DISPATCH();
+}
+// An address's range tests: the operand stays for the code after either path.
+op_JULTK:
+  if (static_cast<uint32_t>(sp[-1].i) < B()) JUMP_TO(code + A()); else ip += 2;
+  DISPATCH();
+op_JULTLK: {
+  const uint32_t pair = B();
+  const uint32_t offset =
+      static_cast<uint32_t>(sp[-1].i) - static_cast<uint32_t>(locals[bytecode::packed_first(pair)].i);
+  if (offset < static_cast<uint32_t>(bytecode::packed_imm(pair))) JUMP_TO(code + A()); else ip += 2;
+  DISPATCH();
+}
+
 op_SEXT: UNARY(Value::of_int(arith::sign_extend(a.i, A())))
 op_ZEXT: UNARY(Value::of_int(arith::zero_extend(a.i, A())))
 op_DIVU:

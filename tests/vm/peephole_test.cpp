@@ -783,6 +783,82 @@ done:
   EXPECT_EQ(line_slices(image), line_slices(plain.image));
 }
 
+// A frame in the data memory, as PDL compiles a procedure's parameters and locals (fp is
+// local 0): its words read and written at fp plus a constant, the address computed after a
+// value that writes nothing; a pointer's range tests keep the pointer. `*r = n - 1` through a
+// pointer into the frame; the same lines end.
+TEST(Peephole, FusesFramesInTheDataMemory) {
+  const char* text = R"(
+.global int "user" 4
+.global int "frame" 4
+.global int "seen" 1
+.routine function "main" in=0 out=0 entry=main
+.local int "fp"
+.local int "base"
+main:
+  PUSHI 4
+  STL 0
+  PUSHI 4
+  STL 1
+  ADDLK 0 1
+  PUSHI 7
+  STM
+  EOL
+  ADDLK 0 2
+  LDL 1
+  PUSHI 2
+  ADDI
+  STM
+  EOL
+  ADDLK 0 2
+  LDM
+  DUP
+  PUSHI 4
+  CMPU 2
+  JNZ flat
+  DUP
+  LDL 1
+  SUBI
+  PUSHI 4
+  CMPU 2
+  JNZ flat
+  RAISE 15
+flat:
+  ADDLK 0 1
+  LDM
+  PUSHI 1
+  SUBI
+  STM
+  EOL
+  ADDLK 0 0
+  ADDLK 0 3
+  LDM
+  STM
+  PUSHI 8
+  ADDLK 0 1
+  LDM
+  STM
+  EOL
+  RET
+)";
+  const bytecode::Image image = optimized(text);
+  const std::vector<Op> expected = {
+      Op::PUSHI, Op::STL, Op::PUSHI, Op::STL,
+      Op::PUSHI, Op::STMLK, Op::EOL,                   // frame[1] = 7
+      Op::ADDLK, Op::STMLK, Op::EOL,                   // frame[2] = base + 2 (a pointer: 6)
+      Op::LDMLK, Op::JULTK, Op::JULTLK, Op::RAISE,     // r = frame[2], in the user memory or the frame
+      Op::LDMLK, Op::PUSHI, Op::SUBI, Op::STM, Op::EOL,  // flat: *r = frame[1] - 1
+      Op::LDMLK, Op::STMLK,                            // frame[0] = frame[3]
+      Op::PUSHI, Op::LDMLK, Op::STM, Op::EOL,          // seen = frame[1]: the address first
+      Op::RET};
+  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  expect_same_behaviour(text, "frames in the data memory");
+  EXPECT_EQ(run_and_read(image, "seen"), 7);
+  LoadedProgram plain;
+  ASSERT_TRUE(plain.load(text));
+  EXPECT_EQ(line_slices(image), line_slices(plain.image));
+}
+
 // No global form is made across a place control can enter: `inside` is a routine's entry.
 TEST(Peephole, NeverFusesGlobalsAcrossAnEntry) {
   LoadedProgram p;
