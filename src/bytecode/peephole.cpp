@@ -604,6 +604,58 @@ void fuse_memory_frames(std::vector<Instr>& code, const std::vector<bool>& bound
   }
 }
 
+// After the fusions a branch may jump past an EOL that then nothing reaches (PDL's and ST's
+// `if` without `else`: "JZ f; EOL; body; JMP end; f: EOL; end:" becomes "JZGEOL end; body;
+// STGJEOL end; EOL; end:"). Code that follows an unconditional jump or a stop and that nothing
+// enters (no target, routine entry or line start) is dropped; a jump to what then follows it
+// falls through: `JMP` goes, `JMPEOL` is an EOL (but before a RET, which thread_jumps makes
+// RETEOL of), `STGJEOL g` is `STGEOL g`, and two globals'
+// arithmetic stored that way is its three-address form.
+void drop_dead_code(std::vector<Instr>& code, const Image& image, size_t size) {
+  std::vector<bool> entered(size + 1, false);
+  for (const Routine& r : image.routines)
+    if (r.entry <= size) entered[r.entry] = true;
+  for (const LineEntry& l : image.lines)
+    if (l.code <= size) entered[l.code] = true;
+  for (const Instr& i : code)
+    if (op_info(i.op).a == Operand::Target && i.a <= size) entered[i.a] = true;
+  std::vector<Instr> live;
+  live.reserve(code.size());
+  bool reached = true;
+  for (const Instr& i : code) {
+    reached = reached || entered[i.pc];
+    if (!reached) continue;
+    live.push_back(i);
+    const Flow flow = op_info(i.op).flow;
+    reached = flow != Flow::Jump && flow != Flow::Stop;
+  }
+  static constexpr std::array<std::array<Op, 2>, 5> kStored = {{{Op::ADDIGG, Op::ADDIGGEOL},
+                                                                {Op::SUBIGG, Op::SUBIGGEOL},
+                                                                {Op::ADDFGG, Op::ADDFGGEOL},
+                                                                {Op::SUBFGG, Op::SUBFGGEOL},
+                                                                {Op::MULFGG, Op::MULFGGEOL}}};
+  code.clear();
+  for (size_t k = 0; k < live.size(); ++k) {
+    Instr i = live[k];
+    const bool to_next = k + 1 < live.size() && op_info(i.op).a == Operand::Target &&
+                         i.a == live[k + 1].pc;
+    if (to_next && i.op == Op::JMP && !entered[i.pc]) continue;
+    // Before a RET the jump stays: thread_jumps makes it one RETEOL.
+    if (to_next && i.op == Op::JMPEOL && live[k + 1].op != Op::RET) i = Instr{i.pc, Op::EOL, 0, 0};
+    if (to_next && i.op == Op::STGJEOL) i = Instr{i.pc, Op::STGEOL, i.b, 0};
+    if (i.op == Op::STGEOL && !code.empty() && !entered[i.pc]) {
+      Instr& arithmetic = code.back();
+      for (const auto& [push, store] : kStored) {
+        if (arithmetic.op != push) continue;
+        arithmetic = Instr{arithmetic.pc, store, i.a, arithmetic.b};
+        i.op = Op::NOP;  // merged into the arithmetic
+      }
+      if (i.op == Op::NOP) continue;
+    }
+    code.push_back(i);
+  }
+}
+
 // A jump to a JMP goes straight to its target; a jump-and-end-of-line to a RET becomes
 // RETEOL. Targets are followed a bounded number of steps, so a cycle of jumps stays a cycle.
 void thread_jumps(std::vector<uint32_t>& code) {
@@ -662,6 +714,11 @@ PeepholeStats optimize(Image& image) {
 
   fold_accumulations(out, boundary);
   fuse_memory_frames(out, boundary);
+  // A jump dropped may leave the place it went to unentered: again until nothing changes.
+  for (size_t before = out.size() + 1; out.size() < before;) {
+    before = out.size();
+    drop_dead_code(out, image, size);
+  }
 
   // Old instruction starts (and the end) to new ones.
   std::vector<uint32_t> relocated(size + 1, UINT32_MAX);
