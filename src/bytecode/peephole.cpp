@@ -478,17 +478,23 @@ class Fuser {
   bool room_for_constants_;
 };
 
-// What pushes one value and writes nothing: an expression an accumulation may hold.
-bool pure_push(Op op) {
+// The stack effect of an instruction that writes nothing and never jumps (it may fail, as
+// LDMLK and LDM may): what an accumulation's expression may be, and what may stand between an
+// address and the STM that stores at it. nullopt for any other.
+std::optional<int> pure_effect(Op op) {
   switch (op) {
-    case Op::LDG: case Op::LDL: case Op::PUSHI: case Op::PUSHK:
+    case Op::LDG: case Op::LDL: case Op::PUSHI: case Op::PUSHK: case Op::LDMLK:
     case Op::ADDIGG: case Op::SUBIGG: case Op::ADDFGG: case Op::SUBFGG: case Op::MULFGG:
     case Op::ADDGK: case Op::REMGK: case Op::ADDLK: case Op::REMLK:
     case Op::ADDILL: case Op::SUBILL: case Op::ADDFLL: case Op::SUBFLL: case Op::MULFLL:
     case Op::ADDFGK: case Op::SUBFGK: case Op::MULFGK: case Op::MULFKG:
-      return true;
+      return 1;
+    case Op::LDL2: case Op::LDG2:
+      return 2;
+    case Op::ADDI: case Op::SUBI: case Op::MULI:
+      return -1;
     default:
-      return false;
+      return std::nullopt;
   }
 }
 
@@ -499,8 +505,9 @@ void fold_accumulations(std::vector<Instr>& code, const std::vector<bool>& bound
   std::vector<Instr> folded;
   folded.reserve(code.size());
   for (size_t k = 0; k < code.size(); ++k) {
-    const bool shaped = k + 3 < code.size() && code[k].op == Op::LDG && pure_push(code[k + 1].op) &&
-                        code[k + 3].op == Op::STGEOL && code[k + 3].a == code[k].a &&
+    const bool shaped = k + 3 < code.size() && code[k].op == Op::LDG &&
+                        pure_effect(code[k + 1].op) == 1 && code[k + 3].op == Op::STGEOL &&
+                        code[k + 3].a == code[k].a &&
                         !boundary[code[k + 1].pc] && !boundary[code[k + 2].pc] &&
                         !boundary[code[k + 3].pc];
     const Op combine = shaped ? code[k + 2].op : Op::NOP;
@@ -519,21 +526,6 @@ void fold_accumulations(std::vector<Instr>& code, const std::vector<bool>& bound
     k += 3;
   }
   code = std::move(folded);
-}
-
-// Pushes of values that write nothing and never jump, with their stack effect: what may stand
-// between an address (ADDLK) and the STM that stores at it. LDMLK may fail, as the LDM it was.
-std::optional<int> pure_effect(Op op) {
-  switch (op) {
-    case Op::LDL: case Op::LDG: case Op::PUSHI: case Op::PUSHK: case Op::ADDLK: case Op::LDMLK:
-      return 1;
-    case Op::LDL2: case Op::LDG2:
-      return 2;
-    case Op::ADDI: case Op::SUBI: case Op::MULI:
-      return -1;
-    default:
-      return std::nullopt;
-  }
 }
 
 // Where the STM is that stores at the address ADDLK pushes at k, with pure pushes of one value
