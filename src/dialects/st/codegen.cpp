@@ -259,42 +259,9 @@ class Generator {
         store(s.target);
         eol();
         return;
-      case Stmt::Kind::If: {
-        const L other = b_.new_label(), end = b_.new_label();
-        line(s.offset);
-        condition(s.expr);
-        eol();
-        b_.emit_to(bytecode::Op::JZ, other);
-        body(s.body);
-        if (!s.else_body.empty()) b_.emit_to(bytecode::Op::JMP, end);
-        b_.bind(other);
-        body(s.else_body);
-        b_.bind(end);
-        return;
-      }
-      case Stmt::Kind::While: {
-        const L top = b_.new_label(), end = b_.new_label();
-        b_.bind(top);
-        line(s.offset);
-        condition(s.expr);
-        eol();
-        b_.emit_to(bytecode::Op::JZ, end);
-        body(s.body);
-        b_.emit_to(bytecode::Op::JMP, top);
-        b_.bind(end);
-        return;
-      }
-      case Stmt::Kind::Repeat: {
-        const L top = b_.new_label();
-        b_.bind(top);
-        body(s.body);
-        line(s.offset);
-        image_.lines.back().line = static_cast<uint32_t>(s.cond_line);
-        condition(s.expr);
-        eol();
-        b_.emit_to(bytecode::Op::JZ, top);
-        return;
-      }
+      case Stmt::Kind::If: return if_statement(s);
+      case Stmt::Kind::While: return while_loop(s);
+      case Stmt::Kind::Repeat: return repeat_loop(s);
       case Stmt::Kind::For: return for_loop(s);
       case Stmt::Kind::Goto:
         line(s.offset);
@@ -320,27 +287,94 @@ class Generator {
     }
   }
 
+  // A condition's line ends after its branch, on both paths: here when the branch falls
+  // through, and at its target by an EOL there (taken_path_ends_line). The peephole makes the
+  // comparison, the branch and both ends one instruction (JxxGKEOL, JZGEOL: ending_line_form in
+  // bytecode/peephole.cpp); an EOL before the branch would keep the comparison apart from it.
+  void branch_ending_line(bytecode::Op branch, L target) {
+    b_.emit_to(branch, target);
+    eol();
+  }
+  // The taken branch's end of the condition's line: bound before the EOL, which starts no
+  // source line, so the fused branch jumps past it.
+  void taken_path_ends_line(L target) {
+    b_.bind(target);
+    eol();
+  }
+
+  // The THEN arm always jumps over the ELSE side's EOL: its condition's line has ended already.
+  void if_statement(const Stmt& s) {
+    const L other = b_.new_label(), end = b_.new_label();
+    line(s.offset);
+    condition(s.expr);
+    branch_ending_line(bytecode::Op::JZ, other);
+    body(s.body);
+    b_.emit_to(bytecode::Op::JMP, end);
+    taken_path_ends_line(other);
+    body(s.else_body);
+    b_.bind(end);
+  }
+
+  void while_loop(const Stmt& s) {
+    const L top = b_.new_label(), done = b_.new_label();
+    b_.bind(top);
+    line(s.offset);
+    condition(s.expr);
+    branch_ending_line(bytecode::Op::JZ, done);
+    body(s.body);
+    b_.emit_to(bytecode::Op::JMP, top);
+    taken_path_ends_line(done);
+  }
+
+  // The UNTIL line goes back to the body by a JMP after its end: a branch back that ended the
+  // line would need an EOL before the body, and the loop would be entered by a jump over it, a
+  // place between lines that is no line start (where a held thread would be shown at the line
+  // before the loop).
+  void repeat_loop(const Stmt& s) {
+    const L top = b_.new_label(), done = b_.new_label();
+    b_.bind(top);
+    body(s.body);
+    line(s.offset);
+    image_.lines.back().line = static_cast<uint32_t>(s.cond_line);
+    condition(s.expr);
+    branch_ending_line(bytecode::Op::JNZ, done);
+    b_.emit_to(bytecode::Op::JMP, top);
+    taken_path_ends_line(done);
+  }
+
+  // The test is at the bottom, entered by a jump from the FOR line's start, so that a pass
+  // pays the step and one branch (a JMP back to a test at the top cannot fuse with the step).
+  // The FOR line ends after the test, as a condition's line does. A literal bound is compared
+  // as a constant (a global-constant branch, JLEGKEOL); any other is evaluated once into the
+  // loop's hidden local.
   void for_loop(const Stmt& s) {
+    const Expr& to = ex(s.expr2);
+    const bool literal_bound = to.kind == Expr::Kind::Const;
     const uint32_t bound = kFirstForLocal + static_cast<uint32_t>(s.scratch);
-    const L top = b_.new_label(), end = b_.new_label();
+    const L again = b_.new_label(), test = b_.new_label();
     line(s.offset);
     expression(s.expr);
     store(s.target);
-    expression(s.expr2);
-    b_.emit(bytecode::Op::STL, bound);
-    b_.bind(top);
-    b_.emit(bytecode::Op::LDG, s.target);
-    b_.emit(bytecode::Op::LDL, bound);
-    b_.emit(s.step > 0 ? bytecode::Op::GTI : bytecode::Op::LTI);
-    eol();
-    b_.emit_to(bytecode::Op::JNZ, end);
+    if (!literal_bound) {
+      expression(s.expr2);
+      b_.emit(bytecode::Op::STL, bound);
+    }
+    b_.emit_to(bytecode::Op::JMP, test);
+    taken_path_ends_line(again);
     body(s.body);
     b_.emit(bytecode::Op::LDG, s.target);
     push(s.step);
     b_.emit(bytecode::Op::ADDI);
     store(s.target);
-    b_.emit_to(bytecode::Op::JMP, top);
-    b_.bind(end);
+    b_.bind(test);
+    b_.emit(bytecode::Op::LDG, s.target);
+    if (literal_bound) {
+      push(to.value);
+    } else {
+      b_.emit(bytecode::Op::LDL, bound);
+    }
+    b_.emit(s.step > 0 ? bytecode::Op::LEI : bytecode::Op::GEI);
+    branch_ending_line(bytecode::Op::JNZ, again);
   }
 
   void ldg(const Arg& a) { b_.emit(bytecode::Op::LDG, a.global); }
