@@ -1,0 +1,209 @@
+// The code the ST compiler makes of a condition's line (IF, WHILE, UNTIL, FOR): the line ends
+// after its branch on both paths, so that the peephole pass makes comparison, branch and end of
+// line one instruction; and every path still ends each line exactly once, since the drive's
+// line budget and TASK's figures count the line ends.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bytecode/image.h"
+#include "bytecode/opcodes.h"
+#include "dialect/loaded_program.h"
+#include "dialects/st/compile.h"
+
+namespace uprog {
+namespace {
+
+bytecode::Image compiled(const std::string& source) {
+  const st::CompileResult r = st::compile(SourceFile{"t.st", source});
+  EXPECT_TRUE(r.ok()) << format_text(r.diagnostics);
+  return r.image;
+}
+
+// The instructions of source line `line`, from each place it starts up to the next line's
+// start, by name.
+std::vector<std::string> ops_on_line(const bytecode::Image& image, uint32_t line) {
+  std::vector<std::string> out;
+  for (size_t k = 0; k < image.lines.size(); ++k) {
+    if (image.lines[k].line != line) continue;
+    const uint32_t end = k + 1 < image.lines.size() ? image.lines[k + 1].code
+                                                    : static_cast<uint32_t>(image.code.size());
+    for (uint32_t pc = image.lines[k].code; pc < end;
+         pc += bytecode::op_length(bytecode::word_op(image.code[pc])))
+      out.emplace_back(bytecode::op_name(bytecode::word_op(image.code[pc])));
+  }
+  return out;
+}
+std::string first_op(const bytecode::Image& image, uint32_t line) {
+  const auto ops = ops_on_line(image, line);
+  return ops.empty() ? "" : ops.front();
+}
+// The last two instructions the line table gives `line`, or fewer.
+std::string last_ops(const bytecode::Image& image, uint32_t line) {
+  const auto ops = ops_on_line(image, line);
+  std::string out;
+  for (size_t k = ops.size() < 2 ? 0 : ops.size() - 2; k < ops.size(); ++k)
+    out += (out.empty() ? "" : " ") + ops[k];
+  return out;
+}
+
+// Nothing the programs below do reaches the drive.
+class NoDrive final : public vm::Host {
+ public:
+  vm::CommandStatus read(uint32_t, int32_t, Value&) override { return vm::kCommandUnsupported; }
+  vm::CommandStatus write(uint32_t, int32_t, Value) override { return vm::kCommandUnsupported; }
+  vm::CommandStatus execute(uint32_t, int32_t, const Value*, uint32_t) override {
+    return vm::kCommandUnsupported;
+  }
+  uint32_t now_us() override { return 0; }
+};
+
+struct LineRun {
+  // Where each one-line slice begins, in order: "7" at the start of source line 7, "(7)" inside
+  // the code the line table gives line 7 (a FOR's step after its body's last line, say), which
+  // is where a held thread is shown.
+  std::string slices;
+  std::unique_ptr<dialect::LoadedProgram> program;
+  int32_t global(const std::string& name) const {
+    const bytecode::Image& image = program->image();
+    for (uint32_t g = 0; g < image.globals.size(); ++g) {
+      Value v;
+      if (image.globals[g].name == name && program->machine().read_global(g, 0, v)) return v.i;
+    }
+    ADD_FAILURE() << "no global " << name;
+    return 0;
+  }
+};
+
+std::string place(const bytecode::Image& image, uint32_t pc) {
+  const bytecode::LineEntry* at = image.line_at(pc);
+  if (at == nullptr) return "?";
+  const std::string line = std::to_string(at->line);
+  return at->code == pc ? line : "(" + line + ")";
+}
+
+// Runs FUNCTION `name` a line a slice, as the drive's schedule does when a budget ends after
+// every line: a line that ended twice on some path would take a slice of its own, one that did
+// not end would run on into the next line's slice.
+LineRun run_line_by_line(const bytecode::Image& image, const std::string& name) {
+  static NoDrive host;
+  LineRun run;
+  vm::MachineConfig config;
+  config.threads = 1;
+  config.stack = 512;
+  std::string error;
+  run.program = dialect::LoadedProgram::load(bytecode::encode(image), config, host, &error);
+  if (!run.program) {
+    ADD_FAILURE() << error;
+    return run;
+  }
+  vm::Machine& m = run.program->machine();
+  EXPECT_EQ(m.start(0, static_cast<uint32_t>(image.find_routine(name))), vm::RunError::None);
+  for (int slices = 0; slices < 1000; ++slices) {
+    run.slices += (run.slices.empty() ? "" : " ") + place(image, m.pc(0));
+    const vm::SliceResult r = m.run_slice(0, vm::Budget::of_lines(1));
+    if (r.end != vm::SliceEnd::LineEnd) {
+      EXPECT_EQ(r.end, vm::SliceEnd::Finished);
+      break;
+    }
+  }
+  return run;
+}
+
+// Each construct's condition on a global against a constant, or a global alone.
+const char* kConditions = R"(LONG A, N, S;
+FUNCTION F
+  IF A = 3 THEN
+    S := 1;
+  ELSE
+    S := 2;
+  END_IF;
+  WHILE N < 10 DO
+    N := N + 1;
+  END_WHILE;
+  REPEAT
+    N := N - 1;
+  UNTIL N = 0
+  FOR A := 1 TO 30000000 DO
+    S := S + A;
+  END_FOR;
+  IF S THEN
+    RETURN;
+  END_IF;
+END_FUNCTION
+)";
+
+// What the peephole makes of the rest of the code may change; a condition's line is its fused
+// branch, which ends the line on both paths.
+TEST(st_codegen, AConditionsLineIsOneBranchThatEndsIt) {
+  const bytecode::Image image = compiled(kConditions);
+  EXPECT_EQ(first_op(image, 3), "JNEGKEOL");  // IF A = 3: to the ELSE side unless
+  EXPECT_EQ(first_op(image, 8), "JGEGKEOL");  // WHILE N < 10: out unless
+  EXPECT_EQ(first_op(image, 13), "JZGEOL");   // UNTIL N = 0: out if (a test against 0)
+  EXPECT_EQ(first_op(image, 17), "JZGEOL");   // IF S
+  // FOR: the test is at the bottom, after the body's last line; a pass ends with the step and
+  // the branch back against the literal bound, a constant.
+  EXPECT_EQ(last_ops(image, 15), "INCG JLEGKEOL");
+  for (uint32_t line : {3u, 8u, 13u, 15u, 17u})
+    for (const std::string& op : ops_on_line(image, line))
+      EXPECT_TRUE(op != "JZ" && op != "JNZ") << "line " << line << ": an unfused branch";
+}
+
+// Every shape, fused or not: the branches on a constant, a two globals' comparison and an AND
+// (no ending form: the EOLs stay apart), a FOR with a negative step and one with a bound that is
+// evaluated once. Each line takes one slice each time it runs.
+const char* kPaths = R"(LONG A, B, N, S, K;
+FUNCTION F
+  FOR A := 1 TO 3 DO
+    IF A = 2 THEN
+      S := S + A;
+    ELSE
+      K := K + 1;
+    END_IF;
+  END_FOR;
+  WHILE N < 2 DO
+    N := N + 1;
+  END_WHILE;
+  REPEAT
+    N := N - 1;
+  UNTIL N = 0
+  FOR B := N TO A BY 2 DO
+    IF B > A THEN
+      S := 100;
+    END_IF;
+  END_FOR;
+  FOR N := 3 TO 1 BY -1 DO
+  END_FOR;
+  IF S <> 0 AND K <> 0 THEN
+    S := S + 1;
+  END_IF;
+  IF S = 0 THEN
+  END_IF;
+END_FUNCTION
+)";
+
+TEST(st_codegen, EveryPathEndsEachLineOnce) {
+  const LineRun run = run_line_by_line(compiled(kPaths), "F");
+  // FOR A: 1 (ELSE), 2 (THEN), 3 (ELSE); each pass's step and test end the FOR line again.
+  const std::string for_a = "3 4 7 (7) 4 5 (7) 4 7 (7)";
+  const std::string while_n = "10 11 10 11 10";  // twice, then out
+  // N 2 -> 1 -> 0; the UNTIL line's way back is a JMP after its end, as it was a JZ.
+  const std::string repeat_n = "14 15 (15) 15";
+  // FOR B := 0 TO 4 BY 2 (a bound in the hidden local): the IF's false side ends its line at
+  // its target's EOL, then the step.
+  const std::string for_b = "16 17 (18) 17 (18) 17 (18)";
+  const std::string for_n = "21 (21) (21) (21)";  // 3, 2, 1, out: an empty body
+  const std::string ifs = "23 24 26 (26)";        // the AND true; S = 0 false, then the RET
+  EXPECT_EQ(run.slices,
+            for_a + " " + while_n + " " + repeat_n + " " + for_b + " " + for_n + " " + ifs);
+  EXPECT_EQ(run.global("A"), 4);
+  EXPECT_EQ(run.global("B"), 6);
+  EXPECT_EQ(run.global("N"), 0);
+  EXPECT_EQ(run.global("S"), 3);
+  EXPECT_EQ(run.global("K"), 2);
+}
+
+}  // namespace
+}  // namespace uprog
