@@ -373,6 +373,13 @@ uint64_t line_slices(const bytecode::Image& image) {
   return slices;
 }
 
+// The optimized `image` of `text` ends its lines where the plain code does.
+void expect_same_line_ends(const char* text, const bytecode::Image& image) {
+  LoadedProgram plain;
+  ASSERT_TRUE(plain.load(text));
+  EXPECT_EQ(line_slices(image), line_slices(plain.image));
+}
+
 // A loop whose variables are all globals, as PDL and ST compile theirs: the global forms of
 // compare-and-branch, constant arithmetic, increment, pairs, and the stores that end a line.
 TEST(Peephole, FusesGlobals) {
@@ -475,9 +482,7 @@ end:
   EXPECT_EQ(run_and_read(image, "r"), 100 * 101);  // s = 100 (i % 3 summed), i = 101
   EXPECT_EQ(run_and_read(image, "s"), 96);
   EXPECT_EQ(run_and_read(image, "v"), 1);
-  LoadedProgram plain;
-  ASSERT_TRUE(plain.load(text));
-  EXPECT_EQ(line_slices(image), line_slices(plain.image));
+  expect_same_line_ends(text, image);
 }
 
 // A counter's step and a constant's store that end their lines (PDL's `n++;` and `f=0.0;`) are
@@ -521,9 +526,7 @@ done:
   expect_same_behaviour(text, "line-ending counter and constant");
   EXPECT_EQ(run_and_read(image, "n"), 5);
   EXPECT_EQ(run_and_read(image, "m"), 5);
-  LoadedProgram plain;
-  ASSERT_TRUE(plain.load(text));
-  EXPECT_EQ(line_slices(image), line_slices(plain.image));
+  expect_same_line_ends(text, image);
   EXPECT_EQ(line_slices(image), 5u * 4);  // four lines a turn; the last test jumps to the end
 }
 
@@ -623,9 +626,7 @@ done:
   EXPECT_EQ(run_and_read(image, "i"), 10);
   EXPECT_EQ(run_and_read(image, "s"), 9);  // p reaches 0.5 in the first turn's else
   EXPECT_EQ(run_and_read(image, "r"), 1);
-  LoadedProgram plain;
-  ASSERT_TRUE(plain.load(text));
-  EXPECT_EQ(line_slices(image), line_slices(plain.image));
+  expect_same_line_ends(text, image);
 }
 
 // Where the branch's target EOL starts a source line, the branch still goes to it: a breakpoint
@@ -771,9 +772,7 @@ done:
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   expect_same_behaviour(text, "three-address globals");
   EXPECT_EQ(run_and_read(image, "i"), 12);
-  LoadedProgram plain;
-  ASSERT_TRUE(plain.load(text));
-  EXPECT_EQ(line_slices(image), line_slices(plain.image));
+  expect_same_line_ends(text, image);
 }
 
 // A frame in the data memory, as PDL compiles a procedure's parameters and locals (fp is
@@ -847,9 +846,7 @@ flat:
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   expect_same_behaviour(text, "frames in the data memory");
   EXPECT_EQ(run_and_read(image, "seen"), 7);
-  LoadedProgram plain;
-  ASSERT_TRUE(plain.load(text));
-  EXPECT_EQ(line_slices(image), line_slices(plain.image));
+  expect_same_line_ends(text, image);
 }
 
 // An `if` without `else` as PDL and ST compile it: the condition's line ends on both paths
@@ -906,9 +903,7 @@ done:
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   expect_same_behaviour(text, "dead code");
   EXPECT_EQ(run_and_read(image, "s"), 9);  // 1 + 2 + 0, three times
-  LoadedProgram plain;
-  ASSERT_TRUE(plain.load(text));
-  EXPECT_EQ(line_slices(image), line_slices(plain.image));
+  expect_same_line_ends(text, image);
 }
 
 // No global form is made across a place control can enter: `inside` is a routine's entry.
