@@ -19,9 +19,11 @@ struct Instr {
   uint32_t a;
   uint32_t b;
   // A fused global comparison with an immediate (PUSHI k) compares with a constant: the
-  // pass finds or adds the int constant k and puts its index into B's second half.
+  // pass finds or adds the int constant k and puts its index into B's second half (or, for a
+  // constant's store, STGK, into the whole of B).
   bool wants_constant = false;
   int32_t constant = 0;
+  bool constant_is_b = false;
 };
 
 bool decode(const std::vector<uint32_t>& code, std::vector<Instr>& out) {
@@ -408,12 +410,18 @@ class Fuser {
     return std::pair{Instr{at(i).pc, Op::LDG2, at(i).a, at(i + 1).a}, size_t{2}};
   }
 
-  // PUSHK k; STG g [; EOL]
+  // PUSHK k | PUSHI k; STG g [; EOL]
   std::optional<std::pair<Instr, size_t>> store_global_constant(size_t i) const {
-    if (!free(i, 1) || at(i).op != Op::PUSHK || at(i + 1).op != Op::STG) return std::nullopt;
-    if (lone_eol(i, 2))
-      return std::pair{Instr{at(i).pc, Op::STGKEOL, at(i + 1).a, at(i).a}, size_t{3}};
-    return std::pair{Instr{at(i).pc, Op::STGK, at(i + 1).a, at(i).a}, size_t{2}};
+    const bool immediate = at(i).op == Op::PUSHI && room_for_constants_;
+    if (!free(i, 1) || (at(i).op != Op::PUSHK && !immediate) || at(i + 1).op != Op::STG)
+      return std::nullopt;
+    const bool eol = lone_eol(i, 2);
+    Instr out{at(i).pc, eol ? Op::STGKEOL : Op::STGK, at(i + 1).a, at(i).a};
+    if (immediate) {  // an int constant of its own (`R3 := 0`)
+      out.wants_constant = out.constant_is_b = true;
+      out.constant = imm_of(at(i));
+    }
+    return std::pair{out, size_t{eol ? 3u : 2u}};
   }
 
   // STG g; EOL; JMP T | STG g; JMPEOL T | STG g; EOL — the end of an assignment's line.
@@ -596,13 +604,39 @@ void fuse_memory_frames(std::vector<Instr>& code, const std::vector<bool>& bound
   }
 }
 
+// Appends `i`, merged into the instruction before it when nothing enters `i`: an EOL into the
+// store or step whose line it ends (`R3 := 0;` in an IF, once the jump over the ELSE side's EOL
+// falls through), a global's store that ends a line into two globals' arithmetic before it.
+void append_merging(std::vector<Instr>& code, const Instr& i, const std::vector<bool>& entered) {
+  static constexpr std::array<std::array<Op, 2>, 3> kEnding = {
+      {{Op::STG, Op::STGEOL}, {Op::STGK, Op::STGKEOL}, {Op::INCG, Op::INCGEOL}}};
+  static constexpr std::array<std::array<Op, 2>, 5> kStored = {{{Op::ADDIGG, Op::ADDIGGEOL},
+                                                                {Op::SUBIGG, Op::SUBIGGEOL},
+                                                                {Op::ADDFGG, Op::ADDFGGEOL},
+                                                                {Op::SUBFGG, Op::SUBFGGEOL},
+                                                                {Op::MULFGG, Op::MULFGGEOL}}};
+  if (!code.empty() && !entered[i.pc]) {
+    const Instr last = code.back();
+    std::optional<Instr> merged;
+    for (const auto& [plain, ending] : kEnding)
+      if (i.op == Op::EOL && last.op == plain) merged = Instr{last.pc, ending, last.a, last.b};
+    for (const auto& [push, store] : kStored)
+      if (i.op == Op::STGEOL && last.op == push) merged = Instr{last.pc, store, i.a, last.b};
+    if (merged) {
+      code.pop_back();
+      append_merging(code, *merged, entered);  // a store that now ends a line may merge again
+      return;
+    }
+  }
+  code.push_back(i);
+}
+
 // After the fusions a branch may jump past an EOL that then nothing reaches (PDL's and ST's
 // `if` without `else`: "JZ f; EOL; body; JMP end; f: EOL; end:" becomes "JZGEOL end; body;
 // STGJEOL end; EOL; end:"). Code that follows an unconditional jump or a stop and that nothing
 // enters (no target, routine entry or line start) is dropped; a jump to what then follows it
 // falls through: `JMP` goes, `JMPEOL` is an EOL (but before a RET, which thread_jumps makes
-// RETEOL of), `STGJEOL g` is `STGEOL g`, and two globals'
-// arithmetic stored that way is its three-address form.
+// RETEOL of), `STGJEOL g` is `STGEOL g`, and what they end merges (append_merging).
 void drop_dead_code(std::vector<Instr>& code, const Image& image, size_t size) {
   std::vector<bool> entered(size + 1, false);
   for (const Routine& r : image.routines)
@@ -621,11 +655,6 @@ void drop_dead_code(std::vector<Instr>& code, const Image& image, size_t size) {
     const Flow flow = op_info(i.op).flow;
     reached = flow != Flow::Jump && flow != Flow::Stop;
   }
-  static constexpr std::array<std::array<Op, 2>, 5> kStored = {{{Op::ADDIGG, Op::ADDIGGEOL},
-                                                                {Op::SUBIGG, Op::SUBIGGEOL},
-                                                                {Op::ADDFGG, Op::ADDFGGEOL},
-                                                                {Op::SUBFGG, Op::SUBFGGEOL},
-                                                                {Op::MULFGG, Op::MULFGGEOL}}};
   code.clear();
   for (size_t k = 0; k < live.size(); ++k) {
     Instr i = live[k];
@@ -635,16 +664,7 @@ void drop_dead_code(std::vector<Instr>& code, const Image& image, size_t size) {
     // Before a RET the jump stays: thread_jumps makes it one RETEOL.
     if (to_next && i.op == Op::JMPEOL && live[k + 1].op != Op::RET) i = Instr{i.pc, Op::EOL, 0, 0};
     if (to_next && i.op == Op::STGJEOL) i = Instr{i.pc, Op::STGEOL, i.b, 0};
-    if (i.op == Op::STGEOL && !code.empty() && !entered[i.pc]) {
-      Instr& arithmetic = code.back();
-      for (const auto& [push, store] : kStored) {
-        if (arithmetic.op != push) continue;
-        arithmetic = Instr{arithmetic.pc, store, i.a, arithmetic.b};
-        i.op = Op::NOP;  // merged into the arithmetic
-      }
-      if (i.op == Op::NOP) continue;
-    }
-    code.push_back(i);
+    append_merging(code, i, entered);
   }
 }
 
@@ -694,7 +714,8 @@ PeepholeStats optimize(Image& image) {
     if (auto m = fuser.match(i)) {
       if (m->first.wants_constant) {
         const Constant k{ValueType::Int, static_cast<uint32_t>(m->first.constant)};
-        m->first.b = pack_locals(packed_first(m->first.b), image.constant_index(k));
+        const uint32_t index = image.constant_index(k);
+        m->first.b = m->first.constant_is_b ? index : pack_locals(packed_first(m->first.b), index);
       }
       out.push_back(m->first);
       i += m->second;

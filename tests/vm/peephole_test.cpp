@@ -290,8 +290,8 @@ skip3:
 )";
   const bytecode::Image image = optimized(text);
   const std::vector<Op> expected = {Op::STLK, Op::STLK, Op::STLK,
-                                    Op::JNLTFLL, Op::PUSHI, Op::STG,   // a < b
-                                    Op::JNGEFLK, Op::PUSHI, Op::STG,   // q >= 0.5: NaN, skipped
+                                    Op::JNLTFLL, Op::STGK,             // a < b: count = 1
+                                    Op::JNGEFLK, Op::STGK,             // q >= 0.5: NaN, skipped
                                     Op::JNGEFLK, Op::INCG,                   // a >= 0.5: count += 10
                                     Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
@@ -459,7 +459,7 @@ end:
 )";
   const bytecode::Image image = optimized(text);
   const std::vector<Op> expected = {
-      Op::PUSHI, Op::STGEOL,          // i = 1
+      Op::STGKEOL,                    // i = 1 (the immediate as a constant)
       Op::STGKEOL,                    // v = 0.5
       Op::STGKEOL,                    // p = 0.5
       Op::JGTGK, Op::EOL,             // while i <= 100 (the constant 100)
@@ -472,12 +472,14 @@ end:
       Op::LDG2, Op::MULI, Op::STG,    // r = s * i
       Op::ADDGK, Op::STG,             // s = i - 5
       Op::JLEGK,                      // if r > 7 (the immediate 7 as an added constant)
-      Op::PUSHI, Op::STG,
+      Op::STGK,                       // v = 1
       Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
-  // PUSHI 7 became a constant of its own; 100 and 0.5 were there already.
-  ASSERT_EQ(image.constants.size(), 3u);
-  EXPECT_EQ(static_cast<int32_t>(image.constants[2].bits), 7);
+  // The immediates 1 (stored twice) and 7 became constants of their own; 100 and 0.5 were
+  // there already.
+  ASSERT_EQ(image.constants.size(), 4u);
+  EXPECT_EQ(static_cast<int32_t>(image.constants[2].bits), 1);
+  EXPECT_EQ(static_cast<int32_t>(image.constants[3].bits), 7);
   expect_same_behaviour(text, "globals");
   EXPECT_EQ(run_and_read(image, "r"), 100 * 101);  // s = 100 (i % 3 summed), i = 101
   EXPECT_EQ(run_and_read(image, "s"), 96);
@@ -608,14 +610,14 @@ done:
 )";
   const bytecode::Image image = optimized(text);
   const std::vector<Op> expected = {
-      Op::PUSHI, Op::STGEOL,                        // i = 0
+      Op::STGKEOL,                                  // i = 0
       Op::STGKEOL,                                  // q = 1.0
       Op::JGEGKEOL,                                 // while i < 10
       Op::JNGEFGKEOL,                               // if p >= 0.5
       Op::INCG, Op::JMPEOL,                         // s = s + 1 (else1's EOL: dropped)
       Op::ADDFGK, Op::STGEOL,                       // p = p + 0.5
       Op::JNLTFGGEOL,                               // join1: if p < q
-      Op::PUSHI, Op::STGEOL,                        // r = 1
+      Op::STGKEOL,                                  // r = 1
       Op::EOL,                                      // skip2
       Op::JZGEOL,                                   // if r
       Op::INCG, Op::JMPEOL,                         // i = i + 1
@@ -906,6 +908,62 @@ done:
   expect_same_line_ends(text, image);
 }
 
+// ST's `IF R3 = 3 THEN R3 := 0; END_IF;`: the THEN arm's line ends, then its jump over the
+// ELSE side's EOL, which nothing reaches once the condition's branch ends its line. The
+// immediate's store becomes a constant's (a constant of its own), and with the jump gone the
+// EOL merges into it: the arm is one STGKEOL.
+TEST(Peephole, EndsAnArmInItsStore) {
+  const char* text = R"(
+.global int "i" 1
+.global int "r" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+top:
+  LDG i
+  PUSHI 9
+  GTI
+  JNZ done
+  EOL
+  LDG r
+  PUSHI 1
+  ADDI
+  STG r
+  EOL
+  LDG r
+  PUSHI 3
+  EQI
+  JZ other
+  EOL
+  PUSHI 0
+  STG r
+  EOL
+  JMP end
+other:
+  EOL
+end:
+  LDG i
+  PUSHI 1
+  ADDI
+  STG i
+  EOL
+  JMP top
+done:
+  RET
+)";
+  const bytecode::Image image = optimized(text);
+  const std::vector<Op> expected = {
+      Op::JGTGK, Op::EOL,  // while i <= 9
+      Op::INCGEOL,         // r = r + 1
+      Op::JNEGKEOL,        // if r = 3: the line ends on both paths
+      Op::STGKEOL,         // r = 0
+      Op::INCG, Op::JMPEOL,
+      Op::RET};
+  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  expect_same_behaviour(text, "an arm ended in its store");
+  EXPECT_EQ(run_and_read(image, "r"), 1);  // ten steps: 1, 2, 0, 1, 2, 0, 1, 2, 0, 1
+  expect_same_line_ends(text, image);
+}
+
 // No global form is made across a place control can enter: `inside` is a routine's entry.
 TEST(Peephole, NeverFusesGlobalsAcrossAnEntry) {
   LoadedProgram p;
@@ -978,7 +1036,7 @@ d4:
 
 TEST(Peephole, WaitsOnACommandInPlace) {
   const bytecode::Image image = optimized(kWaits);
-  const std::vector<Op> expected = {Op::UNTILCK, Op::PUSHI, Op::STG, Op::UNTILCK, Op::UNTILCK,
+  const std::vector<Op> expected = {Op::UNTILCK, Op::STGK,   Op::UNTILCK, Op::UNTILCK,
                                     Op::PUSHI,   Op::CMDSET, Op::UNTILCK, Op::RET};
   ASSERT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   std::vector<uint32_t> tests;
