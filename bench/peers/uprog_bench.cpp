@@ -118,6 +118,18 @@ void print_histogram(const std::vector<uint64_t>& ops, const std::vector<uint64_
 
 }  // namespace
 
+// "name" or "name[k]": the global's name and the element the user wrote (AGenData counts
+// from 1, a program's own arrays from 0, as each dialect's command line reads them); -1 for an
+// index that is not a number.
+std::pair<std::string, int> split_index(const std::string& name) {
+  const size_t open = name.find('[');
+  if (open == std::string::npos || name.back() != ']') return {name, 0};
+  const std::string digits = name.substr(open + 1, name.size() - open - 2);
+  const bool number = !digits.empty() && digits.size() < 9 &&
+                      digits.find_first_not_of("0123456789") == std::string::npos;
+  return {name.substr(0, open), number ? std::stoi(digits) : -1};
+}
+
 int main(int argc, char** argv) {
   std::string file;
   std::vector<std::string> then;
@@ -266,18 +278,19 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "compile %.6f s, run %.6f s, %llu instructions\n", compile_s, run_s,
                  static_cast<unsigned long long>(executed));
   for (const std::string& name : then) {
-    if (pup_loaded && name.rfind("AGenData[", 0) == 0) {
-      const int n = std::atoi(name.c_str() + 9);
-      if (n < 1 || n > 1000) {
+    const auto [base, index] = split_index(name);
+    if (pup_loaded && base == "AGenData") {
+      if (index < 1 || index > 1000) {
         std::fprintf(stderr, "no %s\n", name.c_str());
         return 1;
       }
-      std::printf("%s=%d\n", name.c_str(), pup_host.gen_data[n - 1]);
+      std::printf("%s=%d\n", name.c_str(), pup_host.gen_data[static_cast<size_t>(index - 1)]);
       continue;
     }
-    const int g = image.find_global(name);
+    const int g = image.find_global(base);
     Value v = Value::of_int(0);
-    if (g < 0 || !machine.read_global(static_cast<uint32_t>(g), 0, v)) {
+    if (g < 0 || index < 0 ||
+        !machine.read_global(static_cast<uint32_t>(g), static_cast<uint32_t>(index), v)) {
       std::fprintf(stderr, "no global %s\n", name.c_str());
       return 1;
     }
