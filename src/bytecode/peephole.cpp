@@ -65,6 +65,13 @@ constexpr FloatCompareFamily kFloatCompares[] = {
     {Op::GEF, Op::JNGEF, Op::JNGEFLL, Op::JNGEFLK, Op::JNGEFGK, Op::JNGEFGG},
 };
 
+// Two globals' arithmetic: the plain operation, the form that pushes its result, and the
+// three-address form that stores it into a global and ends the line.
+constexpr std::array<std::array<Op, 3>, 5> kGlobalsArithmetic = {{
+    {Op::ADDI, Op::ADDIGG, Op::ADDIGGEOL}, {Op::SUBI, Op::SUBIGG, Op::SUBIGGEOL},
+    {Op::ADDF, Op::ADDFGG, Op::ADDFGGEOL}, {Op::SUBF, Op::SUBFGG, Op::SUBFGGEOL},
+    {Op::MULF, Op::MULFGG, Op::MULFGGEOL}}};
+
 // A branch's form that ends the line on both paths (opcodes.def), or nullopt.
 std::optional<Op> ending_line_form(Op op) {
   const auto in = [&](Op first, Op last) { return op >= first && op <= last; };
@@ -354,12 +361,8 @@ class Fuser {
   // LDG a; LDG b; ADDI|SUBI|ADDF|SUBF|MULF [; STG c; EOL]
   std::optional<std::pair<Instr, size_t>> arithmetic_globals(size_t i) const {
     if (!free(i, 2) || !packs_global(at(i)) || !packs_global(at(i + 1))) return std::nullopt;
-    static constexpr std::array<std::array<Op, 3>, 5> kForms = {{
-        {Op::ADDI, Op::ADDIGG, Op::ADDIGGEOL}, {Op::SUBI, Op::SUBIGG, Op::SUBIGGEOL},
-        {Op::ADDF, Op::ADDFGG, Op::ADDFGGEOL}, {Op::SUBF, Op::SUBFGG, Op::SUBFGGEOL},
-        {Op::MULF, Op::MULFGG, Op::MULFGGEOL}}};
     const uint32_t pair = pack_locals(at(i).a, at(i + 1).a);
-    for (const auto& [plain, push, store] : kForms) {
+    for (const auto& [plain, push, store] : kGlobalsArithmetic) {
       if (at(i + 2).op != plain) continue;
       if (free(i, 3) && at(i + 3).op == Op::STG && lone_eol(i, 4))
         return std::pair{Instr{at(i).pc, store, at(i + 3).a, pair}, size_t{5}};
@@ -604,23 +607,31 @@ void fuse_memory_frames(std::vector<Instr>& code, const std::vector<bool>& bound
   }
 }
 
+// The old code words control may arrive at other than from the instruction before: jump
+// targets in `code`, routine entries and line starts (a debugger may move a thread there).
+std::vector<bool> entered_places(const std::vector<Instr>& code, const Image& image, size_t size) {
+  std::vector<bool> entered(size + 1, false);
+  for (const Instr& i : code)
+    if (op_info(i.op).a == Operand::Target && i.a <= size) entered[i.a] = true;
+  for (const Routine& r : image.routines)
+    if (r.entry <= size) entered[r.entry] = true;
+  for (const LineEntry& l : image.lines)
+    if (l.code <= size) entered[l.code] = true;
+  return entered;
+}
+
 // Appends `i`, merged into the instruction before it when nothing enters `i`: an EOL into the
 // store or step whose line it ends (`R3 := 0;` in an IF, once the jump over the ELSE side's EOL
 // falls through), a global's store that ends a line into two globals' arithmetic before it.
 void append_merging(std::vector<Instr>& code, const Instr& i, const std::vector<bool>& entered) {
   static constexpr std::array<std::array<Op, 2>, 3> kEnding = {
       {{Op::STG, Op::STGEOL}, {Op::STGK, Op::STGKEOL}, {Op::INCG, Op::INCGEOL}}};
-  static constexpr std::array<std::array<Op, 2>, 5> kStored = {{{Op::ADDIGG, Op::ADDIGGEOL},
-                                                                {Op::SUBIGG, Op::SUBIGGEOL},
-                                                                {Op::ADDFGG, Op::ADDFGGEOL},
-                                                                {Op::SUBFGG, Op::SUBFGGEOL},
-                                                                {Op::MULFGG, Op::MULFGGEOL}}};
   if (!code.empty() && !entered[i.pc]) {
     const Instr last = code.back();
     std::optional<Instr> merged;
     for (const auto& [plain, ending] : kEnding)
       if (i.op == Op::EOL && last.op == plain) merged = Instr{last.pc, ending, last.a, last.b};
-    for (const auto& [push, store] : kStored)
+    for (const auto& [plain, push, store] : kGlobalsArithmetic)
       if (i.op == Op::STGEOL && last.op == push) merged = Instr{last.pc, store, i.a, last.b};
     if (merged) {
       code.pop_back();
@@ -638,13 +649,7 @@ void append_merging(std::vector<Instr>& code, const Instr& i, const std::vector<
 // falls through: `JMP` goes, `JMPEOL` is an EOL (but before a RET, which thread_jumps makes
 // RETEOL of), `STGJEOL g` is `STGEOL g`, and what they end merges (append_merging).
 void drop_dead_code(std::vector<Instr>& code, const Image& image, size_t size) {
-  std::vector<bool> entered(size + 1, false);
-  for (const Routine& r : image.routines)
-    if (r.entry <= size) entered[r.entry] = true;
-  for (const LineEntry& l : image.lines)
-    if (l.code <= size) entered[l.code] = true;
-  for (const Instr& i : code)
-    if (op_info(i.op).a == Operand::Target && i.a <= size) entered[i.a] = true;
+  const std::vector<bool> entered = entered_places(code, image, size);
   std::vector<Instr> live;
   live.reserve(code.size());
   bool reached = true;
@@ -697,14 +702,10 @@ PeepholeStats optimize(Image& image) {
   if (!decode(image.code, in)) return stats;
 
   const size_t size = image.code.size();
-  std::vector<bool> boundary(size + 1, false);
-  for (const Instr& i : in)
-    if (op_info(i.op).a == Operand::Target && i.a <= size) boundary[i.a] = true;
-  for (const Routine& r : image.routines)
-    if (r.entry <= size) boundary[r.entry] = true;
+  std::vector<bool> boundary = entered_places(in, image, size);
   std::vector<bool> line_start(size + 1, false);
   for (const LineEntry& l : image.lines)
-    if (l.code <= size) boundary[l.code] = line_start[l.code] = true;
+    if (l.code <= size) line_start[l.code] = true;
   mark_after_target_eols(in, line_start, boundary);
 
   // One pass, longest patterns first.
