@@ -303,6 +303,12 @@ void Axis::set_input_level(int n, bool high) {
 
 bool Axis::input_level(int n) const { return n >= 1 && n <= kInputCount && input_levels_[n - 1]; }
 
+uint32_t Axis::input_level_bits() const {
+  uint32_t bits = 0;
+  for (int n = 0; n < kInputCount; ++n) bits |= input_levels_[n] ? 1u << n : 0u;
+  return bits;
+}
+
 void Axis::place_position_switch(int n, double from_counts, double to_counts) {
   if (n < 1 || n > kInputCount) return;
   switches_[n - 1] = {true, std::min(from_counts, to_counts), std::max(from_counts, to_counts)};

@@ -117,6 +117,7 @@ class Axis {
   // --- digital I/O ---
   void set_input_level(int n, bool high);   // the electrical level of input n (1..6)
   bool input_level(int n) const;
+  uint32_t input_level_bits() const;        // every input's level, bit n-1 for input n
   bool input_active(int n) const;           // the logical state of input n (its IL polarity)
   uint32_t input_port() const;              // IP (inputs.h, InputPortBits)
   void set_output_port(uint32_t bits) { outputs_ = bits & 0xFu; }  // OP

@@ -272,12 +272,6 @@ RunError Machine::last_error(uint32_t thread) const {
 int32_t Machine::error_detail(uint32_t thread) const {
   return thread < thread_count_ ? threads_[thread].error_detail : 0;
 }
-uint32_t Machine::pc(uint32_t thread) const {
-  return thread < thread_count_ ? threads_[thread].pc : 0;
-}
-uint32_t Machine::frame_count(uint32_t thread) const {
-  return thread < thread_count_ ? threads_[thread].frame_count : 0;
-}
 
 FrameInfo Machine::frame(uint32_t thread, uint32_t depth) const {
   if (thread >= thread_count_ || depth >= threads_[thread].frame_count) return {0, 0, false};

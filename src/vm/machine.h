@@ -105,8 +105,8 @@ class Machine {
   ThreadStatus status(uint32_t thread) const;  // inline below: firmware asks it every cycle
   RunError last_error(uint32_t thread) const;
   int32_t error_detail(uint32_t thread) const;  // the drive's code for CommandRefused
-  uint32_t pc(uint32_t thread) const;
-  uint32_t frame_count(uint32_t thread) const;
+  uint32_t pc(uint32_t thread) const;           // inline below, as status()
+  uint32_t frame_count(uint32_t thread) const;  // inline below
   FrameInfo frame(uint32_t thread, uint32_t depth) const;  // depth 0 is the innermost
   // The outputs of the routine started by start(), readable after it finished.
   uint32_t thread_count() const { return thread_count_; }
@@ -224,6 +224,12 @@ class Machine {
 
 inline ThreadStatus Machine::status(uint32_t thread) const {
   return thread < thread_count_ ? threads_[thread].status : ThreadStatus::Idle;
+}
+inline uint32_t Machine::pc(uint32_t thread) const {
+  return thread < thread_count_ ? threads_[thread].pc : 0;
+}
+inline uint32_t Machine::frame_count(uint32_t thread) const {
+  return thread < thread_count_ ? threads_[thread].frame_count : 0;
 }
 
 }  // namespace uprog::vm

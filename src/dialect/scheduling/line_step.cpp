@@ -38,21 +38,4 @@ LineStep step_lines(vm::Machine& machine, uint32_t thread, uint64_t lines, uint6
   return step;
 }
 
-void report_step(Report& report, uint32_t thread, const LineStep& step) {
-  if (step.ran) report.mark_ran(thread);
-  switch (step.end) {
-    case vm::SliceEnd::Finished:
-      report.add(thread, ThreadEvent::Finished);
-      break;
-    case vm::SliceEnd::Error:
-      report.add(thread, ThreadEvent::Error);
-      break;
-    case vm::SliceEnd::Breakpoint:
-      report.add(thread, ThreadEvent::Breakpoint);
-      break;
-    default:
-      break;
-  }
-}
-
 }  // namespace uprog::scheduling

@@ -28,6 +28,15 @@ struct LineStep {
 LineStep step_lines(vm::Machine& machine, uint32_t thread, uint64_t lines, uint64_t back_jump_cap);
 
 // Adds what a step ended with to the report: Finished, Error or Breakpoint; and that it ran.
-void report_step(Report& report, uint32_t thread, const LineStep& step);
+// Inline: every due thread's step of every cycle comes through here.
+inline void report_step(Report& report, uint32_t thread, const LineStep& step) {
+  if (step.ran) report.mark_ran(thread);
+  switch (step.end) {
+    case vm::SliceEnd::Finished: return report.add(thread, ThreadEvent::Finished);
+    case vm::SliceEnd::Error: return report.add(thread, ThreadEvent::Error);
+    case vm::SliceEnd::Breakpoint: return report.add(thread, ThreadEvent::Breakpoint);
+    default: return;
+  }
+}
 
 }  // namespace uprog::scheduling

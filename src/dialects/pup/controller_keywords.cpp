@@ -56,11 +56,7 @@ int32_t Firmware::read_key(KeywordId key, int32_t index, int32_t& out) {
     case KeywordId::MaxPosErr: out = p.max_position_error_counts; return 0;
     case KeywordId::MotorFault: out = static_cast<int32_t>(a.motor_fault()); return 0;
     case KeywordId::DinPort:
-    case KeywordId::InPort: {
-      out = 0;
-      for (int n = 1; n <= 6; ++n) out |= a.input_level(n) ? 1 << (n - 1) : 0;
-      return 0;
-    }
+    case KeywordId::InPort: out = static_cast<int32_t>(a.input_level_bits()); return 0;
     case KeywordId::DoutPort:
     case KeywordId::OutPort: out = static_cast<int32_t>(a.output_port()); return 0;
     case KeywordId::InFunc: out = in_func_[static_cast<size_t>(index - 1)]; return 0;
@@ -187,7 +183,7 @@ int32_t Firmware::run_key(KeywordId key, int32_t index, bool, int32_t arg, uint3
           if (t == thread) program_->machine().halt(t);
           else program_->machine().kill(t);
           set_breaks(t, 0);
-          single_[t].active = false;
+          stepping_ &= ~(1u << t);
         }
       }
       schedule_.reset();

@@ -12,12 +12,6 @@ namespace {
 
 constexpr uint32_t kNestingBit = 1u << 31;
 
-uint32_t input_levels(const drive::Axis& a) {
-  uint32_t bits = 0;
-  for (int n = 1; n <= 6; ++n) bits |= a.input_level(n) ? 1u << (n - 1) : 0u;
-  return bits;
-}
-
 }  // namespace
 
 void Firmware::latch(int32_t id) {
@@ -40,7 +34,7 @@ void Firmware::latch_events(uint32_t drive_events) {
   const bool moving = a.profiler_moving();
   if (was_moving_ && !moving) latch(5);
   was_moving_ = moving;
-  const uint32_t levels = input_levels(a);
+  const uint32_t levels = a.input_level_bits();
   if (levels == previous_inputs_) return;  // no edge: most cycles
   for (int n = 0; n < 6; ++n) {
     const bool now = (levels >> n) & 1u, before = (previous_inputs_ >> n) & 1u;

@@ -85,12 +85,12 @@ std::string Firmware::install(const std::string& cup, bool store) {
   schedule_.reset();
   thread_error_.fill(0);
   single_.fill(Single{});
+  stepping_ = 0;
   for (auto& b : breaks_) b.clear();
   latched_ = 0;
   event_frames_.clear();
   event_mask_ = 0x00FFFFFF;
-  previous_inputs_ = 0;
-  for (int n = 1; n <= 6; ++n) previous_inputs_ |= axis_->input_level(n) ? 1u << (n - 1) : 0u;
+  previous_inputs_ = axis_->input_level_bits();
   if (store) stored_ = cup;
   return "";
 }

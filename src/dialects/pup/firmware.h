@@ -139,11 +139,11 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::vector<int32_t> line_stack_;  // thread 0: the CUP keywords sent over the line
   std::vector<std::array<int32_t, 3>> err_log_;  // newest first: code, source, line
   struct Single {
-    bool active = false;
     bool over = false;  // Type != 0: until the pointer leaves the line at the same call depth
     uint32_t line = 0, depth = 0;
   };
   std::array<Single, kThreads + 1> single_{};
+  uint32_t stepping_ = 0;  // the threads an AProgSingle runs, bit t for thread t
   std::array<std::vector<uint32_t>, kThreads + 1> breaks_{};  // lines, ascending
   uint32_t event_mask_ = 0x00FFFFFF;
   uint32_t latched_ = 0;                 // event IDs latched, one bit each

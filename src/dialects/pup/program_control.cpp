@@ -17,14 +17,17 @@ namespace uprog::pup {
 int32_t Firmware::single_step(uint32_t thread, int32_t kind) {
   if (program_status(thread) != 3 && program_status(thread) != 4) return 19;
   vm::Machine& m = program_->machine();
-  single_[thread] = Single{true, kind != 0, next_line(thread), m.frame_count(thread)};
+  single_[thread] = Single{kind != 0, next_line(thread), m.frame_count(thread)};
+  stepping_ |= 1u << thread;
   m.resume(thread);
   return 0;
 }
 
 void Firmware::after_cycle(const scheduling::Report& report) {
+  if ((report.threads_with_events() | stepping_) == 0) return;  // most cycles
   vm::Machine& m = program_->machine();
   for (uint32_t t = 1; t <= kThreads; ++t) {
+    const uint32_t bit = 1u << t;
     if (report.has(t, scheduling::ThreadEvent::Breakpoint)) {
       const uint32_t line = next_line(t);
       if (!break_line_in_use(line)) {
@@ -32,20 +35,20 @@ void Firmware::after_cycle(const scheduling::Report& report) {
       } else if (!std::binary_search(breaks_[t].begin(), breaks_[t].end(), line)) {
         m.resume(t);
       } else {
-        single_[t].active = false;
+        stepping_ &= ~bit;
       }
     }
-    Single& s = single_[t];
-    if (!s.active) continue;
+    if ((stepping_ & bit) == 0) continue;
+    const Single& s = single_[t];
     const int32_t status = program_status(t);
     if (status != 1 && status != 2) {
-      s.active = false;
+      stepping_ &= ~bit;
       continue;
     }
     const bool done = s.over ? status != 2 && m.frame_count(t) <= s.depth && next_line(t) != s.line : report.ran(t);
     if (done) {
       m.halt(t);
-      s.active = false;
+      stepping_ &= ~bit;
     }
   }
 }
@@ -93,7 +96,7 @@ int32_t Firmware::clear_stacks(uint32_t thread, bool expression_stack) {
   const int32_t s = program_status(thread);
   if (s == 1 || s == 2 || s == 6) return 17;
   program_->machine().kill(thread);
-  single_[thread].active = false;
+  stepping_ &= ~(1u << thread);
   return 0;
 }
 
@@ -146,7 +149,7 @@ int32_t Firmware::set_pointer(uint32_t thread, int32_t line) {
   const uint32_t pc = cup_.line_pc[static_cast<size_t>(line)];
   std::vector<uint32_t> scratch(bytecode::verify_scratch_size(m.image()) / sizeof(uint32_t) + 1);
   const size_t scratch_bytes = scratch.size() * sizeof(uint32_t);
-  single_[thread].active = false;
+  stepping_ &= ~(1u << thread);
   if (s == 3) return m.move_pc(thread, pc, scratch.data(), scratch_bytes) ? 0 : 32;
   for (const int32_t routine : cup_.task_routine) {
     if (routine < 0) continue;
