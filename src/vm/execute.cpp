@@ -109,7 +109,7 @@ SliceResult Machine::run_slice(uint32_t thread, const Budget& budget) {
     case ThreadStatus::Halted: return {SliceEnd::Halted, 0};
     case ThreadStatus::AtBreakpoint: return {SliceEnd::Breakpoint, 0};
     case ThreadStatus::Waiting:
-      if (static_cast<int32_t>(host_->now_us() - t.wake_us) < 0) return {SliceEnd::Waiting, 0};
+      if (sleeping(thread)) return {SliceEnd::Waiting, 0};
       t.status = ThreadStatus::Running;
       break;
     case ThreadStatus::Running: break;

@@ -103,6 +103,8 @@ class Machine {
   void kill(uint32_t thread);    // drops the thread's frames; it becomes idle
 
   ThreadStatus status(uint32_t thread) const;  // inline below: firmware asks it every cycle
+  // In a timed wait whose time has not come: a slice would run nothing (inline below).
+  bool sleeping(uint32_t thread);
   RunError last_error(uint32_t thread) const;
   int32_t error_detail(uint32_t thread) const;  // the drive's code for CommandRefused
   uint32_t pc(uint32_t thread) const;           // inline below, as status()
@@ -224,6 +226,10 @@ class Machine {
 
 inline ThreadStatus Machine::status(uint32_t thread) const {
   return thread < thread_count_ ? threads_[thread].status : ThreadStatus::Idle;
+}
+inline bool Machine::sleeping(uint32_t thread) {
+  return status(thread) == ThreadStatus::Waiting &&
+         static_cast<int32_t>(host_->now_us() - threads_[thread].wake_us) < 0;
 }
 inline uint32_t Machine::pc(uint32_t thread) const {
   return thread < thread_count_ ? threads_[thread].pc : 0;

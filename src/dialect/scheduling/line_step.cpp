@@ -26,6 +26,8 @@ vm::SliceEnd run_bare_end(vm::Machine& machine, uint32_t thread, uint64_t back_j
 LineStep step_lines(vm::Machine& machine, uint32_t thread, uint64_t lines, uint64_t back_jump_cap) {
   const vm::ThreadStatus status = machine.status(thread);
   if (status != vm::ThreadStatus::Running && status != vm::ThreadStatus::Waiting) return {};
+  // Most waits are not over: no slice for them (it would end Waiting, having run nothing).
+  if (machine.sleeping(thread)) return {vm::SliceEnd::Waiting};
   vm::Budget budget = vm::Budget::of_lines(lines);
   budget.back_jumps = back_jump_cap;
   const bool was_waiting = status == vm::ThreadStatus::Waiting;
