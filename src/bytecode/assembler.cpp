@@ -329,14 +329,21 @@ class Assembler {
 
   void instruction(const std::vector<Token>& ts) {
     Op op;
-    if (ts[0].quoted || !op_from_name(ts[0].text, op))
+    // `OP.eol`: the instruction carries the line-end mark.
+    const std::string_view suffix = ".eol";
+    std::string name = ts[0].text;
+    const bool ends_line = name.size() > suffix.size() && name.ends_with(suffix);
+    if (ends_line) name.resize(name.size() - suffix.size());
+    if (ts[0].quoted || !op_from_name(name, op))
       return error(ts[0].column, fmt::format("unknown opcode '{}'", ts[0].text));
+    if (ends_line && !may_end_line(op))
+      return error(ts[0].column, fmt::format("{} cannot carry a line end", op_name(op)));
     const OpInfo& info = op_info(op);
     const size_t operands = (info.a != Operand::None) + (info.b != Operand::None);
     if (ts.size() != operands + 1)
       return error(ts[0].column, fmt::format("{} takes {} operand(s)", op_name(op), operands));
     const size_t pc = image_.code.size();
-    image_.code.push_back(static_cast<uint32_t>(op));
+    image_.code.push_back(static_cast<uint32_t>(op) | (ends_line ? kLineEndBit : 0u));
     if (info.a != Operand::None) operand_a(ts[1], info.a, pc);
     if (info.b != Operand::None) {
       int64_t n = 0;
@@ -362,7 +369,7 @@ class Assembler {
       Token raw = t;
       raw.text = t.text.substr(1);
       int64_t n = 0;
-      if (number(raw, n, 0, kOperandMax)) image_.code[pc] |= static_cast<uint32_t>(n) << 8;
+      if (number(raw, n, 0, kOperandMax)) image_.code[pc] |= a_field(static_cast<uint32_t>(n));
       return;
     }
     if (is_name || t.quoted) {
@@ -374,7 +381,7 @@ class Assembler {
     int64_t n = 0;
     const bool is_signed = kind == Operand::Imm;
     if (!number(t, n, is_signed ? kImmMin : 0, is_signed ? kImmMax : kOperandMax)) return;
-    image_.code[pc] |= (static_cast<uint32_t>(n) & kOperandMax) << 8;
+    image_.code[pc] |= a_field(static_cast<uint32_t>(n));
   }
 
   bool lookup(Operand kind, const std::string& name, uint32_t& out) {
@@ -401,7 +408,7 @@ class Assembler {
       if (f.whole_word)
         image_.code[f.pc] = value;
       else
-        image_.code[f.pc] |= (value & kOperandMax) << 8;
+        image_.code[f.pc] |= a_field(value);
     }
     for (size_t i = 0; i < routine_entries_.size(); ++i) {
       const auto& e = routine_entries_[i];

@@ -133,7 +133,7 @@ std::string disassemble(const Image& image) {
     const uint32_t word = image.code[pc];
     const Op op = word_op(word);
     const OpInfo& info = op_info(op);
-    std::string text = fmt::format("  {}", op_name(op));
+    std::string text = fmt::format("  {}{}", op_name(op), word_ends_line(word) ? ".eol" : "");
     std::string comment;
     switch (info.a) {
       case Operand::None: break;
@@ -155,8 +155,9 @@ std::string disassemble(const Image& image) {
     } else if (info.b != Operand::None) {
       text += fmt::format(" {}", image.code[pc + 1]);
     }
-    if (info.a == Operand::None && (word >> 8) != 0) {
-      // A stray operand on an opcode without one: keep the word exact.
+    if ((info.a == Operand::None && word_a(word) != 0) || (word_ends_line(word) && !may_end_line(op))) {
+      // A stray operand on an opcode without one, or a line end where none may be: keep the
+      // word exact.
       text = fmt::format("  .word 0x{:08x}", word);
       if (info.b != Operand::None) text += fmt::format("\n  .word 0x{:08x}", image.code[pc + 1]);
       comment.clear();

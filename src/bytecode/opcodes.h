@@ -1,6 +1,6 @@
 // The opcode enum, names, operand kinds, stack effects and control flow, all generated from
-// opcodes.def. An instruction is one 32-bit word (opcode in bits 0..7, operand A in bits 8..31)
-// followed by one more word when the opcode has a B operand.
+// opcodes.def. An instruction is one 32-bit word (opcode in bits 0..7, the line-end mark in bit
+// 8, operand A in bits 9..31) followed by one more word when the opcode has a B operand.
 #pragma once
 #include <cstdint>
 
@@ -76,16 +76,53 @@ constexpr bool pops_host_arguments(Op op) {
   return op == Op::CMDRUN || op == Op::CMDRUNX || op == Op::MSG;
 }
 
-// The A field: 24 bits, sign-extended for immediates.
-constexpr int32_t kImmMin = -(1 << 23);
-constexpr int32_t kImmMax = (1 << 23) - 1;
-constexpr uint32_t kOperandMax = (1u << 24) - 1;
+// The A field: 23 bits, sign-extended for immediates.
+constexpr int32_t kImmMin = -(1 << 22);
+constexpr int32_t kImmMax = (1 << 22) - 1;
+constexpr uint32_t kOperandMax = (1u << 23) - 1;
+constexpr bool fits_imm(int64_t v) { return v >= kImmMin && v <= kImmMax; }
+
+// The line-end mark: the source line ends once the instruction has run, on every path it takes,
+// as an EOL after it would (and for a branch, at its target too) -- a line costs no dispatch
+// of its own.
+constexpr uint32_t kLineEndBit = 1u << 8;
 
 constexpr Op word_op(uint32_t word) { return static_cast<Op>(word & 0xFFu); }
-constexpr uint32_t word_a(uint32_t word) { return word >> 8; }
-constexpr int32_t word_imm(uint32_t word) { return static_cast<int32_t>(word) >> 8; }
-constexpr uint32_t make_word(Op op, uint32_t a) {
-  return static_cast<uint32_t>(op) | ((a & kOperandMax) << 8);
+constexpr uint32_t word_a(uint32_t word) { return word >> 9; }
+constexpr int32_t word_imm(uint32_t word) { return static_cast<int32_t>(word) >> 9; }
+constexpr bool word_ends_line(uint32_t word) { return (word & kLineEndBit) != 0; }
+// Operand A placed in its field of an instruction word.
+constexpr uint32_t a_field(uint32_t a) { return (a & kOperandMax) << 9; }
+constexpr uint32_t make_word(Op op, uint32_t a) { return static_cast<uint32_t>(op) | a_field(a); }
+
+// The instructions that end their line themselves: EOL and the fused forms named ...EOL.
+constexpr bool ends_line_itself(Op op) {
+  const char* name = op_name(op);
+  uint32_t n = 0;
+  while (name[n] != '\0') ++n;
+  return n >= 3 && name[n - 3] == 'E' && name[n - 2] == 'O' && name[n - 1] == 'L';
 }
+// The instructions that may carry the line-end mark: those that run to completion and go on in
+// the same slice. Not a call or a return (the line would end in another frame), nor one that
+// ends its line itself, stops the slice (YIELD, WAIT) or runs apart from the loop (UNTILCK).
+// A table made at compile time, so that firmware carries no names.
+struct LineEndTable {
+  bool may[256];
+};
+constexpr LineEndTable make_line_end_table() {
+  LineEndTable t{};
+  for (uint32_t i = 0; i < kOpCount; ++i) {
+    const Op op = static_cast<Op>(i);
+    const Flow flow = op_info(op).flow;
+    t.may[i] = (flow == Flow::Next || flow == Flow::Jump || flow == Flow::Branch) &&
+               !ends_line_itself(op) && op != Op::YIELD && op != Op::WAIT &&
+               op != Op::UNTILCK && op != Op::BREAK;
+  }
+  return t;
+}
+inline constexpr LineEndTable kLineEndTable = make_line_end_table();
+constexpr bool may_end_line(Op op) { return kLineEndTable.may[static_cast<uint8_t>(op)]; }
+static_assert(ends_line_itself(Op::EOL) && ends_line_itself(Op::JMPEOL) &&
+              !ends_line_itself(Op::JMP) && may_end_line(Op::JZ) && !may_end_line(Op::RETEOL));
 
 }  // namespace uprog::bytecode

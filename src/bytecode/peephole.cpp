@@ -111,7 +111,7 @@ void mark_after_target_eols(const std::vector<Instr>& in, const std::vector<bool
 }
 
 bool fits_int16(int32_t v) { return v >= -32768 && v <= 32767; }
-int32_t imm_of(const Instr& i) { return static_cast<int32_t>(i.a << 8) >> 8; }
+int32_t imm_of(const Instr& i) { return word_imm(a_field(i.a)); }
 
 class Fuser {
  public:

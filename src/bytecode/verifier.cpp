@@ -69,6 +69,7 @@ class Verifier {
       if ((word & 0xFFu) >= kOpCount) return fail(VerifyError::BadOpcode, pc);
       const Op op = word_op(word);
       if (op == Op::BREAK) return fail(VerifyError::BreakInImage, pc);
+      if (word_ends_line(word) && !may_end_line(op)) return fail(VerifyError::BadLineEnd, pc);
       const uint32_t length = op_length(op);
       if (length > size_ - pc) return fail(VerifyError::Truncated, pc);
       s_.depth[pc] = kUnseen;
@@ -253,6 +254,7 @@ const char* verify_error_text(VerifyError e) {
     case VerifyError::FallsOffEnd: return "a path falls off the end of the code";
     case VerifyError::ReturnWithValues: return "return with values left on the stack";
     case VerifyError::NoScratch: return "verifier scratch memory too small";
+    case VerifyError::BadLineEnd: return "a line end on an instruction that cannot end a line";
   }
   return "unknown verifier error";
 }

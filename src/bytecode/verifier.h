@@ -28,6 +28,7 @@ enum class VerifyError : uint8_t {
   FallsOffEnd,
   ReturnWithValues,   // RET with values left on the expression stack
   NoScratch,          // the caller's scratch memory is too small
+  BadLineEnd,         // the line-end mark on an instruction that cannot carry it
 };
 const char* verify_error_text(VerifyError e);
 

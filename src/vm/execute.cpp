@@ -196,7 +196,14 @@ SliceResult Machine::execute(Thread& t, const Budget& budget) {
 #define LINES_ENDED() (budget.lines != 0 ? budget.lines - lines.left() : 0)
 #define SAVE() (t.pc = static_cast<uint32_t>(ip - code), t.sp = sp)
 #define LOAD() (ip = code + t.pc, sp = t.sp, locals = t.frames[t.frame_count - 1].locals)
-#define DISPATCH()                \
+// The next instruction, once the one in `word` has run: the line it ends is counted first.
+// `word` is 0 before the first instruction and after an error, which end no line.
+#define DISPATCH()                                                            \
+  do {                                                                        \
+    if (bytecode::word_ends_line(word) && --lines.now == 0) goto out_of_lines; \
+    DISPATCH_NEXT();                                                          \
+  } while (0)
+#define DISPATCH_NEXT()           \
   do {                            \
     word = *ip;                   \
     goto* dispatch[word & 0xFFu]; \
@@ -213,8 +220,8 @@ SliceResult Machine::execute(Thread& t, const Budget& budget) {
     ip = to;                                               \
   } while (0)
 #define JUMP_TO(target) JUMP_OR(target, out_of_back_jumps)
-#define A() (word >> 8)
-#define IMM() (static_cast<int32_t>(word) >> 8)
+#define A() bytecode::word_a(word)
+#define IMM() bytecode::word_imm(word)
 #define B() (ip[1])
 #define FAIL(e) \
   do {          \
@@ -264,6 +271,7 @@ SliceResult Machine::execute(Thread& t, const Budget& budget) {
       if (detail != kCommandEndSlice) FAIL(RunError::CommandRefused); \
       detail = 0;                                                     \
       effect;                                                         \
+      if (bytecode::word_ends_line(word)) --lines.now;                \
       end = SliceEnd::Yielded;                                        \
       goto stop;                                                      \
     }                                                                 \
@@ -1145,8 +1153,8 @@ count_then_dispatch:
 
 // A spent 32-bit count takes the next chunk of its budget and the slice goes on as if nothing
 // happened; only when the whole budget is spent does the slice end.
-out_of_budget:
-  if (steps.refill()) DISPATCH();
+out_of_budget:  // `word` is the instruction not yet run: counted again, not its line
+  if (steps.refill()) DISPATCH_NEXT();
   steps.now = 0;
   end = SliceEnd::BudgetSpent;
   goto stop;
@@ -1162,10 +1170,10 @@ out_of_back_jumps_at_line_end:  // a line-ending jump: the line is still to be c
     goto stop;
   }
   if (--lines.now == 0) goto out_of_lines;
-  DISPATCH();
+  DISPATCH_NEXT();
 
 out_of_lines:
-  if (lines.refill()) DISPATCH();
+  if (lines.refill()) DISPATCH_NEXT();
   end = SliceEnd::LineEnd;
   goto stop;
 
@@ -1180,6 +1188,7 @@ raise_error:
   if (raise(t, error, detail)) {
     error = RunError::None;
     detail = 0;
+    word = 0;  // the failed instruction ended no line
     LOAD();
     // A catch block may lie before its try: catching is a loop's iteration too.
     if (--back_jumps.now == 0) goto out_of_back_jumps;
@@ -1197,6 +1206,7 @@ stop:
 #undef SAVE
 #undef LOAD
 #undef DISPATCH
+#undef DISPATCH_NEXT
 #undef A
 #undef IMM
 #undef B

@@ -25,7 +25,8 @@ namespace fs = std::filesystem;
 const char* const kErrorNames[] = {
     "Ok", "EmptyCode", "BadOpcode", "Truncated", "BreakInImage", "BadConstant", "BadGlobal",
     "BadLocal", "BadRoutine", "BadTarget", "BadOperand", "BadEntry", "StackUnderflow",
-    "StackOverflow", "StackMismatch", "FallsOffEnd", "ReturnWithValues", "NoScratch"};
+    "StackOverflow", "StackMismatch", "FallsOffEnd", "ReturnWithValues", "NoScratch",
+    "BadLineEnd"};
 
 VerifyResult verify_bytes(const std::vector<uint8_t>& bytes) {
   ImageView view;

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <sstream>
 
+#include "bytecode/opcodes.h"
+
 namespace uprog::differential {
 
 namespace {
@@ -39,7 +41,7 @@ class Lowering {
 
  private:
   void push_int(int32_t v) {
-    if (v >= -(1 << 23) && v < (1 << 23)) {
+    if (bytecode::fits_imm(v)) {
       code_ << "  PUSHI " << v << "\n";
     } else {
       consts_ << ".const int " << v << "\n";

@@ -56,6 +56,89 @@ TEST(Machine, LineBudgetStopsAfterEndOfLine) {
   EXPECT_EQ(p.machine.pc(0), 5u);  // just after EOL, at the JMP
 }
 
+// The line-end mark (OP.eol) ends a line as an EOL after the instruction would, without one.
+TEST(Machine, LineEndMarkEndsTheLineAfterItsInstruction) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.global int "lines" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  LDG lines
+  PUSHI 1
+  ADDI
+  STG.eol lines
+  JMP main
+)"));
+  p.machine.start(0, 0);
+  const auto r = p.machine.run_slice(0, Budget::of_lines(4));
+  EXPECT_EQ(r.end, SliceEnd::LineEnd);
+  EXPECT_EQ(r.lines, 4u);
+  EXPECT_EQ(p.global("lines").i, 4);
+  EXPECT_EQ(p.machine.pc(0), 4u);  // just after the marked store, at the JMP
+  // Counted with an instruction budget too: the JMP, then one more line of four instructions.
+  const auto counted = p.machine.run_slice(0, Budget{5, 10, 0});
+  EXPECT_EQ(counted.end, SliceEnd::BudgetSpent);
+  EXPECT_EQ(counted.executed, 5u);
+  EXPECT_EQ(counted.lines, 1u);
+  EXPECT_EQ(p.global("lines").i, 5);
+}
+
+// A marked branch ends its line on both paths; a marked host call that ends the slice ends
+// its line too.
+TEST(Machine, LineEndMarkOnABranchEndsTheLineEitherWay) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.global int "n" 1
+.global int "odd" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  LDG n
+  PUSHI 1
+  ADDI
+  STG n
+  LDG n
+  PUSHI 2
+  REMI
+  JZ.eol main
+  PUSHI 100
+  STG.eol odd
+  JMP.eol main
+)"));
+  p.machine.start(0, 0);
+  auto r = p.machine.run_slice(0, Budget::of_lines(1));  // n = 1: falls through
+  EXPECT_EQ(r.end, SliceEnd::LineEnd);
+  EXPECT_EQ(p.global("n").i, 1);
+  EXPECT_EQ(p.machine.pc(0), 8u);
+  r = p.machine.run_slice(0, Budget::of_lines(1));
+  EXPECT_EQ(p.global("odd").i, 100);
+  EXPECT_EQ(p.machine.pc(0), 10u);
+  r = p.machine.run_slice(0, Budget::of_lines(1));  // the marked JMP is a line of its own
+  EXPECT_EQ(p.machine.pc(0), 0u);
+  EXPECT_EQ(p.global("n").i, 1);
+  r = p.machine.run_slice(0, Budget::of_lines(1));  // n = 2: taken
+  EXPECT_EQ(r.lines, 1u);
+  EXPECT_EQ(p.global("n").i, 2);
+  EXPECT_EQ(p.machine.pc(0), 0u);
+}
+
+TEST(Machine, LineEndMarkOnAHostCallThatEndsTheSlice) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.routine function "main" in=0 out=0 entry=main
+main:
+  PUSHI 1
+  CMDSET.eol 4 0
+  PUSHI 2
+  CMDSET.eol 1 0
+  RET
+)"));
+  p.machine.start(0, 0);
+  const auto r = p.machine.run_slice(0, Budget::of_lines(5));
+  EXPECT_EQ(r.end, SliceEnd::Yielded);  // command 4 ends the slice
+  EXPECT_EQ(r.lines, 1u);
+  EXPECT_EQ(p.machine.pc(0), 3u);
+}
+
 TEST(Machine, EventInterruptsAndReturnsWhereItWas) {
   LoadedProgram p;
   ASSERT_TRUE(p.load(kCounter));

@@ -83,7 +83,7 @@ class Gen {
   // ---- values
 
   void push_int(int32_t v) {
-    if (v >= bytecode::kImmMin && v <= bytecode::kImmMax) cb_.emit_imm(Op::PUSHI, v);
+    if (bytecode::fits_imm(v)) cb_.emit_imm(Op::PUSHI, v);
     else emit(Op::PUSHK, constant(ValueType::Int, static_cast<uint32_t>(v)));
   }
   void push_float(float f) {

@@ -35,7 +35,7 @@ bool is_builtin(std::string_view name) {
 }  // namespace
 
 void Compiler::push_int(int32_t v) {
-  if (v >= -(1 << 23) && v < (1 << 23)) code_.emit_imm(Op::PUSHI, v);
+  if (bytecode::fits_imm(v)) code_.emit_imm(Op::PUSHI, v);
   else code_.emit(Op::PUSHK, static_cast<uint32_t>(add_constant(ValueType::Int, static_cast<uint32_t>(v))));
 }
 

@@ -188,7 +188,7 @@ class Loader {
   }
 
   void push_constant(bytecode::CodeBuilder& b, int32_t v) {
-    if (v >= -(1 << 23) && v < (1 << 23)) {
+    if (bytecode::fits_imm(v)) {
       b.emit_imm(Op::PUSHI, v);
       return;
     }

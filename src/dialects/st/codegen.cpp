@@ -96,7 +96,7 @@ class Generator {
   void eol() { b_.emit(bytecode::Op::EOL); }
 
   void push(int32_t v) {
-    if (v >= -(1 << 23) && v < (1 << 23)) {
+    if (bytecode::fits_imm(v)) {
       b_.emit_imm(bytecode::Op::PUSHI, v);
       return;
     }
