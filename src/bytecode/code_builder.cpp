@@ -4,6 +4,7 @@
 namespace uprog::bytecode {
 
 void CodeBuilder::emit(Op op, uint32_t a, uint32_t b) {
+  last_ = here();
   code_.push_back(make_word(op, a));
   if (op_length(op) == 2) code_.push_back(b);
 }
@@ -13,11 +14,20 @@ CodeBuilder::Label CodeBuilder::new_label() {
   return Label{static_cast<uint32_t>(targets_.size() - 1)};
 }
 
-void CodeBuilder::bind(Label label) { targets_[label.id] = here(); }
+void CodeBuilder::bind(Label label) { targets_[label.id] = last_bound_ = here(); }
 
 void CodeBuilder::emit_to(Op op, Label label) {
   uses_.push_back({here(), label.id});
   emit(op, 0);
+}
+
+void CodeBuilder::end_line(uint32_t line_start) {
+  if (last_ != kUnbound && last_ >= line_start && last_bound_ != here() &&
+      may_end_line(word_op(code_[last_])) && !word_ends_line(code_[last_])) {
+    code_[last_] |= kLineEndBit;
+    return;
+  }
+  emit(Op::EOL);
 }
 
 bool CodeBuilder::finish() {
@@ -28,7 +38,7 @@ bool CodeBuilder::finish() {
       ok = false;
       continue;
     }
-    code_[use.pc] = make_word(word_op(code_[use.pc]), target);
+    code_[use.pc] = (code_[use.pc] & ~a_field(kOperandMax)) | a_field(target);
   }
   uses_.clear();
   return ok;

@@ -231,10 +231,11 @@ class Loader {
     const Keyword& k = *op.key;
     const uint32_t id = static_cast<uint32_t>(k.id);
     const int32_t i = m.target.index;
+    const uint32_t start = b.here();
     if (m.tail == Message::Tail::Assign) {
       push_constant(b, m.value);
       b.emit(Op::CMDSET, id, static_cast<uint32_t>(i));
-      return b.emit(Op::EOL);
+      return b.end_line(start);
     }
     switch (k.id) {
       case KeywordId::ProgTask: return;
@@ -261,18 +262,7 @@ class Loader {
         b.bind(done);
         break;
       }
-      case KeywordId::Jump:
-        if (i == 1) return b.emit_to(Op::JMPEOL, at[op.target]);
-        {
-          if (i >= 3 && i <= 8) condition(b, i);
-          else if (i == 2) b.emit_imm(Op::PUSHI, 0), b.emit(Op::GTI);
-          else if (i == 9) b.emit(Op::LNOT);
-          const auto skip = b.new_label();
-          b.emit_to(Op::JZ, skip);
-          b.emit_to(Op::JMPEOL, at[op.target]);
-          b.bind(skip);
-        }
-        break;
+      case KeywordId::Jump: return jump(b, i, at[op.target]);
       case KeywordId::ProgFuncCall:
       case KeywordId::ProgCallFunc:
         b.emit(Op::CALL, static_cast<uint32_t>(function_routine_.at(m.value)), 0);
@@ -292,7 +282,18 @@ class Loader {
         b.emit(Op::CMDRUNX, id, m.tail == Message::Tail::Argument ? 1 : 0);
         break;
     }
-    b.emit(Op::EOL);
+    b.end_line(start);
+  }
+
+  // AJump[c]: one branch that ends the line whether it is taken or not.
+  void jump(bytecode::CodeBuilder& b, int32_t c, bytecode::CodeBuilder::Label to) {
+    static const Op kCompareJumps[] = {Op::JEQI, Op::JNEI, Op::JGTI, Op::JGEI, Op::JLTI, Op::JLEI};
+    if (c == 1) return b.emit_to(Op::JMPEOL, to);
+    const uint32_t start = b.here();
+    if (c == 2) b.emit_imm(Op::PUSHI, 0);
+    const Op branch = c >= 3 && c <= 8 ? kCompareJumps[c - 3] : c == 2 ? Op::JGTI : c == 9 ? Op::JZ : Op::JNZ;
+    b.emit_to(branch, to);
+    b.end_line(start);
   }
 
   void add_routine(std::string name, bytecode::RoutineKind kind, uint32_t entry) {

@@ -224,13 +224,17 @@ std::vector<dialect::ThreadInfo> Firmware::threads() const {
   return out;
 }
 
-// The CUP line a thread executes next: a pc on a line's closing EOL is already past that line,
-// unless the thread waits in it.
+// The CUP line a thread executes next: a pc on the EOL that closes a line after its code (a
+// call's, a wait's) is already past that line, unless the thread waits in it. An EOL that is a
+// line's only code (a function's marker) is that line still to run.
 uint32_t Firmware::next_line(uint32_t thread) const {
   const vm::Machine& m = program_->machine();
   uint32_t pc = m.pc(thread);
   const auto& code = m.image().code;
-  if (m.status(thread) != vm::ThreadStatus::Waiting && pc < code.size() && bytecode::word_op(code[pc]) == bytecode::Op::EOL && cup_.line_of(pc + 1) != cup_.line_of(pc)) ++pc;
+  const uint32_t line = cup_.line_of(pc);
+  const bool closes_line = pc < code.size() && bytecode::word_op(code[pc]) == bytecode::Op::EOL &&
+                           cup_.line_pc[line] != pc && cup_.line_of(pc + 1) != line;
+  if (m.status(thread) != vm::ThreadStatus::Waiting && closes_line) ++pc;
   return cup_.line_of(pc);
 }
 
