@@ -8,7 +8,7 @@ namespace uprog::bytecode {
 
 enum class Operand : uint8_t {
   None, Imm, Const, Local, Global, Routine, Target, Count, Command, Unit, LocalPair, LocalImm,
-  LocalConst, Width, Text, GlobalPair, GlobalConst, GlobalImm
+  LocalConst, Width, Text, GlobalPair, GlobalConst, GlobalImm, Element
 };
 
 // The packed B operands of the fused comparisons and arithmetic (LocalConst, GlobalPair,

@@ -116,6 +116,8 @@ class Verifier {
       if (info.b != Operand::None) {
         if (VerifyResult r = check_global_b(info.b, image_.code[pc + 1], pc); !r.ok()) return r;
       }
+      if (info.b == Operand::Element && image_.code[pc + 1] >= image_.globals[a].length)
+        return fail(VerifyError::BadOperand, pc);
       if (word_op(word) == Op::CALL) {
         const RoutineRecord callee = image_.routines[a];
         if (image_.code[pc + 1] > callee.outputs) return fail(VerifyError::BadOperand, pc);

@@ -325,6 +325,14 @@ op_STG:
   globals_[A()].data[0] = *--sp;
   ++ip;
   DISPATCH();
+op_LDGE:
+  *sp++ = globals_[A()].data[B()];
+  ip += 2;
+  DISPATCH();
+op_STGE:
+  globals_[A()].data[B()] = *--sp;
+  ip += 2;
+  DISPATCH();
 op_LDGX: {
   const GlobalSlot& g = globals_[A()];
   const auto index = static_cast<uint32_t>(sp[-1].i);

@@ -172,7 +172,8 @@ TEST(Verifier, WhatItAcceptsRunsSafely) {
     for (uint32_t i = 0; i < n; ++i) {
       const uint32_t op = next() % (kOpCount + 2);
       const uint32_t a = next() % 6;
-      image.code.push_back(op | (a << 8));
+      const uint32_t line_end = next() % 4 == 0 ? kLineEndBit : 0u;  // some marked, some refused
+      image.code.push_back(op | line_end | a_field(a));
     }
     const std::vector<uint8_t> bytes = encode(image);
     if (!verify_bytes(bytes).ok()) continue;
