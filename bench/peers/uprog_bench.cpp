@@ -9,6 +9,7 @@
 // --limit (its --asm shows the code).
 // --check only compiles (the compile-speed comparison while `uprog check` does not exist).
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -55,27 +56,28 @@ class FakeHost final : public vm::Host {
   ~FakeHost() = default;
 };
 
-// The AG300's general data as the firmware keeps it, for a CUP image: AGenData by keyword and
-// index, and the indexed accesses (APushParamIdx/APopParamIdx) of the loaded program.
+// The AG300's general data as the firmware keeps it, for a CUP image: the image's AGenData global
+// placed on it (bind_gen_data), and the indexed accesses (APushParamIdx/APopParamIdx) of the
+// loaded program.
 class PupHost final : public vm::Host {
  public:
   explicit PupHost(const std::vector<uprog::pup::IndexedAccess>& indexed) : indexed_(indexed) {}
   vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override {
-    int32_t* cell = at(command, index);
-    out = Value::of_int(cell != nullptr ? *cell : 0);
+    const Value* cell = at(command, index);
+    out = cell != nullptr ? *cell : Value::of_int(0);
     return vm::kCommandOk;
   }
   vm::CommandStatus write(uint32_t command, int32_t index, Value value) override {
-    if (int32_t* cell = at(command, index)) *cell = value.i;
+    if (Value* cell = at(command, index)) *cell = value;
     return vm::kCommandOk;
   }
   vm::CommandStatus execute(uint32_t, int32_t, const Value*, uint32_t) override { return vm::kCommandOk; }
   uint32_t now_us() override { return now; }
   uint32_t now = 0;
-  int32_t gen_data[1000] = {};
+  std::array<Value, uprog::pup::kGenDataSize> gen_data{};
 
  private:
-  int32_t* at(uint32_t command, int32_t index) {
+  Value* at(uint32_t command, int32_t index) {
     int32_t n = index;
     if (command >= uprog::pup::kIndexedBase && command - uprog::pup::kIndexedBase < indexed_.size()) {
       const uprog::pup::IndexedAccess& a = indexed_[command - uprog::pup::kIndexedBase];
@@ -84,7 +86,7 @@ class PupHost final : public vm::Host {
     } else if (command != static_cast<uint32_t>(uprog::pup::KeywordId::GenData)) {
       return nullptr;
     }
-    return n >= 1 && n <= 1000 ? &gen_data[n - 1] : nullptr;
+    return n >= 1 && n <= 1000 ? &gen_data[static_cast<size_t>(n - 1)] : nullptr;
   }
   const std::vector<uprog::pup::IndexedAccess>& indexed_;
 };
@@ -161,7 +163,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "%s", uprog::format_text(compiled.diagnostics).c_str());
       return 1;
     }
-    bc::optimize(compiled.image);
+    if (peephole) bc::optimize(compiled.image);
   } else if (file.size() > 4 && file.compare(file.size() - 4, 4, ".pdl") == 0) {
     uprog::pdl::CompileResult pdl = uprog::pdl::compile_file(file);
     compiled.image = std::move(pdl.image);
@@ -223,6 +225,10 @@ int main(int argc, char** argv) {
     return 1;
   }
   if (pup_loaded) {
+    if (!uprog::pup::bind_gen_data(machine, *pup_loaded, pup_host.gen_data)) {
+      std::fprintf(stderr, "AGenData cannot be placed\n");
+      return 1;
+    }
     const int32_t task = pup_loaded->task_routine.size() > 1 ? pup_loaded->task_routine[1] : -1;
     if (task < 0) {
       std::fprintf(stderr, "no AProgTask[1]\n");
@@ -284,7 +290,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "no %s\n", name.c_str());
         return 1;
       }
-      std::printf("%s=%d\n", name.c_str(), pup_host.gen_data[static_cast<size_t>(index - 1)]);
+      std::printf("%s=%d\n", name.c_str(), pup_host.gen_data[static_cast<size_t>(index - 1)].i);
       continue;
     }
     const int g = image.find_global(base);

@@ -700,6 +700,10 @@ PeepholeStats optimize(Image& image) {
   stats.words_before = stats.words_after = static_cast<uint32_t>(image.code.size());
   std::vector<Instr> in;
   if (!decode(image.code, in)) return stats;
+  // Line-end marks put each line's end on its own instruction (a CUP loader's one instruction a
+  // line); fusing would merge lines, so such code stays as it is.
+  for (const Instr& i : in)
+    if (word_ends_line(image.code[i.pc])) return stats;
 
   const size_t size = image.code.size();
   std::vector<bool> boundary = entered_places(in, image, size);

@@ -12,7 +12,8 @@ struct PeepholeStats {
   uint32_t fused = 0;  // sequences replaced
 };
 
-// Leaves the image unchanged when its code does not decode (the verifier will say why).
+// Leaves the image unchanged when its code does not decode (the verifier will say why) or
+// carries line-end marks.
 PeepholeStats optimize(Image& image);
 
 }  // namespace uprog::bytecode

@@ -293,6 +293,12 @@ bool Machine::write_global(uint32_t global, uint32_t element, Value value) {
   return true;
 }
 
+bool Machine::bind_global(uint32_t global, Value* data, uint32_t length) {
+  if (global >= global_count_ || data == nullptr || length < globals_[global].length) return false;
+  globals_[global].data = data;
+  return true;
+}
+
 bool Machine::read_memory(uint32_t address, Value& out) const {
   if (!loaded_ || address >= memory_words_) return false;
   out = memory_[address];

@@ -116,6 +116,11 @@ class Machine {
   // Globals, checked: false when the index or element is out of range.
   bool read_global(uint32_t global, uint32_t element, Value& out) const;
   bool write_global(uint32_t global, uint32_t element, Value value);
+  // Places a global on the host's own words (a controller's general data, which the host reads
+  // and writes too and which outlives a program): the program's loads and stores reach them
+  // from now on. `data` must stay valid while this image is loaded; LDM and STM still reach the
+  // words set aside at load. False when the index is out of range or `length` too short.
+  bool bind_global(uint32_t global, Value* data, uint32_t length);
   // The data memory: every global's words in table order, global 0's element 0 at address 0,
   // as LDM and STM see it. Checked: false when the address is past the last word.
   uint32_t memory_words() const { return memory_words_; }

@@ -1098,5 +1098,27 @@ d4:
   for (const Op op : ops_of(image)) EXPECT_NE(op, Op::UNTILCK) << bytecode::disassemble(image);
 }
 
+// Code with line-end marks (a CUP image) is one instruction a line: fusing "LDG; PUSHI; ADDI;
+// STG" would merge four lines into one, so the pass leaves it alone.
+TEST(Peephole, LeavesMarkedCodeAsItIs) {
+  const char* marked = R"(
+.global int "n" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  LDG.eol n
+  PUSHI.eol 1
+  ADDI.eol
+  STG.eol n
+  RET
+)";
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(marked));
+  const bytecode::Image image = optimized(marked);
+  EXPECT_EQ(image.code, p.image.code);
+  // Unmarked, the same four instructions fuse.
+  const std::string plain = std::regex_replace(marked, std::regex(R"(\.eol)"), "");
+  EXPECT_LT(ops_of(optimized(plain)).size(), ops_of(p.image).size());
+}
+
 }  // namespace
 }  // namespace uprog::test

@@ -63,7 +63,7 @@ int32_t Firmware::read_key(KeywordId key, int32_t index, int32_t& out) {
     case KeywordId::AinPort: out = analog_mv_; return 0;
     case KeywordId::AinFactor: out = ain_factor_; return 0;
     case KeywordId::AinOffset: out = ain_offset_; return 0;
-    case KeywordId::GenData: out = gen_data_[static_cast<size_t>(index - 1)]; return 0;
+    case KeywordId::GenData: out = gen_data_[static_cast<size_t>(index - 1)].i; return 0;
     case KeywordId::Timer: out = timers_[static_cast<size_t>(index - 1)]; return 0;
     case KeywordId::Time: out = static_cast<int32_t>(runtime_.now_ns() / 1'000'000); return 0;
     case KeywordId::ProgStatus: out = program_status(static_cast<uint32_t>(index)); return 0;
@@ -123,7 +123,7 @@ int32_t Firmware::write_key(KeywordId key, int32_t index, int32_t value) {
       return 0;
     case KeywordId::AinFactor: ain_factor_ = value; return 0;
     case KeywordId::AinOffset: ain_offset_ = value; return 0;
-    case KeywordId::GenData: gen_data_[static_cast<size_t>(index - 1)] = value; return 0;
+    case KeywordId::GenData: gen_data_[static_cast<size_t>(index - 1)] = Value::of_int(value); return 0;
     case KeywordId::Timer: timers_[static_cast<size_t>(index - 1)] = value; return 0;
     case KeywordId::ProgPriority:
       return schedule_.set_priority(static_cast<uint32_t>(index), static_cast<uint32_t>(value)) ? 0 : 10;
@@ -263,7 +263,7 @@ int32_t Firmware::status_of(int32_t s, int32_t v) {
     case 5:
     case 6:
       if (v < 1 || v > 1000) return -7;
-      return flag((gen_data_[static_cast<size_t>(v - 1)] != 0) == (s == 5));
+      return flag((gen_data_[static_cast<size_t>(v - 1)].i != 0) == (s == 5));
     case 7:
       if (v < 1 || v > 4) return -7;
       return flag(timers_[static_cast<size_t>(v - 1)] == 0);

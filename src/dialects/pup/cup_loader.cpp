@@ -234,15 +234,15 @@ class Loader {
     const uint32_t start = b.here();
     if (m.tail == Message::Tail::Assign) {
       push_constant(b, m.value);
-      b.emit(Op::CMDSET, id, static_cast<uint32_t>(i));
+      store(b, k.id, i);
       return b.end_line(start);
     }
     switch (k.id) {
       case KeywordId::ProgTask: return;
       case KeywordId::ProgFunc: return b.emit(Op::EOL);
       case KeywordId::PushConstant: push_constant(b, m.value); break;
-      case KeywordId::PushParam: b.emit(Op::CMDGET, static_cast<uint32_t>(op.name_key->id), static_cast<uint32_t>(m.name.index)); break;
-      case KeywordId::PopParam: b.emit(Op::CMDSET, static_cast<uint32_t>(op.name_key->id), static_cast<uint32_t>(m.name.index)); break;
+      case KeywordId::PushParam: load(b, op.name_key->id, m.name.index); break;
+      case KeywordId::PopParam: store(b, op.name_key->id, m.name.index); break;
       case KeywordId::PushParamIdx: b.emit(Op::CMDGETX, indexed(op)); break;
       case KeywordId::PopParamIdx: b.emit(Op::SWAP), b.emit(Op::CMDSETX, indexed(op)); break;
       case KeywordId::Math: math(b, i); break;
@@ -283,6 +283,23 @@ class Loader {
         break;
     }
     b.end_line(start);
+  }
+
+  // A keyword's value at an index: AGenData's in the image's global, any other's from the firmware.
+  void load(bytecode::CodeBuilder& b, KeywordId key, int32_t index) {
+    if (key == KeywordId::GenData) return b.emit(Op::LDGE, gen_data_global(), static_cast<uint32_t>(index - 1));
+    b.emit(Op::CMDGET, static_cast<uint32_t>(key), static_cast<uint32_t>(index));
+  }
+  void store(bytecode::CodeBuilder& b, KeywordId key, int32_t index) {
+    if (key == KeywordId::GenData) return b.emit(Op::STGE, gen_data_global(), static_cast<uint32_t>(index - 1));
+    b.emit(Op::CMDSET, static_cast<uint32_t>(key), static_cast<uint32_t>(index));
+  }
+  uint32_t gen_data_global() {
+    if (out_.gen_data_global < 0) {
+      out_.gen_data_global = static_cast<int32_t>(out_.image.globals.size());
+      out_.image.globals.push_back({"AGenData", ValueType::Int, static_cast<uint32_t>(kGenDataSize)});
+    }
+    return static_cast<uint32_t>(out_.gen_data_global);
   }
 
   // AJump[c]: one branch that ends the line whether it is taken or not.
@@ -362,6 +379,11 @@ class Loader {
 };
 
 }  // namespace
+
+bool bind_gen_data(vm::Machine& machine, const LoadedCup& cup, std::array<Value, kGenDataSize>& gen_data) {
+  if (cup.gen_data_global < 0) return true;
+  return machine.bind_global(static_cast<uint32_t>(cup.gen_data_global), gen_data.data(), kGenDataSize);
+}
 
 uint32_t LoadedCup::line_of(uint32_t pc) const {
   uint32_t line = 0;

@@ -2,12 +2,14 @@
 // project's verified image, each CUP line its own line of code (EOL), so that the threads run
 // one CUP line per turn and program keywords speak in CUP lines.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "bytecode/image.h"
+#include "vm/machine.h"
 #include "dialects/pup/cup_file.h"
 #include "dialects/pup/keywords.h"
 
@@ -21,6 +23,11 @@ constexpr uint32_t kMathResult = 0x2FFF;   // the last binary AMath's result of 
 constexpr uint32_t kFailBase = 0x3000;     // + code: the line fails with this controller error
 constexpr uint32_t kReturnCheck = 0x3FFF;  // AReturn: error 29 when the thread is in no call
 constexpr uint32_t kStatusBase = 0x4000;   // + s: AGetStatus[s] of the index v, 1 or 0
+
+// AGenData[1..1000]: the controller's general data, which the firmware keeps (0 at boot, kept
+// across downloads). A line naming AGenData[n] loads or stores element n - 1 of the image's global
+// "AGenData", which the firmware places on its own words (bind_gen_data).
+constexpr size_t kGenDataSize = 1000;
 
 struct IndexedAccess {
   KeywordId key;
@@ -36,11 +43,15 @@ struct LoadedCup {
   std::vector<int32_t> event_routine;  // by event ID 0..23, -1 for none
   std::vector<int32_t> line_depth;     // stack depth before each line, -1 unreachable
   std::vector<bool> waits;             // per line: an AWaitStatus (a thread in it is waiting)
+  int32_t gen_data_global = -1;        // the global "AGenData", -1 when no line names it
   // The CUP line of a code word (0 for none).
   uint32_t line_of(uint32_t pc) const;
 };
 
 // nullopt with `error` "line N: why" (the download's error 45) when the program is unsafe.
 std::optional<LoadedCup> load_cup(const CupProgram& program, std::string* error);
+
+// Places the image's AGenData (if it has one) on the general data the host keeps.
+bool bind_gen_data(vm::Machine& machine, const LoadedCup& cup, std::array<Value, kGenDataSize>& gen_data);
 
 }  // namespace uprog::pup

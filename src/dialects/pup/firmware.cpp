@@ -43,7 +43,7 @@ Firmware::Firmware(dialect::Runtime& runtime, const dialect::FirmwareOptions&)
 
 void Firmware::boot(std::vector<std::string>& messages) {
   axis_ = &runtime_.axis();
-  gen_data_.fill(0);
+  gen_data_.fill(Value::of_int(0));
   timers_.fill(0);
   line_stack_.clear();
   // The keywords' values are RAM (a fresh axis takes the drive's defaults); the analog input is
@@ -76,6 +76,7 @@ std::string Firmware::install(const std::string& cup, bool store) {
   apply_debug_map(cup, loaded->image);
   auto image = dialect::LoadedProgram::load(bytecode::encode(loaded->image), machine_config(), *this, &why, true, "pup");
   if (!image) return "error 45: " + why;
+  if (!bind_gen_data(image->machine(), *loaded, gen_data_)) return "error 45: AGenData cannot be placed";
   if (store && !runtime_.flash().write(kRecord, std::vector<uint8_t>(cup.begin(), cup.end()), &why)) {
     return "error 46: " + why;
   }

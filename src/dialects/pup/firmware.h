@@ -21,7 +21,6 @@
 namespace uprog::pup {
 
 constexpr uint32_t kThreads = 8;
-constexpr size_t kGenDataSize = 1000;
 
 // One host's download in progress (ADownloadUProg[1..3]); it dies with the connection.
 struct DownloadState {
@@ -131,7 +130,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::optional<DebugMap> debug_map_;
   std::string debug_map_cup_;  // the CUP text the map belongs to
 
-  std::array<int32_t, kGenDataSize> gen_data_{};
+  std::array<Value, kGenDataSize> gen_data_{};
   std::array<int32_t, 4> timers_{};
   uint32_t timer_us_ = 0;
   std::array<int32_t, kThreads + 1> thread_error_{};
