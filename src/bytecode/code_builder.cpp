@@ -38,7 +38,7 @@ bool CodeBuilder::finish() {
       ok = false;
       continue;
     }
-    code_[use.pc] = (code_[use.pc] & ~a_field(kOperandMax)) | a_field(target);
+    code_[use.pc] = with_a(code_[use.pc], target);
   }
   uses_.clear();
   return ok;

@@ -94,6 +94,8 @@ constexpr bool word_ends_line(uint32_t word) { return (word & kLineEndBit) != 0;
 // Operand A placed in its field of an instruction word.
 constexpr uint32_t a_field(uint32_t a) { return (a & kOperandMax) << 9; }
 constexpr uint32_t make_word(Op op, uint32_t a) { return static_cast<uint32_t>(op) | a_field(a); }
+// The word with another operand A; its opcode and line-end mark stay.
+constexpr uint32_t with_a(uint32_t word, uint32_t a) { return (word & ~a_field(kOperandMax)) | a_field(a); }
 
 // The instructions that end their line themselves: EOL and the fused forms named ...EOL.
 constexpr bool ends_line_itself(Op op) {
@@ -102,10 +104,17 @@ constexpr bool ends_line_itself(Op op) {
   while (name[n] != '\0') ++n;
   return n >= 3 && name[n - 3] == 'E' && name[n - 2] == 'O' && name[n - 1] == 'L';
 }
+// The superinstructions of the peephole pass, whose dispatch does not look for the mark (it would
+// cost the dialects that fuse most, PDL above all, without a line to end), but the compare-and-
+// jumps on the stack, which the CUP loader makes of AJump[c].
+constexpr bool is_superinstruction(Op op) {
+  const auto in = [op](Op first, Op last) { return op >= first && op <= last; };
+  return (in(Op::ADDLK, Op::MULFLLS) && !in(Op::JEQI, Op::JGEI)) || in(Op::STGEOL, Op::JULTLK);
+}
 // The instructions that may carry the line-end mark: those that run to completion and go on in
 // the same slice. Not a call or a return (the line would end in another frame), nor one that
-// ends its line itself, stops the slice (YIELD, WAIT) or runs apart from the loop (UNTILCK).
-// A table made at compile time, so that firmware carries no names.
+// ends its line itself, stops the slice (YIELD, WAIT) or runs apart from the loop (UNTILCK),
+// nor a superinstruction. A table made at compile time, so that firmware carries no names.
 struct LineEndTable {
   bool may[256];
 };
@@ -115,14 +124,16 @@ constexpr LineEndTable make_line_end_table() {
     const Op op = static_cast<Op>(i);
     const Flow flow = op_info(op).flow;
     t.may[i] = (flow == Flow::Next || flow == Flow::Jump || flow == Flow::Branch) &&
-               !ends_line_itself(op) && op != Op::YIELD && op != Op::WAIT &&
-               op != Op::UNTILCK && op != Op::BREAK;
+               !ends_line_itself(op) && !is_superinstruction(op) && op != Op::YIELD &&
+               op != Op::WAIT && op != Op::UNTILCK && op != Op::BREAK;
   }
   return t;
 }
 inline constexpr LineEndTable kLineEndTable = make_line_end_table();
 constexpr bool may_end_line(Op op) { return kLineEndTable.may[static_cast<uint8_t>(op)]; }
 static_assert(ends_line_itself(Op::EOL) && ends_line_itself(Op::JMPEOL) &&
-              !ends_line_itself(Op::JMP) && may_end_line(Op::JZ) && !may_end_line(Op::RETEOL));
+              !ends_line_itself(Op::JMP) && may_end_line(Op::JZ) && !may_end_line(Op::RETEOL) &&
+              may_end_line(Op::JGTI) && may_end_line(Op::LDGE) && !may_end_line(Op::REMLK) &&
+              !may_end_line(Op::STMLK));
 
 }  // namespace uprog::bytecode

@@ -24,6 +24,7 @@ struct Instr {
   bool wants_constant = false;
   int32_t constant = 0;
   bool constant_is_b = false;
+  bool ends_line = false;  // carries the line-end mark (mark_line_ends)
 };
 
 bool decode(const std::vector<uint32_t>& code, std::vector<Instr>& out) {
@@ -673,11 +674,32 @@ void drop_dead_code(std::vector<Instr>& code, const Image& image, size_t size) {
   }
 }
 
+// "X; EOL", X an instruction that goes on to the next and may carry the mark, the EOL neither
+// entered nor a source line's start: X with the line-end mark, the line ending as it did
+// without a dispatch of its own. (After a branch the EOL ends the line on one path only.)
+void mark_line_ends(std::vector<Instr>& code, const std::vector<bool>& entered,
+                    const std::vector<bool>& line_start) {
+  std::vector<Instr> out;
+  out.reserve(code.size());
+  for (const Instr& i : code) {
+    Instr* last = out.empty() ? nullptr : &out.back();
+    if (i.op == Op::EOL && last != nullptr && !entered[i.pc] && !line_start[i.pc] &&
+        op_info(last->op).flow == Flow::Next && may_end_line(last->op) && !last->ends_line) {
+      last->ends_line = true;
+      continue;
+    }
+    out.push_back(i);
+  }
+  code = std::move(out);
+}
+
 // A jump to a JMP goes straight to its target; a jump-and-end-of-line to a RET becomes
 // RETEOL. Targets are followed a bounded number of steps, so a cycle of jumps stays a cycle.
 void thread_jumps(std::vector<uint32_t>& code) {
   const auto final_target = [&](uint32_t target) {
-    for (int hops = 0; hops < 8 && target < code.size() && word_op(code[target]) == Op::JMP; ++hops)
+    for (int hops = 0; hops < 8 && target < code.size() && word_op(code[target]) == Op::JMP &&
+                       !word_ends_line(code[target]);
+         ++hops)
       target = word_a(code[target]);
     return target;
   };
@@ -689,7 +711,7 @@ void thread_jumps(std::vector<uint32_t>& code) {
       code[pc] = make_word(Op::RETEOL, 0);
       continue;
     }
-    code[pc] = make_word(op, target);
+    code[pc] = with_a(code[pc], target);
   }
 }
 
@@ -737,13 +759,14 @@ PeepholeStats optimize(Image& image) {
     before = out.size();
     drop_dead_code(out, image, size);
   }
+  mark_line_ends(out, boundary, line_start);
 
   // Old instruction starts (and the end) to new ones.
   std::vector<uint32_t> relocated(size + 1, UINT32_MAX);
   std::vector<uint32_t> code;
   for (const Instr& i : out) {
     relocated[i.pc] = static_cast<uint32_t>(code.size());
-    code.push_back(make_word(i.op, i.a));
+    code.push_back(make_word(i.op, i.a) | (i.ends_line ? kLineEndBit : 0u));
     if (op_length(i.op) == 2) code.push_back(i.b);
   }
   relocated[size] = static_cast<uint32_t>(code.size());
@@ -754,7 +777,7 @@ PeepholeStats optimize(Image& image) {
     const Op op = word_op(code[pc]);
     if (op_info(op).a != Operand::Target) continue;
     const uint32_t target = move(word_a(code[pc]));
-    if (target != UINT32_MAX) code[pc] = make_word(op, target);
+    if (target != UINT32_MAX) code[pc] = with_a(code[pc], target);
   }
   thread_jumps(code);
   for (Routine& r : image.routines)

@@ -3,6 +3,8 @@
 // safely on the VM.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -162,6 +164,7 @@ TEST(Verifier, WhatItAcceptsRunsSafely) {
     return seed >> 12;
   };
   int accepted = 0;
+  int accepted_with_marks = 0;
   std::map<vm::SliceEnd, int> ends;
   for (int round = 0; round < 40000; ++round) {
     Image image;
@@ -172,12 +175,13 @@ TEST(Verifier, WhatItAcceptsRunsSafely) {
     for (uint32_t i = 0; i < n; ++i) {
       const uint32_t op = next() % (kOpCount + 2);
       const uint32_t a = next() % 6;
-      const uint32_t line_end = next() % 4 == 0 ? kLineEndBit : 0u;  // some marked, some refused
+      const uint32_t line_end = next() % 8 == 0 ? kLineEndBit : 0u;  // some marked, some refused
       image.code.push_back(op | line_end | a_field(a));
     }
     const std::vector<uint8_t> bytes = encode(image);
     if (!verify_bytes(bytes).ok()) continue;
     ++accepted;
+    accepted_with_marks += std::any_of(image.code.begin(), image.code.end(), word_ends_line) ? 1 : 0;
     SCOPED_TRACE(disassemble(image));
     Image decoded;
     std::string why;
@@ -187,6 +191,7 @@ TEST(Verifier, WhatItAcceptsRunsSafely) {
     ends[run_once(bytes)]++;
   }
   EXPECT_GT(accepted, 100);
+  EXPECT_GT(accepted_with_marks, 10);
   // The random programs reach the ends a real one does, so the runs above exercised the VM.
   EXPECT_GT(ends[vm::SliceEnd::Finished], 0);
   EXPECT_GT(ends[vm::SliceEnd::Error], 0);

@@ -27,6 +27,14 @@ std::vector<Op> ops_of(const bytecode::Image& image) {
   return ops;
 }
 
+// The instructions that carry the line-end mark, in order.
+std::vector<Op> marked_ops(const bytecode::Image& image) {
+  std::vector<Op> ops;
+  for (uint32_t pc = 0; pc < image.code.size(); pc += bytecode::op_length(bytecode::word_op(image.code[pc])))
+    if (bytecode::word_ends_line(image.code[pc])) ops.push_back(bytecode::word_op(image.code[pc]));
+  return ops;
+}
+
 // The image of `text` after the peephole pass.
 bytecode::Image optimized(const std::string& text) {
   LoadedProgram p;
@@ -137,7 +145,7 @@ TEST(Peephole, FusesTheLoop) {
   EXPECT_GT(stats.fused, 0u);
   EXPECT_LT(stats.words_after, stats.words_before);
   const std::vector<Op> expected = {
-      Op::PUSHI, Op::STL, Op::PUSHI, Op::STL, Op::EOL,
+      Op::PUSHI, Op::STL, Op::PUSHI, Op::STL,   // the EOL after the STL is its line-end mark
       Op::JGTLL,                        // LDL i; LDL n; LEI; JZ done
       Op::REMLK, Op::JZ,                // LDL i; PUSHI 3; REMI — then PUSHI 0; NEI; JZ
       Op::REMLK, Op::ADDIGEOL,          // LDG total; ...; ADDI; STG total; EOL
@@ -148,6 +156,8 @@ TEST(Peephole, FusesTheLoop) {
       Op::JMPEOL,                       // skip: EOL; JMP top
       Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  // STG x; skip: EOL — the EOL is a jump target, so it stays an instruction.
+  EXPECT_EQ(marked_ops(image), std::vector<Op>{Op::STL}) << bytecode::disassemble(image);
   expect_same_behaviour(kLoop, "loop");
 }
 
@@ -184,7 +194,7 @@ TEST(Peephole, RelocatesLinesEntriesAndTargets) {
   bytecode::optimize(image);
   ASSERT_EQ(image.lines.size(), 3u);
   EXPECT_EQ(image.lines[0].code, 0u);
-  EXPECT_EQ(image.lines[1].code, 5u);  // the loop top keeps its place: nothing before it fused
+  EXPECT_EQ(image.lines[1].code, 4u);  // the loop top: the EOL before it is now a mark
   EXPECT_EQ(image.routines[0].entry, 0u);
 }
 
@@ -352,9 +362,11 @@ end:
                                     Op::INCLJEOL,                               // k += 1; back
                                     Op::JNEGK,                                  // total == 6
                                     Op::PUSHI, Op::STLJEOL,                     // k = 100; to end
-                                    Op::PUSHI, Op::STL, Op::EOL,
+                                    Op::PUSHI, Op::STL,
                                     Op::LDL, Op::STG, Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  // STLK is a superinstruction, which carries no mark: its EOL stays.
+  EXPECT_EQ(marked_ops(image), (std::vector<Op>{Op::STL})) << bytecode::disassemble(image);
   expect_same_behaviour(text, "line-ending jumps");
   EXPECT_EQ(run_and_read(image, "total"), 100);
 }
@@ -841,11 +853,13 @@ flat:
       Op::PUSHI, Op::STMLK, Op::EOL,                   // frame[1] = 7
       Op::ADDLK, Op::STMLK, Op::EOL,                   // frame[2] = base + 2 (a pointer: 6)
       Op::LDMLK, Op::JULTK, Op::JULTLK, Op::RAISE,     // r = frame[2], in the user memory or the frame
-      Op::LDMLK, Op::PUSHI, Op::SUBI, Op::STM, Op::EOL,  // flat: *r = frame[1] - 1
+      Op::LDMLK, Op::PUSHI, Op::SUBI, Op::STM,         // flat: *r = frame[1] - 1 (STM's mark)
       Op::LDMLK, Op::STMLK,                            // frame[0] = frame[3]
-      Op::PUSHI, Op::LDMLK, Op::STM, Op::EOL,          // seen = frame[1]: the address first
+      Op::PUSHI, Op::LDMLK, Op::STM,                   // seen = frame[1]: the address first
       Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  EXPECT_EQ(marked_ops(image), (std::vector<Op>{Op::STM, Op::STM}))
+      << bytecode::disassemble(image);
   expect_same_behaviour(text, "frames in the data memory");
   EXPECT_EQ(run_and_read(image, "seen"), 7);
   expect_same_line_ends(text, image);
