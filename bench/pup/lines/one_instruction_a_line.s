@@ -1,7 +1,8 @@
 ; bench/peers/loop.pup's CUP lines with one VM instruction each and no line ends: AGenData[1..3]
 ; as globals, each AJump[c] a compare-and-jump. 19 instructions an iteration that takes the `if`.
 ; Beside eol_after_each_line.s and nop_after_each_line.s (docs/dialects/pup.md, "What a line
-; costs"): `uprog_bench FILE --no-peephole --then Result` prints 59999995.
+; costs"): `uprog_bench FILE --no-peephole --then Result` prints 59999995. Without
+; --no-peephole the pass fuses it (REMGK, INCG: 10.7 instructions an iteration).
 .global int "I" 1        ; g0, AGenData[1]
 .global int "S" 1        ; g1, AGenData[2]
 .global int "Result" 1   ; g2, AGenData[3]
