@@ -184,10 +184,6 @@ SliceResult Machine::execute(Thread& t, const Budget& budget) {
   Value* locals = t.frames[t.frame_count - 1].locals;
   BudgetCount steps = BudgetCount::of(budget.instructions);
   BudgetCount lines = BudgetCount::of(budget.lines);
-  // The line count stays in memory (its address escapes here): in a register it cost the
-  // handlers that look for the mark more than a memory decrement costs (PDL's fib 15 % slower
-  // than before the mark against 5 %, uprog_bench, alternating runs).
-  asm volatile("" : : "r"(&lines) : "memory");
   BudgetCount back_jumps = BudgetCount::of(budget.back_jumps);
   // A call may start a frame at or below this stack position (see enter()).
   const Value* const call_limit = t.stack + (config_.stack - max_depth_);
