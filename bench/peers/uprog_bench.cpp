@@ -86,7 +86,7 @@ class PupHost final : public vm::Host {
     } else if (command != static_cast<uint32_t>(uprog::pup::KeywordId::GenData)) {
       return nullptr;
     }
-    return n >= 1 && n <= 1000 ? &gen_data[static_cast<size_t>(n - 1)] : nullptr;
+    return n >= 1 && n <= static_cast<int32_t>(gen_data.size()) ? &gen_data[static_cast<size_t>(n - 1)] : nullptr;
   }
   const std::vector<uprog::pup::IndexedAccess>& indexed_;
 };
@@ -286,7 +286,7 @@ int main(int argc, char** argv) {
   for (const std::string& name : then) {
     const auto [base, index] = split_index(name);
     if (pup_loaded && base == "AGenData") {
-      if (index < 1 || index > 1000) {
+      if (index < 1 || index > static_cast<int32_t>(uprog::pup::kGenDataSize)) {
         std::fprintf(stderr, "no %s\n", name.c_str());
         return 1;
       }

@@ -295,11 +295,9 @@ class Loader {
     b.emit(Op::CMDSET, static_cast<uint32_t>(key), static_cast<uint32_t>(index));
   }
   uint32_t gen_data_global() {
-    if (out_.gen_data_global < 0) {
-      out_.gen_data_global = static_cast<int32_t>(out_.image.globals.size());
-      out_.image.globals.push_back({"AGenData", ValueType::Int, static_cast<uint32_t>(kGenDataSize)});
-    }
-    return static_cast<uint32_t>(out_.gen_data_global);
+    if (const int g = out_.image.find_global(kGenDataGlobal); g >= 0) return static_cast<uint32_t>(g);
+    out_.image.globals.push_back({kGenDataGlobal, ValueType::Int, static_cast<uint32_t>(kGenDataSize)});
+    return static_cast<uint32_t>(out_.image.globals.size() - 1);
   }
 
   // AJump[c]: one branch that ends the line whether it is taken or not.
@@ -381,8 +379,8 @@ class Loader {
 }  // namespace
 
 bool bind_gen_data(vm::Machine& machine, const LoadedCup& cup, std::array<Value, kGenDataSize>& gen_data) {
-  if (cup.gen_data_global < 0) return true;
-  return machine.bind_global(static_cast<uint32_t>(cup.gen_data_global), gen_data.data(), kGenDataSize);
+  const int g = cup.image.find_global(kGenDataGlobal);
+  return g < 0 || machine.bind_global(static_cast<uint32_t>(g), gen_data.data(), kGenDataSize);
 }
 
 uint32_t LoadedCup::line_of(uint32_t pc) const {

@@ -28,6 +28,7 @@ constexpr uint32_t kStatusBase = 0x4000;   // + s: AGetStatus[s] of the index v,
 // across downloads). A line naming AGenData[n] loads or stores element n - 1 of the image's global
 // "AGenData", which the firmware places on its own words (bind_gen_data).
 constexpr size_t kGenDataSize = 1000;
+constexpr const char* kGenDataGlobal = "AGenData";
 
 struct IndexedAccess {
   KeywordId key;
@@ -43,7 +44,6 @@ struct LoadedCup {
   std::vector<int32_t> event_routine;  // by event ID 0..23, -1 for none
   std::vector<int32_t> line_depth;     // stack depth before each line, -1 unreachable
   std::vector<bool> waits;             // per line: an AWaitStatus (a thread in it is waiting)
-  int32_t gen_data_global = -1;        // the global "AGenData", -1 when no line names it
   // The CUP line of a code word (0 for none).
   uint32_t line_of(uint32_t pc) const;
 };
