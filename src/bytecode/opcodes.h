@@ -8,7 +8,7 @@ namespace uprog::bytecode {
 
 enum class Operand : uint8_t {
   None, Imm, Const, Local, Global, Routine, Target, Count, Command, Unit, LocalPair, LocalImm,
-  LocalConst, Width, Text, GlobalPair, GlobalConst, GlobalImm, Element
+  LocalConst, Width, Text, GlobalPair, GlobalConst, GlobalImm, Element, Lines
 };
 
 // The packed B operands of the fused comparisons and arithmetic (LocalConst, GlobalPair,
@@ -20,6 +20,11 @@ constexpr uint32_t pack_local_imm(uint32_t local, int32_t imm) {
 constexpr uint32_t packed_first(uint32_t b) { return b & 0xFFFFu; }
 constexpr uint32_t packed_second(uint32_t b) { return b >> 16; }
 constexpr int32_t packed_imm(uint32_t b) { return static_cast<int32_t>(b) >> 16; }
+// JLINES's B: the lines its run ends, and how many of them it counts itself (the fused code
+// counts the rest); each 16 bits.
+constexpr uint32_t pack_lines(uint32_t run, uint32_t counted) { return run | (counted << 16); }
+constexpr uint32_t run_lines(uint32_t b) { return b & 0xFFFFu; }
+constexpr uint32_t counted_lines(uint32_t b) { return b >> 16; }
 // UNTILCK's B: the command's index (0..255) in bits 0-7, the comparison (0..5: == != < <= > >=)
 // in bits 8-11, the immediate (-2^19..2^19-1) in bits 12-31.
 constexpr uint32_t pack_command_test(uint32_t index, uint32_t how, int32_t imm) {
@@ -125,7 +130,7 @@ constexpr LineEndTable make_line_end_table() {
     const Flow flow = op_info(op).flow;
     t.may[i] = (flow == Flow::Next || flow == Flow::Jump || flow == Flow::Branch) &&
                !ends_line_itself(op) && !is_superinstruction(op) && op != Op::YIELD &&
-               op != Op::WAIT && op != Op::UNTILCK && op != Op::BREAK;
+               op != Op::WAIT && op != Op::UNTILCK && op != Op::BREAK && op != Op::JLINES;
   }
   return t;
 }

@@ -118,6 +118,10 @@ class Verifier {
       }
       if (info.b == Operand::Element && image_.code[pc + 1] >= image_.globals[a].length)
         return fail(VerifyError::BadOperand, pc);
+      if (info.b == Operand::Lines && (run_lines(image_.code[pc + 1]) == 0 ||
+                                       counted_lines(image_.code[pc + 1]) >
+                                           run_lines(image_.code[pc + 1])))
+        return fail(VerifyError::BadOperand, pc);
       if (word_op(word) == Op::CALL) {
         const RoutineRecord callee = image_.routines[a];
         if (image_.code[pc + 1] > callee.outputs) return fail(VerifyError::BadOperand, pc);

@@ -334,6 +334,18 @@ op_STGE:
   globals_[A()].data[B()] = *--sp;
   ip += 2;
   DISPATCH();
+// The fused copy of a run of lines, when no count or breakpoint can stop the slice inside it
+// (the drive's one-line slices, stepping and the debugger take the lines one by one).
+op_JLINES: {
+  const uint32_t b = B();
+  if (!counted && breakpoint_count_ == 0 && lines.now > bytecode::run_lines(b)) {
+    lines.now -= bytecode::counted_lines(b);
+    JUMP_TO(code + A());
+    DISPATCH_NEXT();
+  }
+  ip += 2;
+  DISPATCH_NEXT();
+}
 op_LDGX: {
   const GlobalSlot& g = globals_[A()];
   const auto index = static_cast<uint32_t>(sp[-1].i);

@@ -121,6 +121,82 @@ main:
   EXPECT_EQ(p.machine.pc(0), 0u);
 }
 
+// JLINES: a run of four one-instruction lines and its fused copy, which also counts its runs in
+// `fast` so that the test sees which copy ran. B = 4 | 3 << 16: the run ends four lines, JLINES
+// counts three, the copy's marked store the fourth.
+const char* kLineRun = R"(
+.global int "a" 1
+.global int "fast" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  JLINES fused 196612
+  LDG.eol a
+  PUSHI.eol 1
+  ADDI.eol
+  STG.eol a
+next:
+  JMP.eol main
+fused:
+  LDG fast
+  PUSHI 1
+  ADDI
+  STG fast
+  LDG a
+  PUSHI 1
+  ADDI
+  STG.eol a
+  JMP next
+)";
+
+TEST(Machine, LineRunTakesItsFusedCopyWhenNothingCanStopInside) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(kLineRun));
+  p.machine.start(0, 0);
+  // Ten lines: two loops of five (the run's four and the JMP's), both through the fused copy.
+  auto r = p.machine.run_slice(0, Budget::of_lines(10));
+  EXPECT_EQ(r.end, SliceEnd::LineEnd);
+  EXPECT_EQ(r.lines, 10u);
+  EXPECT_EQ(p.global("a").i, 2);
+  EXPECT_EQ(p.global("fast").i, 2);
+  EXPECT_EQ(p.machine.pc(0), 0u);
+  // Four lines left is not more than the run ends: the lines one by one, the slice ending after
+  // the fourth, at `next`.
+  r = p.machine.run_slice(0, Budget::of_lines(4));
+  EXPECT_EQ(r.lines, 4u);
+  EXPECT_EQ(p.global("a").i, 3);
+  EXPECT_EQ(p.global("fast").i, 2);
+  EXPECT_EQ(p.machine.pc(0), 6u);
+  // One line at a time (the drive's cycle) never takes the copy.
+  for (int i = 0; i < 5; ++i) p.machine.run_slice(0, Budget::of_lines(1));
+  EXPECT_EQ(p.global("a").i, 4);
+  EXPECT_EQ(p.global("fast").i, 2);
+  EXPECT_EQ(p.machine.pc(0), 6u);
+}
+
+TEST(Machine, LineRunTakesTheLinesUnderACountOrABreakpoint) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(kLineRun));
+  p.machine.start(0, 0);
+  // Counted: 6 instructions a loop (JLINES, the four lines, the JMP).
+  auto r = p.machine.run_slice(0, Budget{12, 0, 0});
+  EXPECT_EQ(r.executed, 12u);
+  EXPECT_EQ(p.global("a").i, 2);
+  EXPECT_EQ(p.global("fast").i, 0);
+  // A breakpoint anywhere: the lines, so that one inside the run stops there.
+  ASSERT_TRUE(p.machine.set_breakpoint(3));  // line 2 of the run, PUSHI
+  r = p.machine.run_slice(0, Budget::of_lines(100));
+  EXPECT_EQ(r.end, SliceEnd::Breakpoint);
+  EXPECT_EQ(p.machine.pc(0), 3u);
+  EXPECT_EQ(p.global("fast").i, 0);
+  ASSERT_TRUE(p.machine.clear_breakpoint(3));
+  p.machine.resume(0);
+  // The run's last three lines and the JMP's, then a loop with five lines left: fused.
+  r = p.machine.run_slice(0, Budget::of_lines(9));
+  EXPECT_EQ(r.lines, 9u);
+  EXPECT_EQ(p.global("a").i, 4);
+  EXPECT_EQ(p.global("fast").i, 1);
+}
+
 TEST(Machine, LineEndMarkOnAHostCallThatEndsTheSlice) {
   LoadedProgram p;
   ASSERT_TRUE(p.load(R"(

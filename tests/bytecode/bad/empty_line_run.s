@@ -1,0 +1,9 @@
+; JLINES over a run of no lines (B's low half 0)
+.routine function "main" in=0 out=0 entry=main
+main:
+  JLINES fast 0
+  NOP.eol
+  RET
+fast:
+  JMP main
+; expect verify: BadOperand

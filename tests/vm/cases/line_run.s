@@ -1,0 +1,36 @@
+; JLINES before a run of one-instruction lines (the CUP loader's `S = S + I`, four lines): a
+; slice without a line budget takes the run's fused copy (ADDIGG, then the store that ends the
+; copy's one line of its own), which the loop's three turns count in `fused`.
+.global int "s" 1
+.global int "i" 1
+.global int "fused" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  PUSHI.eol 3
+  STG.eol i
+top:
+  JLINES copy 196612
+  LDG.eol s
+  LDG.eol i
+  ADDI.eol
+  STG.eol s
+next:
+  LDG i
+  PUSHI 1
+  SUBI
+  STG i
+  LDG.eol i
+  JNZ.eol top
+  RET
+copy:
+  LDG fused
+  PUSHI 1
+  ADDI
+  STG fused
+  ADDIGG 65536  ; s + i (globals 0 and 1, 16 bits each)
+  STG.eol s
+  JMP next
+; expect end: finished
+; expect s = 6
+; expect i = 0
+; expect fused = 3
