@@ -4,10 +4,14 @@
 
 #include <fmt/core.h>
 
+#include <charconv>
 #include <map>
 
 #include "bytecode/code_builder.h"
+#include "dialects/pup/cup_code.h"
 #include "dialects/pup/cup_math.h"
+#include "dialects/pup/line_op.h"
+#include "dialects/pup/line_runs.h"
 #include "dialects/pup/message.h"
 
 namespace uprog::pup {
@@ -16,15 +20,6 @@ namespace {
 using bytecode::Op;
 
 constexpr int32_t kMaxDepth = 50;
-
-struct LineOp {
-  const Keyword* key = nullptr;
-  Message msg;
-  const Keyword* name_key = nullptr;  // the parameter after `,` (APushParam, …)
-  int pops = 0, pushes = 0;
-  bool falls_through = true;
-  uint32_t target = 0;  // a jump's line
-};
 
 struct Refusal {
   uint32_t line;
@@ -202,27 +197,10 @@ class Loader {
   }
 
   void math(bytecode::CodeBuilder& b, int32_t n) {
-    static const std::map<int32_t, Op> kNative = {
-        {1, Op::ADDI}, {2, Op::MULI}, {3, Op::SUBI}, {4, Op::DIVI}, {5, Op::REMI}, {6, Op::NEGI},
-        {7, Op::ABSI}, {10, Op::ANDI}, {11, Op::ORI}, {12, Op::XORI}, {13, Op::NOTI}, {14, Op::SHLI},
-        {15, Op::SHRI}, {22, Op::LNOT}};
-    if (auto it = kNative.find(n); it != kNative.end()) return b.emit(it->second);
-    if (n == 20 || n == 21) {  // logical: both to 0/1 first
-      b.emit_imm(Op::PUSHI, 0), b.emit(Op::NEI), b.emit(Op::SWAP), b.emit_imm(Op::PUSHI, 0), b.emit(Op::NEI);
-      b.emit(n == 20 ? Op::ANDI : Op::ORI);
-      return;
-    }
+    if (emit_math(b, n)) return;
     if (math_arity(n) == 1) return b.emit(Op::CMDGETX, kMathBase + static_cast<uint32_t>(n));
     b.emit(Op::CMDRUN, kMathBase + static_cast<uint32_t>(n), 2);
     b.emit(Op::CMDGET, kMathResult, 0);
-  }
-
-  // Leaves 1/0 for condition c on the stack.
-  void condition(bytecode::CodeBuilder& b, int32_t c) {
-    static const Op kOps[] = {Op::EQI, Op::NEI, Op::GTI, Op::GEI, Op::LTI, Op::LEI};
-    if (c >= 3 && c <= 8) return b.emit(kOps[c - 3]);
-    b.emit_imm(Op::PUSHI, 0);
-    b.emit(c == 2 ? Op::GTI : c == 9 ? Op::EQI : Op::NEI);
   }
 
   void line_code(bytecode::CodeBuilder& b, uint32_t l, std::vector<bytecode::CodeBuilder::Label>& at) {
@@ -246,7 +224,7 @@ class Loader {
       case KeywordId::PushParamIdx: b.emit(Op::CMDGETX, indexed(op)); break;
       case KeywordId::PopParamIdx: b.emit(Op::SWAP), b.emit(Op::CMDSETX, indexed(op)); break;
       case KeywordId::Math: math(b, i); break;
-      case KeywordId::Compare: condition(b, i); break;
+      case KeywordId::Compare: emit_condition(b, i); break;
       case KeywordId::GetStatus:
         push_constant(b, m.value);
         b.emit(Op::CMDGETX, kStatusBase + static_cast<uint32_t>(i));
@@ -311,6 +289,33 @@ class Loader {
     b.end_line(start);
   }
 
+  // The lines control may arrive at other than from the line before: jump targets, task and
+  // function starts, and a function's first line, where its events enter.
+  std::vector<bool> entered_lines() const {
+    std::vector<bool> entered(count() + 2, false);
+    for (uint32_t l = 1; l <= count(); ++l) entered[ops_[l].target] = true;
+    for (const auto& [n, l] : tasks_) entered[l] = true;
+    for (const auto& [n, l] : functions_) entered[l] = entered[l + 1] = true;
+    return entered;
+  }
+
+  // A run's fused copy after the code, its exits at their lines' code, its JLINES pointed at it.
+  void place_copy(const LineRun& run, uint32_t guard) {
+    std::vector<uint32_t>& code = out_.image.code;
+    const auto start = static_cast<uint32_t>(code.size());
+    code[guard] = bytecode::with_a(code[guard], start);
+    for (uint32_t pc = 0; pc < run.code.size(); ++pc) {
+      uint32_t word = run.code[pc];
+      const Op op = bytecode::word_op(word);
+      if (bytecode::op_info(op).a == bytecode::Operand::Target) {
+        const uint32_t to = bytecode::word_a(word);
+        word = bytecode::with_a(word, to >= kRunExit ? out_.line_pc[to - kRunExit] : start + to);
+      }
+      code.push_back(word);
+      if (bytecode::op_length(op) == 2) code.push_back(run.code[++pc]);
+    }
+  }
+
   void add_routine(std::string name, bytecode::RoutineKind kind, uint32_t entry) {
     bytecode::Routine r;
     r.name = std::move(name);
@@ -331,9 +336,17 @@ class Loader {
     uint32_t next = 0;
     for (const auto& [n, l] : functions_) function_routine_[n] = static_cast<int32_t>(next++);
     out_.line_pc.assign(count() + 2, 0);
+    const std::vector<LineRun> runs = fuse_line_runs(ops_, depth_, entered_lines(), image);
+    std::vector<uint32_t> run_guard;  // each run's JLINES
+    auto run = runs.begin();
     for (uint32_t l = 1; l <= count(); ++l) {
       b.bind(at[l]);
       out_.line_pc[l] = b.here();
+      if (run != runs.end() && run->first == l) {
+        run_guard.push_back(b.here());
+        b.emit(Op::JLINES, 0, bytecode::pack_lines(run->last - l + 1, run->counted));
+        ++run;
+      }
       if (depth_[l] < 0 && ops_[l].key->kind != KeywordKind::Marker) {
         b.emit(Op::EOL);  // never reached: kept so that every line has its code word
       } else {
@@ -345,6 +358,7 @@ class Loader {
     out_.line_pc[count() + 1] = b.here();
     b.emit(Op::EXIT);
     b.finish();
+    for (size_t r = 0; r < runs.size(); ++r) place_copy(runs[r], run_guard[r]);
     for (const auto& [n, l] : functions_) add_routine(fmt::format("func {}", n), bytecode::RoutineKind::Function, out_.line_pc[l]);
     auto task_entry = [&](uint32_t l) { return out_.line_pc[l]; };
     if (count() == 0 || ops_[1].key->id != KeywordId::ProgTask) {
@@ -378,9 +392,36 @@ class Loader {
 
 }  // namespace
 
+namespace {
+
+// The general data's words where a global of the image lies: all of them for "AGenData",
+// element n on for "AGenData[n]" (a line run's copy); nullopt for any other global.
+std::optional<size_t> gen_data_offset(const std::string& name) {
+  const std::string whole = kGenDataGlobal;
+  if (name == whole) return 0;
+  if (name.size() < whole.size() + 3 || name.compare(0, whole.size() + 1, whole + "[") != 0 || name.back() != ']') {
+    return std::nullopt;
+  }
+  size_t n = 0;
+  const char* first = name.data() + whole.size() + 1;
+  const char* last = name.data() + name.size() - 1;
+  const auto [end, ec] = std::from_chars(first, last, n);
+  if (ec != std::errc() || end != last || n < 1 || n > kGenDataSize) return std::nullopt;
+  return n - 1;
+}
+
+}  // namespace
+
 bool bind_gen_data(vm::Machine& machine, const LoadedCup& cup, std::array<Value, kGenDataSize>& gen_data) {
-  const int g = cup.image.find_global(kGenDataGlobal);
-  return g < 0 || machine.bind_global(static_cast<uint32_t>(g), gen_data.data(), kGenDataSize);
+  const auto& globals = cup.image.globals;
+  for (size_t g = 0; g < globals.size(); ++g) {
+    const auto offset = gen_data_offset(globals[g].name);
+    if (offset && !machine.bind_global(static_cast<uint32_t>(g), gen_data.data() + *offset,
+                                       static_cast<uint32_t>(kGenDataSize - *offset))) {
+      return false;
+    }
+  }
+  return true;
 }
 
 uint32_t LoadedCup::line_of(uint32_t pc) const {

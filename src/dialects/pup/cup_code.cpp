@@ -1,0 +1,38 @@
+// CUP's operations as VM instructions (cup_code.h).
+#include "dialects/pup/cup_code.h"
+
+#include <map>
+
+namespace uprog::pup {
+
+using bytecode::Op;
+
+std::optional<Op> native_math(int32_t n) {
+  static const std::map<int32_t, Op> kNative = {
+      {1, Op::ADDI}, {2, Op::MULI}, {3, Op::SUBI}, {4, Op::DIVI}, {5, Op::REMI}, {6, Op::NEGI},
+      {7, Op::ABSI}, {10, Op::ANDI}, {11, Op::ORI}, {12, Op::XORI}, {13, Op::NOTI}, {14, Op::SHLI},
+      {15, Op::SHRI}, {22, Op::LNOT}};
+  if (auto it = kNative.find(n); it != kNative.end()) return it->second;
+  return std::nullopt;
+}
+
+bool emit_math(bytecode::CodeBuilder& b, int32_t n) {
+  if (auto op = native_math(n)) {
+    b.emit(*op);
+    return true;
+  }
+  if (n != 20 && n != 21) return false;
+  // Logical and/or: both operands to 0/1 first.
+  b.emit_imm(Op::PUSHI, 0), b.emit(Op::NEI), b.emit(Op::SWAP), b.emit_imm(Op::PUSHI, 0), b.emit(Op::NEI);
+  b.emit(n == 20 ? Op::ANDI : Op::ORI);
+  return true;
+}
+
+void emit_condition(bytecode::CodeBuilder& b, int32_t c) {
+  static const Op kOps[] = {Op::EQI, Op::NEI, Op::GTI, Op::GEI, Op::LTI, Op::LEI};
+  if (c >= 3 && c <= 8) return b.emit(kOps[c - 3]);
+  b.emit_imm(Op::PUSHI, 0);
+  b.emit(c == 2 ? Op::GTI : c == 9 ? Op::EQI : Op::NEI);
+}
+
+}  // namespace uprog::pup
