@@ -130,7 +130,8 @@ constexpr LineEndTable make_line_end_table() {
     const Flow flow = op_info(op).flow;
     t.may[i] = (flow == Flow::Next || flow == Flow::Jump || flow == Flow::Branch) &&
                !ends_line_itself(op) && !is_superinstruction(op) && op != Op::YIELD &&
-               op != Op::WAIT && op != Op::UNTILCK && op != Op::BREAK && op != Op::JLINES;
+               op != Op::WAIT && op != Op::UNTILCK && op != Op::BREAK && op != Op::JLINES &&
+               op != Op::JMPLN;
   }
   return t;
 }

@@ -23,6 +23,18 @@ struct BudgetCount {
     rest -= now;
     return true;
   }
+  // Takes n from the budget: false when that spends it (then nothing is left).
+  bool spend(uint32_t n) {
+    while (n >= now) {
+      n -= now;
+      if (!refill()) {
+        now = 0;
+        return false;
+      }
+    }
+    now -= n;
+    return true;
+  }
   // What is left of the whole budget.
   uint64_t left() const { return rest + now; }
 };

@@ -346,6 +346,15 @@ op_JLINES: {
   ip += 2;
   DISPATCH_NEXT();
 }
+// The way out of such fused code, counting the lines its path ran.
+op_JMPLN:
+  if (!lines.spend(B())) {
+    ip = code + A();
+    end = SliceEnd::LineEnd;
+    goto stop;
+  }
+  JUMP_TO(code + A());
+  DISPATCH_NEXT();
 op_LDGX: {
   const GlobalSlot& g = globals_[A()];
   const auto index = static_cast<uint32_t>(sp[-1].i);

@@ -197,6 +197,41 @@ TEST(Machine, LineRunTakesTheLinesUnderACountOrABreakpoint) {
   EXPECT_EQ(p.global("fast").i, 1);
 }
 
+// JMPLN counts the lines of the path that leaves fused code; when they spend the slice's line
+// budget (a copy whose JLINES promised fewer, which the loader never makes), the slice ends
+// where it jumps to.
+TEST(Machine, LeavingFusedCodeCountsItsLines) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.global int "a" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  JLINES fused 1
+  LDG.eol a
+  PUSHI.eol 1
+  ADDI.eol
+  STG.eol a
+next:
+  JMP.eol main
+fused:
+  LDG a
+  PUSHI 1
+  ADDI
+  STG a
+  JMPLN next 4
+)"));
+  p.machine.start(0, 0);
+  auto r = p.machine.run_slice(0, Budget::of_lines(7));  // five lines a loop
+  EXPECT_EQ(r.end, SliceEnd::LineEnd);
+  EXPECT_EQ(r.lines, 7u);
+  EXPECT_EQ(p.global("a").i, 2);
+  EXPECT_EQ(p.machine.pc(0), 6u);  // at `next`: the second JMPLN spent the last two lines
+  r = p.machine.run_slice(0, Budget::of_lines(5));
+  EXPECT_EQ(r.lines, 5u);
+  EXPECT_EQ(p.global("a").i, 3);
+  EXPECT_EQ(p.machine.pc(0), 6u);
+}
+
 TEST(Machine, LineEndMarkOnAHostCallThatEndsTheSlice) {
   LoadedProgram p;
   ASSERT_TRUE(p.load(R"(

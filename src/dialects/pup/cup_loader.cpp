@@ -344,7 +344,7 @@ class Loader {
       out_.line_pc[l] = b.here();
       if (run != runs.end() && run->first == l) {
         run_guard.push_back(b.here());
-        b.emit(Op::JLINES, 0, bytecode::pack_lines(run->last - l + 1, run->counted));
+        b.emit(Op::JLINES, 0, bytecode::pack_lines(run->most, 0));
         ++run;
       }
       if (depth_[l] < 0 && ops_[l].key->kind != KeywordKind::Marker) {

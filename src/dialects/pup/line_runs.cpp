@@ -1,7 +1,9 @@
-// Runs of CUP lines and their fused copies (line_runs.h).
+// Fused copies of CUP code (line_runs.h).
 #include "dialects/pup/line_runs.h"
 
 #include <fmt/core.h>
+
+#include <set>
 
 #include "bytecode/code_builder.h"
 #include "bytecode/peephole.h"
@@ -10,14 +12,20 @@
 namespace uprog::pup {
 namespace {
 
+using bytecode::CodeBuilder;
 using bytecode::Op;
+
+// A path ends after this many lines, and a copy takes a branch's both ways this many times at
+// most (its other branches leave it when taken): the copies' size stays linear in the program's.
+constexpr uint32_t kMostLines = 64;
+constexpr uint32_t kMostForks = 8;
 
 bool is_gen_data(const Keyword* k) { return k != nullptr && k->id == KeywordId::GenData; }
 
-// A line that a run may hold: it reads and writes only AGenData and the stack and cannot fail.
-// A division needs the line before it in the run to push a divisor other than 0 (`before` is
-// null for a run's first line).
-bool may_run(const LineOp& op, const LineOp* before) {
+// A line that a copy may hold: it reads and writes only AGenData and the stack and cannot fail.
+// A division needs the line before it on the path to push a divisor other than 0 (`before` is
+// null where the path arrives by a jump or starts).
+bool may_copy(const LineOp& op, const LineOp* before) {
   const Message& m = op.msg;
   if (m.tail == Message::Tail::Assign) return is_gen_data(op.key);
   switch (op.key->id) {
@@ -26,8 +34,7 @@ bool may_run(const LineOp& op, const LineOp* before) {
     case KeywordId::Math: {
       const int32_t n = m.target.index;
       if (n == 4 || n == 5) {
-        return before != nullptr && before->key->id == KeywordId::PushConstant &&
-               before->msg.value != 0;
+        return before != nullptr && before->key->id == KeywordId::PushConstant && before->msg.value != 0;
       }
       return native_math(n).has_value() || n == 20 || n == 21;
     }
@@ -35,76 +42,93 @@ bool may_run(const LineOp& op, const LineOp* before) {
   }
 }
 
-class Fuser {
+class Copier {
  public:
-  explicit Fuser(bytecode::Image& image) : image_(image) {}
+  Copier(const std::vector<LineOp>& ops, bytecode::Image& image)
+      : ops_(ops), count_(static_cast<uint32_t>(ops.size()) - 1), image_(image) {}
 
-  // The copy of lines first..last, or an empty run when it would not be shorter.
-  LineRun fuse(const std::vector<LineOp>& ops, uint32_t first, uint32_t last) {
+  bool may_start(uint32_t l) const { return l <= count_ && may_copy(ops_[l], nullptr); }
+
+  // The copy from line `first`; `exits` gets the lines it leaves to. Empty when no shorter.
+  LineRun copy(uint32_t first, std::set<uint32_t>& exits) {
     bytecode::Image piece;
-    bytecode::CodeBuilder b(piece.code);
-    for (uint32_t l = first; l <= last; ++l) line(b, ops[l], l);
-    if (ops[last].key->id != KeywordId::Jump) b.emit(Op::JMP, kRunExit + last + 1);
+    CodeBuilder b(piece.code);
+    forks_ = 0;
+    most_ = 0;
+    exits_ = &exits;
+    path(b, first, 0);
+    b.finish();
     piece.constants = image_.constants;  // with the lines' own, as are the globals
     piece.globals = image_.globals;
     bytecode::Routine r;
-    r.name = "run";
+    r.name = "copy";
     piece.routines.push_back(r);
     bytecode::optimize(piece);
-
-    LineRun run{first, last, 0, piece.code};
-    uint32_t instructions = 0, ended = 0;
-    bool branched = false;
-    for (uint32_t pc = 0; pc < run.code.size(); pc += bytecode::op_length(bytecode::word_op(run.code[pc]))) {
-      const Op op = bytecode::word_op(run.code[pc]);
-      const bool ends = bytecode::word_ends_line(run.code[pc]) || bytecode::ends_line_itself(op);
-      if (ends && branched) return {};  // a line end some path would miss: the count would be wrong
-      ended += ends ? 1 : 0;
-      branched = branched || bytecode::op_info(op).flow == bytecode::Flow::Branch;
+    uint32_t instructions = 0;
+    for (uint32_t pc = 0; pc < piece.code.size(); pc += bytecode::op_length(bytecode::word_op(piece.code[pc]))) {
       ++instructions;
     }
-    const uint32_t lines = last - first + 1;
-    if (ended > lines || instructions + 1 >= lines) return {};
+    if (instructions + 1 >= most_) return {};
     image_.constants = piece.constants;  // with those the fusions added
-    run.counted = lines - ended;
-    return run;
+    return {first, most_, piece.code};
   }
 
  private:
-  // The line in the shape a compiler gives the peephole pass: a value's store ends a statement
-  // (an EOL, so that the three-address forms that end a line apply), a branch is a comparison
-  // and JNZ.
-  void line(bytecode::CodeBuilder& b, const LineOp& op, uint32_t l) {
+  // The code of one path from line l, `ran` lines run before it; a branch's taken side is
+  // emitted after its other side, as a path of its own.
+  void path(CodeBuilder& b, uint32_t l, uint32_t ran) {
+    const LineOp* before = nullptr;
+    while (l <= count_ && ran < kMostLines && may_copy(ops_[l], before)) {
+      const LineOp& op = ops_[l];
+      ++ran;
+      if (op.key->id != KeywordId::Jump) {
+        line(b, op);
+        before = &op;
+        ++l;
+        continue;
+      }
+      const int32_t c = op.msg.target.index;
+      if (c == 1) return leave(b, op.target, ran);
+      const auto taken = b.new_label();
+      if (c == 9) {
+        b.emit_to(Op::JZ, taken);
+      } else {
+        if (c != 10) emit_condition(b, c);
+        b.emit_to(Op::JNZ, taken);
+      }
+      path(b, l + 1, ran);
+      b.bind(taken);
+      if (op.target <= l || forks_ == kMostForks) return leave(b, op.target, ran);
+      ++forks_;
+      l = op.target;
+      before = nullptr;
+    }
+    leave(b, l, ran);
+  }
+
+  void leave(CodeBuilder& b, uint32_t line, uint32_t ran) {
+    b.emit(Op::JMPLN, kRunExit + line, ran);
+    most_ = std::max(most_, ran);
+    exits_->insert(line);
+  }
+
+  // The line as a compiler gives it to the peephole pass (a branch is a comparison and JNZ).
+  void line(CodeBuilder& b, const LineOp& op) {
     const Message& m = op.msg;
     if (m.tail == Message::Tail::Assign) {
       push(b, m.value);
-      return store(b, m.target.index);
+      return b.emit(Op::STG, element(m.target.index));
     }
     switch (op.key->id) {
       case KeywordId::PushConstant: return push(b, m.value);
       case KeywordId::PushParam: return b.emit(Op::LDG, element(m.name.index));
-      case KeywordId::PopParam: return store(b, m.name.index);
+      case KeywordId::PopParam: return b.emit(Op::STG, element(m.name.index));
       case KeywordId::Math: emit_math(b, m.target.index); return;
       case KeywordId::Compare: return emit_condition(b, m.target.index);
-      case KeywordId::Jump: {
-        const int32_t c = m.target.index;
-        if (c == 1) return b.emit(Op::JMP, kRunExit + op.target);
-        if (c == 9) {
-          b.emit(Op::JZ, kRunExit + op.target);
-        } else {
-          if (c != 10) emit_condition(b, c);
-          b.emit(Op::JNZ, kRunExit + op.target);
-        }
-        return b.emit(Op::JMP, kRunExit + l + 1);
-      }
       default: return;
     }
   }
-  void store(bytecode::CodeBuilder& b, int32_t index) {
-    b.emit(Op::STG, element(index));
-    b.emit(Op::EOL);
-  }
-  void push(bytecode::CodeBuilder& b, int32_t v) {
+  void push(CodeBuilder& b, int32_t v) {
     if (bytecode::fits_imm(v)) return b.emit_imm(Op::PUSHI, v);
     b.emit(Op::PUSHK, image_.constant_index({ValueType::Int, static_cast<uint32_t>(v)}));
   }
@@ -116,7 +140,11 @@ class Fuser {
     return static_cast<uint32_t>(image_.globals.size() - 1);
   }
 
+  const std::vector<LineOp>& ops_;
+  const uint32_t count_;
   bytecode::Image& image_;
+  uint32_t forks_ = 0, most_ = 0;
+  std::set<uint32_t>* exits_ = nullptr;
 };
 
 }  // namespace
@@ -124,23 +152,30 @@ class Fuser {
 std::vector<LineRun> fuse_line_runs(const std::vector<LineOp>& ops, const std::vector<int32_t>& depth,
                                     const std::vector<bool>& entered, bytecode::Image& image) {
   std::vector<LineRun> runs;
-  Fuser fuser(image);
-  const uint32_t count = static_cast<uint32_t>(ops.size()) - 1;
-  for (uint32_t first = 1; first <= count;) {
-    uint32_t last = first;
-    const auto in_run = [&](uint32_t l) {
-      return depth[l] >= 0 && may_run(ops[l], l > first ? &ops[l - 1] : nullptr);
-    };
-    if (!in_run(first)) {
-      ++first;
-      continue;
-    }
-    while (ops[last].key->id != KeywordId::Jump && last < count && !entered[last + 1] && in_run(last + 1)) ++last;
-    if (last > first) {
-      if (LineRun run = fuser.fuse(ops, first, last); !run.code.empty()) runs.push_back(std::move(run));
-    }
-    first = last + 1;
+  const auto count = static_cast<uint32_t>(ops.size()) - 1;
+  if (count + 1 >= kRunExit) return runs;
+  Copier copier(ops, image);
+  // A copy starts where control arrives other than from a line a copy holds, and where a copy
+  // leaves to (its path too long, or its branch taken past the forks it may follow).
+  std::set<uint32_t> starts;
+  for (uint32_t l = 1; l <= count; ++l) {
+    const bool after_copied =
+        l > 1 && may_copy(ops[l - 1], l > 2 ? &ops[l - 2] : nullptr) && ops[l - 1].falls_through;
+    if (depth[l] >= 0 && copier.may_start(l) && (entered[l] || !after_copied)) starts.insert(l);
   }
+  std::set<uint32_t> done;
+  while (!starts.empty()) {
+    const uint32_t l = *starts.begin();
+    starts.erase(starts.begin());
+    if (!done.insert(l).second) continue;
+    std::set<uint32_t> exits;
+    LineRun run = copier.copy(l, exits);
+    if (run.code.empty()) continue;
+    runs.push_back(std::move(run));
+    for (uint32_t e : exits)
+      if (e <= count && depth[e] >= 0 && copier.may_start(e) && done.count(e) == 0) starts.insert(e);
+  }
+  std::sort(runs.begin(), runs.end(), [](const LineRun& a, const LineRun& b) { return a.first < b.first; });
   return runs;
 }
 

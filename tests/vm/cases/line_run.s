@@ -1,6 +1,6 @@
 ; JLINES before a run of one-instruction lines (the CUP loader's `S = S + I`, four lines): a
-; slice without a line budget takes the run's fused copy (ADDIGG, then the store that ends the
-; copy's one line of its own), which the loop's three turns count in `fused`.
+; slice without a line budget takes the run's fused copy (ADDIGG and the store, then JMPLN,
+; which counts the four lines), which the loop's three turns count in `fused`.
 .global int "s" 1
 .global int "i" 1
 .global int "fused" 1
@@ -9,7 +9,7 @@ main:
   PUSHI.eol 3
   STG.eol i
 top:
-  JLINES copy 196612
+  JLINES copy 4
   LDG.eol s
   LDG.eol i
   ADDI.eol
@@ -28,8 +28,8 @@ copy:
   ADDI
   STG fused
   ADDIGG 65536  ; s + i (globals 0 and 1, 16 bits each)
-  STG.eol s
-  JMP next
+  STG s
+  JMPLN next 4
 ; expect end: finished
 ; expect s = 6
 ; expect i = 0
