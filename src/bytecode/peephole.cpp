@@ -405,9 +405,11 @@ class Fuser {
     return std::nullopt;
   }
 
-  // LDG a; LDG b — unless the second starts a longer pattern of its own.
+  // LDG a; STG b | LDG a; LDG b — unless the second starts a longer pattern of its own.
   std::optional<std::pair<Instr, size_t>> two_globals(size_t i) const {
-    if (!free(i, 1) || at(i).op != Op::LDG || at(i + 1).op != Op::LDG) return std::nullopt;
+    if (!free(i, 1) || at(i).op != Op::LDG) return std::nullopt;
+    if (at(i + 1).op == Op::STG) return std::pair{Instr{at(i).pc, Op::MOVG, at(i + 1).a, at(i).a}, size_t{2}};
+    if (at(i + 1).op != Op::LDG) return std::nullopt;
     if (arithmetic_globals(i + 1) || compare_global(i + 1) || test_global(i + 1) ||
         global_constant(i + 1) || compare_globals(i + 1) || float_global_constant(i + 1))
       return std::nullopt;

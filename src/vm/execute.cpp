@@ -334,6 +334,11 @@ op_STGE:
   globals_[A()].data[B()] = *--sp;
   ip += 2;
   DISPATCH();
+// Plain, not among the superinstructions: it may end a line (PDL's `a=b;`).
+op_MOVG:
+  globals_[A()].data[0] = globals_[B()].data[0];
+  ip += 2;
+  DISPATCH();
 // The fused copy of a run of lines, when no count or breakpoint can stop the slice inside it
 // (the drive's one-line slices, stepping and the debugger take the lines one by one).
 op_JLINES: {
@@ -354,7 +359,10 @@ op_JMPLN:
     goto stop;
   }
   JUMP_TO(code + A());
-  DISPATCH_NEXT();
+  word = *ip;
+  // Into the next copy, as a loop's back edge goes: its test without a dispatch of its own.
+  if (bytecode::word_op(word) == Op::JLINES && !counted) goto op_JLINES;
+  goto* dispatch[word & 0xFFu];
 op_LDGX: {
   const GlobalSlot& g = globals_[A()];
   const auto index = static_cast<uint32_t>(sp[-1].i);
