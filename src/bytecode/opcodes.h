@@ -8,7 +8,7 @@ namespace uprog::bytecode {
 
 enum class Operand : uint8_t {
   None, Imm, Const, Local, Global, Routine, Target, Count, Command, Unit, LocalPair, LocalImm,
-  LocalConst, Width, Text, GlobalPair, GlobalConst, GlobalImm, Element, Lines
+  LocalConst, Width, Text, GlobalPair, GlobalConst, GlobalImm, Element, Lines, Window
 };
 
 // The packed B operands of the fused comparisons and arithmetic (LocalConst, GlobalPair,
@@ -25,6 +25,10 @@ constexpr int32_t packed_imm(uint32_t b) { return static_cast<int32_t>(b) >> 16;
 constexpr uint32_t pack_lines(uint32_t run, uint32_t counted) { return run | (counted << 16); }
 constexpr uint32_t run_lines(uint32_t b) { return b & 0xFFFFu; }
 constexpr uint32_t counted_lines(uint32_t b) { return b >> 16; }
+// LDGW's and STGW's B: the window's first element and its size, 16 bits each.
+constexpr uint32_t pack_window(uint32_t first, uint32_t size) { return first | (size << 16); }
+constexpr uint32_t window_first(uint32_t b) { return b & 0xFFFFu; }
+constexpr uint32_t window_size(uint32_t b) { return b >> 16; }
 // UNTILCK's B: the command's index (0..255) in bits 0-7, the comparison (0..5: == != < <= > >=)
 // in bits 8-11, the immediate (-2^19..2^19-1) in bits 12-31.
 constexpr uint32_t pack_command_test(uint32_t index, uint32_t how, int32_t imm) {

@@ -118,6 +118,9 @@ class Verifier {
       }
       if (info.b == Operand::Element && image_.code[pc + 1] >= image_.globals[a].length)
         return fail(VerifyError::BadOperand, pc);
+      if (info.b == Operand::Window &&
+          window_first(image_.code[pc + 1]) + window_size(image_.code[pc + 1]) > image_.globals[a].length)
+        return fail(VerifyError::BadOperand, pc);
       if (info.b == Operand::Lines && (run_lines(image_.code[pc + 1]) == 0 ||
                                        counted_lines(image_.code[pc + 1]) >
                                            run_lines(image_.code[pc + 1])))

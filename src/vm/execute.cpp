@@ -380,6 +380,23 @@ op_STGX: {
   ++ip;
   DISPATCH();
 }
+op_LDGW: {
+  const uint32_t b = B();
+  const uint32_t i = static_cast<uint32_t>(sp[-1].i) - 1u;  // 1..size: 0..size - 1
+  if (i >= bytecode::window_size(b)) FAIL(RunError::IndexOutOfRange);
+  sp[-1] = globals_[A()].data[bytecode::window_first(b) + i];
+  ip += 2;
+  DISPATCH();
+}
+op_STGW: {
+  const uint32_t b = B();
+  const uint32_t i = static_cast<uint32_t>(sp[-1].i) - 1u;
+  if (i >= bytecode::window_size(b)) FAIL(RunError::IndexOutOfRange);
+  globals_[A()].data[bytecode::window_first(b) + i] = sp[-2];
+  sp -= 2;
+  ip += 2;
+  DISPATCH();
+}
 op_INCL:
   locals[A()].i = arith::wrap_add(locals[A()].i, static_cast<int32_t>(B()));
   ip += 2;

@@ -56,7 +56,7 @@ class Copier {
     forks_ = 0;
     most_ = 0;
     exits_ = &exits;
-    path(b, first, 0);
+    path(b, first, 0, 0);
     b.finish();
     piece.constants = image_.constants;  // with the lines' own, as are the globals
     piece.globals = image_.globals;
@@ -74,21 +74,21 @@ class Copier {
   }
 
  private:
-  // The code of one path from line l, `ran` lines run before it; a branch's taken side is
-  // emitted after its other side, as a path of its own.
-  void path(CodeBuilder& b, uint32_t l, uint32_t ran) {
+  // The code of one path from line l, `ran` lines run before it, `ended` of them ended by the
+  // copy's own EOLs; a branch's taken side is emitted after its other side, as a path of its own.
+  void path(CodeBuilder& b, uint32_t l, uint32_t ran, uint32_t ended) {
     const LineOp* before = nullptr;
     while (l <= count_ && ran < kMostLines && may_copy(ops_[l], before)) {
       const LineOp& op = ops_[l];
       ++ran;
       if (op.key->id != KeywordId::Jump) {
-        line(b, op);
+        ended += line(b, op) ? 1 : 0;
         before = &op;
         ++l;
         continue;
       }
       const int32_t c = op.msg.target.index;
-      if (c == 1) return leave(b, op.target, ran);
+      if (c == 1) return leave(b, op.target, ran, ended);
       const auto taken = b.new_label();
       if (c == 9) {
         b.emit_to(Op::JZ, taken);
@@ -96,37 +96,46 @@ class Copier {
         if (c != 10) emit_condition(b, c);
         b.emit_to(Op::JNZ, taken);
       }
-      path(b, l + 1, ran);
+      path(b, l + 1, ran, ended);
       b.bind(taken);
-      if (op.target <= l || forks_ == kMostForks) return leave(b, op.target, ran);
+      if (op.target <= l || forks_ == kMostForks) return leave(b, op.target, ran, ended);
       ++forks_;
       l = op.target;
       before = nullptr;
     }
-    leave(b, l, ran);
+    leave(b, l, ran, ended);
   }
 
-  void leave(CodeBuilder& b, uint32_t line, uint32_t ran) {
-    b.emit(Op::JMPLN, kRunExit + line, ran);
+  // JMPLN counts the path's lines that no EOL of the copy has ended.
+  void leave(CodeBuilder& b, uint32_t line, uint32_t ran, uint32_t ended) {
+    b.emit(Op::JMPLN, kRunExit + line, ran - ended);
     most_ = std::max(most_, ran);
     exits_->insert(line);
   }
 
-  // The line as a compiler gives it to the peephole pass (a branch is a comparison and JNZ).
-  void line(CodeBuilder& b, const LineOp& op) {
+  // The line as a compiler gives it to the peephole pass: a branch is a comparison and JNZ, a
+  // store ends its statement with an EOL (so that the forms that store and end a line apply,
+  // `T = A + B` one ADDIGGEOL). True when it ended a line so.
+  bool line(CodeBuilder& b, const LineOp& op) {
     const Message& m = op.msg;
     if (m.tail == Message::Tail::Assign) {
       push(b, m.value);
-      return b.emit(Op::STG, element(m.target.index));
+      return store(b, m.target.index);
     }
     switch (op.key->id) {
-      case KeywordId::PushConstant: return push(b, m.value);
-      case KeywordId::PushParam: return b.emit(Op::LDG, element(m.name.index));
-      case KeywordId::PopParam: return b.emit(Op::STG, element(m.name.index));
-      case KeywordId::Math: emit_math(b, m.target.index); return;
-      case KeywordId::Compare: return emit_condition(b, m.target.index);
-      default: return;
+      case KeywordId::PushConstant: push(b, m.value); break;
+      case KeywordId::PushParam: b.emit(Op::LDG, element(m.name.index)); break;
+      case KeywordId::PopParam: return store(b, m.name.index);
+      case KeywordId::Math: emit_math(b, m.target.index); break;
+      case KeywordId::Compare: emit_condition(b, m.target.index); break;
+      default: break;
     }
+    return false;
+  }
+  bool store(CodeBuilder& b, int32_t n) {
+    b.emit(Op::STG, element(n));
+    b.emit(Op::EOL);
+    return true;
   }
   void push(CodeBuilder& b, int32_t v) {
     if (bytecode::fits_imm(v)) return b.emit_imm(Op::PUSHI, v);
