@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <charconv>
 #include <map>
 
@@ -221,8 +222,20 @@ class Loader {
       case KeywordId::PushConstant: push_constant(b, m.value); break;
       case KeywordId::PushParam: load(b, op.name_key->id, m.name.index); break;
       case KeywordId::PopParam: store(b, op.name_key->id, m.name.index); break;
-      case KeywordId::PushParamIdx: b.emit(Op::CMDGETX, indexed(op)); break;
-      case KeywordId::PopParamIdx: b.emit(Op::SWAP), b.emit(Op::CMDSETX, indexed(op)); break;
+      case KeywordId::PushParamIdx:
+        if (op.name_key->id == KeywordId::GenData) {
+          b.emit(Op::LDGW, gen_data_global(), gen_data_window(op));
+        } else {
+          b.emit(Op::CMDGETX, indexed(op));
+        }
+        break;
+      case KeywordId::PopParamIdx:
+        if (op.name_key->id == KeywordId::GenData) {
+          b.emit(Op::STGW, gen_data_global(), gen_data_window(op));
+        } else {
+          b.emit(Op::SWAP), b.emit(Op::CMDSETX, indexed(op));
+        }
+        break;
       case KeywordId::Math: math(b, i); break;
       case KeywordId::Compare: emit_condition(b, i); break;
       case KeywordId::GetStatus:
@@ -272,6 +285,11 @@ class Loader {
     if (key == KeywordId::GenData) return b.emit(Op::STGE, gen_data_global(), static_cast<uint32_t>(index - 1));
     b.emit(Op::CMDSET, static_cast<uint32_t>(key), static_cast<uint32_t>(index));
   }
+  // AGenData[k..k+n-1] of APushParamIdx[n],AGenData[k] as a window of the global (the parse
+  // checked that it lies within the 1000 words).
+  static uint32_t gen_data_window(const LineOp& op) {
+    return bytecode::pack_window(static_cast<uint32_t>(op.msg.name.index - 1), static_cast<uint32_t>(op.msg.target.index));
+  }
   uint32_t gen_data_global() {
     if (const int g = out_.image.find_global(kGenDataGlobal); g >= 0) return static_cast<uint32_t>(g);
     out_.image.globals.push_back({kGenDataGlobal, ValueType::Int, static_cast<uint32_t>(kGenDataSize)});
@@ -314,6 +332,7 @@ class Loader {
       code.push_back(word);
       if (bytecode::op_length(op) == 2) code.push_back(run.code[++pc]);
     }
+    for (const auto& [pc, line] : run.lines) out_.copy_lines.emplace_back(start + pc, line);
   }
 
   void add_routine(std::string name, bytecode::RoutineKind kind, uint32_t entry) {
@@ -425,6 +444,10 @@ bool bind_gen_data(vm::Machine& machine, const LoadedCup& cup, std::array<Value,
 }
 
 uint32_t LoadedCup::line_of(uint32_t pc) const {
+  if (!copy_lines.empty() && pc >= copy_lines.front().first) {
+    const auto after = std::upper_bound(copy_lines.begin(), copy_lines.end(), std::pair{pc, UINT32_MAX});
+    return std::prev(after)->second;
+  }
   uint32_t line = 0;
   for (uint32_t l = 1; l + 1 < line_pc.size(); ++l) {
     if (line_pc[l] <= pc) line = l;

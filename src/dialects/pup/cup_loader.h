@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bytecode/image.h"
@@ -44,6 +45,9 @@ struct LoadedCup {
   std::vector<int32_t> event_routine;  // by event ID 0..23, -1 for none
   std::vector<int32_t> line_depth;     // stack depth before each line, -1 unreachable
   std::vector<bool> waits;             // per line: an AWaitStatus (a thread in it is waiting)
+  // Past the lines' code, the fused copies (line_runs.h): the CUP line of each copy's start and
+  // of each of its instructions that may fail, by code word, in code order.
+  std::vector<std::pair<uint32_t, uint32_t>> copy_lines;
   // The CUP line of a code word (0 for none).
   uint32_t line_of(uint32_t pc) const;
 };

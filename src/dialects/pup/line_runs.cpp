@@ -8,6 +8,7 @@
 #include "bytecode/code_builder.h"
 #include "bytecode/peephole.h"
 #include "dialects/pup/cup_code.h"
+#include "dialects/pup/cup_loader.h"
 
 namespace uprog::pup {
 namespace {
@@ -22,15 +23,17 @@ constexpr uint32_t kMostForks = 8;
 
 bool is_gen_data(const Keyword* k) { return k != nullptr && k->id == KeywordId::GenData; }
 
-// A line that a copy may hold: it reads and writes only AGenData and the stack and cannot fail.
-// A division needs the line before it on the path to push a divisor other than 0 (`before` is
-// null where the path arrives by a jump or starts).
+// A line that a copy may hold: it reads and writes only AGenData and the stack, and can fail
+// only by an index out of its window (the copy keeps that instruction's line). A division needs
+// the line before it on the path to push a divisor other than 0 (`before` is null where the
+// path arrives by a jump or starts).
 bool may_copy(const LineOp& op, const LineOp* before) {
   const Message& m = op.msg;
   if (m.tail == Message::Tail::Assign) return is_gen_data(op.key);
   switch (op.key->id) {
     case KeywordId::PushConstant: case KeywordId::Compare: case KeywordId::Jump: return true;
-    case KeywordId::PushParam: case KeywordId::PopParam: return is_gen_data(op.name_key);
+    case KeywordId::PushParam: case KeywordId::PopParam:
+    case KeywordId::PushParamIdx: case KeywordId::PopParamIdx: return is_gen_data(op.name_key);
     case KeywordId::Math: {
       const int32_t n = m.target.index;
       if (n == 4 || n == 5) {
@@ -40,6 +43,31 @@ bool may_copy(const LineOp& op, const LineOp* before) {
     }
     default: return false;
   }
+}
+
+// What the paths through a copy cost together: their instructions (each with the JLINES before
+// it) and the lines they run. Paths weigh the same.
+struct PathCost {
+  uint64_t instructions = 0, lines = 0;
+  bool lost = false;  // code that does not end in a JMPLN: not a copy this file made
+};
+
+void walk(const std::vector<uint32_t>& code, uint32_t pc, uint32_t instructions, uint32_t ended, PathCost& cost) {
+  while (pc < code.size() && instructions < kMostLines * 4) {
+    const uint32_t word = code[pc];
+    const Op op = bytecode::word_op(word);
+    ++instructions;
+    ended += bytecode::word_ends_line(word) || bytecode::ends_line_itself(op) ? 1 : 0;
+    if (op == Op::JMPLN) {
+      cost.instructions += instructions + 1;
+      cost.lines += code[pc + 1] + ended;
+      return;
+    }
+    const bytecode::Flow flow = bytecode::op_info(op).flow;
+    if (flow == bytecode::Flow::Branch) walk(code, bytecode::word_a(word), instructions, ended, cost);
+    pc = flow == bytecode::Flow::Jump ? bytecode::word_a(word) : pc + bytecode::op_length(op);
+  }
+  cost.lost = true;
 }
 
 class Copier {
@@ -56,6 +84,8 @@ class Copier {
     forks_ = 0;
     most_ = 0;
     exits_ = &exits;
+    piece_ = &piece;
+    piece.lines.push_back({0, "", first});
     path(b, first, 0, 0);
     b.finish();
     piece.constants = image_.constants;  // with the lines' own, as are the globals
@@ -64,13 +94,13 @@ class Copier {
     r.name = "copy";
     piece.routines.push_back(r);
     bytecode::optimize(piece);
-    uint32_t instructions = 0;
-    for (uint32_t pc = 0; pc < piece.code.size(); pc += bytecode::op_length(bytecode::word_op(piece.code[pc]))) {
-      ++instructions;
-    }
-    if (instructions + 1 >= most_) return {};
+    PathCost cost;
+    walk(piece.code, 0, 0, 0, cost);
+    if (cost.lost || cost.instructions >= cost.lines) return {};
     image_.constants = piece.constants;  // with those the fusions added
-    return {first, most_, piece.code};
+    LineRun run{first, most_, piece.code, {}};
+    for (const bytecode::LineEntry& e : piece.lines) run.lines.emplace_back(e.code, e.line);
+    return run;
   }
 
  private:
@@ -82,7 +112,7 @@ class Copier {
       const LineOp& op = ops_[l];
       ++ran;
       if (op.key->id != KeywordId::Jump) {
-        ended += line(b, op) ? 1 : 0;
+        ended += line(b, op, l) ? 1 : 0;
         before = &op;
         ++l;
         continue;
@@ -116,7 +146,7 @@ class Copier {
   // The line as a compiler gives it to the peephole pass: a branch is a comparison and JNZ, a
   // store ends its statement with an EOL (so that the forms that store and end a line apply,
   // `T = A + B` one ADDIGGEOL). True when it ended a line so.
-  bool line(CodeBuilder& b, const LineOp& op) {
+  bool line(CodeBuilder& b, const LineOp& op, uint32_t l) {
     const Message& m = op.msg;
     if (m.tail == Message::Tail::Assign) {
       push(b, m.value);
@@ -126,6 +156,15 @@ class Copier {
       case KeywordId::PushConstant: push(b, m.value); break;
       case KeywordId::PushParam: b.emit(Op::LDG, element(m.name.index)); break;
       case KeywordId::PopParam: return store(b, m.name.index);
+      case KeywordId::PushParamIdx:
+        may_fail(b, l);
+        b.emit(Op::LDGW, gen_data(), window(m));
+        break;
+      case KeywordId::PopParamIdx:
+        may_fail(b, l);
+        b.emit(Op::STGW, gen_data(), window(m));
+        b.emit(Op::EOL);
+        return true;
       case KeywordId::Math: emit_math(b, m.target.index); break;
       case KeywordId::Compare: emit_condition(b, m.target.index); break;
       default: break;
@@ -136,6 +175,17 @@ class Copier {
     b.emit(Op::STG, element(n));
     b.emit(Op::EOL);
     return true;
+  }
+  // An instruction that may fail starts a line of the piece: the peephole keeps it apart, and
+  // the line table says where it went.
+  void may_fail(const CodeBuilder& b, uint32_t l) { piece_->lines.push_back({b.here(), "", l}); }
+  static uint32_t window(const Message& m) {
+    return bytecode::pack_window(static_cast<uint32_t>(m.name.index - 1), static_cast<uint32_t>(m.target.index));
+  }
+  uint32_t gen_data() {
+    if (const int g = image_.find_global(kGenDataGlobal); g >= 0) return static_cast<uint32_t>(g);
+    image_.globals.push_back({kGenDataGlobal, ValueType::Int, static_cast<uint32_t>(kGenDataSize)});
+    return static_cast<uint32_t>(image_.globals.size() - 1);
   }
   void push(CodeBuilder& b, int32_t v) {
     if (bytecode::fits_imm(v)) return b.emit_imm(Op::PUSHI, v);
@@ -152,6 +202,7 @@ class Copier {
   const std::vector<LineOp>& ops_;
   const uint32_t count_;
   bytecode::Image& image_;
+  bytecode::Image* piece_ = nullptr;
   uint32_t forks_ = 0, most_ = 0;
   std::set<uint32_t>* exits_ = nullptr;
 };

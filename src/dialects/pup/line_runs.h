@@ -8,6 +8,7 @@
 // one by one.
 #pragma once
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "bytecode/image.h"
@@ -19,6 +20,9 @@ struct LineRun {
   uint32_t first = 0;          // the CUP line whose JLINES enters the copy
   uint32_t most = 0;           // the most lines a path through the copy runs
   std::vector<uint32_t> code;  // the copy; its JMPLNs target kRunExit + a CUP line
+  // The CUP line of its start and of each instruction that may fail (an index out of its
+  // window): code word and line, in code order.
+  std::vector<std::pair<uint32_t, uint32_t>> lines;
 };
 constexpr uint32_t kRunExit = 1u << 22;
 
