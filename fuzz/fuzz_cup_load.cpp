@@ -1,6 +1,7 @@
 // libFuzzer target: CUP bytes into the controller's loader, strictly (as a download gives them)
 // and leniently (a hand-written .cup); whatever the loader takes must pass the verifier and run:
-// the threads of the AG300 firmware are started on it for 20 ms of virtual time.
+// the threads of the AG300 firmware are started on it for 20 ms of virtual time, and the image
+// runs on a machine of its own in slices of many lines (the fused copies).
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -12,6 +13,7 @@
 #include "controller/controller.h"
 #include "dialects/pup/cup_loader.h"
 #include "dialects/pup/dialect.h"
+#include "run_image.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace uprog;
@@ -28,6 +30,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (bytecode::load_image(image.data(), image.size(), view) != bytecode::LoadError::Ok) abort();
   std::vector<uint32_t> scratch(bytecode::verify_scratch_size(view) / 4 + 1);
   if (!bytecode::verify(view, bytecode::VerifyLimits{}, scratch.data(), scratch.size() * 4).ok()) abort();
+  // The image alone, in slices of many lines too, which take the loader's fused copies.
+  if (!fuzz::load_and_run(image.data(), image.size()).ok()) abort();
   // Run it: stored through the firmware's own download, every task on a thread of its own.
   controller::ControllerOptions options;
   options.dialect = &pup::dialect();

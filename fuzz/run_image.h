@@ -15,6 +15,7 @@ constexpr size_t kMaxMachineMemory = 32u << 20;  // bytes: a larger image is "no
 constexpr uint32_t kMaxRoutinesRun = 32;
 constexpr uint32_t kSlicesPerRoutine = 8;
 constexpr uint64_t kInstructionsPerSlice = 2000;
+constexpr uint64_t kLinesPerSlice = 200;
 
 // Returns the load status; runs the routines when it is ok.
 inline vm::LoadStatus load_and_run(const uint8_t* bytes, size_t size) {
@@ -54,8 +55,11 @@ inline vm::LoadStatus load_and_run(const uint8_t* bytes, size_t size) {
         (void)machine.operand_stack(0);
       }
       if (s == 5) machine.resume(0);
-      const vm::SliceResult res =
-          machine.run_slice(0, vm::Budget::of_instructions(kInstructionsPerSlice));
+      // Slice 6 counts lines and back jumps, not instructions, as a dialect's scheduler does:
+      // the fused copies (JLINES) run only in such slices.
+      const vm::Budget budget = s == 6 ? vm::Budget{0, kLinesPerSlice, kInstructionsPerSlice}
+                                       : vm::Budget::of_instructions(kInstructionsPerSlice);
+      const vm::SliceResult res = machine.run_slice(0, budget);
       if (res.end == vm::SliceEnd::Finished || res.end == vm::SliceEnd::Error ||
           res.end == vm::SliceEnd::NotRunning)
         break;
