@@ -409,10 +409,6 @@ class Loader {
   LoadedCup out_;
 };
 
-}  // namespace
-
-namespace {
-
 // The general data's words where a global of the image lies: all of them for "AGenData",
 // element n on for "AGenData[n]" (a line run's copy); nullopt for any other global.
 std::optional<size_t> gen_data_offset(const std::string& name) {
