@@ -163,5 +163,21 @@ TEST(CupCopies, AnErrorInACopyNamesItsLine) {
   expect_same_runs(cup, lines);
 }
 
+// A program whose every other line is a jump target starts a copy there, each copying what
+// follows: all copies together stay within 4096 code words and 4 a line.
+TEST(CupCopies, CopiesStayWithinTheirShare) {
+  std::vector<std::string> lines = {"AProgTask[1]"};
+  constexpr uint32_t kPairs = 2000;
+  for (uint32_t i = 0; i < kPairs; ++i) {
+    lines.push_back("APushParam,AGenData[1]");
+    lines.push_back("AJump[9]," + std::to_string(lines.size() + 2));
+  }
+  const LoadedCup cup = load(lines);
+  const size_t copies = cup.image.code.size() - cup.line_pc.back() - 1;  // past the EXIT
+  EXPECT_GT(count_of(cup, bytecode::Op::JLINES), 100u);
+  EXPECT_LE(copies, 4096u + 4u * lines.size());
+  EXPECT_EQ(run(cup, vm::Budget::unlimited()).end, vm::SliceEnd::Finished);
+}
+
 }  // namespace
 }  // namespace uprog::pup

@@ -20,6 +20,10 @@ using bytecode::Op;
 // most (its other branches leave it when taken): the copies' size stays linear in the program's.
 constexpr uint32_t kMostLines = 64;
 constexpr uint32_t kMostForks = 8;
+// All copies together take at most this many code words, and 4 a line more: a program whose
+// every other line is a jump target would otherwise copy each stretch many times over.
+constexpr size_t kCopyWords = 4096;
+constexpr size_t kCopyWordsPerLine = 4;
 
 bool is_gen_data(const Keyword* k) { return k != nullptr && k->id == KeywordId::GenData; }
 
@@ -224,13 +228,16 @@ std::vector<LineRun> fuse_line_runs(const std::vector<LineOp>& ops, const std::v
     if (depth[l] >= 0 && copier.may_start(l) && (entered[l] || !after_copied)) starts.insert(l);
   }
   std::set<uint32_t> done;
+  size_t words = 0;
+  const size_t most_words = kCopyWords + kCopyWordsPerLine * count;
   while (!starts.empty()) {
     const uint32_t l = *starts.begin();
     starts.erase(starts.begin());
     if (!done.insert(l).second) continue;
     std::set<uint32_t> exits;
     LineRun run = copier.copy(l, exits);
-    if (run.code.empty()) continue;
+    if (run.code.empty() || words + run.code.size() > most_words) continue;
+    words += run.code.size();
     runs.push_back(std::move(run));
     for (uint32_t e : exits)
       if (e <= count && depth[e] >= 0 && copier.may_start(e) && done.count(e) == 0) starts.insert(e);
