@@ -290,11 +290,7 @@ class Loader {
   static uint32_t gen_data_window(const LineOp& op) {
     return bytecode::pack_window(static_cast<uint32_t>(op.msg.name.index - 1), static_cast<uint32_t>(op.msg.target.index));
   }
-  uint32_t gen_data_global() {
-    if (const int g = out_.image.find_global(kGenDataGlobal); g >= 0) return static_cast<uint32_t>(g);
-    out_.image.globals.push_back({kGenDataGlobal, ValueType::Int, static_cast<uint32_t>(kGenDataSize)});
-    return static_cast<uint32_t>(out_.image.globals.size() - 1);
-  }
+  uint32_t gen_data_global() { return pup::gen_data_global(out_.image); }
 
   // AJump[c]: one branch that ends the line whether it is taken or not.
   void jump(bytecode::CodeBuilder& b, int32_t c, bytecode::CodeBuilder::Label to) {
@@ -426,6 +422,12 @@ std::optional<size_t> gen_data_offset(const std::string& name) {
 }
 
 }  // namespace
+
+uint32_t gen_data_global(bytecode::Image& image) {
+  if (const int g = image.find_global(kGenDataGlobal); g >= 0) return static_cast<uint32_t>(g);
+  image.globals.push_back({kGenDataGlobal, ValueType::Int, static_cast<uint32_t>(kGenDataSize)});
+  return static_cast<uint32_t>(image.globals.size() - 1);
+}
 
 bool bind_gen_data(vm::Machine& machine, const LoadedCup& cup, std::array<Value, kGenDataSize>& gen_data) {
   const auto& globals = cup.image.globals;

@@ -52,6 +52,9 @@ struct LoadedCup {
   uint32_t line_of(uint32_t pc) const;
 };
 
+// The index of the image's global "AGenData", added the first time it is asked for.
+uint32_t gen_data_global(bytecode::Image& image);
+
 // nullopt with `error` "line N: why" (the download's error 45) when the program is unsafe.
 std::optional<LoadedCup> load_cup(const CupProgram& program, std::string* error);
 

@@ -186,11 +186,7 @@ class Copier {
   static uint32_t window(const Message& m) {
     return bytecode::pack_window(static_cast<uint32_t>(m.name.index - 1), static_cast<uint32_t>(m.target.index));
   }
-  uint32_t gen_data() {
-    if (const int g = image_.find_global(kGenDataGlobal); g >= 0) return static_cast<uint32_t>(g);
-    image_.globals.push_back({kGenDataGlobal, ValueType::Int, static_cast<uint32_t>(kGenDataSize)});
-    return static_cast<uint32_t>(image_.globals.size() - 1);
-  }
+  uint32_t gen_data() { return gen_data_global(image_); }
   void push(CodeBuilder& b, int32_t v) {
     if (bytecode::fits_imm(v)) return b.emit_imm(Op::PUSHI, v);
     b.emit(Op::PUSHK, image_.constant_index({ValueType::Int, static_cast<uint32_t>(v)}));
