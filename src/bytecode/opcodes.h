@@ -20,11 +20,6 @@ constexpr uint32_t pack_local_imm(uint32_t local, int32_t imm) {
 constexpr uint32_t packed_first(uint32_t b) { return b & 0xFFFFu; }
 constexpr uint32_t packed_second(uint32_t b) { return b >> 16; }
 constexpr int32_t packed_imm(uint32_t b) { return static_cast<int32_t>(b) >> 16; }
-// JLINES's B: the lines its run ends, and how many of them it counts itself (the fused code
-// counts the rest); each 16 bits.
-constexpr uint32_t pack_lines(uint32_t run, uint32_t counted) { return run | (counted << 16); }
-constexpr uint32_t run_lines(uint32_t b) { return b & 0xFFFFu; }
-constexpr uint32_t counted_lines(uint32_t b) { return b >> 16; }
 // LDGW's and STGW's B: the window's first element and its size, 16 bits each.
 constexpr uint32_t pack_window(uint32_t first, uint32_t size) { return first | (size << 16); }
 constexpr uint32_t window_first(uint32_t b) { return b & 0xFFFFu; }

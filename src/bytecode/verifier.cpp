@@ -121,10 +121,7 @@ class Verifier {
       if (info.b == Operand::Window &&
           window_first(image_.code[pc + 1]) + window_size(image_.code[pc + 1]) > image_.globals[a].length)
         return fail(VerifyError::BadOperand, pc);
-      if (info.b == Operand::Lines && (run_lines(image_.code[pc + 1]) == 0 ||
-                                       counted_lines(image_.code[pc + 1]) >
-                                           run_lines(image_.code[pc + 1])))
-        return fail(VerifyError::BadOperand, pc);
+      if (info.b == Operand::Lines && image_.code[pc + 1] == 0) return fail(VerifyError::BadOperand, pc);
       if (word_op(word) == Op::CALL) {
         const RoutineRecord callee = image_.routines[a];
         if (image_.code[pc + 1] > callee.outputs) return fail(VerifyError::BadOperand, pc);

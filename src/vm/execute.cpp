@@ -341,16 +341,13 @@ op_MOVG:
   DISPATCH();
 // The fused copy of a run of lines, when no count or breakpoint can stop the slice inside it
 // (the drive's one-line slices, stepping and the debugger take the lines one by one).
-op_JLINES: {
-  const uint32_t b = B();
-  if (!counted && breakpoint_count_ == 0 && lines.now > bytecode::run_lines(b)) {
-    lines.now -= bytecode::counted_lines(b);
+op_JLINES:
+  if (!counted && breakpoint_count_ == 0 && lines.now > B()) {
     JUMP_TO(code + A());
     DISPATCH_NEXT();
   }
   ip += 2;
   DISPATCH_NEXT();
-}
 // The way out of such fused code, counting the lines its path ran.
 op_JMPLN:
   if (!lines.spend(B())) {

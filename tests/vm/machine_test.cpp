@@ -122,14 +122,14 @@ main:
 }
 
 // JLINES: a run of four one-instruction lines and its fused copy, which also counts its runs in
-// `fast` so that the test sees which copy ran. B = 4 | 3 << 16: the run ends four lines, JLINES
-// counts three, the copy's marked store the fourth.
+// `fast` so that the test sees which copy ran. B = 4: the run ends four lines; the copy's marked
+// store counts one, its JMPLN the other three.
 const char* kLineRun = R"(
 .global int "a" 1
 .global int "fast" 1
 .routine function "main" in=0 out=0 entry=main
 main:
-  JLINES fused 196612
+  JLINES fused 4
   LDG.eol a
   PUSHI.eol 1
   ADDI.eol
@@ -145,7 +145,7 @@ fused:
   PUSHI 1
   ADDI
   STG.eol a
-  JMP next
+  JMPLN next 3
 )";
 
 TEST(Machine, LineRunTakesItsFusedCopyWhenNothingCanStopInside) {

@@ -2,11 +2,15 @@
 #include "dialects/pup/cup_code.h"
 
 #include <map>
+#include <optional>
 
 namespace uprog::pup {
 
 using bytecode::Op;
 
+namespace {
+
+// One opcode for AMath[n] (ADDI for 1 …), or nullopt where it takes several or the firmware.
 std::optional<Op> native_math(int32_t n) {
   static const std::map<int32_t, Op> kNative = {
       {1, Op::ADDI}, {2, Op::MULI}, {3, Op::SUBI}, {4, Op::DIVI}, {5, Op::REMI}, {6, Op::NEGI},
@@ -16,12 +20,18 @@ std::optional<Op> native_math(int32_t n) {
   return std::nullopt;
 }
 
+bool is_logical(int32_t n) { return n == 20 || n == 21; }
+
+}  // namespace
+
+bool math_in_vm(int32_t n) { return native_math(n).has_value() || is_logical(n); }
+
 bool emit_math(bytecode::CodeBuilder& b, int32_t n) {
   if (auto op = native_math(n)) {
     b.emit(*op);
     return true;
   }
-  if (n != 20 && n != 21) return false;
+  if (!is_logical(n)) return false;
   // Logical and/or: both operands to 0/1 first.
   b.emit_imm(Op::PUSHI, 0), b.emit(Op::NEI), b.emit(Op::SWAP), b.emit_imm(Op::PUSHI, 0), b.emit(Op::NEI);
   b.emit(n == 20 ? Op::ANDI : Op::ORI);

@@ -2,14 +2,13 @@
 // loader emits for a line and the line runs' fused copies for the same line.
 #pragma once
 #include <cstdint>
-#include <optional>
 
 #include "bytecode/code_builder.h"
 
 namespace uprog::pup {
 
-// One opcode for AMath[n] (ADDI for 1 …), or nullopt where it takes several or the firmware.
-std::optional<bytecode::Op> native_math(int32_t n);
+// Whether the VM computes AMath[n] (emit_math emits it), where the firmware does not.
+bool math_in_vm(int32_t n);
 // AMath[n] in VM instructions; false (nothing emitted) where the firmware computes it.
 bool emit_math(bytecode::CodeBuilder& b, int32_t n);
 // Leaves 1/0 for condition c (2..10) on the stack.

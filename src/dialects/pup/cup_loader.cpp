@@ -224,14 +224,14 @@ class Loader {
       case KeywordId::PopParam: store(b, op.name_key->id, m.name.index); break;
       case KeywordId::PushParamIdx:
         if (op.name_key->id == KeywordId::GenData) {
-          b.emit(Op::LDGW, gen_data_global(), gen_data_window(op));
+          b.emit(Op::LDGW, gen_data_global(), gen_data_window(op.msg));
         } else {
           b.emit(Op::CMDGETX, indexed(op));
         }
         break;
       case KeywordId::PopParamIdx:
         if (op.name_key->id == KeywordId::GenData) {
-          b.emit(Op::STGW, gen_data_global(), gen_data_window(op));
+          b.emit(Op::STGW, gen_data_global(), gen_data_window(op.msg));
         } else {
           b.emit(Op::SWAP), b.emit(Op::CMDSETX, indexed(op));
         }
@@ -284,11 +284,6 @@ class Loader {
   void store(bytecode::CodeBuilder& b, KeywordId key, int32_t index) {
     if (key == KeywordId::GenData) return b.emit(Op::STGE, gen_data_global(), static_cast<uint32_t>(index - 1));
     b.emit(Op::CMDSET, static_cast<uint32_t>(key), static_cast<uint32_t>(index));
-  }
-  // AGenData[k..k+n-1] of APushParamIdx[n],AGenData[k] as a window of the global (the parse
-  // checked that it lies within the 1000 words).
-  static uint32_t gen_data_window(const LineOp& op) {
-    return bytecode::pack_window(static_cast<uint32_t>(op.msg.name.index - 1), static_cast<uint32_t>(op.msg.target.index));
   }
   uint32_t gen_data_global() { return pup::gen_data_global(out_.image); }
 
@@ -359,7 +354,7 @@ class Loader {
       out_.line_pc[l] = b.here();
       if (run != runs.end() && run->first == l) {
         run_guard.push_back(b.here());
-        b.emit(Op::JLINES, 0, bytecode::pack_lines(run->most, 0));
+        b.emit(Op::JLINES, 0, run->most);
         ++run;
       }
       if (depth_[l] < 0 && ops_[l].key->kind != KeywordKind::Marker) {
@@ -422,6 +417,18 @@ std::optional<size_t> gen_data_offset(const std::string& name) {
 }
 
 }  // namespace
+
+uint32_t gen_data_element_global(bytecode::Image& image, int32_t n) {
+  const std::string name = fmt::format("{}[{}]", kGenDataGlobal, n);
+  if (const int g = image.find_global(name); g >= 0) return static_cast<uint32_t>(g);
+  image.globals.push_back({name, ValueType::Int, 1});
+  return static_cast<uint32_t>(image.globals.size() - 1);
+}
+
+// The parse checked that the window lies within the 1000 words.
+uint32_t gen_data_window(const Message& m) {
+  return bytecode::pack_window(static_cast<uint32_t>(m.name.index - 1), static_cast<uint32_t>(m.target.index));
+}
 
 uint32_t gen_data_global(bytecode::Image& image) {
   if (const int g = image.find_global(kGenDataGlobal); g >= 0) return static_cast<uint32_t>(g);

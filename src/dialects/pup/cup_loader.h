@@ -13,6 +13,7 @@
 #include "vm/machine.h"
 #include "dialects/pup/cup_file.h"
 #include "dialects/pup/keywords.h"
+#include "dialects/pup/message.h"
 
 namespace uprog::pup {
 
@@ -54,6 +55,11 @@ struct LoadedCup {
 
 // The index of the image's global "AGenData", added the first time it is asked for.
 uint32_t gen_data_global(bytecode::Image& image);
+// The index of the one-word global "AGenData[n]" (a fused copy's name for element n, placed on
+// the same word by bind_gen_data), added the first time.
+uint32_t gen_data_element_global(bytecode::Image& image, int32_t n);
+// LDGW's and STGW's window of AGenData for APushParamIdx[k],AGenData[n] (elements n..n+k-1).
+uint32_t gen_data_window(const Message& m);
 
 // nullopt with `error` "line N: why" (the download's error 45) when the program is unsafe.
 std::optional<LoadedCup> load_cup(const CupProgram& program, std::string* error);

@@ -1,8 +1,7 @@
 // Fused copies of CUP code (line_runs.h).
 #include "dialects/pup/line_runs.h"
 
-#include <fmt/core.h>
-
+#include <algorithm>
 #include <set>
 
 #include "bytecode/code_builder.h"
@@ -43,7 +42,7 @@ bool may_copy(const LineOp& op, const LineOp* before) {
       if (n == 4 || n == 5) {
         return before != nullptr && before->key->id == KeywordId::PushConstant && before->msg.value != 0;
       }
-      return native_math(n).has_value() || n == 20 || n == 21;
+      return math_in_vm(n);
     }
     default: return false;
   }
@@ -158,15 +157,15 @@ class Copier {
     }
     switch (op.key->id) {
       case KeywordId::PushConstant: push(b, m.value); break;
-      case KeywordId::PushParam: b.emit(Op::LDG, element(m.name.index)); break;
+      case KeywordId::PushParam: b.emit(Op::LDG, gen_data_element_global(image_, m.name.index)); break;
       case KeywordId::PopParam: return store(b, m.name.index);
       case KeywordId::PushParamIdx:
         may_fail(b, l);
-        b.emit(Op::LDGW, gen_data(), window(m));
+        b.emit(Op::LDGW, gen_data_global(image_), gen_data_window(m));
         break;
       case KeywordId::PopParamIdx:
         may_fail(b, l);
-        b.emit(Op::STGW, gen_data(), window(m));
+        b.emit(Op::STGW, gen_data_global(image_), gen_data_window(m));
         b.emit(Op::EOL);
         return true;
       case KeywordId::Math: emit_math(b, m.target.index); break;
@@ -176,27 +175,16 @@ class Copier {
     return false;
   }
   bool store(CodeBuilder& b, int32_t n) {
-    b.emit(Op::STG, element(n));
+    b.emit(Op::STG, gen_data_element_global(image_, n));
     b.emit(Op::EOL);
     return true;
   }
   // An instruction that may fail starts a line of the piece: the peephole keeps it apart, and
   // the line table says where it went.
   void may_fail(const CodeBuilder& b, uint32_t l) { piece_->lines.push_back({b.here(), "", l}); }
-  static uint32_t window(const Message& m) {
-    return bytecode::pack_window(static_cast<uint32_t>(m.name.index - 1), static_cast<uint32_t>(m.target.index));
-  }
-  uint32_t gen_data() { return gen_data_global(image_); }
   void push(CodeBuilder& b, int32_t v) {
     if (bytecode::fits_imm(v)) return b.emit_imm(Op::PUSHI, v);
     b.emit(Op::PUSHK, image_.constant_index({ValueType::Int, static_cast<uint32_t>(v)}));
-  }
-  // The global "AGenData[n]", added the first time.
-  uint32_t element(int32_t n) {
-    const std::string name = fmt::format("AGenData[{}]", n);
-    if (const int g = image_.find_global(name); g >= 0) return static_cast<uint32_t>(g);
-    image_.globals.push_back({name, ValueType::Int, 1});
-    return static_cast<uint32_t>(image_.globals.size() - 1);
   }
 
   const std::vector<LineOp>& ops_;

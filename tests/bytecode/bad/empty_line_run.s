@@ -1,4 +1,4 @@
-; JLINES over a run of no lines (B's low half 0)
+; JLINES over a run of no lines (B 0)
 .routine function "main" in=0 out=0 entry=main
 main:
   JLINES fast 0
