@@ -135,7 +135,7 @@ class Fuser {
                    &Fuser::two_locals, &Fuser::store_constant, &Fuser::test_global,
                    &Fuser::compare_global, &Fuser::global_constant, &Fuser::arithmetic_globals,
                    &Fuser::compare_globals, &Fuser::float_global_constant, &Fuser::two_globals,
-                   &Fuser::store_global_constant, &Fuser::store_global_eol,
+                   &Fuser::add_global, &Fuser::stack_constant, &Fuser::store_global_constant, &Fuser::store_global_eol,
                    &Fuser::compare_branch, &Fuser::test_zero, &Fuser::line_ending_jump,
                    &Fuser::eol_jump, &Fuser::wait_for_command}) {
       if (auto r = (this->*m)(i)) return r;
@@ -411,9 +411,25 @@ class Fuser {
     if (at(i + 1).op == Op::STG) return std::pair{Instr{at(i).pc, Op::MOVG, at(i + 1).a, at(i).a}, size_t{2}};
     if (at(i + 1).op != Op::LDG) return std::nullopt;
     if (arithmetic_globals(i + 1) || compare_global(i + 1) || test_global(i + 1) ||
-        global_constant(i + 1) || compare_globals(i + 1) || float_global_constant(i + 1))
+        global_constant(i + 1) || compare_globals(i + 1) || float_global_constant(i + 1) ||
+        add_global(i + 1))
       return std::nullopt;
     return std::pair{Instr{at(i).pc, Op::LDG2, at(i).a, at(i + 1).a}, size_t{2}};
+  }
+
+  // LDG g; ADDI — a global added to what is on the stack.
+  std::optional<std::pair<Instr, size_t>> add_global(size_t i) const {
+    if (!free(i, 1) || at(i).op != Op::LDG || at(i + 1).op != Op::ADDI) return std::nullopt;
+    return std::pair{Instr{at(i).pc, Op::ADDIG, at(i).a, 0}, size_t{2}};
+  }
+
+  // PUSHI k; MULI | PUSHI k; REMI (k != 0) — the stack's int with an immediate.
+  std::optional<std::pair<Instr, size_t>> stack_constant(size_t i) const {
+    if (!free(i, 1) || at(i).op != Op::PUSHI) return std::nullopt;
+    if (at(i + 1).op == Op::MULI) return std::pair{Instr{at(i).pc, Op::MULIK, at(i).a, 0}, size_t{2}};
+    if (at(i + 1).op == Op::REMI && imm_of(at(i)) != 0)
+      return std::pair{Instr{at(i).pc, Op::REMIK, at(i).a, 0}, size_t{2}};
+    return std::nullopt;
   }
 
   // PUSHK k | PUSHI k; STG g [; EOL]
@@ -503,6 +519,8 @@ std::optional<int> pure_effect(Op op) {
     case Op::ADDILL: case Op::SUBILL: case Op::ADDFLL: case Op::SUBFLL: case Op::MULFLL:
     case Op::ADDFGK: case Op::SUBFGK: case Op::MULFGK: case Op::MULFKG:
       return 1;
+    case Op::MULIK: case Op::REMIK: case Op::ADDIG:
+      return 0;
     case Op::LDL2: case Op::LDG2:
       return 2;
     case Op::ADDI: case Op::SUBI: case Op::MULI:

@@ -1160,6 +1160,18 @@ op_JULTLK: {
   if (offset < static_cast<uint32_t>(bytecode::packed_imm(pair))) JUMP_TO(code + A()); else ip += 2;
   DISPATCH();
 }
+op_MULIK:
+  sp[-1].i = arith::wrap_mul(sp[-1].i, IMM());
+  ++ip;
+  DISPATCH();
+op_REMIK:
+  sp[-1].i = arith::int_rem(sp[-1].i, IMM());
+  ++ip;
+  DISPATCH();
+op_ADDIG:
+  sp[-1].i = arith::wrap_add(sp[-1].i, globals_[A()].data[0].i);
+  ++ip;
+  DISPATCH();
 #undef DISPATCH
 #define DISPATCH() DISPATCH_COUNTING_MARK()
 

@@ -161,6 +161,40 @@ TEST(Peephole, FusesTheLoop) {
   expect_same_behaviour(kLoop, "loop");
 }
 
+// `a[i] = ((i - 1) * 7919 + r) % 960` over globals: the product, the sum and the remainder
+// each one instruction, with the same value.
+constexpr const char* kStackImmediates = R"(
+.global int "i" 1
+.global int "r" 1
+.global int "v" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  PUSHI 7
+  STG i
+  PUSHI 3
+  STG r
+  LDG i
+  PUSHI 1
+  SUBI
+  PUSHI 7919
+  MULI
+  LDG r
+  ADDI
+  PUSHI 960
+  REMI
+  STG v
+  RET
+)";
+
+TEST(Peephole, FusesTheStacksIntWithAnImmediateOrAGlobal) {
+  const bytecode::Image image = optimized(kStackImmediates);
+  const std::vector<Op> expected = {Op::STGK,  Op::STGK,  Op::ADDGK, Op::MULIK,
+                                    Op::ADDIG, Op::REMIK, Op::STG,   Op::RET};
+  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  EXPECT_EQ(run_and_read(image, "v"), (6 * 7919 + 3) % 960);
+  expect_same_behaviour(kStackImmediates, "stack immediates");
+}
+
 TEST(Peephole, NeverFusesAcrossAPlaceControlCanEnter) {
   LoadedProgram p;
   ASSERT_TRUE(p.load(R"(
@@ -181,9 +215,11 @@ middle2:
   bytecode::Image image = p.image;
   image.routines.push_back({"other", bytecode::RoutineKind::Label, 0, 0, {}, 1});
   bytecode::optimize(image);
-  // `middle` is a routine entry: LDL; PUSHI; REMI stays three instructions.
+  // `middle` is a routine entry: LDL; PUSHI; REMI is not REMLK. PUSHI; REMI, which starts
+  // there, may fuse (REMIK), and the entry then is the fused instruction's.
   EXPECT_EQ(ops_of(image)[0], Op::LDL);
-  EXPECT_EQ(ops_of(image)[1], Op::PUSHI);
+  EXPECT_EQ(ops_of(image)[1], Op::REMIK);
+  EXPECT_EQ(image.routines[1].entry, 1u);
 }
 
 TEST(Peephole, RelocatesLinesEntriesAndTargets) {
