@@ -8,7 +8,7 @@ namespace uprog::bytecode {
 
 enum class Operand : uint8_t {
   None, Imm, Const, Local, Global, Routine, Target, Count, Command, Unit, LocalPair, LocalImm,
-  LocalConst, Width, Text, GlobalPair, GlobalConst, GlobalImm, Element, Lines, Window
+  LocalConst, Width, Text, GlobalPair, GlobalConst, GlobalImm, Element, Lines, Window, GlobalsTest
 };
 
 // The packed B operands of the fused comparisons and arithmetic (LocalConst, GlobalPair,
@@ -32,6 +32,15 @@ constexpr uint32_t pack_command_test(uint32_t index, uint32_t how, int32_t imm) 
 constexpr uint32_t command_test_index(uint32_t b) { return b & 0xFFu; }
 constexpr uint32_t command_test_how(uint32_t b) { return (b >> 8) & 0xFu; }
 constexpr int32_t command_test_imm(uint32_t b) { return static_cast<int32_t>(b) >> 12; }
+// JCMPGG's B: two globals below 2^13 in bits 0-12 and 13-25, the comparison (0..5: == != < <=
+// > >=) in bits 26-28.
+constexpr uint32_t kGlobalsTestMax = (1u << 13) - 1;
+constexpr uint32_t pack_globals_test(uint32_t first, uint32_t second, uint32_t how) {
+  return first | (second << 13) | (how << 26);
+}
+constexpr uint32_t globals_test_first(uint32_t b) { return b & kGlobalsTestMax; }
+constexpr uint32_t globals_test_second(uint32_t b) { return (b >> 13) & kGlobalsTestMax; }
+constexpr uint32_t globals_test_how(uint32_t b) { return b >> 26; }
 enum class Flow : uint8_t { Next, Jump, Branch, Call, Stop };
 
 constexpr int kVar = -1;  // a stack effect that the operands decide

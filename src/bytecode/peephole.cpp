@@ -53,6 +53,8 @@ constexpr CompareFamily kIntCompares[] = {
     {Op::GTI, Op::JGTI, Op::JLEI, Op::JGTLL, Op::JLELL, Op::JGTLK, Op::JLELK, Op::JGTGK, Op::JLEGK},
     {Op::GEI, Op::JGEI, Op::JLTI, Op::JGELL, Op::JLTLL, Op::JGELK, Op::JLTLK, Op::JGEGK, Op::JLTGK},
 };
+// Comparison k of kIntCompares (== != < <= > >=) fails exactly when this one holds.
+constexpr uint32_t kNegatedCompare[] = {1, 0, 5, 4, 3, 2};
 // Float comparisons fuse only with JZ: "jump unless" keeps NaN's answers exact.
 struct FloatCompareFamily {
   Op compare, jump_unless, locals_unless, constant_unless, global_constant_unless, globals_unless;
@@ -85,6 +87,7 @@ std::optional<Op> ending_line_form(Op op) {
   if (in(Op::JNEQFGG, Op::JNGEFGG)) return shifted(Op::JNEQFGG, Op::JNEQFGGEOL);
   if (op == Op::JZG) return Op::JZGEOL;
   if (op == Op::JNZG) return Op::JNZGEOL;
+  if (op == Op::JCMPGG) return Op::JCMPGGEOL;
   return std::nullopt;
 }
 
@@ -372,8 +375,29 @@ class Fuser {
     return std::nullopt;
   }
 
+  // LDG a; LDG b; <int compare>; JZ|JNZ T | LDG a; LDG b; <int compare's jump> T
+  std::optional<std::pair<Instr, size_t>> compare_int_globals(size_t i) const {
+    if (!free(i, 2) || at(i).op != Op::LDG || at(i + 1).op != Op::LDG ||
+        at(i).a > kGlobalsTestMax || at(i + 1).a > kGlobalsTestMax)
+      return std::nullopt;
+    for (uint32_t how = 0; how < std::size(kIntCompares); ++how) {
+      const CompareFamily& f = kIntCompares[how];
+      if (at(i + 2).op == f.when_true)
+        return std::pair{Instr{at(i).pc, Op::JCMPGG, at(i + 2).a,
+                               pack_globals_test(at(i).a, at(i + 1).a, how)},
+                         size_t{3}};
+      if (at(i + 2).op != f.compare || !free(i, 3) || !is_branch(at(i + 3).op)) continue;
+      const uint32_t holds = at(i + 3).op == Op::JNZ ? how : kNegatedCompare[how];
+      return std::pair{Instr{at(i).pc, Op::JCMPGG, at(i + 3).a,
+                             pack_globals_test(at(i).a, at(i + 1).a, holds)},
+                       size_t{4}};
+    }
+    return std::nullopt;
+  }
+
   // LDG a; LDG b; <float compare>; JZ T
   std::optional<std::pair<Instr, size_t>> compare_globals(size_t i) const {
+    if (auto r = compare_int_globals(i)) return r;
     if (!free(i, 3) || !packs_global(at(i)) || !packs_global(at(i + 1)) || at(i + 3).op != Op::JZ)
       return std::nullopt;
     for (const auto& f : kFloatCompares) {
@@ -490,8 +514,7 @@ class Fuser {
         at(i + n + 2).op != Op::JMP || at(i + n + 2).a != at(i).pc || i + n + 3 >= in_.size() ||
         at(i + n).a != at(i + n + 3).pc)
       return std::nullopt;
-    static constexpr uint32_t kNegated[] = {1, 0, 5, 4, 3, 2};  // == != < <= > >= when it fails
-    if (at(i + n).op == Op::JZ) how = kNegated[how];
+    if (at(i + n).op == Op::JZ) how = kNegatedCompare[how];
     const uint32_t test = pack_command_test(at(i).b, how, k);
     return std::pair{Instr{at(i).pc, Op::UNTILCK, at(i).a, test}, n + 3};
   }

@@ -157,6 +157,11 @@ class Verifier {
       case Operand::GlobalImm:
         if (packed_first(b) >= globals) return fail(VerifyError::BadGlobal, pc);
         break;
+      case Operand::GlobalsTest:
+        if (globals_test_first(b) >= globals || globals_test_second(b) >= globals)
+          return fail(VerifyError::BadGlobal, pc);
+        if (globals_test_how(b) > 5) return fail(VerifyError::BadOperand, pc);
+        break;
       default: break;
     }
     return {};

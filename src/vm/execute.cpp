@@ -1073,6 +1073,22 @@ op_JNGEFGGEOL: {
                                                GLOBAL(bytecode::packed_second(pair)).f)),
                      2)
 }
+op_JCMPGG: {
+  const uint32_t b = B();
+  if (holds(bytecode::globals_test_how(b), int_outcome(GLOBAL(bytecode::globals_test_first(b)).i,
+                                                       GLOBAL(bytecode::globals_test_second(b)).i)))
+    JUMP_TO(code + A());
+  else
+    ip += 2;
+  DISPATCH();
+}
+op_JCMPGGEOL: {
+  const uint32_t b = B();
+  BRANCH_ENDING_LINE(holds(bytecode::globals_test_how(b),
+                           int_outcome(GLOBAL(bytecode::globals_test_first(b)).i,
+                                       GLOBAL(bytecode::globals_test_second(b)).i)),
+                     2)
+}
 #undef BRANCH_ENDING_LINE
 #undef GLOBAL
 #undef DISPATCH

@@ -195,6 +195,40 @@ TEST(Peephole, FusesTheStacksIntWithAnImmediateOrAGlobal) {
   expect_same_behaviour(kStackImmediates, "stack immediates");
 }
 
+// Two int globals compared, as a condition (JZ: the comparison negated) and as a fused jump.
+constexpr const char* kIntGlobalCompares = R"(
+.global int "v" 1
+.global int "lo" 1
+.global int "hits" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  PUSHI 4
+  STG v
+  PUSHI 9
+  STG lo
+  LDG v
+  LDG lo
+  LTI
+  JZ skip
+  INCG hits 1
+skip:
+  LDG lo
+  LDG v
+  JGEI done
+  INCG hits 10
+done:
+  RET
+)";
+
+TEST(Peephole, FusesTwoIntGlobalsCompared) {
+  const bytecode::Image image = optimized(kIntGlobalCompares);
+  const std::vector<Op> expected = {Op::STGK, Op::STGK, Op::JCMPGG, Op::INCG,
+                                    Op::JCMPGG, Op::INCG, Op::RET};
+  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  EXPECT_EQ(run_and_read(image, "hits"), 1);  // 4 < 9 holds; 9 >= 4 jumps over the 10
+  expect_same_behaviour(kIntGlobalCompares, "int global compares");
+}
+
 TEST(Peephole, NeverFusesAcrossAPlaceControlCanEnter) {
   LoadedProgram p;
   ASSERT_TRUE(p.load(R"(
