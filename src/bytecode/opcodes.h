@@ -122,7 +122,8 @@ constexpr bool ends_line_itself(Op op) {
 // jumps on the stack, which the CUP loader makes of AJump[c].
 constexpr bool is_superinstruction(Op op) {
   const auto in = [op](Op first, Op last) { return op >= first && op <= last; };
-  return (in(Op::ADDLK, Op::MULFLLS) && !in(Op::JEQI, Op::JGEI)) || in(Op::STGEOL, Op::JULTLK);
+  return (in(Op::ADDLK, Op::MULFLLS) && !in(Op::JEQI, Op::JGEI)) || in(Op::STGEOL, Op::JULTLK) ||
+         in(Op::MULIK, Op::JCMPGGEOL);
 }
 // The instructions that may carry the line-end mark: those that run to completion and go on in
 // the same slice. Not a call or a return (the line would end in another frame), nor one that
@@ -148,6 +149,6 @@ constexpr bool may_end_line(Op op) { return kLineEndTable.may[static_cast<uint8_
 static_assert(ends_line_itself(Op::EOL) && ends_line_itself(Op::JMPEOL) &&
               !ends_line_itself(Op::JMP) && may_end_line(Op::JZ) && !may_end_line(Op::RETEOL) &&
               may_end_line(Op::JGTI) && may_end_line(Op::LDGE) && !may_end_line(Op::REMLK) &&
-              !may_end_line(Op::STMLK));
+              !may_end_line(Op::STMLK) && !may_end_line(Op::MULIK) && !may_end_line(Op::JCMPGG));
 
 }  // namespace uprog::bytecode
