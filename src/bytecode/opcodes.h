@@ -8,7 +8,8 @@ namespace uprog::bytecode {
 
 enum class Operand : uint8_t {
   None, Imm, Const, Local, Global, Routine, Target, Count, Command, Unit, LocalPair, LocalImm,
-  LocalConst, Width, Text, GlobalPair, GlobalConst, GlobalImm, Element, Lines, Window, GlobalsTest
+  LocalConst, Width, Text, GlobalPair, GlobalConst, GlobalImm, Element, Lines, Window, GlobalsTest,
+  LoopStep
 };
 
 // The packed B operands of the fused comparisons and arithmetic (LocalConst, GlobalPair,
@@ -41,6 +42,14 @@ constexpr uint32_t pack_globals_test(uint32_t first, uint32_t second, uint32_t h
 constexpr uint32_t globals_test_first(uint32_t b) { return b & kGlobalsTestMax; }
 constexpr uint32_t globals_test_second(uint32_t b) { return (b >> 13) & kGlobalsTestMax; }
 constexpr uint32_t globals_test_how(uint32_t b) { return b >> 26; }
+// INCGJMPLN's B: the global in bits 0-15, the step (-128..127) in bits 16-23, the line ends it
+// counts (0..255) in bits 24-31.
+constexpr uint32_t pack_loop_step(uint32_t global, int32_t step, uint32_t lines) {
+  return global | ((static_cast<uint32_t>(step) & 0xFFu) << 16) | (lines << 24);
+}
+constexpr uint32_t loop_step_global(uint32_t b) { return b & 0xFFFFu; }
+constexpr int32_t loop_step_step(uint32_t b) { return static_cast<int8_t>((b >> 16) & 0xFFu); }
+constexpr uint32_t loop_step_lines(uint32_t b) { return b >> 24; }
 enum class Flow : uint8_t { Next, Jump, Branch, Call, Stop };
 
 constexpr int kVar = -1;  // a stack effect that the operands decide
@@ -123,7 +132,7 @@ constexpr bool ends_line_itself(Op op) {
 constexpr bool is_superinstruction(Op op) {
   const auto in = [op](Op first, Op last) { return op >= first && op <= last; };
   return (in(Op::ADDLK, Op::MULFLLS) && !in(Op::JEQI, Op::JGEI)) || in(Op::STGEOL, Op::JULTLK) ||
-         in(Op::MULIK, Op::JCMPGGEOL);
+         in(Op::MULIK, Op::INCGJMPLN);
 }
 // The instructions that may carry the line-end mark: those that run to completion and go on in
 // the same slice. Not a call or a return (the line would end in another frame), nor one that

@@ -340,6 +340,17 @@ class Fuser {
                      size_t{4}};
   }
 
+  // LDG g; PUSHI k; ADDI|SUBI; STG g; EOL; JMPLN L n — fused code's loop step on its way out.
+  std::optional<std::pair<Instr, size_t>> loop_step(size_t i, uint32_t addend) const {
+    const auto step = static_cast<int32_t>(addend);
+    if (!free(i, 5) || at(i + 4).op != Op::EOL || at(i + 5).op != Op::JMPLN || at(i).a > 0xFFFF ||
+        step < -128 || step > 127 || at(i + 5).b >= 255)
+      return std::nullopt;
+    return std::pair{Instr{at(i).pc, Op::INCGJMPLN, at(i + 5).a,
+                           pack_loop_step(at(i).a, step, at(i + 5).b + 1)},
+                     size_t{6}};
+  }
+
   // LDG g; PUSHI k; ADDI|SUBI [; STG g [; EOL]] | LDG g; PUSHI k; REMI
   std::optional<std::pair<Instr, size_t>> global_constant(size_t i) const {
     if (!free(i, 2) || at(i).op != Op::LDG || at(i + 1).op != Op::PUSHI) return std::nullopt;
@@ -348,6 +359,7 @@ class Fuser {
     if (op == Op::ADDI || op == Op::SUBI) {
       const auto addend = static_cast<uint32_t>(op == Op::ADDI ? k : -k);  // |k| < 2^23
       if (free(i, 3) && at(i + 3).op == Op::STG && at(i + 3).a == at(i).a) {
+        if (auto r = loop_step(i, addend)) return r;
         if (lone_eol(i, 4))
           return std::pair{Instr{at(i).pc, Op::INCGEOL, at(i).a, addend}, size_t{5}};
         return std::pair{Instr{at(i).pc, Op::INCG, at(i).a, addend}, size_t{4}};

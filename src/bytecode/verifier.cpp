@@ -162,6 +162,9 @@ class Verifier {
           return fail(VerifyError::BadGlobal, pc);
         if (globals_test_how(b) > 5) return fail(VerifyError::BadOperand, pc);
         break;
+      case Operand::LoopStep:
+        if (loop_step_global(b) >= globals) return fail(VerifyError::BadGlobal, pc);
+        break;
       default: break;
     }
     return {};

@@ -188,6 +188,7 @@ SliceResult Machine::execute(Thread& t, const Budget& budget) {
   // A call may start a frame at or below this stack position (see enter()).
   const Value* const call_limit = t.stack + (config_.stack - max_depth_);
   uint32_t word = 0;
+  uint32_t line_ends = 0;  // what JMPLN and INCGJMPLN count
   RunError error = RunError::None;
   int32_t detail = 0;
   SliceEnd end = SliceEnd::BudgetSpent;
@@ -348,9 +349,19 @@ op_JLINES:
   }
   ip += 2;
   DISPATCH_NEXT();
-// The way out of such fused code, counting the lines its path ran.
+// The way out of such fused code, counting the lines its path ran; INCGJMPLN is a loop's step
+// on the way (INCGEOL's add, its line end counted with the rest).
+op_INCGJMPLN: {
+  const uint32_t step = B();
+  int32_t& counter = globals_[bytecode::loop_step_global(step)].data[0].i;
+  counter = arith::wrap_add(counter, bytecode::loop_step_step(step));
+  line_ends = bytecode::loop_step_lines(step);
+  goto count_lines_then_jump;
+}
 op_JMPLN:
-  if (!lines.spend(B())) {
+  line_ends = B();
+count_lines_then_jump:
+  if (!lines.spend(line_ends)) {
     ip = code + A();
     end = SliceEnd::LineEnd;
     goto stop;

@@ -232,6 +232,36 @@ fused:
   EXPECT_EQ(p.machine.pc(0), 6u);
 }
 
+// A loop's step in fused code (INCGJMPLN: INCGEOL and JMPLN in one) counts its own line end
+// with the rest of the path's, and ends the slice where it jumps when they spend the budget.
+TEST(Machine, FusedLoopStepCountsItsLineWithTheRest) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.global int "a" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  JLINES fused 1
+  LDG.eol a
+  PUSHI.eol 2
+  ADDI.eol
+  STG.eol a
+next:
+  JMP.eol main
+fused:
+  INCGJMPLN next 67239936  ; global 0, step 2 (bits 16..23), 4 line ends (bits 24..31)
+)"));
+  p.machine.start(0, 0);
+  auto r = p.machine.run_slice(0, Budget::of_lines(7));  // five lines a loop
+  EXPECT_EQ(r.end, SliceEnd::LineEnd);
+  EXPECT_EQ(r.lines, 7u);
+  EXPECT_EQ(p.global("a").i, 4);
+  EXPECT_EQ(p.machine.pc(0), 6u);  // at `next`: the second step spent the last two lines
+  r = p.machine.run_slice(0, Budget::of_lines(5));
+  EXPECT_EQ(r.lines, 5u);
+  EXPECT_EQ(p.global("a").i, 6);
+  EXPECT_EQ(p.machine.pc(0), 6u);
+}
+
 TEST(Machine, LineEndMarkOnAHostCallThatEndsTheSlice) {
   LoadedProgram p;
   ASSERT_TRUE(p.load(R"(

@@ -229,6 +229,31 @@ TEST(Peephole, FusesTwoIntGlobalsCompared) {
   expect_same_behaviour(kIntGlobalCompares, "int global compares");
 }
 
+// A loop's step on the way out of fused code: the increment that ends its line and the JMPLN
+// after it, which then counts that line end too.
+TEST(Peephole, FusesTheLoopStepOutOfFusedCode) {
+  const bytecode::Image image = optimized(R"(
+.global int "i" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  JLINES fused 9
+  RET
+fused:
+  LDG i
+  PUSHI 1
+  ADDI
+  STG i
+  EOL
+  JMPLN main 3
+)");
+  ASSERT_EQ(ops_of(image), (std::vector<Op>{Op::JLINES, Op::RET, Op::INCGJMPLN}))
+      << bytecode::disassemble(image);
+  const uint32_t step = image.code[4];
+  EXPECT_EQ(bytecode::loop_step_global(step), 0u);
+  EXPECT_EQ(bytecode::loop_step_step(step), 1);
+  EXPECT_EQ(bytecode::loop_step_lines(step), 4u);
+}
+
 TEST(Peephole, NeverFusesAcrossAPlaceControlCanEnter) {
   LoadedProgram p;
   ASSERT_TRUE(p.load(R"(

@@ -61,9 +61,10 @@ void walk(const std::vector<uint32_t>& code, uint32_t pc, uint32_t instructions,
     const Op op = bytecode::word_op(word);
     ++instructions;
     ended += bytecode::word_ends_line(word) || bytecode::ends_line_itself(op) ? 1 : 0;
-    if (op == Op::JMPLN) {
+    if (op == Op::JMPLN || op == Op::INCGJMPLN) {
+      const uint32_t b = code[pc + 1];
       cost.instructions += instructions + 1;
-      cost.lines += code[pc + 1] + ended;
+      cost.lines += (op == Op::JMPLN ? b : bytecode::loop_step_lines(b)) + ended;
       return;
     }
     const bytecode::Flow flow = bytecode::op_info(op).flow;
