@@ -9,7 +9,7 @@ namespace uprog::bytecode {
 enum class Operand : uint8_t {
   None, Imm, Const, Local, Global, Routine, Target, Count, Command, Unit, LocalPair, LocalImm,
   LocalConst, Width, Text, GlobalPair, GlobalConst, GlobalImm, Element, Lines, Window, GlobalsTest,
-  LoopStep
+  LoopStep, GlobalWindow
 };
 
 // The packed B operands of the fused comparisons and arithmetic (LocalConst, GlobalPair,
@@ -50,6 +50,15 @@ constexpr uint32_t pack_loop_step(uint32_t global, int32_t step, uint32_t lines)
 constexpr uint32_t loop_step_global(uint32_t b) { return b & 0xFFFFu; }
 constexpr int32_t loop_step_step(uint32_t b) { return static_cast<int8_t>((b >> 16) & 0xFFu); }
 constexpr uint32_t loop_step_lines(uint32_t b) { return b >> 24; }
+// LDGWG's and STGWG's B: the window's first element in bits 0-11, its size in bits 12-23, the
+// global holding the index (below 256) in bits 24-31.
+constexpr uint32_t kGlobalWindowMax = (1u << 12) - 1;
+constexpr uint32_t pack_global_window(uint32_t first, uint32_t size, uint32_t index_global) {
+  return first | (size << 12) | (index_global << 24);
+}
+constexpr uint32_t global_window_first(uint32_t b) { return b & kGlobalWindowMax; }
+constexpr uint32_t global_window_size(uint32_t b) { return (b >> 12) & kGlobalWindowMax; }
+constexpr uint32_t global_window_index(uint32_t b) { return b >> 24; }
 enum class Flow : uint8_t { Next, Jump, Branch, Call, Stop };
 
 constexpr int kVar = -1;  // a stack effect that the operands decide

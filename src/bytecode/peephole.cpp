@@ -138,7 +138,7 @@ class Fuser {
                    &Fuser::two_locals, &Fuser::store_constant, &Fuser::test_global,
                    &Fuser::compare_global, &Fuser::global_constant, &Fuser::arithmetic_globals,
                    &Fuser::compare_globals, &Fuser::float_global_constant, &Fuser::two_globals,
-                   &Fuser::add_global, &Fuser::stack_constant, &Fuser::store_global_constant, &Fuser::store_global_eol,
+                   &Fuser::add_global, &Fuser::window_by_global, &Fuser::stack_constant, &Fuser::store_global_constant, &Fuser::store_global_eol,
                    &Fuser::compare_branch, &Fuser::test_zero, &Fuser::line_ending_jump,
                    &Fuser::eol_jump, &Fuser::wait_for_command}) {
       if (auto r = (this->*m)(i)) return r;
@@ -457,6 +457,18 @@ class Fuser {
   std::optional<std::pair<Instr, size_t>> add_global(size_t i) const {
     if (!free(i, 1) || at(i).op != Op::LDG || at(i + 1).op != Op::ADDI) return std::nullopt;
     return std::pair{Instr{at(i).pc, Op::ADDIG, at(i).a, 0}, size_t{2}};
+  }
+
+  // LDG g; LDGW a w | LDG g; STGW a w — a window of a global indexed by another global.
+  std::optional<std::pair<Instr, size_t>> window_by_global(size_t i) const {
+    if (!free(i, 1) || at(i).op != Op::LDG || at(i).a > 0xFFu) return std::nullopt;
+    const Op op = at(i + 1).op;
+    const uint32_t first = window_first(at(i + 1).b), size = window_size(at(i + 1).b);
+    if ((op != Op::LDGW && op != Op::STGW) || first > kGlobalWindowMax || size > kGlobalWindowMax)
+      return std::nullopt;
+    return std::pair{Instr{at(i).pc, op == Op::LDGW ? Op::LDGWG : Op::STGWG, at(i + 1).a,
+                           pack_global_window(first, size, at(i).a)},
+                     size_t{2}};
   }
 
   // PUSHI k; MULI | PUSHI k; REMI (k != 0) — the stack's int with an immediate.

@@ -118,6 +118,10 @@ class Verifier {
       }
       if (info.b == Operand::Element && image_.code[pc + 1] >= image_.globals[a].length)
         return fail(VerifyError::BadOperand, pc);
+      if (info.b == Operand::GlobalWindow &&
+          global_window_first(image_.code[pc + 1]) + global_window_size(image_.code[pc + 1]) >
+              image_.globals[a].length)
+        return fail(VerifyError::BadOperand, pc);
       if (info.b == Operand::Window &&
           window_first(image_.code[pc + 1]) + window_size(image_.code[pc + 1]) > image_.globals[a].length)
         return fail(VerifyError::BadOperand, pc);
@@ -164,6 +168,9 @@ class Verifier {
         break;
       case Operand::LoopStep:
         if (loop_step_global(b) >= globals) return fail(VerifyError::BadGlobal, pc);
+        break;
+      case Operand::GlobalWindow:
+        if (global_window_index(b) >= globals) return fail(VerifyError::BadGlobal, pc);
         break;
       default: break;
     }

@@ -405,6 +405,22 @@ op_STGW: {
   ip += 2;
   DISPATCH();
 }
+op_LDGWG: {
+  const uint32_t b = B();
+  const uint32_t i = static_cast<uint32_t>(globals_[bytecode::global_window_index(b)].data[0].i) - 1u;
+  if (i >= bytecode::global_window_size(b)) FAIL(RunError::IndexOutOfRange);
+  *sp++ = globals_[A()].data[bytecode::global_window_first(b) + i];
+  ip += 2;
+  DISPATCH();
+}
+op_STGWG: {
+  const uint32_t b = B();
+  const uint32_t i = static_cast<uint32_t>(globals_[bytecode::global_window_index(b)].data[0].i) - 1u;
+  if (i >= bytecode::global_window_size(b)) FAIL(RunError::IndexOutOfRange);
+  globals_[A()].data[bytecode::global_window_first(b) + i] = *--sp;
+  ip += 2;
+  DISPATCH();
+}
 op_INCL:
   locals[A()].i = arith::wrap_add(locals[A()].i, static_cast<int32_t>(B()));
   ip += 2;

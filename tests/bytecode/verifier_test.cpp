@@ -166,7 +166,7 @@ TEST(Verifier, WhatItAcceptsRunsSafely) {
   int accepted = 0;
   int accepted_with_marks = 0;
   std::map<vm::SliceEnd, int> ends;
-  for (int round = 0; round < 40000; ++round) {
+  for (int round = 0; round < 80000; ++round) {
     Image image;
     image.constants = {{ValueType::Int, 1}};
     image.globals = {{"g", ValueType::Int, 4}};

@@ -158,7 +158,10 @@ class Copier {
     }
     switch (op.key->id) {
       case KeywordId::PushConstant: push(b, m.value); break;
-      case KeywordId::PushParam: b.emit(Op::LDG, gen_data_element_global(image_, m.name.index)); break;
+      case KeywordId::PushParam:
+        pushed_global_at_ = b.here();
+        b.emit(Op::LDG, gen_data_element_global(image_, m.name.index));
+        break;
       case KeywordId::PopParam: return store(b, m.name.index);
       case KeywordId::PushParamIdx:
         may_fail(b, l);
@@ -181,8 +184,12 @@ class Copier {
     return true;
   }
   // An instruction that may fail starts a line of the piece: the peephole keeps it apart, and
-  // the line table says where it went.
-  void may_fail(const CodeBuilder& b, uint32_t l) { piece_->lines.push_back({b.here(), "", l}); }
+  // the line table says where it went. An index pushed from a global just before starts it
+  // instead, so that the two may fuse (LDGWG, STGWG) into what fails.
+  void may_fail(const CodeBuilder& b, uint32_t l) {
+    const bool index_pushed = pushed_global_at_ + 1 == b.here();
+    piece_->lines.push_back({index_pushed ? pushed_global_at_ : b.here(), "", l});
+  }
   void push(CodeBuilder& b, int32_t v) {
     if (bytecode::fits_imm(v)) return b.emit_imm(Op::PUSHI, v);
     b.emit(Op::PUSHK, image_.constant_index({ValueType::Int, static_cast<uint32_t>(v)}));
@@ -193,6 +200,7 @@ class Copier {
   bytecode::Image& image_;
   bytecode::Image* piece_ = nullptr;
   uint32_t forks_ = 0, most_ = 0;
+  uint32_t pushed_global_at_ = UINT32_MAX;  // where the last LDG of a pushed AGenData[n] is
   std::set<uint32_t>* exits_ = nullptr;
 };
 
