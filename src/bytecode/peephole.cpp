@@ -138,7 +138,8 @@ class Fuser {
                    &Fuser::two_locals, &Fuser::store_constant, &Fuser::test_global,
                    &Fuser::compare_global, &Fuser::global_constant, &Fuser::arithmetic_globals,
                    &Fuser::compare_globals, &Fuser::float_global_constant, &Fuser::two_globals,
-                   &Fuser::add_global, &Fuser::window_by_global, &Fuser::stack_constant, &Fuser::store_global_constant, &Fuser::store_global_eol,
+                   &Fuser::add_global, &Fuser::window_by_global, &Fuser::stack_constant,
+                   &Fuser::store_global_constant, &Fuser::store_global_eol,
                    &Fuser::compare_branch, &Fuser::test_zero, &Fuser::line_ending_jump,
                    &Fuser::eol_jump, &Fuser::wait_for_command}) {
       if (auto r = (this->*m)(i)) return r;

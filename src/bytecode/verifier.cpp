@@ -134,7 +134,8 @@ class Verifier {
         return fail(VerifyError::BadOperand, pc);
       if (word_op(word) == Op::REMGKEOL && packed_imm(image_.code[pc + 1]) == 0)
         return fail(VerifyError::BadOperand, pc);
-      if (word_op(word) == Op::REMIK && word_imm(word) == 0) return fail(VerifyError::BadOperand, pc);
+      if (word_op(word) == Op::REMIK && word_imm(word) == 0)
+        return fail(VerifyError::BadOperand, pc);
       if (pops_host_arguments(word_op(word)) && image_.code[pc + 1] > limits_.max_stack)
         return fail(VerifyError::BadOperand, pc);
     }
