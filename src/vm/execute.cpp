@@ -574,6 +574,11 @@ op_JZ:
 op_JNZ:
   if ((--sp)->i != 0) JUMP_TO(code + A()); else ++ip;
   DISPATCH();
+// A call counts as a jump back: a call tree of forward calls (each routine calling the next
+// twice) runs exponentially long without jumping back, and never past a frame's depth without
+// a call. The slice may end at the callee's entry, as a jump's ends at its target.
+#define COUNT_CALL()                                         \
+  if (--back_jumps.now == 0) goto out_of_back_jumps
 op_CALL: {
   // The common case inline; enter() handles the rest and reports which limit was hit.
   const RoutineInfo& r = routines_[A()];
@@ -601,13 +606,16 @@ op_CALL: {
     sp = base;
     locals = callee;
     ip = code + r.entry;
+    COUNT_CALL();
     DISPATCH();
   }
   SAVE();
   if (!enter(t, A(), t.pc + 2, static_cast<uint8_t>(B()), FrameKind::Call, error)) goto raise_error;
   LOAD();
+  COUNT_CALL();
   DISPATCH();
 }
+#undef COUNT_CALL
 op_RET: {
   const Frame& f = t.frames[t.frame_count - 1];
   t.frame_count--;

@@ -27,9 +27,10 @@ struct MachineConfig {
 };
 
 // How much a slice may run: it stops when any count is spent (0 = no limit for that count).
-// back_jumps counts jumps to an earlier place, caught errors and restarts (RESET): every loop
-// takes one per iteration, so it bounds a slice even in code that never ends a line (a
-// hand-made image's `L: JMP L`) at no cost per instruction.
+// back_jumps counts jumps to an earlier place, calls, caught errors and restarts (RESET): every
+// loop takes one per iteration, so it bounds a slice even in code that never ends a line (a
+// hand-made image's `L: JMP L`, or its call tree of routines each calling the next twice) at
+// no cost per instruction.
 struct Budget {
   uint64_t instructions = 0;
   uint64_t lines = 0;

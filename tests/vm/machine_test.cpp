@@ -197,6 +197,35 @@ TEST(Machine, LineRunTakesTheLinesUnderACountOrABreakpoint) {
   EXPECT_EQ(p.global("fast").i, 1);
 }
 
+// A call counts as a jump back, so that a slice of a line budget and a cap on jumps back ends
+// in a call tree that never jumps back (routines calling the next forward, as the fuzzer's
+// recursive fib without a line did for 10 s). The slice ends at the callee's entry.
+TEST(Machine, CallsCountAsJumpsBack) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.global int "calls" 1
+.routine function "main" in=0 out=0 entry=main
+.routine function "f" in=0 out=0 entry=f
+main:
+  CALL f 0
+  CALL f 0
+  CALL f 0
+  RET
+f:
+  INCG calls 1
+  RET
+)"));
+  p.machine.start(0, 0);
+  auto r = p.machine.run_slice(0, Budget{0, 100, 2});
+  EXPECT_EQ(r.end, SliceEnd::BudgetSpent);
+  EXPECT_EQ(p.global("calls").i, 1);  // the second call spent the budget, at f's entry
+  EXPECT_EQ(p.machine.pc(0), 7u);
+  EXPECT_EQ(p.machine.frame_count(0), 2u);
+  r = p.machine.run_slice(0, Budget{0, 100, 2});
+  EXPECT_EQ(r.end, SliceEnd::Finished);  // the second's body, then the third call: one of two
+  EXPECT_EQ(p.global("calls").i, 3);
+}
+
 // JMPLN counts the lines of the path that leaves fused code; when they spend the slice's line
 // budget (a copy whose JLINES promised fewer, which the loader never makes), the slice ends
 // where it jumps to.
