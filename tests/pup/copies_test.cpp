@@ -142,7 +142,7 @@ TEST(CupCopies, ALoopRunsAsItsLines) {
 }
 
 // An index out of its window inside a copy (I reaches 4, the window has 3 places): error 4 at
-// line 7 however the program runs, the stores before it made.
+// line 8 however the program runs, the stores before it made.
 TEST(CupCopies, AnErrorInACopyNamesItsLine) {
   const LoadedCup cup = load({
       "AProgTask[1]",                  // 1

@@ -87,6 +87,7 @@ class Copier {
     CodeBuilder b(piece.code);
     forks_ = 0;
     most_ = 0;
+    pushed_global_at_ = UINT32_MAX;  // an earlier copy's place means nothing in this one
     exits_ = &exits;
     piece_ = &piece;
     piece.lines.push_back({0, "", first});
