@@ -222,6 +222,10 @@ SliceResult Machine::execute(Thread& t, const Budget& budget) {
     ip = to;                                               \
   } while (0)
 #define JUMP_TO(target) JUMP_OR(target, out_of_back_jumps)
+// What counts as a jump back without being one: a call, a restart, a catch (each may enter code
+// before it, or a call tree that never jumps back). The slice may end where control went.
+#define COUNT_JUMP_BACK() \
+  if (--back_jumps.now == 0) goto out_of_back_jumps
 #define A() bytecode::word_a(word)
 #define IMM() bytecode::word_imm(word)
 #define B() (ip[1])
@@ -577,8 +581,6 @@ op_JNZ:
 // A call counts as a jump back: a call tree of forward calls (each routine calling the next
 // twice) runs exponentially long without jumping back, and never past a frame's depth without
 // a call. The slice may end at the callee's entry, as a jump's ends at its target.
-#define COUNT_CALL()                                         \
-  if (--back_jumps.now == 0) goto out_of_back_jumps
 op_CALL: {
   // The common case inline; enter() handles the rest and reports which limit was hit.
   const RoutineInfo& r = routines_[A()];
@@ -606,16 +608,15 @@ op_CALL: {
     sp = base;
     locals = callee;
     ip = code + r.entry;
-    COUNT_CALL();
+    COUNT_JUMP_BACK();
     DISPATCH();
   }
   SAVE();
   if (!enter(t, A(), t.pc + 2, static_cast<uint8_t>(B()), FrameKind::Call, error)) goto raise_error;
   LOAD();
-  COUNT_CALL();
+  COUNT_JUMP_BACK();
   DISPATCH();
 }
-#undef COUNT_CALL
 op_RET: {
   const Frame& f = t.frames[t.frame_count - 1];
   t.frame_count--;
@@ -668,7 +669,7 @@ op_RESET:
     goto raise_error;
   }
   LOAD();
-  if (--back_jumps.now == 0) goto out_of_back_jumps;  // a restart is a loop's iteration too
+  COUNT_JUMP_BACK();  // a restart is a loop's iteration too
   DISPATCH();
 op_EOL:
   ++ip;
@@ -1322,7 +1323,7 @@ raise_error:
     word = 0;  // the failed instruction ended no line
     LOAD();
     // A catch block may lie before its try: catching is a loop's iteration too.
-    if (--back_jumps.now == 0) goto out_of_back_jumps;
+    COUNT_JUMP_BACK();
     DISPATCH();
   }
   return {SliceEnd::Error, counted ? budget.instructions - steps.left() : 0, LINES_ENDED()};
@@ -1334,6 +1335,7 @@ stop:
 #undef LINES_ENDED
 #undef JUMP_TO
 #undef JUMP_OR
+#undef COUNT_JUMP_BACK
 #undef SAVE
 #undef LOAD
 #undef DISPATCH
