@@ -637,12 +637,15 @@ uint32_t Axis::step() {
     close_loop();
   } else {
     // The bridge is open: no current flows and the load coasts; the reference follows the
-    // feedback so that PE stays 0 and enabling does not jump.
-    motor_state_.current_a = 0.0;
-    const double back_emf_v = motor_.torque_constant_nm_per_a *
-                              motor_state_.velocity_counts_per_s * motor_step().rad_per_count;
-    step_motor(motor_, motor_step(), motor_state_, back_emf_v);
-    motor_state_.current_a = 0.0;
+    // feedback so that PE stays 0 and enabling does not jump. A load at rest stays there (no
+    // current, no speed, no friction: step_motor would leave it exactly as it is).
+    if (motor_state_.velocity_counts_per_s != 0.0 || motor_state_.current_a != 0.0) {
+      motor_state_.current_a = 0.0;
+      const double back_emf_v = motor_.torque_constant_nm_per_a *
+                                motor_state_.velocity_counts_per_s * motor_step().rad_per_count;
+      step_motor(motor_, motor_step(), motor_state_, back_emf_v);
+      motor_state_.current_a = 0.0;
+    }
     raw_ = {motor_state_.position_counts, 0.0, 0.0};
     ref_ = raw_;
   }

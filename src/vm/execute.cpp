@@ -100,7 +100,7 @@ CommandStatus test_command(Host& host, uint32_t a, uint32_t b, bool& met) {
 
 }  // namespace
 
-SliceResult Machine::run_slice(uint32_t thread, const Budget& budget) {
+SliceResult Machine::run_other_slice(uint32_t thread, const Budget& budget) {
   if (!loaded_ || thread >= thread_count_) return {SliceEnd::NotRunning, 0};
   Thread& t = threads_[thread];
   switch (t.status) {

@@ -7,6 +7,7 @@
 #include <span>
 
 #include "bytecode/image_view.h"
+#include "bytecode/opcodes.h"
 #include "bytecode/verifier.h"
 #include "support/value.h"
 #include "vm/host.h"
@@ -97,6 +98,8 @@ class Machine {
   // the thread continues where it was, as it was (running, waiting or halted). An idle or
   // failed thread simply starts the routine; a failed one keeps its last_error() for it.
   RunError interrupt(uint32_t thread, uint32_t routine);
+  // Inline below for the usual slice (a running thread at an ordinary instruction): a drive's
+  // one-line turns take several each cycle.
   SliceResult run_slice(uint32_t thread, const Budget& budget);
 
   void halt(uint32_t thread);    // a running or waiting thread stops where it is
@@ -197,6 +200,7 @@ class Machine {
     ThreadStatus status_before_halt;
   };
 
+  SliceResult run_other_slice(uint32_t thread, const Budget& budget);  // the rest of run_slice
   SliceResult step_over_breakpoint(Thread& t, const Budget& budget);
   SliceResult test_then_execute(Thread& t, const Budget& budget);
   SliceResult execute(Thread& t, const Budget& budget);
@@ -230,6 +234,15 @@ class Machine {
   uint32_t breakpoint_count_ = 0;
 };
 
+inline SliceResult Machine::run_slice(uint32_t thread, const Budget& budget) {
+  if (loaded_ && thread < thread_count_) {
+    Thread& t = threads_[thread];
+    if (t.status == ThreadStatus::Running && !t.step_over &&
+        bytecode::word_op(code_[t.pc]) != bytecode::Op::UNTILCK)
+      return execute(t, budget);
+  }
+  return run_other_slice(thread, budget);
+}
 inline ThreadStatus Machine::status(uint32_t thread) const {
   return thread < thread_count_ ? threads_[thread].status : ThreadStatus::Idle;
 }

@@ -3,6 +3,7 @@
 #pragma once
 #include <cstdint>
 
+#include "bytecode/opcodes.h"
 #include "dialect/scheduling/report.h"
 #include "vm/machine.h"
 
@@ -25,7 +26,40 @@ struct LineStep {
 // frame, or an EXIT, where a line would start) is no line of its own: it runs with the line
 // before it, so a thread ends in the step of its last line (a fresh start of an empty routine
 // ends in a step of its own).
+// Inline for a running thread, a drive's turn several times a cycle.
 LineStep step_lines(vm::Machine& machine, uint32_t thread, uint64_t lines, uint64_t back_jump_cap);
+
+// Where the next instruction ends the program without being part of any line (the thread
+// stopped at a line end, so it is running).
+inline bool at_bare_end(const vm::Machine& machine, uint32_t thread) {
+  const uint32_t pc = machine.pc(thread);
+  const bytecode::ImageView& image = machine.image();
+  if (pc >= image.code.size()) return false;
+  const bytecode::Op op = bytecode::word_op(image.code[pc]);
+  return op == bytecode::Op::EXIT || (op == bytecode::Op::RET && machine.frame_count(thread) == 1);
+}
+
+// The slice of the bare end after a line.
+vm::SliceEnd run_bare_end(vm::Machine& machine, uint32_t thread, uint64_t back_jump_cap);
+
+// The step a slice made; a bare end after its line runs with it.
+inline LineStep finish_step(vm::Machine& machine, uint32_t thread, const vm::SliceResult& r,
+                            bool ran, uint64_t back_jump_cap) {
+  LineStep step{r.end, ran, r.lines};
+  if (r.end == vm::SliceEnd::LineEnd && at_bare_end(machine, thread))
+    step.end = run_bare_end(machine, thread, back_jump_cap);
+  return step;
+}
+
+// step_lines for a thread that is not running: waiting, or not to be run at all.
+LineStep step_waiting_lines(vm::Machine& machine, uint32_t thread, uint64_t lines, uint64_t back_jump_cap);
+
+inline LineStep step_lines(vm::Machine& machine, uint32_t thread, uint64_t lines, uint64_t back_jump_cap) {
+  if (machine.status(thread) != vm::ThreadStatus::Running)
+    return step_waiting_lines(machine, thread, lines, back_jump_cap);
+  const vm::SliceResult r = machine.run_slice(thread, vm::Budget{0, lines, back_jump_cap});
+  return finish_step(machine, thread, r, true, back_jump_cap);
+}
 
 // Adds what a step ended with to the report: Finished, Error or Breakpoint; and that it ran.
 // Inline: every due thread's step of every cycle comes through here.

@@ -26,8 +26,9 @@ void Firmware::latch_events(uint32_t drive_events) {
   if (drive_events & drive::kEventForwardLimit) latch(1);
   if (drive_events & drive::kEventReverseLimit) latch(2);
   const drive::Parameters& p = a.parameters();
-  const bool above = a.reference_position() >= p.position_high_counts;
-  const bool below = a.reference_position() <= p.position_low_counts;
+  const int32_t reference = a.reference_position();
+  const bool above = reference >= p.position_high_counts;
+  const bool below = reference <= p.position_low_counts;
   if (above && !above_max_) latch(3);
   if (below && !below_min_) latch(4);
   above_max_ = above, below_min_ = below;
