@@ -100,6 +100,16 @@ CommandStatus test_command(Host& host, uint32_t a, uint32_t b, bool& met) {
 
 }  // namespace
 
+SliceResult Machine::run_round(Round& round, const Budget& budget) {
+  round.at = 0;
+  if (round.count == 0 || budget.instructions != 0 || !starts_plainly(round.threads[0]))
+    return {SliceEnd::NotRunning, 0};
+  round_ = &round;
+  const SliceResult r = execute(threads_[round.threads[0]], budget);
+  round_ = nullptr;
+  return r;
+}
+
 SliceResult Machine::run_other_slice(uint32_t thread, const Budget& budget) {
   if (!loaded_ || thread >= thread_count_) return {SliceEnd::NotRunning, 0};
   Thread& t = threads_[thread];
@@ -164,7 +174,7 @@ SliceResult Machine::test_then_execute(Thread& t, const Budget& budget) {
 // table whose every entry counts first, so that a slice without one pays nothing per instruction
 // for counting and the loop's code is there once (a copy for each kind did not leave the
 // embeddable core room for more instructions).
-SliceResult Machine::execute(Thread& t, const Budget& budget) {
+SliceResult Machine::execute(Thread& start, const Budget& budget) {
   static const void* const kDispatch[] = {
 #define OP(name, a, b, pop, push, flow, meaning) &&op_##name,
 #include "bytecode/opcodes.def"
@@ -179,14 +189,21 @@ SliceResult Machine::execute(Thread& t, const Budget& budget) {
   const void* const* const dispatch = counted ? kCountThenDispatch : kDispatch;
 
   const uint32_t* const code = code_;
-  const uint32_t* ip = code + t.pc;
-  Value* sp = t.sp;
-  Value* locals = t.frames[t.frame_count - 1].locals;
+  Thread* tp = &start;
+  // A round of one-line turns (run_round) goes on from thread to thread at their line ends. Taken
+  // here, so that a slice the host runs from inside a call runs alone.
+  Round* const round = round_;
+  round_ = nullptr;
+  bool host_called = false;  // in this slice: the round ends after it
+  const uint32_t* ip = code + tp->pc;
+  Value* sp = tp->sp;
+  Value* locals = tp->frames[tp->frame_count - 1].locals;
   BudgetCount steps = BudgetCount::of(budget.instructions);
   BudgetCount lines = BudgetCount::of(budget.lines);
   BudgetCount back_jumps = BudgetCount::of(budget.back_jumps);
+  const BudgetCount lines_each = lines, back_jumps_each = back_jumps;  // a round's next slice
   // A call may start a frame at or below this stack position (see enter()).
-  const Value* const call_limit = t.stack + (config_.stack - max_depth_);
+  const Value* call_limit = tp->stack + (config_.stack - max_depth_);
   uint32_t word = 0;
   uint32_t line_ends = 0;  // what JMPLN and INCGJMPLN count
   RunError error = RunError::None;
@@ -195,8 +212,8 @@ SliceResult Machine::execute(Thread& t, const Budget& budget) {
 
 // Line ends passed so far; a budget of 0 (no limit) counts nothing.
 #define LINES_ENDED() (budget.lines != 0 ? budget.lines - lines.left() : 0)
-#define SAVE() (t.pc = static_cast<uint32_t>(ip - code), t.sp = sp)
-#define LOAD() (ip = code + t.pc, sp = t.sp, locals = t.frames[t.frame_count - 1].locals)
+#define SAVE() (tp->pc = static_cast<uint32_t>(ip - code), tp->sp = sp)
+#define LOAD() (ip = code + tp->pc, sp = tp->sp, locals = tp->frames[tp->frame_count - 1].locals)
 // The next instruction, once the one in `word` has run: the line it ends is counted first.
 // `word` is 0 before the first instruction and after an error, which end no line.
 #define DISPATCH_COUNTING_MARK()                                              \
@@ -272,6 +289,7 @@ SliceResult Machine::execute(Thread& t, const Budget& budget) {
 // effect. Done with kCommandEndSlice, the instruction completes and the slice ends as at YIELD.
 #define HOST_CALL(call, effect)                                       \
   {                                                                   \
+    host_called = true;                                               \
     detail = (call);                                                  \
     if (detail != kCommandOk) {                                       \
       if (detail != kCommandEndSlice) FAIL(RunError::CommandRefused); \
@@ -585,10 +603,10 @@ op_CALL: {
   // The common case inline; enter() handles the rest and reports which limit was hit.
   const RoutineInfo& r = routines_[A()];
   Value* base = sp - r.inputs;
-  Value* callee = t.locals_top;
-  if (t.frame_count < config_.frames && r.locals <= static_cast<size_t>(t.locals_end - callee) &&
+  Value* callee = tp->locals_top;
+  if (tp->frame_count < config_.frames && r.locals <= static_cast<size_t>(tp->locals_end - callee) &&
       base <= call_limit) {
-    Frame& f = t.frames[t.frame_count++];
+    Frame& f = tp->frames[tp->frame_count++];
     f.return_pc = static_cast<uint32_t>(ip - code) + 2;
     f.routine = A();
     f.locals = callee;
@@ -604,7 +622,7 @@ op_CALL: {
       case 0: break;
       default: std::memset(static_cast<void*>(rest), 0, (r.locals - r.inputs) * sizeof(Value));
     }
-    t.locals_top = callee + r.locals;
+    tp->locals_top = callee + r.locals;
     sp = base;
     locals = callee;
     ip = code + r.entry;
@@ -612,28 +630,28 @@ op_CALL: {
     DISPATCH();
   }
   SAVE();
-  if (!enter(t, A(), t.pc + 2, static_cast<uint8_t>(B()), FrameKind::Call, error)) goto raise_error;
+  if (!enter(*tp, A(), tp->pc + 2, static_cast<uint8_t>(B()), FrameKind::Call, error)) goto raise_error;
   LOAD();
   COUNT_JUMP_BACK();
   DISPATCH();
 }
 op_RET: {
-  const Frame& f = t.frames[t.frame_count - 1];
-  t.frame_count--;
-  t.locals_top = f.locals;
-  while (t.handler_count > 0 && t.handlers[t.handler_count - 1].frame_count > t.frame_count)
-    t.handler_count--;
+  const Frame& f = tp->frames[tp->frame_count - 1];
+  tp->frame_count--;
+  tp->locals_top = f.locals;
+  while (tp->handler_count > 0 && tp->handlers[tp->handler_count - 1].frame_count > tp->frame_count)
+    tp->handler_count--;
   if (f.kind == FrameKind::Event) {
     sp = f.stack_base;
     ip = code + f.return_pc;
-    locals = t.frames[t.frame_count - 1].locals;
-    t.status = f.saved_status;
-    t.wake_us = f.saved_wake_us;
-    if (t.status == ThreadStatus::Waiting) {
+    locals = tp->frames[tp->frame_count - 1].locals;
+    tp->status = f.saved_status;
+    tp->wake_us = f.saved_wake_us;
+    if (tp->status == ThreadStatus::Waiting) {
       end = SliceEnd::Waiting;
       goto stop;
     }
-    if (t.status == ThreadStatus::Halted) {
+    if (tp->status == ThreadStatus::Halted) {
       end = SliceEnd::Halted;
       goto stop;
     }
@@ -646,26 +664,26 @@ op_RET: {
       for (uint32_t i = 0; i < f.nargout; ++i) base[i] = outputs[i];
     }
     sp = base + f.nargout;
-    if (t.frame_count == 0) goto finished;
+    if (tp->frame_count == 0) goto finished;
     ip = code + f.return_pc;
-    locals = t.frames[t.frame_count - 1].locals;
+    locals = tp->frames[tp->frame_count - 1].locals;
   }
   if (lines.now == 0) goto out_of_lines;
   DISPATCH();
 }
 op_NARGOUT:
-  (sp++)->i = t.frames[t.frame_count - 1].nargout;
+  (sp++)->i = tp->frames[tp->frame_count - 1].nargout;
   goto next_1;
 op_EXIT:
   goto finished;
 op_RESET:
-  t.frame_count = 0;
-  t.handler_count = 0;
-  t.sp = t.stack;
-  t.locals_top = t.locals;
-  if (!enter(t, A(), 0, 0, FrameKind::Call, error)) {
-    ip = code + t.pc;
-    sp = t.sp;
+  tp->frame_count = 0;
+  tp->handler_count = 0;
+  tp->sp = tp->stack;
+  tp->locals_top = tp->locals;
+  if (!enter(*tp, A(), 0, 0, FrameKind::Call, error)) {
+    ip = code + tp->pc;
+    sp = tp->sp;
     goto raise_error;
   }
   LOAD();
@@ -686,25 +704,25 @@ op_WAIT: {
   int64_t duration_us = static_cast<int64_t>((--sp)->i) * static_cast<int64_t>(A());
   if (duration_us < 0) duration_us = 0;
   if (duration_us > INT32_MAX) duration_us = INT32_MAX;  // the clock's signed horizon
-  t.wake_us = host_->now_us() + static_cast<uint32_t>(duration_us);
-  t.status = ThreadStatus::Waiting;
+  tp->wake_us = host_->now_us() + static_cast<uint32_t>(duration_us);
+  tp->status = ThreadStatus::Waiting;
   ++ip;
   end = SliceEnd::Waiting;
   goto stop;
 }
 op_TRY:
 op_TRYALL: {
-  if (t.handler_count >= config_.handlers) FAIL(RunError::TryDepth);
-  t.handlers[t.handler_count++] = {A(), t.frame_count, sp, t.locals_top,
+  if (tp->handler_count >= config_.handlers) FAIL(RunError::TryDepth);
+  tp->handlers[tp->handler_count++] = {A(), tp->frame_count, sp, tp->locals_top,
                                    bytecode::word_op(word) == Op::TRYALL};
   goto next_1;
 }
 op_ENDTRY:
-  if (t.handler_count == 0) FAIL(RunError::TryMismatch);
-  t.handler_count--;
+  if (tp->handler_count == 0) FAIL(RunError::TryMismatch);
+  tp->handler_count--;
   goto next_1;
 op_ERRCODE:
-  (sp++)->i = static_cast<int32_t>(t.last_error);
+  (sp++)->i = static_cast<int32_t>(tp->last_error);
   goto next_1;
 op_CLOCK:
   (sp++)->i = static_cast<int32_t>(host_->now_us());
@@ -1136,6 +1154,7 @@ op_CMDGET: {
 }
 op_UNTILCK: {
   bool met = false;
+  host_called = true;
   detail = test_command(*host_, A(), B(), met);
   if (detail != kCommandOk && detail != kCommandEndSlice) FAIL(RunError::CommandRefused);
   if (met) ip += 2;
@@ -1163,7 +1182,7 @@ op_CMDRUNX: {
 }
 op_MSG: {
   const uint32_t count = B();
-  const auto thread = static_cast<uint32_t>(&t - threads_);
+  const auto thread = static_cast<uint32_t>(tp - threads_);
   HOST_CALL(host_->message(thread, A(), sp - count, count), (sp -= count, ip += 2))
 }
 
@@ -1266,7 +1285,7 @@ op_MULDIV: {
 }
 
 op_BREAK:
-  t.status = ThreadStatus::AtBreakpoint;
+  tp->status = ThreadStatus::AtBreakpoint;
   end = SliceEnd::Breakpoint;
   goto stop;
 
@@ -1307,17 +1326,28 @@ out_of_back_jumps_at_line_end:  // a line-ending jump: the line is still to be c
 out_of_lines:
   if (lines.refill()) DISPATCH_NEXT();
   end = SliceEnd::LineEnd;
+  if (round != nullptr && !host_called) {
+    SAVE();
+    if (Thread* const next = next_in_round(*round, *tp)) {
+      tp = next;
+      LOAD();
+      call_limit = tp->stack + (config_.stack - max_depth_);
+      lines = lines_each;
+      back_jumps = back_jumps_each;
+      DISPATCH_NEXT();
+    }
+  }
   goto stop;
 
 finished:
   SAVE();
-  reset_thread(t);
-  t.last_error = RunError::None;
+  reset_thread(*tp);
+  tp->last_error = RunError::None;
   return {SliceEnd::Finished, counted ? budget.instructions - steps.left() : 0, LINES_ENDED()};
 
 raise_error:
   SAVE();
-  if (raise(t, error, detail)) {
+  if (raise(*tp, error, detail)) {
     error = RunError::None;
     detail = 0;
     word = 0;  // the failed instruction ended no line

@@ -53,6 +53,13 @@ enum class SliceEnd : uint8_t {
   NotRunning,   // the thread was idle
 };
 
+// The threads of a round (Machine::run_round) in their order, and how far it went.
+struct Round {
+  const uint32_t* threads = nullptr;
+  uint32_t count = 0;
+  uint32_t at = 0;  // the index of the slice running, or of the last one run
+};
+
 struct SliceResult {
   SliceEnd end;
   uint64_t executed;  // instructions run in this slice; counted only under an instruction budget
@@ -101,6 +108,18 @@ class Machine {
   // Inline below for the usual slice (a running thread at an ordinary instruction): a drive's
   // one-line turns take several each cycle.
   SliceResult run_slice(uint32_t thread, const Budget& budget);
+
+  // A drive's round of one-line turns: a slice of `budget` (no instruction count) for
+  // round.threads[0], then [1], ... in one entry into the execute loop, which goes on to the next
+  // thread only while each slice ends at a line end, without a call to the host (which may have
+  // changed which threads run next) and not before a program's bare end. round.at is the index
+  // of the last slice run; its result is returned, the earlier ones ended at their line end.
+  // NotRunning, with nothing run, when round.threads[0] is not running at an ordinary
+  // instruction (waiting, stopped, at a breakpoint or UNTILCK): run_slice takes those.
+  SliceResult run_round(Round& round, const Budget& budget);
+  // Where the next instruction ends the program without being part of any line: an EXIT, or a
+  // RET from the outermost frame.
+  bool at_bare_end(uint32_t thread) const;
 
   void halt(uint32_t thread);    // a running or waiting thread stops where it is
   void resume(uint32_t thread);  // a halted thread, or one at a breakpoint, runs again
@@ -200,6 +219,10 @@ class Machine {
     ThreadStatus status_before_halt;
   };
 
+  // Running at an ordinary instruction: a slice goes straight into the execute loop.
+  bool starts_plainly(uint32_t thread) const;
+  bool at_bare_end(const Thread& t) const;
+  Thread* next_in_round(Round& round, const Thread& done);
   SliceResult run_other_slice(uint32_t thread, const Budget& budget);  // the rest of run_slice
   SliceResult step_over_breakpoint(Thread& t, const Budget& budget);
   SliceResult test_then_execute(Thread& t, const Budget& budget);
@@ -232,16 +255,35 @@ class Machine {
   uint32_t max_depth_ = 0;  // the deepest any frame's expression stack goes (from the verifier)
   Breakpoint* breakpoints_ = nullptr;
   uint32_t breakpoint_count_ = 0;
+  Round* round_ = nullptr;  // the round run_round starts, until execute takes it
 };
 
+inline bool Machine::starts_plainly(uint32_t thread) const {
+  if (!loaded_ || thread >= thread_count_) return false;
+  const Thread& t = threads_[thread];
+  return t.status == ThreadStatus::Running && !t.step_over &&
+         bytecode::word_op(code_[t.pc]) != bytecode::Op::UNTILCK;
+}
 inline SliceResult Machine::run_slice(uint32_t thread, const Budget& budget) {
-  if (loaded_ && thread < thread_count_) {
-    Thread& t = threads_[thread];
-    if (t.status == ThreadStatus::Running && !t.step_over &&
-        bytecode::word_op(code_[t.pc]) != bytecode::Op::UNTILCK)
-      return execute(t, budget);
-  }
+  if (starts_plainly(thread)) return execute(threads_[thread], budget);
   return run_other_slice(thread, budget);
+}
+inline bool Machine::at_bare_end(const Thread& t) const {
+  if (t.pc >= code_size_) return false;
+  const bytecode::Op op = bytecode::word_op(code_[t.pc]);
+  return op == bytecode::Op::EXIT || (op == bytecode::Op::RET && t.frame_count == 1);
+}
+inline bool Machine::at_bare_end(uint32_t thread) const {
+  return thread < thread_count_ && at_bare_end(threads_[thread]);
+}
+// After `done`'s line ended (saved, no host called): the round's next thread, or nullptr when
+// the round ends here (its last thread, a program's bare end next, a next one that cannot start).
+inline Machine::Thread* Machine::next_in_round(Round& round, const Thread& done) {
+  if (round.at + 1 >= round.count || at_bare_end(done)) return nullptr;
+  const uint32_t thread = round.threads[round.at + 1];
+  if (!starts_plainly(thread)) return nullptr;
+  ++round.at;
+  return &threads_[thread];
 }
 inline ThreadStatus Machine::status(uint32_t thread) const {
   return thread < thread_count_ ? threads_[thread].status : ThreadStatus::Idle;

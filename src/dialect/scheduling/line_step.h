@@ -3,7 +3,6 @@
 #pragma once
 #include <cstdint>
 
-#include "bytecode/opcodes.h"
 #include "dialect/scheduling/report.h"
 #include "vm/machine.h"
 
@@ -29,16 +28,6 @@ struct LineStep {
 // Inline for a running thread, a drive's turn several times a cycle.
 LineStep step_lines(vm::Machine& machine, uint32_t thread, uint64_t lines, uint64_t back_jump_cap);
 
-// Where the next instruction ends the program without being part of any line (the thread
-// stopped at a line end, so it is running).
-inline bool at_bare_end(const vm::Machine& machine, uint32_t thread) {
-  const uint32_t pc = machine.pc(thread);
-  const bytecode::ImageView& image = machine.image();
-  if (pc >= image.code.size()) return false;
-  const bytecode::Op op = bytecode::word_op(image.code[pc]);
-  return op == bytecode::Op::EXIT || (op == bytecode::Op::RET && machine.frame_count(thread) == 1);
-}
-
 // The slice of the bare end after a line.
 vm::SliceEnd run_bare_end(vm::Machine& machine, uint32_t thread, uint64_t back_jump_cap);
 
@@ -46,7 +35,7 @@ vm::SliceEnd run_bare_end(vm::Machine& machine, uint32_t thread, uint64_t back_j
 inline LineStep finish_step(vm::Machine& machine, uint32_t thread, const vm::SliceResult& r,
                             bool ran, uint64_t back_jump_cap) {
   LineStep step{r.end, ran, r.lines};
-  if (r.end == vm::SliceEnd::LineEnd && at_bare_end(machine, thread))
+  if (r.end == vm::SliceEnd::LineEnd && machine.at_bare_end(thread))
     step.end = run_bare_end(machine, thread, back_jump_cap);
   return step;
 }

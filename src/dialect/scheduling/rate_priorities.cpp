@@ -50,19 +50,59 @@ bool RatePriorities::due(uint32_t thread) const {
   return cycle_ >= start && (priority_[thread] == 1 || (cycle_ - start) % priority_[thread] == 0);
 }
 
+bool RatePriorities::takes_turn(const vm::Machine& machine, uint32_t thread) const {
+  const vm::ThreadStatus status = machine.status(thread);
+  return (status == vm::ThreadStatus::Running || status == vm::ThreadStatus::Waiting) &&
+         !held(thread) && due(thread);
+}
+
+// The running threads due from `thread` on, up to the first waiting one, take their lines in
+// one round; a line that calls the host ends it, and the threads after are looked at again.
 Report RatePriorities::cycle(vm::Machine& machine) {
   Report report;
   ++cycle_;
   const uint32_t end = config_.first_thread + config_.thread_count;
-  for (uint32_t thread = config_.first_thread; thread < end; ++thread) {
-    const vm::ThreadStatus status = machine.status(thread);
-    if (status != vm::ThreadStatus::Running && status != vm::ThreadStatus::Waiting) continue;
-    if (held(thread) || !due(thread)) continue;
-    running_ = thread;
-    report_step(report, thread, step_lines(machine, thread, 1, config_.back_jump_cap));
-    running_ = kNoThread;
+  uint32_t thread = config_.first_thread;
+  while (thread < end) {
+    uint32_t turns[kMaxThreads];
+    uint32_t count = 0;
+    for (; thread < end; ++thread) {
+      if (!takes_turn(machine, thread)) continue;
+      if (machine.status(thread) != vm::ThreadStatus::Running) break;
+      turns[count++] = thread;
+    }
+    if (count > 0) {
+      thread = run_round(machine, turns, count, report) + 1;
+    } else if (thread < end) {
+      take_turn(machine, thread, report);  // a waiting thread
+      ++thread;
+    }
   }
   return report;
+}
+
+uint32_t RatePriorities::run_round(vm::Machine& machine, const uint32_t* turns, uint32_t count,
+                                   Report& report) {
+  vm::Round round{turns, count};
+  round_ = &round;
+  const vm::SliceResult last = machine.run_round(round, vm::Budget{0, 1, config_.back_jump_cap});
+  round_ = nullptr;
+  for (uint32_t i = 0; i < round.at; ++i) report.mark_ran(turns[i]);
+  const uint32_t thread = turns[round.at];
+  if (last.end == vm::SliceEnd::NotRunning) {
+    take_turn(machine, thread, report);  // it cannot start in a round
+  } else {
+    running_ = thread;
+    report_step(report, thread, finish_step(machine, thread, last, true, config_.back_jump_cap));
+    running_ = kNoThread;
+  }
+  return thread;
+}
+
+void RatePriorities::take_turn(vm::Machine& machine, uint32_t thread, Report& report) {
+  running_ = thread;
+  report_step(report, thread, step_lines(machine, thread, 1, config_.back_jump_cap));
+  running_ = kNoThread;
 }
 
 }  // namespace uprog::scheduling

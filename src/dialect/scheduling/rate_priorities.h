@@ -45,7 +45,7 @@ class RatePriorities {
   bool held(uint32_t thread) const { return covers(thread) && ((held_ >> thread) & 1u); }
 
   // The thread whose line runs now (inside cycle(), for the host's callbacks), else kNoThread.
-  uint32_t running() const { return running_; }
+  uint32_t running() const { return round_ != nullptr ? round_->threads[round_->at] : running_; }
   bool covers(uint32_t thread) const {
     return thread >= config_.first_thread && thread - config_.first_thread < config_.thread_count;
   }
@@ -55,6 +55,10 @@ class RatePriorities {
 
  private:
   bool due(uint32_t thread) const;
+  bool takes_turn(const vm::Machine& machine, uint32_t thread) const;  // this cycle
+  // Returns the last thread the round ran or looked at.
+  uint32_t run_round(vm::Machine& machine, const uint32_t* turns, uint32_t count, Report& report);
+  void take_turn(vm::Machine& machine, uint32_t thread, Report& report);  // one line, alone
 
   RatePrioritiesConfig config_;
   uint64_t cycle_ = 0;  // the cycle running now, or the last one run; the first is 1
@@ -62,6 +66,7 @@ class RatePriorities {
   uint32_t priority_[kMaxThreads] = {};
   uint32_t held_ = 0;
   uint32_t running_ = kNoThread;
+  const vm::Round* round_ = nullptr;  // inside run_round: the round, whose thread runs now
 };
 
 }  // namespace uprog::scheduling
