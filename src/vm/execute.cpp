@@ -104,10 +104,7 @@ SliceResult Machine::run_round(Round& round, const Budget& budget) {
   round.at = 0;
   if (round.count == 0 || budget.instructions != 0 || !starts_plainly(round.threads[0]))
     return {SliceEnd::NotRunning, 0};
-  round_ = &round;
-  const SliceResult r = execute(threads_[round.threads[0]], budget);
-  round_ = nullptr;
-  return r;
+  return execute(threads_[round.threads[0]], budget, &round);
 }
 
 SliceResult Machine::run_other_slice(uint32_t thread, const Budget& budget) {
@@ -174,7 +171,7 @@ SliceResult Machine::test_then_execute(Thread& t, const Budget& budget) {
 // table whose every entry counts first, so that a slice without one pays nothing per instruction
 // for counting and the loop's code is there once (a copy for each kind did not leave the
 // embeddable core room for more instructions).
-SliceResult Machine::execute(Thread& start, const Budget& budget) {
+SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) {
   static const void* const kDispatch[] = {
 #define OP(name, a, b, pop, push, flow, meaning) &&op_##name,
 #include "bytecode/opcodes.def"
@@ -190,10 +187,7 @@ SliceResult Machine::execute(Thread& start, const Budget& budget) {
 
   const uint32_t* const code = code_;
   Thread* tp = &start;
-  // A round of one-line turns (run_round) goes on from thread to thread at their line ends. Taken
-  // here, so that a slice the host runs from inside a call runs alone.
-  Round* const round = round_;
-  round_ = nullptr;
+  // A round of one-line turns (run_round) goes on from thread to thread at their line ends.
   bool host_called = false;  // in this slice: the round ends after it
   const uint32_t* ip = code + tp->pc;
   Value* sp = tp->sp;

@@ -226,7 +226,7 @@ class Machine {
   SliceResult run_other_slice(uint32_t thread, const Budget& budget);  // the rest of run_slice
   SliceResult step_over_breakpoint(Thread& t, const Budget& budget);
   SliceResult test_then_execute(Thread& t, const Budget& budget);
-  SliceResult execute(Thread& t, const Budget& budget);
+  SliceResult execute(Thread& t, const Budget& budget, Round* round = nullptr);
   // Enters routine r: pushes a frame, moves the inputs into its locals. False on an error,
   // which is then set in `error`.
   bool enter(Thread& t, uint32_t routine, uint32_t return_pc, uint8_t nargout, FrameKind kind,
@@ -255,7 +255,6 @@ class Machine {
   uint32_t max_depth_ = 0;  // the deepest any frame's expression stack goes (from the verifier)
   Breakpoint* breakpoints_ = nullptr;
   uint32_t breakpoint_count_ = 0;
-  Round* round_ = nullptr;  // the round run_round starts, until execute takes it
 };
 
 inline bool Machine::starts_plainly(uint32_t thread) const {
