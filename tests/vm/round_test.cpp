@@ -77,8 +77,9 @@ constexpr uint32_t kOne = 0, kTwo = 1, kThree = 2, kReads = 3, kEnds = 4, kFails
 const Budget kOneLine{0, 1, 1000};
 
 struct Turns : LoadedProgram {
-  // Starts thread t (1..3) at routines[t - 1].
-  bool start(std::initializer_list<uint32_t> routines) {
+  // Loads kTurns and starts thread t (1..3) at routines[t - 1].
+  bool begin(std::initializer_list<uint32_t> routines) {
+    if (!load(kTurns)) return false;
     uint32_t thread = 1;
     for (uint32_t r : routines) {
       if (machine.start(thread++, r) != vm::RunError::None) return false;
@@ -91,8 +92,7 @@ const uint32_t kThreads[] = {1, 2, 3};
 
 TEST(Round, RunsEachThreadsLineInOrder) {
   Turns p;
-  ASSERT_TRUE(p.load(kTurns));
-  ASSERT_TRUE(p.start({kOne, kTwo, kThree}));
+  ASSERT_TRUE(p.begin({kOne, kTwo, kThree}));
   Round round{kThreads, 3};
   const auto r = p.machine.run_round(round, kOneLine);
   EXPECT_EQ(r.end, SliceEnd::LineEnd);
@@ -109,8 +109,7 @@ TEST(Round, RunsEachThreadsLineInOrder) {
 
 TEST(Round, ALineThatCallsTheHostEndsIt) {
   Turns p;
-  ASSERT_TRUE(p.load(kTurns));
-  ASSERT_TRUE(p.start({kOne, kReads, kThree}));
+  ASSERT_TRUE(p.begin({kOne, kReads, kThree}));
   Round round{kThreads, 3};
   const auto r = p.machine.run_round(round, kOneLine);
   EXPECT_EQ(r.end, SliceEnd::LineEnd);
@@ -120,8 +119,7 @@ TEST(Round, ALineThatCallsTheHostEndsIt) {
 
 TEST(Round, ItEndsBeforeAThreadThatCannotStartInIt) {
   Turns p;
-  ASSERT_TRUE(p.load(kTurns));
-  ASSERT_TRUE(p.start({kOne, kTwo, kThree}));
+  ASSERT_TRUE(p.begin({kOne, kTwo, kThree}));
   p.machine.halt(2);
   Round round{kThreads, 3};
   EXPECT_EQ(p.machine.run_round(round, kOneLine).end, SliceEnd::LineEnd);
@@ -139,8 +137,7 @@ TEST(Round, ItEndsBeforeAThreadThatCannotStartInIt) {
 
 TEST(Round, ItEndsBeforeAProgramsBareEnd) {
   Turns p;
-  ASSERT_TRUE(p.load(kTurns));
-  ASSERT_TRUE(p.start({kEnds, kTwo}));
+  ASSERT_TRUE(p.begin({kEnds, kTwo}));
   Round round{kThreads, 2};
   EXPECT_EQ(p.machine.run_round(round, kOneLine).end, SliceEnd::LineEnd);
   EXPECT_EQ(round.at, 0u);
@@ -151,8 +148,7 @@ TEST(Round, ItEndsBeforeAProgramsBareEnd) {
 
 TEST(Round, ASliceThatEndsOtherwiseEndsIt) {
   Turns p;
-  ASSERT_TRUE(p.load(kTurns));
-  ASSERT_TRUE(p.start({kFails, kTwo}));
+  ASSERT_TRUE(p.begin({kFails, kTwo}));
   Round round{kThreads, 2};
   EXPECT_EQ(p.machine.run_round(round, kOneLine).end, SliceEnd::Error);
   EXPECT_EQ(round.at, 0u);
@@ -161,8 +157,7 @@ TEST(Round, ASliceThatEndsOtherwiseEndsIt) {
 
 TEST(Round, ItCountsNoInstructions) {
   Turns p;
-  ASSERT_TRUE(p.load(kTurns));
-  ASSERT_TRUE(p.start({kOne, kTwo}));
+  ASSERT_TRUE(p.begin({kOne, kTwo}));
   Round round{kThreads, 2};
   EXPECT_EQ(p.machine.run_round(round, Budget{10, 1, 1000}).end, SliceEnd::NotRunning);
   EXPECT_EQ(p.global("order").i, 0);
