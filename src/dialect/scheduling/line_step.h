@@ -24,8 +24,7 @@ struct LineStep {
 // running or waiting is left alone. The bare end of a program (a RET leaving the outermost
 // frame, or an EXIT, where a line would start) is no line of its own: it runs with the line
 // before it, so a thread ends in the step of its last line (a fresh start of an empty routine
-// ends in a step of its own).
-// Inline for a running thread, a drive's turn several times a cycle.
+// ends in a step of its own). Inline below for a running thread (a drive's turn, several a cycle).
 LineStep step_lines(vm::Machine& machine, uint32_t thread, uint64_t lines, uint64_t back_jump_cap);
 
 // The slice of the bare end after a line.
