@@ -598,7 +598,8 @@ op_CALL: {
   const RoutineInfo& r = routines_[A()];
   Value* base = sp - r.inputs;
   Value* callee = tp->locals_top;
-  if (tp->frame_count < config_.frames && r.locals <= static_cast<size_t>(tp->locals_end - callee) &&
+  if (tp->frame_count < config_.frames &&
+      r.locals <= static_cast<size_t>(tp->locals_end - callee) &&
       base <= call_limit) {
     Frame& f = tp->frames[tp->frame_count++];
     f.return_pc = static_cast<uint32_t>(ip - code) + 2;
@@ -624,7 +625,8 @@ op_CALL: {
     DISPATCH();
   }
   SAVE();
-  if (!enter(*tp, A(), tp->pc + 2, static_cast<uint8_t>(B()), FrameKind::Call, error)) goto raise_error;
+  if (!enter(*tp, A(), tp->pc + 2, static_cast<uint8_t>(B()), FrameKind::Call, error))
+    goto raise_error;
   LOAD();
   COUNT_JUMP_BACK();
   DISPATCH();
