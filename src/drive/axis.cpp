@@ -604,6 +604,14 @@ const MotorStep& Axis::motor_step() {
   return motor_step_;
 }
 
+// Each from the feedback, not one copied from the other: a copy reads back the stores just made,
+// wider than they were, and waits for them (most of an idle cycle's time in this function).
+void Axis::hold_reference_at_feedback() {
+  const ProfileSample at_rest{motor_state_.position_counts, 0.0, 0.0};
+  raw_ = at_rest;
+  ref_ = at_rest;
+}
+
 uint32_t Axis::step() {
   uint32_t events = pending_events_;
   pending_events_ = 0;
@@ -619,8 +627,7 @@ uint32_t Axis::step() {
     if (enable_elapsed_us_ >= kEnableDelay_us) {
       servo_ready_ = true;
       loop_ = LoopState{};
-      raw_ = {motor_state_.position_counts, 0.0, 0.0};
-      ref_ = raw_;
+      hold_reference_at_feedback();
       smooth_position_.reset(1, raw_.position_counts);
       smooth_velocity_.reset(1, 0.0);
       smooth_accel_.reset(1, 0.0);
@@ -646,8 +653,7 @@ uint32_t Axis::step() {
       step_motor(motor_, motor_step(), motor_state_, back_emf_v);
       motor_state_.current_a = 0.0;
     }
-    raw_ = {motor_state_.position_counts, 0.0, 0.0};
-    ref_ = raw_;
+    hold_reference_at_feedback();
   }
 
   if (servo_ready_) check_faults();

@@ -190,6 +190,7 @@ class Axis {
   void enforce_limits();
   double current_limit_a();
   void close_loop();
+  void hold_reference_at_feedback();  // the bridge open: PE 0, the profile at the load
   void check_faults();
   void track_target_window();
   uint32_t step_homing(double position_before_counts);
