@@ -188,7 +188,9 @@ SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) 
   const uint32_t* const code = code_;
   Thread* tp = &start;
   // A round of one-line turns (run_round) goes on from thread to thread at their line ends.
-  bool host_called = false;  // in this slice: the round ends after it
+  // No round, or a line of it called the host (which may have changed who runs next): the
+  // slice ends at its line end.
+  bool round_ends = round == nullptr;
   const uint32_t* ip = code + tp->pc;
   Value* sp = tp->sp;
   Value* locals = tp->frames[tp->frame_count - 1].locals;
@@ -197,7 +199,8 @@ SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) 
   BudgetCount back_jumps = BudgetCount::of(budget.back_jumps);
   const BudgetCount lines_each = lines, back_jumps_each = back_jumps;  // a round's next slice
   // A call may start a frame at or below this stack position (see enter()).
-  const Value* call_limit = tp->stack + (config_.stack - max_depth_);
+  const uint32_t call_room = config_.stack - max_depth_;  // in a thread's stack
+  const Value* call_limit = tp->stack + call_room;
   uint32_t word = 0;
   uint32_t line_ends = 0;  // what JMPLN and INCGJMPLN count
   RunError error = RunError::None;
@@ -283,7 +286,7 @@ SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) 
 // effect. Done with kCommandEndSlice, the instruction completes and the slice ends as at YIELD.
 #define HOST_CALL(call, effect)                                       \
   {                                                                   \
-    host_called = true;                                               \
+    round_ends = true;                                                \
     detail = (call);                                                  \
     if (detail != kCommandOk) {                                       \
       if (detail != kCommandEndSlice) FAIL(RunError::CommandRefused); \
@@ -1150,7 +1153,7 @@ op_CMDGET: {
 }
 op_UNTILCK: {
   bool met = false;
-  host_called = true;
+  round_ends = true;
   detail = test_command(*host_, A(), B(), met);
   if (detail != kCommandOk && detail != kCommandEndSlice) FAIL(RunError::CommandRefused);
   if (met) ip += 2;
@@ -1322,12 +1325,12 @@ out_of_back_jumps_at_line_end:  // a line-ending jump: the line is still to be c
 out_of_lines:
   if (lines.refill()) DISPATCH_NEXT();
   end = SliceEnd::LineEnd;
-  if (round != nullptr && !host_called) {
+  if (!round_ends) {
     SAVE();
-    if (Thread* const next = next_in_round(*round, *tp)) {
+    if (Thread* const next = next_in_round(*round, bytecode::word_op(*ip), tp->frame_count)) {
       tp = next;
       LOAD();
-      call_limit = tp->stack + (config_.stack - max_depth_);
+      call_limit = tp->stack + call_room;
       lines = lines_each;
       back_jumps = back_jumps_each;
       DISPATCH_NEXT();

@@ -221,8 +221,12 @@ class Machine {
 
   // Running at an ordinary instruction: a slice goes straight into the execute loop.
   bool starts_plainly(uint32_t thread) const;
+  bool starts_plainly(const Thread& t) const;  // of a loaded machine
   bool at_bare_end(const Thread& t) const;
-  Thread* next_in_round(Round& round, const Thread& done);
+  static bool is_bare_end(bytecode::Op op, uint32_t frame_count) {
+    return op == bytecode::Op::EXIT || (op == bytecode::Op::RET && frame_count == 1);
+  }
+  Thread* next_in_round(Round& round, bytecode::Op next_op, uint32_t frame_count);
   SliceResult run_other_slice(uint32_t thread, const Budget& budget);  // the rest of run_slice
   SliceResult step_over_breakpoint(Thread& t, const Budget& budget);
   SliceResult test_then_execute(Thread& t, const Budget& budget);
@@ -258,8 +262,9 @@ class Machine {
 };
 
 inline bool Machine::starts_plainly(uint32_t thread) const {
-  if (!loaded_ || thread >= thread_count_) return false;
-  const Thread& t = threads_[thread];
+  return loaded_ && thread < thread_count_ && starts_plainly(threads_[thread]);
+}
+inline bool Machine::starts_plainly(const Thread& t) const {
   return t.status == ThreadStatus::Running && !t.step_over &&
          bytecode::word_op(code_[t.pc]) != bytecode::Op::UNTILCK;
 }
@@ -268,19 +273,19 @@ inline SliceResult Machine::run_slice(uint32_t thread, const Budget& budget) {
   return run_other_slice(thread, budget);
 }
 inline bool Machine::at_bare_end(const Thread& t) const {
-  if (t.pc >= code_size_) return false;
-  const bytecode::Op op = bytecode::word_op(code_[t.pc]);
-  return op == bytecode::Op::EXIT || (op == bytecode::Op::RET && t.frame_count == 1);
+  return t.pc < code_size_ && is_bare_end(bytecode::word_op(code_[t.pc]), t.frame_count);
 }
 inline bool Machine::at_bare_end(uint32_t thread) const {
   return thread < thread_count_ && at_bare_end(threads_[thread]);
 }
-// After `done`'s line ended (saved, no host called): the round's next thread, or nullptr when
-// the round ends here (its last thread, a program's bare end next, a next one that cannot start).
-inline Machine::Thread* Machine::next_in_round(Round& round, const Thread& done) {
-  if (round.at + 1 >= round.count || at_bare_end(done)) return nullptr;
+// After a line ended without calling the host, its thread next at `next_op` in `frame_count`
+// frames: the round's next thread, or nullptr when the round ends here (its last thread, a
+// program's bare end next, a next one that cannot start). The machine is loaded: it runs.
+inline Machine::Thread* Machine::next_in_round(Round& round, bytecode::Op next_op,
+                                               uint32_t frame_count) {
+  if (round.at + 1 >= round.count || is_bare_end(next_op, frame_count)) return nullptr;
   const uint32_t thread = round.threads[round.at + 1];
-  if (!starts_plainly(thread)) return nullptr;
+  if (thread >= thread_count_ || !starts_plainly(threads_[thread])) return nullptr;
   ++round.at;
   return &threads_[thread];
 }

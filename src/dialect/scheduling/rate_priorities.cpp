@@ -44,18 +44,6 @@ void RatePriorities::release(uint32_t thread) {
   if (covers(thread)) held_ &= ~(1u << thread);
 }
 
-bool RatePriorities::due(uint32_t thread) const {
-  const uint64_t start = start_cycle_[thread];
-  // Most threads run every cycle: no division for them.
-  return cycle_ >= start && (priority_[thread] == 1 || (cycle_ - start) % priority_[thread] == 0);
-}
-
-bool RatePriorities::takes_turn(const vm::Machine& machine, uint32_t thread) const {
-  const vm::ThreadStatus status = machine.status(thread);
-  return (status == vm::ThreadStatus::Running || status == vm::ThreadStatus::Waiting) &&
-         !held(thread) && due(thread);
-}
-
 // The running threads due from `thread` on, up to the first waiting one, take their lines in
 // one round; a line that calls the host ends it, and the threads after are looked at again.
 Report RatePriorities::cycle(vm::Machine& machine) {
@@ -66,13 +54,16 @@ Report RatePriorities::cycle(vm::Machine& machine) {
   while (thread < end) {
     uint32_t turns[kMaxThreads];
     uint32_t count = 0;
+    uint32_t gathered = 0;  // the same threads, one bit each
     for (; thread < end; ++thread) {
-      if (!takes_turn(machine, thread)) continue;
-      if (machine.status(thread) != vm::ThreadStatus::Running) break;
+      const vm::ThreadStatus status = machine.status(thread);
+      if (!takes_turn(status, thread)) continue;
+      if (status != vm::ThreadStatus::Running) break;
       turns[count++] = thread;
+      gathered |= 1u << thread;
     }
     if (count > 0) {
-      thread = run_round(machine, turns, count, report) + 1;
+      thread = run_round(machine, turns, count, gathered, report) + 1;
     } else if (thread < end) {
       take_turn(machine, thread, report);  // a waiting thread
       ++thread;
@@ -82,13 +73,13 @@ Report RatePriorities::cycle(vm::Machine& machine) {
 }
 
 uint32_t RatePriorities::run_round(vm::Machine& machine, const uint32_t* turns, uint32_t count,
-                                   Report& report) {
+                                   uint32_t gathered, Report& report) {
   vm::Round round{turns, count};
   round_ = &round;
   const vm::SliceResult last = machine.run_round(round, vm::Budget{0, 1, config_.back_jump_cap});
   round_ = nullptr;
-  for (uint32_t i = 0; i < round.at; ++i) report.mark_ran(turns[i]);
   const uint32_t thread = turns[round.at];
+  report.mark_ran_all(gathered & ((1u << thread) - 1));  // the turns before round.at ran
   if (last.end == vm::SliceEnd::NotRunning) {
     take_turn(machine, thread, report);  // it cannot start in a round
   } else {

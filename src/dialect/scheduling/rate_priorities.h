@@ -54,10 +54,13 @@ class RatePriorities {
   void reset();
 
  private:
+  // Inline below: cycle() asks them of every thread, every cycle.
   bool due(uint32_t thread) const;
-  bool takes_turn(const vm::Machine& machine, uint32_t thread) const;  // this cycle
-  // Returns the last thread the round ran or looked at.
-  uint32_t run_round(vm::Machine& machine, const uint32_t* turns, uint32_t count, Report& report);
+  // This cycle, with the status the machine gives it; `thread` is one this policy covers.
+  bool takes_turn(vm::ThreadStatus status, uint32_t thread) const;
+  // Returns the last thread the round ran or looked at. `gathered`: the turns, one bit each.
+  uint32_t run_round(vm::Machine& machine, const uint32_t* turns, uint32_t count,
+                     uint32_t gathered, Report& report);
   void take_turn(vm::Machine& machine, uint32_t thread, Report& report);  // one line, alone
 
   RatePrioritiesConfig config_;
@@ -68,5 +71,16 @@ class RatePriorities {
   uint32_t running_ = kNoThread;
   const vm::Round* round_ = nullptr;  // inside run_round: the round, whose thread runs now
 };
+
+inline bool RatePriorities::due(uint32_t thread) const {
+  const uint64_t start = start_cycle_[thread];
+  // Most threads run every cycle: no division for them.
+  return cycle_ >= start && (priority_[thread] == 1 || (cycle_ - start) % priority_[thread] == 0);
+}
+
+inline bool RatePriorities::takes_turn(vm::ThreadStatus status, uint32_t thread) const {
+  return (status == vm::ThreadStatus::Running || status == vm::ThreadStatus::Waiting) &&
+         ((held_ >> thread) & 1u) == 0 && due(thread);
+}
 
 }  // namespace uprog::scheduling

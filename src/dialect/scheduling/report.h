@@ -22,6 +22,7 @@ class Report {
   void mark_ran(uint32_t thread) {
     if (thread < kMaxThreads) ran_ |= 1u << thread;
   }
+  void mark_ran_all(uint32_t threads) { ran_ |= threads; }  // one bit each
   void add(uint32_t thread, ThreadEvent event) {
     if (thread >= kMaxThreads) return;
     events_[thread] = static_cast<uint8_t>(events_[thread] | static_cast<uint8_t>(event));
