@@ -117,7 +117,7 @@ SliceResult Machine::run_other_slice(uint32_t thread, const Budget& budget) {
     case ThreadStatus::AtBreakpoint: return {SliceEnd::Breakpoint, 0};
     case ThreadStatus::Waiting:
       if (sleeping(thread)) return {SliceEnd::Waiting, 0};
-      t.status = ThreadStatus::Running;
+      set_status(t, ThreadStatus::Running);
       break;
     case ThreadStatus::Running: break;
   }
@@ -644,7 +644,7 @@ op_RET: {
     sp = f.stack_base;
     ip = code + f.return_pc;
     locals = tp->frames[tp->frame_count - 1].locals;
-    tp->status = f.saved_status;
+    set_status(*tp, f.saved_status);
     tp->wake_us = f.saved_wake_us;
     if (tp->status == ThreadStatus::Waiting) {
       end = SliceEnd::Waiting;
@@ -704,7 +704,7 @@ op_WAIT: {
   if (duration_us < 0) duration_us = 0;
   if (duration_us > INT32_MAX) duration_us = INT32_MAX;  // the clock's signed horizon
   tp->wake_us = host_->now_us() + static_cast<uint32_t>(duration_us);
-  tp->status = ThreadStatus::Waiting;
+  set_status(*tp, ThreadStatus::Waiting);
   ++ip;
   end = SliceEnd::Waiting;
   goto stop;
@@ -1284,7 +1284,7 @@ op_MULDIV: {
 }
 
 op_BREAK:
-  tp->status = ThreadStatus::AtBreakpoint;
+  set_status(*tp, ThreadStatus::AtBreakpoint);
   end = SliceEnd::Breakpoint;
   goto stop;
 

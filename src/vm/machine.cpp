@@ -134,6 +134,9 @@ LoadStatus Machine::load(const uint8_t* bytes, size_t size, const MachineConfig&
   }
   thread_count_ = config.threads;
   threads_ = a.take<Thread>(thread_count_);
+  for (uint32_t& mask : in_status_) mask = 0;
+  in_status_[static_cast<uint8_t>(ThreadStatus::Idle)] =
+      thread_count_ >= 32 ? ~0u : (1u << thread_count_) - 1;  // Thread{} is idle
   for (uint32_t i = 0; i < thread_count_; ++i) {
     Thread& t = threads_[i];
     t = Thread{};
@@ -159,7 +162,7 @@ LoadStatus Machine::load(const uint8_t* bytes, size_t size, const MachineConfig&
 }
 
 void Machine::reset_thread(Thread& t) {
-  t.status = ThreadStatus::Idle;
+  set_status(t, ThreadStatus::Idle);
   t.pc = 0;
   t.wake_us = 0;
   t.sp = t.stack;
@@ -213,7 +216,7 @@ RunError Machine::start(uint32_t thread, uint32_t routine, const Value* args, ui
   if (arg_count > config_.stack) return RunError::StackOverflow;
   for (uint32_t i = 0; i < arg_count; ++i) *t.sp++ = args[i];
   RunError error = RunError::None;
-  t.status = ThreadStatus::Running;
+  set_status(t, ThreadStatus::Running);
   if (!enter(t, routine, 0, 0, FrameKind::Call, error)) {
     reset_thread(t);
     return error;
@@ -239,7 +242,7 @@ RunError Machine::interrupt(uint32_t thread, uint32_t routine) {
   if (t.status == ThreadStatus::Idle || t.frame_count == 0) return start(thread, routine);
   RunError error = RunError::None;
   if (!enter(t, routine, t.pc, 0, FrameKind::Event, error)) return error;
-  t.status = ThreadStatus::Running;
+  set_status(t, ThreadStatus::Running);
   return RunError::None;
 }
 
@@ -248,16 +251,16 @@ void Machine::halt(uint32_t thread) {
   Thread& t = threads_[thread];
   if (t.status == ThreadStatus::Running || t.status == ThreadStatus::Waiting) {
     t.status_before_halt = t.status;  // a halted wait still ends at its time after resume()
-    t.status = ThreadStatus::Halted;
+    set_status(t, ThreadStatus::Halted);
   }
 }
 
 void Machine::resume(uint32_t thread) {
   if (thread >= thread_count_) return;
   Thread& t = threads_[thread];
-  if (t.status == ThreadStatus::Halted) t.status = t.status_before_halt;
+  if (t.status == ThreadStatus::Halted) set_status(t, t.status_before_halt);
   if (t.status == ThreadStatus::AtBreakpoint) {
-    t.status = ThreadStatus::Running;
+    set_status(t, ThreadStatus::Running);
     t.step_over = true;
   }
 }
@@ -403,7 +406,7 @@ bool Machine::raise(Thread& t, RunError error, int32_t detail) {
       return true;
     }
   }
-  t.status = ThreadStatus::Error;
+  set_status(t, ThreadStatus::Error);
   return false;
 }
 

@@ -126,6 +126,9 @@ class Machine {
   void kill(uint32_t thread);    // drops the thread's frames; it becomes idle
 
   ThreadStatus status(uint32_t thread) const;  // inline below: firmware asks it every cycle
+  // Threads 0..31 in status `s`, one bit each (a thread from 32 on is in none): a schedule
+  // reads which threads may take a turn without looking at each of them.
+  uint32_t threads_in(ThreadStatus s) const { return in_status_[static_cast<uint8_t>(s)]; }
   // In a timed wait whose time has not come: a slice would run nothing (inline below).
   bool sleeping(uint32_t thread);
   RunError last_error(uint32_t thread) const;
@@ -238,6 +241,7 @@ class Machine {
   // Delivers a run-time error: true when a try block caught it and the thread continues.
   bool raise(Thread& t, RunError error, int32_t detail);
   void reset_thread(Thread& t);
+  void set_status(Thread& t, ThreadStatus s);  // the status and threads_in() together
   bool is_instruction_start(uint32_t pc) const;
   const Breakpoint* find_breakpoint(uint32_t pc) const;
 
@@ -256,6 +260,7 @@ class Machine {
   uint32_t memory_words_ = 0;
   Thread* threads_ = nullptr;
   uint32_t thread_count_ = 0;
+  uint32_t in_status_[static_cast<uint8_t>(ThreadStatus::Error) + 1] = {};
   uint32_t max_depth_ = 0;  // the deepest any frame's expression stack goes (from the verifier)
   Breakpoint* breakpoints_ = nullptr;
   uint32_t breakpoint_count_ = 0;
@@ -288,6 +293,15 @@ inline Machine::Thread* Machine::next_in_round(Round& round, bytecode::Op next_o
   if (thread >= thread_count_ || !starts_plainly(threads_[thread])) return nullptr;
   ++round.at;
   return &threads_[thread];
+}
+inline void Machine::set_status(Thread& t, ThreadStatus s) {
+  const auto index = static_cast<size_t>(&t - threads_);
+  if (index < 32) {
+    const uint32_t bit = 1u << index;
+    in_status_[static_cast<uint8_t>(t.status)] &= ~bit;
+    in_status_[static_cast<uint8_t>(s)] |= bit;
+  }
+  t.status = s;
 }
 inline ThreadStatus Machine::status(uint32_t thread) const {
   return thread < thread_count_ ? threads_[thread].status : ThreadStatus::Idle;

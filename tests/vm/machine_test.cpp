@@ -633,5 +633,69 @@ main:
   EXPECT_EQ(p.global("done").i, 1);
 }
 
+// threads_in() names, for each status, the threads in it: through every change of status.
+void expect_masks_match(const vm::Machine& m) {
+  for (uint8_t s = 0; s <= static_cast<uint8_t>(ThreadStatus::Error); ++s) {
+    const auto status = static_cast<ThreadStatus>(s);
+    uint32_t expected = 0;
+    for (uint32_t t = 0; t < m.thread_count(); ++t)
+      if (m.status(t) == status) expected |= 1u << t;
+    EXPECT_EQ(m.threads_in(status), expected) << vm::thread_status_name(status);
+  }
+}
+
+TEST(Machine, ThreadsInEachStatusFollowEveryChange) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.global int "n" 1
+.routine function "main" in=0 out=0 entry=main
+.routine auto "on_event" in=0 out=0 entry=on_event
+main:
+  PUSHI 10
+  WAIT 1000
+  LDG n
+  PUSHI 0
+  DIVI
+  POP
+  RET
+on_event:
+  EOL
+  RET
+)"));
+  vm::Machine& m = p.machine;
+  expect_masks_match(m);
+  EXPECT_EQ(m.threads_in(ThreadStatus::Idle), 0xFu);  // four threads, all idle
+  m.start(1, 0);
+  m.start(2, 0);
+  EXPECT_EQ(m.threads_in(ThreadStatus::Running), 0x6u);
+  EXPECT_EQ(m.run_slice(1, Budget::unlimited()).end, SliceEnd::Waiting);
+  EXPECT_EQ(m.threads_in(ThreadStatus::Waiting), 0x2u);
+  expect_masks_match(m);
+  m.halt(1);
+  EXPECT_EQ(m.threads_in(ThreadStatus::Halted), 0x2u);
+  m.resume(1);  // back to its wait
+  EXPECT_EQ(m.threads_in(ThreadStatus::Waiting), 0x2u);
+  ASSERT_EQ(m.interrupt(1, 1), vm::RunError::None);  // the event runs, the wait held
+  EXPECT_EQ(m.threads_in(ThreadStatus::Running), 0x6u);
+  m.run_slice(1, Budget::of_lines(1));
+  EXPECT_EQ(m.run_slice(1, Budget::of_instructions(1)).end, SliceEnd::Waiting);  // its RET
+  EXPECT_EQ(m.threads_in(ThreadStatus::Waiting), 0x2u);
+  expect_masks_match(m);
+  ASSERT_TRUE(m.set_breakpoint(0));
+  m.start(3, 0);
+  EXPECT_EQ(m.run_slice(3, Budget::unlimited()).end, SliceEnd::Breakpoint);
+  EXPECT_EQ(m.threads_in(ThreadStatus::AtBreakpoint), 0x8u);
+  m.resume(3);
+  EXPECT_EQ(m.threads_in(ThreadStatus::Running), 0xCu);
+  p.host.clock_us = 20000;
+  EXPECT_EQ(m.run_slice(1, Budget::unlimited()).end, SliceEnd::Error);  // 0 / 0
+  EXPECT_EQ(m.threads_in(ThreadStatus::Error), 0x2u);
+  expect_masks_match(m);
+  m.kill(2);
+  m.kill(1);
+  EXPECT_EQ(m.threads_in(ThreadStatus::Idle), 0x7u);
+  expect_masks_match(m);
+}
+
 }  // namespace
 }  // namespace uprog::test

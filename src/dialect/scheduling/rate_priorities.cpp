@@ -10,12 +10,16 @@ RatePriorities::RatePriorities(RatePrioritiesConfig config) : config_(config) {
   if (config_.first_thread >= kMaxThreads) config_.thread_count = 0;
   if (config_.thread_count > kMaxThreads - config_.first_thread)
     config_.thread_count = kMaxThreads - config_.first_thread;
+  const uint32_t count = config_.thread_count;
+  covered_ = (count == kMaxThreads ? ~0u : (1u << count) - 1) << config_.first_thread;
   reset();
 }
 
 void RatePriorities::reset() {
   cycle_ = 0;
   held_ = 0;
+  slow_ = 0;
+  started_now_ = 0;
   for (uint32_t t = 0; t < kMaxThreads; ++t) {
     priority_[t] = 1;
     start_cycle_[t] = 0;
@@ -23,12 +27,18 @@ void RatePriorities::reset() {
 }
 
 void RatePriorities::started(uint32_t thread) {
-  if (covers(thread)) start_cycle_[thread] = cycle_ + 1;
+  if (!covers(thread)) return;
+  start_cycle_[thread] = cycle_ + 1;
+  started_now_ |= 1u << thread;
 }
 
 bool RatePriorities::set_priority(uint32_t thread, uint32_t priority) {
   if (!covers(thread) || priority < 1 || priority > kLowestRate) return false;
   priority_[thread] = priority;
+  if (priority == 1)
+    slow_ &= ~(1u << thread);
+  else
+    slow_ |= 1u << thread;
   return true;
 }
 
@@ -49,37 +59,35 @@ void RatePriorities::release(uint32_t thread) {
 Report RatePriorities::cycle(vm::Machine& machine) {
   Report report;
   ++cycle_;
-  const uint32_t end = config_.first_thread + config_.thread_count;
+  started_now_ = 0;
   uint32_t thread = config_.first_thread;
-  while (thread < end) {
-    uint32_t turns[kMaxThreads];
-    uint32_t count = 0;
-    uint32_t gathered = 0;  // the same threads, one bit each
-    for (; thread < end; ++thread) {
-      const vm::ThreadStatus status = machine.status(thread);
-      if (!takes_turn(status, thread)) continue;
-      if (status != vm::ThreadStatus::Running) break;
-      turns[count++] = thread;
-      gathered |= 1u << thread;
-    }
-    if (count > 0) {
-      thread = run_round(machine, turns, count, gathered, report) + 1;
-    } else if (thread < end) {
-      take_turn(machine, thread, report);  // a waiting thread
+  while (thread < kMaxThreads) {
+    const uint32_t ready = ready_from(machine, thread);
+    if (ready == 0) break;
+    const uint32_t waiting = ready & machine.threads_in(vm::ThreadStatus::Waiting);
+    const uint32_t before_waiting = waiting != 0 ? (waiting & -waiting) - 1 : ~0u;
+    if (const uint32_t round = ready & ~waiting & before_waiting; round != 0) {
+      thread = run_round(machine, round, report) + 1;
+    } else {
+      thread = static_cast<uint32_t>(std::countr_zero(waiting));
+      take_turn(machine, thread, report);
       ++thread;
     }
   }
   return report;
 }
 
-uint32_t RatePriorities::run_round(vm::Machine& machine, const uint32_t* turns, uint32_t count,
-                                   uint32_t gathered, Report& report) {
-  vm::Round round{turns, count};
+uint32_t RatePriorities::run_round(vm::Machine& machine, uint32_t turns, Report& report) {
+  uint32_t threads[kMaxThreads];
+  uint32_t count = 0;
+  for (uint32_t left = turns; left != 0; left &= left - 1)
+    threads[count++] = static_cast<uint32_t>(std::countr_zero(left));
+  vm::Round round{threads, count};
   round_ = &round;
   const vm::SliceResult last = machine.run_round(round, vm::Budget{0, 1, config_.back_jump_cap});
   round_ = nullptr;
-  const uint32_t thread = turns[round.at];
-  report.mark_ran_all(gathered & ((1u << thread) - 1));  // the turns before round.at ran
+  const uint32_t thread = threads[round.at];
+  report.mark_ran_all(turns & ((1u << thread) - 1));  // the turns before round.at ran
   if (last.end == vm::SliceEnd::NotRunning) {
     take_turn(machine, thread, report);  // it cannot start in a round
   } else {

@@ -2,6 +2,7 @@
 // in thread order; priority k makes a thread due every k-th cycle from its start; held threads
 // wait until released. Akribis's schedule (threads 1..8, an event routine holds 2..8).
 #pragma once
+#include <bit>
 #include <cstdint>
 
 #include "dialect/scheduling/report.h"
@@ -54,13 +55,10 @@ class RatePriorities {
   void reset();
 
  private:
-  // Inline below: cycle() asks them of every thread, every cycle.
-  bool due(uint32_t thread) const;
-  // This cycle, with the status the machine gives it; `thread` is one this policy covers.
-  bool takes_turn(vm::ThreadStatus status, uint32_t thread) const;
-  // Returns the last thread the round ran or looked at. `gathered`: the turns, one bit each.
-  uint32_t run_round(vm::Machine& machine, const uint32_t* turns, uint32_t count,
-                     uint32_t gathered, Report& report);
+  // The threads from `thread` on that take a turn now, one bit each (inline below).
+  uint32_t ready_from(const vm::Machine& machine, uint32_t thread) const;
+  // Returns the last thread the round ran or looked at. `turns`: one bit each.
+  uint32_t run_round(vm::Machine& machine, uint32_t turns, Report& report);
   void take_turn(vm::Machine& machine, uint32_t thread, Report& report);  // one line, alone
 
   RatePrioritiesConfig config_;
@@ -68,19 +66,23 @@ class RatePriorities {
   uint64_t start_cycle_[kMaxThreads] = {};
   uint32_t priority_[kMaxThreads] = {};
   uint32_t held_ = 0;
+  uint32_t covered_ = 0;      // the threads scheduled, one bit each
+  uint32_t slow_ = 0;         // those whose priority is not 1
+  uint32_t started_now_ = 0;  // started in this cycle: first due in the next
   uint32_t running_ = kNoThread;
   const vm::Round* round_ = nullptr;  // inside run_round: the round, whose thread runs now
 };
 
-inline bool RatePriorities::due(uint32_t thread) const {
-  const uint64_t start = start_cycle_[thread];
-  // Most threads run every cycle: no division for them.
-  return cycle_ >= start && (priority_[thread] == 1 || (cycle_ - start) % priority_[thread] == 0);
-}
-
-inline bool RatePriorities::takes_turn(vm::ThreadStatus status, uint32_t thread) const {
-  return (status == vm::ThreadStatus::Running || status == vm::ThreadStatus::Waiting) &&
-         ((held_ >> thread) & 1u) == 0 && due(thread);
+inline uint32_t RatePriorities::ready_from(const vm::Machine& machine, uint32_t thread) const {
+  const uint32_t active = machine.threads_in(vm::ThreadStatus::Running) |
+                          machine.threads_in(vm::ThreadStatus::Waiting);
+  uint32_t ready = active & covered_ & ~held_ & ~started_now_ & (~0u << thread);
+  // A thread of priority k is due every k-th cycle from its start; most are due every cycle.
+  for (uint32_t slow = ready & slow_; slow != 0; slow &= slow - 1) {
+    const auto t = static_cast<uint32_t>(std::countr_zero(slow));
+    if ((cycle_ - start_cycle_[t]) % priority_[t] != 0) ready &= ~(1u << t);
+  }
+  return ready;
 }
 
 }  // namespace uprog::scheduling
