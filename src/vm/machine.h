@@ -2,6 +2,7 @@
 // try/catch, waits, breakpoints and drive commands through the Host. Freestanding: all memory
 // comes from one block the caller gives to load(); nothing is allocated afterwards.
 #pragma once
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -53,11 +54,11 @@ enum class SliceEnd : uint8_t {
   NotRunning,   // the thread was idle
 };
 
-// The threads of a round (Machine::run_round) in their order, and how far it went.
+// The threads of a round (Machine::run_round), which take their turns in ascending order, and
+// how far it went.
 struct Round {
-  const uint32_t* threads = nullptr;
-  uint32_t count = 0;
-  uint32_t at = 0;  // the index of the slice running, or of the last one run
+  uint32_t threads = 0;  // thread n is bit n
+  uint32_t at = 0;       // the thread running, or the last one run or looked at
 };
 
 struct SliceResult {
@@ -109,13 +110,14 @@ class Machine {
   // one-line turns take several each cycle.
   SliceResult run_slice(uint32_t thread, const Budget& budget);
 
-  // A drive's round of one-line turns: a slice of `budget` (no instruction count) for
-  // round.threads[0], then [1], ... in one entry into the execute loop, which goes on to the next
-  // thread only while each slice ends at a line end, without a call to the host (which may have
-  // changed which threads run next) and not before a program's bare end. round.at is the index
-  // of the last slice run; its result is returned, the earlier ones ended at their line end.
-  // NotRunning, with nothing run, when round.threads[0] is not running at an ordinary
-  // instruction (waiting, stopped, at a breakpoint or UNTILCK): run_slice takes those.
+  // A drive's round of one-line turns: a slice of `budget` (no instruction count) for the
+  // round's lowest thread, then the next, ... in one entry into the execute loop, which goes on
+  // to the next thread only while each slice ends at a line end, without a call to the host
+  // (which may have changed which threads run next) and not before a program's bare end, nor
+  // before a thread that is not running at an ordinary instruction (waiting, stopped, at a
+  // breakpoint or UNTILCK). round.at is the last thread run; its result is returned, the
+  // earlier ones ended at their line end. NotRunning, with nothing run and round.at the lowest
+  // thread, when that one cannot start in a round: run_slice takes those.
   SliceResult run_round(Round& round, const Budget& budget);
   // Where the next instruction ends the program without being part of any line: an EXIT, or a
   // RET from the outermost frame.
@@ -288,10 +290,12 @@ inline bool Machine::at_bare_end(uint32_t thread) const {
 // program's bare end next, a next one that cannot start). The machine is loaded: it runs.
 inline Machine::Thread* Machine::next_in_round(Round& round, bytecode::Op next_op,
                                                uint32_t frame_count) {
-  if (round.at + 1 >= round.count || is_bare_end(next_op, frame_count)) return nullptr;
-  const uint32_t thread = round.threads[round.at + 1];
-  if (thread >= thread_count_ || !starts_plainly(threads_[thread])) return nullptr;
-  ++round.at;
+  const uint32_t later = round.threads & ~((2u << round.at) - 1);  // 2u << 31 is 0: none
+  if (later == 0 || is_bare_end(next_op, frame_count)) return nullptr;
+  // run_round left only existing threads in the round.
+  const auto thread = static_cast<uint32_t>(std::countr_zero(later));
+  if (!starts_plainly(threads_[thread])) return nullptr;
+  round.at = thread;
   return &threads_[thread];
 }
 inline void Machine::set_status(Thread& t, ThreadStatus s) {

@@ -88,16 +88,17 @@ struct Turns : LoadedProgram {
   }
 };
 
-const uint32_t kThreads[] = {1, 2, 3};
+constexpr uint32_t kThreads = 0b1110;  // threads 1, 2 and 3
+constexpr uint32_t kFirstTwo = 0b0110;
 
 TEST(Round, RunsEachThreadsLineInOrder) {
   Turns p;
   ASSERT_TRUE(p.begin({kOne, kTwo, kThree}));
-  Round round{kThreads, 3};
+  Round round{kThreads};
   const auto r = p.machine.run_round(round, kOneLine);
   EXPECT_EQ(r.end, SliceEnd::LineEnd);
   EXPECT_EQ(r.lines, 1u);
-  EXPECT_EQ(round.at, 2u);
+  EXPECT_EQ(round.at, 3u);
   EXPECT_EQ(p.global("order").i, 123);
   // Each thread stopped just after its own EOL, at its JMP, as a slice of one line leaves it.
   EXPECT_EQ(p.machine.pc(1), 7u);
@@ -110,10 +111,10 @@ TEST(Round, RunsEachThreadsLineInOrder) {
 TEST(Round, ALineThatCallsTheHostEndsIt) {
   Turns p;
   ASSERT_TRUE(p.begin({kOne, kReads, kThree}));
-  Round round{kThreads, 3};
+  Round round{kThreads};
   const auto r = p.machine.run_round(round, kOneLine);
   EXPECT_EQ(r.end, SliceEnd::LineEnd);
-  EXPECT_EQ(round.at, 1u);  // thread 2's line ran whole; thread 3 is the schedule's to look at again
+  EXPECT_EQ(round.at, 2u);  // thread 2's line ran whole; thread 3 is the schedule's to look at again
   EXPECT_EQ(p.global("order").i, 12);
 }
 
@@ -121,26 +122,39 @@ TEST(Round, ItEndsBeforeAThreadThatCannotStartInIt) {
   Turns p;
   ASSERT_TRUE(p.begin({kOne, kTwo, kThree}));
   p.machine.halt(2);
-  Round round{kThreads, 3};
+  Round round{kThreads};
   EXPECT_EQ(p.machine.run_round(round, kOneLine).end, SliceEnd::LineEnd);
-  EXPECT_EQ(round.at, 0u);
+  EXPECT_EQ(round.at, 1u);
   EXPECT_EQ(p.global("order").i, 1);
   // Its first thread not running: nothing runs.
-  const uint32_t from_two[] = {2, 3};
-  Round second{from_two, 2};
+  Round second{0b1100};  // threads 2 and 3
   const auto r = p.machine.run_round(second, kOneLine);
   EXPECT_EQ(r.end, SliceEnd::NotRunning);
   EXPECT_EQ(r.executed, 0u);
-  EXPECT_EQ(second.at, 0u);
+  EXPECT_EQ(second.at, 2u);
   EXPECT_EQ(p.global("order").i, 1);
+}
+
+// A thread the machine does not have (it has four) ends the round as a stopped one does.
+TEST(Round, ItEndsBeforeAThreadTheMachineLacks) {
+  Turns p;
+  ASSERT_TRUE(p.begin({kOne, kTwo}));
+  Round round{kFirstTwo | 1u << 9};
+  EXPECT_EQ(p.machine.run_round(round, kOneLine).end, SliceEnd::LineEnd);
+  EXPECT_EQ(round.at, 2u);
+  EXPECT_EQ(p.global("order").i, 12);
+  Round beyond{1u << 31};
+  EXPECT_EQ(p.machine.run_round(beyond, kOneLine).end, SliceEnd::NotRunning);
+  EXPECT_EQ(beyond.at, 31u);
+  EXPECT_EQ(p.global("order").i, 12);
 }
 
 TEST(Round, ItEndsBeforeAProgramsBareEnd) {
   Turns p;
   ASSERT_TRUE(p.begin({kEnds, kTwo}));
-  Round round{kThreads, 2};
+  Round round{kFirstTwo};
   EXPECT_EQ(p.machine.run_round(round, kOneLine).end, SliceEnd::LineEnd);
-  EXPECT_EQ(round.at, 0u);
+  EXPECT_EQ(round.at, 1u);
   EXPECT_TRUE(p.machine.at_bare_end(1));  // the EXIT is the schedule's to run with the line
   EXPECT_EQ(p.machine.status(1), vm::ThreadStatus::Running);
   EXPECT_EQ(p.global("order").i, 1);
@@ -149,16 +163,16 @@ TEST(Round, ItEndsBeforeAProgramsBareEnd) {
 TEST(Round, ASliceThatEndsOtherwiseEndsIt) {
   Turns p;
   ASSERT_TRUE(p.begin({kFails, kTwo}));
-  Round round{kThreads, 2};
+  Round round{kFirstTwo};
   EXPECT_EQ(p.machine.run_round(round, kOneLine).end, SliceEnd::Error);
-  EXPECT_EQ(round.at, 0u);
+  EXPECT_EQ(round.at, 1u);
   EXPECT_EQ(p.global("order").i, 0);
 }
 
 TEST(Round, ItCountsNoInstructions) {
   Turns p;
   ASSERT_TRUE(p.begin({kOne, kTwo}));
-  Round round{kThreads, 2};
+  Round round{kFirstTwo};
   EXPECT_EQ(p.machine.run_round(round, Budget{10, 1, 1000}).end, SliceEnd::NotRunning);
   EXPECT_EQ(p.global("order").i, 0);
 }
@@ -195,10 +209,10 @@ TEST(Round, ASliceRunFromInsideAHostCallRunsAlone) {
   ASSERT_EQ(machine.start(1, kOne), vm::RunError::None);
   ASSERT_EQ(machine.start(2, kReads), vm::RunError::None);
   ASSERT_EQ(machine.start(3, kThree), vm::RunError::None);
-  Round round{kThreads, 3};
+  Round round{kThreads};
   EXPECT_EQ(machine.run_round(round, kOneLine).end, SliceEnd::LineEnd);
   EXPECT_EQ(host.nested.end, SliceEnd::LineEnd);
-  EXPECT_EQ(round.at, 1u);
+  EXPECT_EQ(round.at, 2u);  // thread 2, whose read ran thread 3
   Value order;
   ASSERT_TRUE(machine.read_global(static_cast<uint32_t>(image.find_global("order")), 0, order));
   // 1, then thread 2's digit, then thread 3's line inside thread 2's read, and no more.

@@ -78,15 +78,11 @@ Report RatePriorities::cycle(vm::Machine& machine) {
 }
 
 uint32_t RatePriorities::run_round(vm::Machine& machine, uint32_t turns, Report& report) {
-  uint32_t threads[kMaxThreads];
-  uint32_t count = 0;
-  for (uint32_t left = turns; left != 0; left &= left - 1)
-    threads[count++] = static_cast<uint32_t>(std::countr_zero(left));
-  vm::Round round{threads, count};
+  vm::Round round{turns};
   round_ = &round;
   const vm::SliceResult last = machine.run_round(round, vm::Budget{0, 1, config_.back_jump_cap});
   round_ = nullptr;
-  const uint32_t thread = threads[round.at];
+  const uint32_t thread = round.at;
   report.mark_ran_all(turns & ((1u << thread) - 1));  // the turns before round.at ran
   if (last.end == vm::SliceEnd::NotRunning) {
     take_turn(machine, thread, report);  // it cannot start in a round

@@ -46,7 +46,7 @@ class RatePriorities {
   bool held(uint32_t thread) const { return covers(thread) && ((held_ >> thread) & 1u); }
 
   // The thread whose line runs now (inside cycle(), for the host's callbacks), else kNoThread.
-  uint32_t running() const { return round_ != nullptr ? round_->threads[round_->at] : running_; }
+  uint32_t running() const { return round_ != nullptr ? round_->at : running_; }
   bool covers(uint32_t thread) const {
     return thread >= config_.first_thread && thread - config_.first_thread < config_.thread_count;
   }
