@@ -297,17 +297,11 @@ uint32_t Axis::status_register() const {
 void Axis::set_input_level(int n, bool high) {
   if (n < 1 || n > kInputCount) return;
   remove_position_switch(n);
-  input_levels_[n - 1] = high;
+  set_level_bit(n, high);
   inputs_changed_ = true;
 }
 
-bool Axis::input_level(int n) const { return n >= 1 && n <= kInputCount && input_levels_[n - 1]; }
-
-uint32_t Axis::input_level_bits() const {
-  uint32_t bits = 0;
-  for (int n = 0; n < kInputCount; ++n) bits |= input_levels_[n] ? 1u << n : 0u;
-  return bits;
-}
+bool Axis::input_level(int n) const { return n >= 1 && n <= kInputCount && level_bit(n); }
 
 void Axis::place_position_switch(int n, double from_counts, double to_counts) {
   if (n < 1 || n > kInputCount) return;
@@ -329,22 +323,22 @@ void Axis::follow_position_switches() {
     const PositionSwitch& sw = switches_[n - 1];
     if (!sw.placed) continue;
     const bool high = at >= sw.from_counts && at <= sw.to_counts;
-    if (high == input_levels_[n - 1]) continue;
-    input_levels_[n - 1] = high;
+    if (high == level_bit(n)) continue;
+    set_level_bit(n, high);
     inputs_changed_ = true;
   }
 }
 
 bool Axis::input_active(int n) const {
   if (n < 1 || n > kInputCount) return false;
-  return drive::input_active(params_.input_logic[n - 1], input_levels_[n - 1]);
+  return drive::input_active(params_.input_logic[n - 1], level_bit(n));
 }
 
 uint32_t Axis::input_port() const {
   uint32_t bits = 0;
   for (int n = 1; n <= kInputCount; ++n) {
     const auto i = static_cast<size_t>(n - 1);
-    if (input_levels_[i]) bits |= 1u << (kIpLevelShift + static_cast<uint32_t>(n) - 1);
+    if (level_bit(n)) bits |= 1u << (kIpLevelShift + static_cast<uint32_t>(n) - 1);
     if (!input_active(n)) continue;
     const InputFunction f = input_function(params_.input_logic[i]);
     if (f == InputFunction::kGeneralPurpose) bits |= kIpGeneralPurpose1 << (n - 1);

@@ -117,7 +117,7 @@ class Axis {
   // --- digital I/O ---
   void set_input_level(int n, bool high);   // the electrical level of input n (1..6)
   bool input_level(int n) const;
-  uint32_t input_level_bits() const;        // every input's level, bit n-1 for input n
+  uint32_t input_level_bits() const { return input_levels_; }  // bit n-1 for input n
   bool input_active(int n) const;           // the logical state of input n (its IL polarity)
   uint32_t input_port() const;              // IP (inputs.h, InputPortBits)
   void set_output_port(uint32_t bits) { outputs_ = bits & 0xFu; }  // OP
@@ -246,7 +246,11 @@ class Axis {
   double velocity_command_counts_per_s_ = 0.0;
   double above_continuous_s_ = 0.0;
 
-  std::array<bool, kInputCount> input_levels_{};
+  uint32_t input_levels_ = 0;  // input n's level is bit n-1 (firmware reads them every cycle)
+  bool level_bit(int n) const { return (input_levels_ >> (n - 1)) & 1u; }
+  void set_level_bit(int n, bool high) {
+    input_levels_ = (input_levels_ & ~(1u << (n - 1))) | (high ? 1u << (n - 1) : 0u);
+  }
   std::array<bool, kInputCount> input_was_active_{};
   // scan_inputs runs only when an input or its IL may have changed, or an inhibit holds the
   // motor off; it leaves here what enforce_limits needs, so the usual cycle reads no input.

@@ -292,11 +292,13 @@ inline Machine::Thread* Machine::next_in_round(Round& round, bytecode::Op next_o
                                                uint32_t frame_count) {
   const uint32_t later = round.threads & ~((2u << round.at) - 1);  // 2u << 31 is 0: none
   if (later == 0 || is_bare_end(next_op, frame_count)) return nullptr;
-  // run_round left only existing threads in the round.
+  // run_round left only running threads in the round, and a line that does not call the host
+  // changes no other thread's status: the next one is still running.
   const auto thread = static_cast<uint32_t>(std::countr_zero(later));
-  if (!starts_plainly(threads_[thread])) return nullptr;
+  Thread& t = threads_[thread];
+  if (t.step_over || bytecode::word_op(code_[t.pc]) == bytecode::Op::UNTILCK) return nullptr;
   round.at = thread;
-  return &threads_[thread];
+  return &t;
 }
 inline void Machine::set_status(Thread& t, ThreadStatus s) {
   const auto index = static_cast<size_t>(&t - threads_);
