@@ -100,18 +100,6 @@ CommandStatus test_command(Host& host, uint32_t a, uint32_t b, bool& met) {
 
 }  // namespace
 
-SliceResult Machine::run_round(Round& round, const Budget& budget) {
-  if (round.threads == 0) return {SliceEnd::NotRunning, 0};
-  round.at = static_cast<uint32_t>(std::countr_zero(round.threads));
-  // The round ends before its first thread that is not running (a thread the machine lacks is
-  // in no status), once here: a line that does not call the host changes no other thread.
-  const uint32_t stopped = round.threads & ~threads_in(ThreadStatus::Running);
-  round.threads &= (stopped & (0u - stopped)) - 1;  // none stopped: ~0u, all of them
-  if (round.threads == 0 || budget.instructions != 0 || !starts_plainly(threads_[round.at]))
-    return {SliceEnd::NotRunning, 0};
-  return execute(threads_[round.at], budget, &round);
-}
-
 SliceResult Machine::run_other_slice(uint32_t thread, const Budget& budget) {
   if (!loaded_ || thread >= thread_count_) return {SliceEnd::NotRunning, 0};
   Thread& t = threads_[thread];

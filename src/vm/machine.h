@@ -279,6 +279,17 @@ inline SliceResult Machine::run_slice(uint32_t thread, const Budget& budget) {
   if (starts_plainly(thread)) return execute(threads_[thread], budget);
   return run_other_slice(thread, budget);
 }
+inline SliceResult Machine::run_round(Round& round, const Budget& budget) {
+  if (round.threads == 0) return {SliceEnd::NotRunning, 0};
+  round.at = static_cast<uint32_t>(std::countr_zero(round.threads));
+  // The round ends before its first thread that is not running (a thread the machine lacks is
+  // in no status), once here: a line that does not call the host changes no other thread.
+  const uint32_t stopped = round.threads & ~threads_in(ThreadStatus::Running);
+  round.threads &= (stopped & (0u - stopped)) - 1;  // none stopped: ~0u, all of them
+  if (round.threads == 0 || budget.instructions != 0 || !starts_plainly(threads_[round.at]))
+    return {SliceEnd::NotRunning, 0};
+  return execute(threads_[round.at], budget, &round);
+}
 inline bool Machine::at_bare_end(const Thread& t) const {
   return t.pc < code_size_ && is_bare_end(bytecode::word_op(code_[t.pc]), t.frame_count);
 }

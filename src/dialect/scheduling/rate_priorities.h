@@ -5,6 +5,7 @@
 #include <bit>
 #include <cstdint>
 
+#include "dialect/scheduling/line_step.h"
 #include "dialect/scheduling/report.h"
 #include "vm/machine.h"
 
@@ -83,6 +84,46 @@ inline uint32_t RatePriorities::ready_from(const vm::Machine& machine, uint32_t 
     if ((cycle_ - start_cycle_[t]) % priority_[t] != 0) ready &= ~(1u << t);
   }
   return ready;
+}
+
+// The running threads due from `thread` on, up to the first waiting one, take their lines in
+// one round; a line that calls the host ends it, and the threads after are looked at again.
+inline Report RatePriorities::cycle(vm::Machine& machine) {
+  Report report;
+  ++cycle_;
+  started_now_ = 0;
+  uint32_t thread = config_.first_thread;
+  while (thread < kMaxThreads) {
+    const uint32_t ready = ready_from(machine, thread);
+    if (ready == 0) break;
+    const uint32_t waiting = ready & machine.threads_in(vm::ThreadStatus::Waiting);
+    const uint32_t before_waiting = waiting != 0 ? (waiting & -waiting) - 1 : ~0u;
+    if (const uint32_t round = ready & ~waiting & before_waiting; round != 0) {
+      thread = run_round(machine, round, report) + 1;
+    } else {
+      thread = static_cast<uint32_t>(std::countr_zero(waiting));
+      take_turn(machine, thread, report);
+      ++thread;
+    }
+  }
+  return report;
+}
+
+inline uint32_t RatePriorities::run_round(vm::Machine& machine, uint32_t turns, Report& report) {
+  vm::Round round{turns};
+  round_ = &round;
+  const vm::SliceResult last = machine.run_round(round, vm::Budget{0, 1, config_.back_jump_cap});
+  round_ = nullptr;
+  const uint32_t thread = round.at;
+  report.mark_ran_all(turns & ((1u << thread) - 1));  // the turns before round.at ran
+  if (last.end == vm::SliceEnd::NotRunning) {
+    take_turn(machine, thread, report);  // it cannot start in a round
+  } else {
+    running_ = thread;
+    report_step(report, thread, finish_step(machine, thread, last, true, config_.back_jump_cap));
+    running_ = kNoThread;
+  }
+  return thread;
 }
 
 }  // namespace uprog::scheduling

@@ -46,7 +46,6 @@ void Firmware::latch_events(uint32_t drive_events) {
 }
 
 void Firmware::take_event() {
-  if (latched_ == 0 || !program_) return;
   const int32_t s = program_status(1);
   if (s != 1 && s != 2) return;
   if (!event_frames_.empty() && (event_mask_ & kNestingBit) == 0) return;
@@ -67,7 +66,6 @@ void Firmware::take_event() {
 // An event function has returned when thread 1 is back below its frame; the last one out
 // releases the held threads. An error or a halt of thread 1 ends them all.
 void Firmware::check_event_return() {
-  if (event_frames_.empty()) return;
   const vm::Machine& m = program_->machine();
   const int32_t s = program_status(1);
   if (s != 1 && s != 2 && s != 6) {

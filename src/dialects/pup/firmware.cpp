@@ -144,13 +144,14 @@ void Firmware::cycle(const std::vector<uint32_t>& drive_events) {
   }
   if (!program_) return;
   latch_events(drive_events.empty() ? 0 : drive_events[0]);
-  take_event();
+  // Most cycles have no event to take or to return from, and no thread event to react to.
+  if (latched_ != 0) take_event();
   const scheduling::Report report = schedule_.cycle(program_->machine());
   for (uint32_t t = 1; report.threads_with_events() != 0 && t <= kThreads; ++t) {
     if (report.has(t, scheduling::ThreadEvent::Error)) on_thread_error(t);
   }
-  check_event_return();
-  after_cycle(report);
+  if (!event_frames_.empty()) check_event_return();
+  if ((report.threads_with_events() | stepping_) != 0) after_cycle(report);
 }
 
 void Firmware::on_thread_error(uint32_t thread) {

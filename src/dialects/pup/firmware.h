@@ -76,8 +76,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   // --- events.cpp: latching, masks, entering thread 1 and leaving ---
   void latch_events(uint32_t drive_events);
   void latch(int32_t id);
-  void take_event();
-  void check_event_return();
+  void take_event();          // cycle() calls it with an event latched
+  void check_event_return();  // ... and this one inside an event routine
   void reset_events();
 
   // --- program_control.cpp: single steps, breakpoints, the call stack ---
@@ -88,6 +88,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::string call_stack(uint32_t thread) const;
   int32_t set_pointer(uint32_t thread, int32_t line);
   int32_t expression_stack(uint32_t thread, std::string& list) const;
+  // cycle() calls it when a thread had an event or one is stepping.
   void after_cycle(const scheduling::Report& report);
   // A line of ProgBreaks in any thread's list: a trap elsewhere is the debugger's to handle.
   bool break_line_in_use(uint32_t line) const;

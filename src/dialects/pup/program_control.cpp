@@ -24,7 +24,6 @@ int32_t Firmware::single_step(uint32_t thread, int32_t kind) {
 }
 
 void Firmware::after_cycle(const scheduling::Report& report) {
-  if ((report.threads_with_events() | stepping_) == 0) return;  // most cycles
   vm::Machine& m = program_->machine();
   for (uint32_t t = 1; t <= kThreads; ++t) {
     const uint32_t bit = 1u << t;
