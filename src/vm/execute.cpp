@@ -380,8 +380,13 @@ count_lines_then_jump:
   }
   JUMP_TO(code + A());
   word = *ip;
-  // Into the next copy, as a loop's back edge goes: its test without a dispatch of its own.
-  if (bytecode::word_op(word) == Op::JLINES && !counted) goto op_JLINES;
+  // Into the next copy, as a loop's back edge goes: JLINES's test and jump without a dispatch
+  // of its own. Only a copy ends in these jumps, and its JLINES found no count and no breakpoint
+  // set, which nothing in a copy changes.
+  if (bytecode::word_op(word) == Op::JLINES && lines.now > B()) {
+    JUMP_TO(code + A());
+    word = *ip;
+  }
   goto* dispatch[word & 0xFFu];
 op_LDGX: {
   const GlobalSlot& g = globals_[A()];
@@ -947,13 +952,22 @@ op_JEQGK:
 op_JNEGK:
 op_JLTGK:
 op_JLEGK:
-op_JGTGK:
 op_JGEGK: {
   const uint32_t pair = B();
   const uint32_t outcome =
       int_outcome(GLOBAL(bytecode::packed_first(pair)).i, constants_[bytecode::packed_second(pair)].i);
   const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JEQGK);
   if (holds(how, outcome)) JUMP_TO(code + A()); else ip += 2;
+  DISPATCH();
+}
+// A counting loop's exit test (`for (K = 1, K <= N, ...)`), taken every turn: its own handler,
+// without the family's outcome and table.
+op_JGTGK: {
+  const uint32_t pair = B();
+  if (GLOBAL(bytecode::packed_first(pair)).i > constants_[bytecode::packed_second(pair)].i)
+    JUMP_TO(code + A());
+  else
+    ip += 2;
   DISPATCH();
 }
 // "Jump unless", as the float forms on locals: NaN compares false and falls through.

@@ -197,6 +197,46 @@ TEST(Machine, LineRunTakesTheLinesUnderACountOrABreakpoint) {
   EXPECT_EQ(p.global("fast").i, 1);
 }
 
+// A loop's back edge from fused code to its own JLINES (the copy of a CUP loop) goes straight
+// into the copy again when more lines are left than a path runs, and otherwise to the lines one
+// by one. A path runs five lines: the store's mark counts one, the JMPLN four.
+TEST(Machine, FusedLoopReentersItsCopyOnlyWithMoreLinesLeftThanAPathRuns) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.global int "a" 1
+.global int "fast" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  JLINES fused 5
+  LDG.eol a
+  PUSHI.eol 1
+  ADDI.eol
+  STG.eol a
+  JMP.eol main
+fused:
+  INCG fast 1
+  LDG a
+  PUSHI 1
+  ADDI
+  STG.eol a
+  JMPLN main 4
+)"));
+  p.machine.start(0, 0);
+  // 11 lines: the copy twice (6 left, then 1), then one line, LDG's.
+  auto r = p.machine.run_slice(0, Budget::of_lines(11));
+  EXPECT_EQ(r.lines, 11u);
+  EXPECT_EQ(p.global("a").i, 2);
+  EXPECT_EQ(p.global("fast").i, 2);
+  EXPECT_EQ(p.machine.pc(0), 3u);
+  p.machine.start(0, 0);
+  // 10 lines: the copy once, then exactly five left, which a path could spend: the lines.
+  r = p.machine.run_slice(0, Budget::of_lines(10));
+  EXPECT_EQ(r.lines, 10u);
+  EXPECT_EQ(p.global("a").i, 4);
+  EXPECT_EQ(p.global("fast").i, 3);
+  EXPECT_EQ(p.machine.pc(0), 0u);
+}
+
 // A call counts as a jump back, so that a slice of a line budget and a cap on jumps back ends
 // in a call tree that never jumps back (routines calling the next forward, as the fuzzer's
 // recursive fib without a line did for 10 s). The slice ends at the callee's entry.
