@@ -332,24 +332,24 @@ op_STL:
   ++ip;
   DISPATCH();
 op_LDG:
-  *sp++ = globals_[A()].data[0];
+  *sp++ = global_data_[A()][0];
   ++ip;
   DISPATCH();
 op_STG:
-  globals_[A()].data[0] = *--sp;
+  global_data_[A()][0] = *--sp;
   ++ip;
   DISPATCH();
 op_LDGE:
-  *sp++ = globals_[A()].data[B()];
+  *sp++ = global_data_[A()][B()];
   ip += 2;
   DISPATCH();
 op_STGE:
-  globals_[A()].data[B()] = *--sp;
+  global_data_[A()][B()] = *--sp;
   ip += 2;
   DISPATCH();
 // Plain, not among the superinstructions: it may end a line (PDL's `a=b;`).
 op_MOVG:
-  globals_[A()].data[0] = globals_[B()].data[0];
+  global_data_[A()][0] = global_data_[B()][0];
   ip += 2;
   DISPATCH();
 // The fused copy of a run of lines, when no count or breakpoint can stop the slice inside it
@@ -365,7 +365,7 @@ op_JLINES:
 // on the way (INCGEOL's add, its line end counted with the rest).
 op_INCGJMPLN: {
   const uint32_t step = B();
-  int32_t& counter = globals_[bytecode::loop_step_global(step)].data[0].i;
+  int32_t& counter = global_data_[bytecode::loop_step_global(step)][0].i;
   counter = arith::wrap_add(counter, bytecode::loop_step_step(step));
   line_ends = bytecode::loop_step_lines(step);
   goto count_lines_then_jump;
@@ -389,18 +389,16 @@ count_lines_then_jump:
   }
   goto* dispatch[word & 0xFFu];
 op_LDGX: {
-  const GlobalSlot& g = globals_[A()];
   const auto index = static_cast<uint32_t>(sp[-1].i);
-  if (index >= g.length) FAIL(RunError::IndexOutOfRange);
-  sp[-1] = g.data[index];
+  if (index >= global_length_[A()]) FAIL(RunError::IndexOutOfRange);
+  sp[-1] = global_data_[A()][index];
   ++ip;
   DISPATCH();
 }
 op_STGX: {
-  const GlobalSlot& g = globals_[A()];
   const auto index = static_cast<uint32_t>(sp[-2].i);
-  if (index >= g.length) FAIL(RunError::IndexOutOfRange);
-  g.data[index] = sp[-1];
+  if (index >= global_length_[A()]) FAIL(RunError::IndexOutOfRange);
+  global_data_[A()][index] = sp[-1];
   sp -= 2;
   ++ip;
   DISPATCH();
@@ -409,7 +407,7 @@ op_LDGW: {
   const uint32_t b = B();
   const uint32_t i = static_cast<uint32_t>(sp[-1].i) - 1u;  // 1..size: 0..size - 1
   if (i >= bytecode::window_size(b)) FAIL(RunError::IndexOutOfRange);
-  sp[-1] = globals_[A()].data[bytecode::window_first(b) + i];
+  sp[-1] = global_data_[A()][bytecode::window_first(b) + i];
   ip += 2;
   DISPATCH();
 }
@@ -417,24 +415,24 @@ op_STGW: {
   const uint32_t b = B();
   const uint32_t i = static_cast<uint32_t>(sp[-1].i) - 1u;
   if (i >= bytecode::window_size(b)) FAIL(RunError::IndexOutOfRange);
-  globals_[A()].data[bytecode::window_first(b) + i] = sp[-2];
+  global_data_[A()][bytecode::window_first(b) + i] = sp[-2];
   sp -= 2;
   ip += 2;
   DISPATCH();
 }
 op_LDGWG: {
   const uint32_t b = B();
-  const uint32_t i = static_cast<uint32_t>(globals_[bytecode::global_window_index(b)].data[0].i) - 1u;
+  const uint32_t i = static_cast<uint32_t>(global_data_[bytecode::global_window_index(b)][0].i) - 1u;
   if (i >= bytecode::global_window_size(b)) FAIL(RunError::IndexOutOfRange);
-  *sp++ = globals_[A()].data[bytecode::global_window_first(b) + i];
+  *sp++ = global_data_[A()][bytecode::global_window_first(b) + i];
   ip += 2;
   DISPATCH();
 }
 op_STGWG: {
   const uint32_t b = B();
-  const uint32_t i = static_cast<uint32_t>(globals_[bytecode::global_window_index(b)].data[0].i) - 1u;
+  const uint32_t i = static_cast<uint32_t>(global_data_[bytecode::global_window_index(b)][0].i) - 1u;
   if (i >= bytecode::global_window_size(b)) FAIL(RunError::IndexOutOfRange);
-  globals_[A()].data[bytecode::global_window_first(b) + i] = *--sp;
+  global_data_[A()][bytecode::global_window_first(b) + i] = *--sp;
   ip += 2;
   DISPATCH();
 }
@@ -842,7 +840,7 @@ op_STLJEOL:
   locals[B()] = *--sp;
   END_LINE_AND_JUMP()
 op_STGJEOL:
-  globals_[B()].data[0] = *--sp;
+  global_data_[B()][0] = *--sp;
   END_LINE_AND_JUMP()
 #undef END_LINE_AND_JUMP
 op_RETEOL:
@@ -899,7 +897,7 @@ op_MULFLLS: LOCALS_ARITH(float, f, a * b, locals[A()].f)
 #undef LOCALS_ARITH
 
 // The global forms: element 0 of scalar globals, as LDG and STG read and write it.
-#define GLOBAL(n) (globals_[n].data[0])
+#define GLOBAL(n) (global_data_[n][0])
 op_STGEOL:
   GLOBAL(A()) = *--sp;
   ++ip;
@@ -964,10 +962,11 @@ op_JGEGK: {
 // without the family's outcome and table.
 op_JGTGK: {
   const uint32_t pair = B();
-  if (GLOBAL(bytecode::packed_first(pair)).i > constants_[bytecode::packed_second(pair)].i)
+  if (GLOBAL(bytecode::packed_first(pair)).i > constants_[bytecode::packed_second(pair)].i) [[unlikely]] {
     JUMP_TO(code + A());
-  else
-    ip += 2;
+    DISPATCH();
+  }
+  ip += 2;
   DISPATCH();
 }
 // "Jump unless", as the float forms on locals: NaN compares false and falls through.
@@ -1246,7 +1245,7 @@ op_REMIK:
   ++ip;
   DISPATCH();
 op_ADDIG:
-  sp[-1].i = arith::wrap_add(sp[-1].i, globals_[A()].data[0].i);
+  sp[-1].i = arith::wrap_add(sp[-1].i, global_data_[A()][0].i);
   ++ip;
   DISPATCH();
 #undef DISPATCH

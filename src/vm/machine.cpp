@@ -71,7 +71,8 @@ size_t Machine::memory_needed(const ImageView& image, const MachineConfig& confi
   a.take<uint32_t>(image.code.size());
   a.take<Value>(image.constants.size());
   a.take<RoutineInfo>(image.routines.size());
-  a.take<GlobalSlot>(image.globals.size());
+  a.take<Value*>(image.globals.size());
+  a.take<uint32_t>(image.globals.size());
   a.take<Value>(global_cells(image));
   a.take<Thread>(config.threads);
   for (uint32_t t = 0; t < config.threads; ++t) {
@@ -118,7 +119,8 @@ LoadStatus Machine::load(const uint8_t* bytes, size_t size, const MachineConfig&
     routines_[i] = {r.entry, r.inputs, r.outputs, r.locals};
   }
   global_count_ = view.globals.size();
-  globals_ = a.take<GlobalSlot>(global_count_);
+  global_data_ = a.take<Value*>(global_count_);
+  global_length_ = a.take<uint32_t>(global_count_);
   if (global_cells(view) > UINT32_MAX) {  // more than LDM can address (and than any drive has)
     status.no_memory = true;
     return status;
@@ -128,7 +130,8 @@ LoadStatus Machine::load(const uint8_t* bytes, size_t size, const MachineConfig&
   memory_ = cells;
   for (uint32_t i = 0; i < global_count_; ++i) {
     const uint32_t length = view.globals[i].length;
-    globals_[i] = {cells, length};
+    global_data_[i] = cells;
+    global_length_[i] = length;
     for (uint32_t k = 0; k < length; ++k) cells[k] = Value::of_bits(0);
     cells += length;
   }
@@ -285,20 +288,20 @@ FrameInfo Machine::frame(uint32_t thread, uint32_t depth) const {
 }
 
 bool Machine::read_global(uint32_t global, uint32_t element, Value& out) const {
-  if (global >= global_count_ || element >= globals_[global].length) return false;
-  out = globals_[global].data[element];
+  if (global >= global_count_ || element >= global_length_[global]) return false;
+  out = global_data_[global][element];
   return true;
 }
 
 bool Machine::write_global(uint32_t global, uint32_t element, Value value) {
-  if (global >= global_count_ || element >= globals_[global].length) return false;
-  globals_[global].data[element] = value;
+  if (global >= global_count_ || element >= global_length_[global]) return false;
+  global_data_[global][element] = value;
   return true;
 }
 
 bool Machine::bind_global(uint32_t global, Value* data, uint32_t length) {
-  if (global >= global_count_ || data == nullptr || length < globals_[global].length) return false;
-  globals_[global].data = data;
+  if (global >= global_count_ || data == nullptr || length < global_length_[global]) return false;
+  global_data_[global] = data;
   return true;
 }
 

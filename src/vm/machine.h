@@ -179,10 +179,6 @@ class Machine {
     uint32_t outputs;
     uint32_t locals;
   };
-  struct GlobalSlot {
-    Value* data;
-    uint32_t length;
-  };
   enum class FrameKind : uint8_t { Call, Event };
   struct Frame {
     uint32_t return_pc;
@@ -256,7 +252,10 @@ class Machine {
   Value* constants_ = nullptr;
   RoutineInfo* routines_ = nullptr;
   uint32_t routine_count_ = 0;
-  GlobalSlot* globals_ = nullptr;
+  // Each global's words and its length, apart: the execute loop indexes the words of a global
+  // on every access and its length only for an index it checks.
+  Value** global_data_ = nullptr;
+  uint32_t* global_length_ = nullptr;
   uint32_t global_count_ = 0;
   Value* memory_ = nullptr;  // the globals' words, one block
   uint32_t memory_words_ = 0;
