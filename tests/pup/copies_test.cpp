@@ -1,6 +1,6 @@
 // The loader's fused copies (line_runs.h) run a CUP program as its lines do: each program here
 // runs once in slices of one line (the drive's cycle, which never takes a copy), once without a
-// line budget (which does) and once in slices of 7 lines, and ends with the same general data,
+// line budget (which does) and once in slices of 7 and of 100 lines, and ends with the same general data,
 // the same end and, for an error, the same CUP line.
 #include <gtest/gtest.h>
 
@@ -75,7 +75,7 @@ size_t count_of(const LoadedCup& cup, bytecode::Op op) {
 // says the other budgets did run copies.
 void expect_same_runs(const LoadedCup& cup, const Outcome& lines) {
   ASSERT_GT(count_of(cup, bytecode::Op::JLINES), 0u) << "no copy to test";
-  for (const vm::Budget budget : {vm::Budget::unlimited(), vm::Budget::of_lines(7)}) {
+  for (const vm::Budget budget : {vm::Budget::unlimited(), vm::Budget::of_lines(7), vm::Budget::of_lines(100)}) {
     const Outcome other = run(cup, budget);
     EXPECT_EQ(other.end, lines.end);
     EXPECT_EQ(other.line, lines.line);
@@ -139,6 +139,49 @@ TEST(CupCopies, ALoopRunsAsItsLines) {
   EXPECT_EQ(lines.gen_data[113].i, (14 / 7) ^ 1);       // AGenData[114], I = 14
   expect_same_runs(cup, lines);
   EXPECT_LT(run(cup, vm::Budget::unlimited()).slices, lines.slices);
+}
+
+// A loop whose copy goes on into its next turns, left at each of them: K counts to N, S sums
+// the odd K (a turn of 16 lines, four in a path of 64 lines, its test and an `if` its two
+// branches) or every K (without the `if`: 12 lines, five turns).
+TEST(CupCopies, ALoopsCopyTakesSeveralTurnsAndLeavesAtAnyOfThem) {
+  for (const bool odd_only : {true, false}) {
+    for (int32_t n = 0; n <= 12; ++n) {
+      std::vector<std::string> lines = {
+          "AProgTask[1]",                      //  1
+          "AGenData[9]=" + std::to_string(n),  //  2 N
+          "APushParam,AGenData[1]",            //  3 loop: K >= N ends it
+          "APushParam,AGenData[9]",            //  4
+          "AJump[6],19",                       //  5
+          "APushParam,AGenData[1]",            //  6 an even K skips the sum
+          "APushConstant,2",                   //  7
+          "AMath[5]",                          //  8
+          "AJump[9],14",                       //  9
+          "APushParam,AGenData[2]",            // 10 S = S + K
+          "APushParam,AGenData[1]",            // 11
+          "AMath[1]",                          // 12
+          "APopParam,AGenData[2]",             // 13
+          "APushParam,AGenData[1]",            // 14 K = K + 1
+          "APushConstant,1",                   // 15
+          "AMath[1]",                          // 16
+          "APopParam,AGenData[1]",             // 17
+          "AJump[1],3",                        // 18
+          "APushParam,AGenData[2]",            // 19 done: AGenData[3] = S
+          "APopParam,AGenData[3]",             // 20
+      };
+      if (!odd_only) {  // without lines 6 to 9, the jumps' lines 4 less
+        lines.erase(lines.begin() + 5, lines.begin() + 9);
+        lines[4] = "AJump[6],15";
+        lines[13] = "AJump[1],3";
+      }
+      const LoadedCup cup = load(lines);
+      const Outcome by_line = run(cup, vm::Budget::of_lines(1));
+      ASSERT_EQ(by_line.end, vm::SliceEnd::Finished);
+      EXPECT_EQ(by_line.gen_data[0].i, n);
+      EXPECT_EQ(by_line.gen_data[2].i, odd_only ? (n / 2) * (n / 2) : n * (n - 1) / 2);
+      expect_same_runs(cup, by_line);
+    }
+  }
 }
 
 // An index out of its window inside a copy (I reaches 4, the window has 3 places): error 4 at

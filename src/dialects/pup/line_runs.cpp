@@ -85,6 +85,7 @@ class Copier {
   LineRun copy(uint32_t first, std::set<uint32_t>& exits) {
     bytecode::Image piece;
     CodeBuilder b(piece.code);
+    first_ = first;
     forks_ = 0;
     most_ = 0;
     pushed_global_at_ = UINT32_MAX;  // an earlier copy's place means nothing in this one
@@ -123,7 +124,17 @@ class Copier {
         continue;
       }
       const int32_t c = op.msg.target.index;
-      if (c == 1) return leave(b, op.target, ran, ended);
+      if (c == 1) {
+        // The copy's own loop goes on into its next turn while a whole turn more fits in a path:
+        // one way out and back in (JMPLN, then JLINES) for several turns. Not a turn of more than
+        // two branches (its test and an `if`), whose forks would spend on its first turns the few
+        // that a copy follows.
+        if (op.target != first_ || ran + (l + 1 - first_) > kMostLines || branches(first_, l) > 2)
+          return leave(b, op.target, ran, ended);
+        l = first_;
+        before = nullptr;
+        continue;
+      }
       const auto taken = b.new_label();
       if (c == 9) {
         b.emit_to(Op::JZ, taken);
@@ -139,6 +150,14 @@ class Copier {
       before = nullptr;
     }
     leave(b, l, ran, ended);
+  }
+
+  // The conditional jumps among lines [from, to).
+  uint32_t branches(uint32_t from, uint32_t to) const {
+    uint32_t n = 0;
+    for (uint32_t k = from; k < to; ++k)
+      n += ops_[k].key->id == KeywordId::Jump && ops_[k].msg.target.index != 1 ? 1 : 0;
+    return n;
   }
 
   // JMPLN counts the path's lines that no EOL of the copy has ended.
@@ -200,7 +219,7 @@ class Copier {
   const uint32_t count_;
   bytecode::Image& image_;
   bytecode::Image* piece_ = nullptr;
-  uint32_t forks_ = 0, most_ = 0;
+  uint32_t first_ = 0, forks_ = 0, most_ = 0;
   uint32_t pushed_global_at_ = UINT32_MAX;  // where the last LDG of a pushed AGenData[n] is
   std::set<uint32_t>* exits_ = nullptr;
 };

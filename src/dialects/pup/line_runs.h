@@ -1,7 +1,9 @@
 // Fused copies of CUP code. From a line on, the lines that cannot fail, wait, call or reach the
 // firmware (AGenData, constants, the VM's own AMath and ACompare) are compiled again as one
 // piece: every path through them to the first line that is not such a line, or back to an
-// earlier one, is a path of the copy, which leaves by a JMPLN that counts the lines the path ran.
+// earlier one, is a path of the copy, which leaves by a JMPLN that counts the lines the path ran
+// (a jump back to the copy's own first line goes on into the loop's next turn instead, while a
+// whole turn more fits in a path).
 // The peephole pass fuses the piece, so a path takes fewer instructions than it has lines. The
 // loader puts a JLINES before the line: a slice that may run the longest path at once takes the
 // copy, every other slice (the drive's one line a cycle, stepping, a breakpoint set) the lines
