@@ -239,10 +239,8 @@ int main(int argc, char** argv) {
     // A PDL program runs from the start of its code with task 1's stack registers.
     namespace pdl = uprog::pdl;
     const int32_t base = pdl::stack_base(1);
-    const Value args[pdl::kEntryInputs] = {Value::of_int(base), Value::of_int(base),
-                                           Value::of_int(base + pdl::kStackWords),
-                                           Value::of_int(pdl::kTaskAddressUnit - base), Value::of_int(base)};
-    machine.start(0, 0, args, pdl::kEntryInputs);
+    const auto args = pdl::stack_registers(1, Value::of_int(base), base);
+    machine.start(0, 0, args.data(), pdl::kEntryInputs);
   } else {
     const int main_routine = image.find_routine(image.dialect == "st" ? "PLCMAIN" : "main");
     if (main_routine < 0) {

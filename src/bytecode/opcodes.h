@@ -9,7 +9,7 @@ namespace uprog::bytecode {
 enum class Operand : uint8_t {
   None, Imm, Const, Local, Global, Routine, Target, Count, Command, Unit, LocalPair, LocalImm,
   LocalConst, Width, Text, GlobalPair, GlobalConst, GlobalImm, Element, Lines, Window, GlobalsTest,
-  LoopStep, GlobalWindow
+  LoopStep, GlobalWindow, MemoryFrame
 };
 
 // The packed B operands of the fused comparisons and arithmetic (LocalConst, GlobalPair,
@@ -97,6 +97,15 @@ inline constexpr const char* kOpMeanings[] = {
 inline constexpr uint32_t kOpCount = sizeof(kOpInfo) / sizeof(kOpInfo[0]);
 static_assert(kOpCount <= 256, "an opcode is one byte");
 
+// CALLFEOL's B: the frame's words (1..4095) in bits 0-11, the arguments in bits 12-19, the
+// frame word the first goes to in bits 20-27.
+constexpr uint32_t kMemoryFrameMax = (1u << 12) - 1;
+constexpr uint32_t pack_memory_frame(uint32_t words, uint32_t arguments, uint32_t first) {
+  return words | (arguments << 12) | (first << 20);
+}
+constexpr uint32_t memory_frame_words(uint32_t b) { return b & kMemoryFrameMax; }
+constexpr uint32_t memory_frame_arguments(uint32_t b) { return (b >> 12) & 0xFFu; }
+constexpr uint32_t memory_frame_first(uint32_t b) { return (b >> 20) & 0xFFu; }
 constexpr const OpInfo& op_info(Op op) { return kOpInfo[static_cast<uint8_t>(op)]; }
 constexpr const char* op_name(Op op) { return kOpNames[static_cast<uint8_t>(op)]; }
 constexpr uint32_t op_length(Op op) { return op_info(op).b == Operand::None ? 1u : 2u; }

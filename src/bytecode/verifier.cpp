@@ -130,6 +130,12 @@ class Verifier {
         const RoutineRecord callee = image_.routines[a];
         if (image_.code[pc + 1] > callee.outputs) return fail(VerifyError::BadOperand, pc);
       }
+      if (word_op(word) == Op::CALLFEOL) {
+        const uint32_t b = image_.code[pc + 1];
+        if (image_.routines[a].inputs < 2 || b > pack_memory_frame(kMemoryFrameMax, 0xFF, 0xFF) ||
+            memory_frame_first(b) + memory_frame_arguments(b) > memory_frame_words(b))
+          return fail(VerifyError::BadOperand, pc);
+      }
       if ((word_op(word) == Op::REMLK || word_op(word) == Op::REMGK) && image_.code[pc + 1] == 0)
         return fail(VerifyError::BadOperand, pc);
       if (word_op(word) == Op::REMGKEOL && packed_imm(image_.code[pc + 1]) == 0)
@@ -219,6 +225,11 @@ class Verifier {
     if (op == Op::CALL) {
       pop = static_cast<int32_t>(image_.routines[a].inputs);
       push = static_cast<int32_t>(image_.code[pc + 1]);
+    } else if (op == Op::CALLFEOL) {
+      // The callee's inputs but the last are the caller's first locals, and 0 and 1 are read.
+      const uint32_t read = image_.routines[a].inputs > 3 ? image_.routines[a].inputs - 1 : 2;
+      if (read > locals) return fail(VerifyError::BadLocal, pc);
+      pop = static_cast<int32_t>(memory_frame_arguments(image_.code[pc + 1]));
     } else if (pops_host_arguments(op)) {
       pop = static_cast<int32_t>(image_.code[pc + 1]) + (op == Op::CMDRUNX ? 1 : 0);
     }

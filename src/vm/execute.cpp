@@ -44,6 +44,28 @@ bool compare(int32_t how, float a, float b) {
     default: return a >= b;
   }
 }
+// A call's words copied or set to 0: frames mostly have a few, which a call of memcpy or memset
+// (what a plain loop compiles to) would cost more than.
+void copy_words(Value* to, const Value* from, uint32_t n) {
+  switch (n) {
+    case 4: to[3] = from[3]; [[fallthrough]];
+    case 3: to[2] = from[2]; [[fallthrough]];
+    case 2: to[1] = from[1]; [[fallthrough]];
+    case 1: to[0] = from[0]; [[fallthrough]];
+    case 0: break;
+    default: std::memcpy(static_cast<void*>(to), from, n * sizeof(Value));
+  }
+}
+void zero_words(Value* to, uint32_t n) {
+  switch (n) {
+    case 4: to[3].bits = 0; [[fallthrough]];
+    case 3: to[2].bits = 0; [[fallthrough]];
+    case 2: to[1].bits = 0; [[fallthrough]];
+    case 1: to[0].bits = 0; [[fallthrough]];
+    case 0: break;
+    default: std::memset(static_cast<void*>(to), 0, n * sizeof(Value));
+  }
+}
 // A 64-bit value on the stack or in memory: two words, the low one first (deeper).
 uint64_t read_wide(const Value* at) {
   return static_cast<uint64_t>(at[0].bits) | (static_cast<uint64_t>(at[1].bits) << 32);
@@ -629,6 +651,44 @@ op_CALL: {
   LOAD();
   COUNT_JUMP_BACK();
   DISPATCH();
+}
+op_CALLFEOL: {
+  // A frame in the data memory at the memory stack's pointer (local 0), below its limit (local
+  // 1): the arguments into it, its other words after them to 0, the line's end, then the call.
+  const RoutineInfo& r = routines_[A()];
+  const uint32_t shape = B();
+  const uint32_t arguments = bytecode::memory_frame_arguments(shape);
+  const uint32_t first = bytecode::memory_frame_first(shape);
+  const auto at = static_cast<uint32_t>(locals[0].i);
+  const uint32_t frame_end = at + bytecode::memory_frame_words(shape);
+  if (frame_end < at || frame_end > memory_words_) FAIL(RunError::BadAddress);
+  if (frame_end > static_cast<uint32_t>(locals[1].i)) FAIL(RunError::CallDepth);
+  Value* base = sp - arguments;
+  Value* callee = tp->locals_top;
+  if (tp->frame_count >= config_.frames) FAIL(RunError::CallDepth);
+  if (r.locals > static_cast<size_t>(tp->locals_end - callee)) FAIL(RunError::LocalsExhausted);
+  if (base > call_limit) FAIL(RunError::StackOverflow);
+  Value* frame = memory_ + at;
+  copy_words(frame + first, base, arguments);
+  zero_words(frame + first + arguments, frame_end - at - first - arguments);
+  Frame& f = tp->frames[tp->frame_count++];
+  f.return_pc = static_cast<uint32_t>(ip - code) + 2;
+  f.routine = A();
+  f.locals = callee;
+  f.stack_base = base;
+  f.nargout = 0;
+  f.kind = FrameKind::Call;
+  callee[0].i = static_cast<int32_t>(frame_end);
+  copy_words(callee + 1, locals + 1, r.inputs - 2);
+  callee[r.inputs - 1].i = static_cast<int32_t>(at);
+  zero_words(callee + r.inputs, r.locals - r.inputs);
+  tp->locals_top = callee + r.locals;
+  sp = base;
+  locals = callee;
+  ip = code + r.entry;
+  if (--back_jumps.now == 0) goto out_of_back_jumps_at_line_end;
+  if (--lines.now == 0) goto out_of_lines;
+  DISPATCH_NEXT();
 }
 op_RET: {
   const Frame& f = tp->frames[tp->frame_count - 1];

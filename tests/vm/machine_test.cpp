@@ -266,6 +266,47 @@ f:
   EXPECT_EQ(p.global("calls").i, 3);
 }
 
+// CALLFEOL ends its line before the callee's first instruction: a slice of one line stops at the
+// callee's entry, the frame made and the argument stored; the call counts as a jump back too.
+TEST(Machine, MemoryFrameCallEndsItsLineAtTheCalleesEntry) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(R"(
+.global int "mem" 8
+.global int "done" 1
+.routine function "main" in=0 out=0 entry=main
+.local int "sp"
+.local int "limit"
+.routine function "proc" in=2 out=0 entry=proc
+.local int "sp"
+.local int "fp"
+main:
+  PUSHI 8
+  STL 1
+  PUSHI 5
+  CALLFEOL proc 2101251  ; 3 words, 1 argument into word 2
+  INCG done 1
+  EOL
+  RET
+proc:
+  EOL
+  RET
+)"));
+  p.machine.start(0, 0);
+  auto r = p.machine.run_slice(0, Budget::of_lines(1));
+  EXPECT_EQ(r.end, SliceEnd::LineEnd);
+  EXPECT_EQ(r.lines, 1u);
+  EXPECT_EQ(p.machine.pc(0), 9u);  // proc's EOL
+  EXPECT_EQ(p.machine.frame_count(0), 2u);
+  EXPECT_EQ(p.machine.memory()[2].i, 5);
+  r = p.machine.run_slice(0, Budget::of_lines(1));
+  EXPECT_EQ(r.end, SliceEnd::LineEnd);  // proc's line
+  EXPECT_EQ(p.global("done").i, 0);
+  p.machine.start(0, 0);
+  r = p.machine.run_slice(0, Budget{0, 100, 1});
+  EXPECT_EQ(r.end, SliceEnd::BudgetSpent);  // the call spent the one jump back, at proc's entry
+  EXPECT_EQ(p.machine.pc(0), 9u);
+}
+
 // JMPLN counts the lines of the path that leaves fused code; when they spend the slice's line
 // budget (a copy whose JLINES promised fewer, which the loader never makes), the slice ends
 // where it jumps to.

@@ -134,7 +134,7 @@ bool Compiler::compile(bytecode::Image& out) {
   }
   if (!code_.finish()) error(Error::UnknownLabel, toks_.back().offset, "a jump to a label never defined");
   for (auto& [name, proc] : procs_) {
-    if (proc.defined && code_.bound(proc.start)) image_.routines[static_cast<size_t>(proc.routine)].entry = code_.target(proc.start);
+    if (proc.defined && code_.bound(proc.entry)) image_.routines[static_cast<size_t>(proc.routine)].entry = code_.target(proc.entry);
   }
   for (auto& [name, info] : scopes_[0]) {
     if (info.routine >= 0 && info.defined)
@@ -340,7 +340,6 @@ void Compiler::procedure() {
   if (current_proc_ != nullptr) {
     // Its body still closes with its own end, so that the outer procedure's stays its own.
     proc.defined = true;
-    proc.start = proc.entry;
     statement_list(1, true);
     accept_word("end");
     accept_op(";");
@@ -365,15 +364,9 @@ void Compiler::procedure() {
   }
   scratch_high_ = kFirstScratch;
   proc_end_ = code_.new_label();
-  // The caller checked the whole frame's room, stored the arguments and called with the stack
-  // registers of the frame (compiler_commands.cpp, proc_call). The routine zeroes the locals
-  // declared first, where they usually are, then runs the body.
+  // The caller's CALLFEOL checked the frame's room, stored the arguments and set the locals to 0
+  // (compiler_commands.cpp, proc_call).
   code_.bind(proc.entry);
-  const auto params_words = static_cast<uint32_t>(frame_words_);
-  while (at_op(";") || (at_op("#") && (at_word("long", 1) || at_word("short", 1) || at_word("float", 1))))
-    command(1, true);
-  const auto first_words = static_cast<uint32_t>(frame_words_) - params_words;
-  emit_locals_zeroing(params_words, first_words);
   statement_list(1, true);
   if (accept_word("end")) {
     begin_command(1);
@@ -386,19 +379,9 @@ void Compiler::procedure() {
   code_.emit(Op::RET);
   if (dispatchers_.count(scope_)) emit_return_dispatch(scope_);
   emit_indirect_stubs(scope_);
-  // Locals declared further on start at 0 too: the routine starts here for them, then zeroes
-  // the first ones and runs the body.
-  const uint32_t later_words = static_cast<uint32_t>(frame_words_) - params_words - first_words;
-  proc.start = proc.entry;
-  if (later_words > 0) {
-    proc.start = code_.new_label();
-    code_.bind(proc.start);
-    emit_locals_zeroing(params_words + first_words, later_words);
-    code_.emit_to(Op::JMP, proc.entry);
-  }
   proc.frame_words = frame_words_;
-  for (uint32_t at_word : proc.frame_patches)
-    image_.code[at_word] = bytecode::make_word(Op::PUSHI, static_cast<uint32_t>(proc.frame_words));
+  const uint32_t shape = frame_shape(proc.frame_words, static_cast<int32_t>(params.size()));
+  for (uint32_t at_word : proc.frame_patches) image_.code[at_word + 1] = shape;
   proc.frame_patches.clear();
   image_.routines[static_cast<size_t>(proc.routine)].locals = entry_locals(scratch_high_);
   finish_scope();
@@ -435,37 +418,6 @@ Proc& Compiler::proc_named(const std::string& name, const std::vector<Param>& pa
   image_.routines.push_back(r);
   proc.routine = static_cast<int>(image_.routines.size() - 1);
   return proc;
-}
-
-// Words first..first+words-1 of the frame to 0: a store each for a few, a loop for more.
-void Compiler::emit_locals_zeroing(uint32_t first, uint32_t words) {
-  constexpr uint32_t kUnrolled = 4;
-  if (words <= kUnrolled) {
-    for (uint32_t i = 0; i < words; ++i) {
-      code_.emit(Op::LDL, kFp);
-      push_int(static_cast<int32_t>(first + i));
-      code_.emit(Op::ADDI);
-      push_int(0);
-      code_.emit(Op::STM);
-    }
-    return;
-  }
-  const uint32_t n = kFirstScratch;  // before the body's first command: scratch is free
-  if (scratch_high_ <= n) scratch_high_ = n + 1;
-  push_int(static_cast<int32_t>(words));
-  code_.emit(Op::STL, n);
-  CodeBuilder::Label top = code_.new_label();
-  code_.bind(top);
-  code_.emit(Op::INCL, n, static_cast<uint32_t>(-1));
-  code_.emit(Op::LDL, kFp);
-  push_int(static_cast<int32_t>(first));
-  code_.emit(Op::ADDI);
-  code_.emit(Op::LDL, n);
-  code_.emit(Op::ADDI);
-  push_int(0);
-  code_.emit(Op::STM);
-  code_.emit(Op::LDL, n);
-  code_.emit_to(Op::JNZ, top);
 }
 
 void Compiler::finish_scope() {

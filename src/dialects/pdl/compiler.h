@@ -55,13 +55,12 @@ struct Param {
 struct Proc {
   std::string name;
   std::vector<Param> params;
-  CodeBuilder::Label entry{};  // its body's first command
-  CodeBuilder::Label start{};  // where its routine starts: the locals' zeroing, or the body
-  int routine = -1;            // its image routine, called with CALL
+  CodeBuilder::Label entry{};  // its body's first command, where its routine starts
+  int routine = -1;            // its image routine, called with CALLFEOL
   bool defined = false;
   size_t declared_at = 0;  // token offset
   int32_t frame_words = -1;  // 2 + parameters + locals, once its definition is compiled
-  std::vector<uint32_t> frame_patches;  // PUSHIs of calls compiled before that, patched then
+  std::vector<uint32_t> frame_patches;  // CALLFEOLs compiled before that, their B patched then
 };
 
 struct LabelInfo {
@@ -156,7 +155,6 @@ class Compiler {
   void emit_indirect_stubs(int scope);
   CodeBuilder::Label dispatch_label(int scope);
   Proc& proc_named(const std::string& name, const std::vector<Param>& params, size_t offset);
-  void emit_locals_zeroing(uint32_t first, uint32_t words);
   void emit_dispatch(uint32_t local, const std::vector<std::pair<int32_t, CodeBuilder::Label>>& cases);
   LabelInfo& label_named(const std::string& name, int scope, size_t offset);
   int routine_for_label(const std::string& name, size_t offset);
@@ -182,7 +180,7 @@ class Compiler {
   void set_state_command(int mode);
   void printl_command(bool ret);
   void proc_call(Proc& proc);
-  void push_frame_words(Proc& proc);
+  static uint32_t frame_shape(int32_t frame_words, int32_t params);
   void assignment();
   uint32_t short_command_slots();
   void check_code_size();

@@ -384,38 +384,20 @@ void Compiler::proc_return() {
   code_.emit_to(Op::JMP, proc_end_);
 }
 
-// The frame's size, 2 + parameters + locals; a call compiled before the procedure's end (its own
-// recursion, or after a prototype) gets it patched in then.
-void Compiler::push_frame_words(Proc& proc) {
-  if (proc.frame_words >= 0) return push_int(proc.frame_words);
-  proc.frame_patches.push_back(code_.here());
-  code_.emit(Op::PUSHI, 0);
-}
-
-// A call: room for the whole frame on the task's stack (else CallDepth, before an argument is
-// evaluated), the arguments stored into its parameter words, then, in the next phase, CALL
-// with the callee's stack registers: sp past its frame, the task's base, limit and bias, and fp
-// at the frame (whose first two words stay reserved, as pdl-drive.md counts them).
+// A call: the arguments on the VM's stack, then CALLFEOL, which checks the whole frame's room on
+// the task's stack (else CallDepth), stores them into the parameter words after the two reserved
+// ones (pdl-drive.md counts them), sets the locals to 0, ends the line and calls with the
+// callee's stack registers: sp past its frame, fp at it. A call compiled before the procedure's
+// end (its own recursion, or after a prototype) gets the frame's size patched in then.
 void Compiler::proc_call(Proc& proc) {
   const size_t at = peek().offset;
   begin_command(1);
   const int32_t params = static_cast<int32_t>(proc.params.size());
-  code_.emit(Op::LDL, kSp);
-  push_frame_words(proc);
-  code_.emit(Op::ADDI);
-  code_.emit(Op::LDL, kLimit);
-  CodeBuilder::Label room = code_.new_label();
-  code_.emit_to(Op::JLEI, room);
-  code_.emit(Op::RAISE, static_cast<uint32_t>(vm::RunError::CallDepth));
-  code_.bind(room);
   expect_op("(");
   int32_t count = 0;
   while (!at_op(")") && peek().kind != Tok::End) {
     const size_t arg_at = peek().offset;
     const size_t first = pos_;
-    code_.emit(Op::LDL, kSp);
-    push_int(2 + count);
-    code_.emit(Op::ADDI);
     const Ty t = expr();
     const bool constant = is_literal(first, pos_);
     if (count < params) {
@@ -428,7 +410,6 @@ void Compiler::proc_call(Proc& proc) {
       }
       convert(t, want, false);
     }
-    code_.emit(Op::STM);
     ++count;
     if (!accept_op(",")) break;
   }
@@ -436,18 +417,16 @@ void Compiler::proc_call(Proc& proc) {
   slots_ += static_cast<uint32_t>(count);
   if (count != params) {
     error(Error::ArgumentCount, at, proc.name + " takes " + std::to_string(params) + ", got " + std::to_string(count));
+    for (; count > params; --count) code_.emit(Op::POP);
+    for (; count < params; ++count) push_int(0);
   }
-  end_line();
-  static_assert(kSp == 0 && kBase == 1 && kLimit == 2 && kBias == 3 && kFp == 4 && kEntryInputs == 5,
-                "the callee's inputs in the order of its locals");
-  code_.emit(Op::LDL, kSp);
-  push_frame_words(proc);
-  code_.emit(Op::ADDI);
-  code_.emit(Op::LDL, kBase);
-  code_.emit(Op::LDL, kLimit);
-  code_.emit(Op::LDL, kBias);
-  code_.emit(Op::LDL, kSp);
-  code_.emit(Op::CALL, static_cast<uint32_t>(proc.routine), 0);
+  if (proc.frame_words < 0) proc.frame_patches.push_back(code_.here());
+  code_.emit(Op::CALLFEOL, static_cast<uint32_t>(proc.routine), frame_shape(proc.frame_words, params));
+}
+
+uint32_t Compiler::frame_shape(int32_t frame_words, int32_t params) {
+  const auto words = static_cast<uint32_t>(frame_words < 0 ? kMinFrameWords + params : frame_words);
+  return bytecode::pack_memory_frame(words, static_cast<uint32_t>(params), kMinFrameWords);
 }
 
 void Compiler::run_command() {

@@ -172,10 +172,8 @@ dialect::Evaluation Firmware::evaluate(uint32_t thread, uint32_t depth, std::str
   const int32_t base = stack_base(task);
   Value sp = Value::of_int(base);
   if (pm.frame_count(task) > 0) pm.read_local(task, 0, kSp, sp);
-  const Value args[kEntryInputs] = {sp, Value::of_int(base), Value::of_int(base + kStackWords),
-                                    Value::of_int(static_cast<int32_t>(task) * kTaskAddressUnit - base),
-                                    Value::of_int(frame ? frame->fp : base)};
-  em.start(0, 0, args, kEntryInputs);
+  const auto args = stack_registers(task, sp, frame ? frame->fp : base);
+  em.start(0, 0, args.data(), kEntryInputs);
   vm::SliceResult s{vm::SliceEnd::Yielded, 0};
   uint64_t left = kEvaluationInstructionBudget;
   // A command's end or a host call ends a slice; the evaluation takes no virtual time all the same.

@@ -131,10 +131,8 @@ void Firmware::start_reset_tasks() {
 
 int32_t Firmware::start_task(uint32_t task, uint32_t routine) {
   const int32_t base = stack_base(task);
-  const Value args[kEntryInputs] = {Value::of_int(base), Value::of_int(base), Value::of_int(base + kStackWords),
-                                    Value::of_int(static_cast<int32_t>(task) * kTaskAddressUnit - base),
-                                    Value::of_int(base)};
-  if (machine()->start(task, routine, args, kEntryInputs) != vm::RunError::None) return kBadValue;
+  const auto args = stack_registers(task, Value::of_int(base), base);
+  if (machine()->start(task, routine, args.data(), kEntryInputs) != vm::RunError::None) return kBadValue;
   task_error_[task] = 0;
   task_routine_[task] = routine;
   return 0;

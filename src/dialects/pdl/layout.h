@@ -2,7 +2,10 @@
 // the firmware: 400 words of user memory, then each task's 256-word stack; the locals every
 // entry routine has (the task's stack registers, then scratch words).
 #pragma once
+#include <array>
 #include <cstdint>
+
+#include "support/value.h"
 
 namespace uprog::pdl {
 
@@ -19,10 +22,11 @@ constexpr int32_t stack_base(uint32_t task) { return kUserWords + static_cast<in
 // Locals of every entry routine; the first kEntryInputs are set by the firmware at start, or
 // by a procedure call for the procedure's routine (which has the first kFirstScratch and the
 // scratch words it uses).
+// sp and limit are locals 0 and 1, fp the last input, as the VM's CALLFEOL takes them.
 enum EntryLocal : uint32_t {
   kSp = 0,     // flat address of the next free stack word
-  kBase = 1,   // flat address of the stack's first word
-  kLimit = 2,  // one past its last word
+  kLimit = 1,  // one past the stack's last word
+  kBase = 2,   // flat address of its first word
   kBias = 3,   // 0x1000*t - base: flat + bias is a local's address as a program sees it
   kFp = 4,     // flat address of the current procedure's frame (its first reserved word)
   kEntryInputs = 5,
@@ -31,6 +35,14 @@ enum EntryLocal : uint32_t {
   kFirstScratch = 7,
   kEntryLocals = 16,
 };
+
+// The stack registers a task's code starts with (the entry inputs): fp at the stack's base when
+// no procedure's frame is given.
+inline std::array<Value, kEntryInputs> stack_registers(uint32_t task, Value sp, int32_t fp) {
+  const int32_t base = stack_base(task);
+  return {sp, Value::of_int(base + kStackWords), Value::of_int(base),
+          Value::of_int(static_cast<int32_t>(task) * kTaskAddressUnit - base), Value::of_int(fp)};
+}
 
 // A procedure's frame: a return id's and a saved fp's words (reserved, pdl-drive.md), then its
 // parameters and locals.

@@ -1,6 +1,0 @@
-; an opcode number that does not exist (255: 0..254 are taken)
-.routine function "main" in=0 out=0 entry=main
-main:
-  .word 0x000000ff
-  RET
-; expect verify: BadOpcode
