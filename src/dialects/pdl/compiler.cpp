@@ -22,7 +22,7 @@ constexpr std::string_view kKeywords[] = {
 
 // The first `count` locals of an entry routine; a procedure's routine has as many as it uses.
 std::vector<bytecode::Local> entry_locals(uint32_t count = kEntryLocals) {
-  static constexpr const char* kNames[] = {"sp", "base", "limit", "bias", "fp", "ret", "goto"};
+  static constexpr const char* kNames[] = {"sp", "limit", "base", "fp", "ret", "goto"};
   std::vector<bytecode::Local> out;
   for (uint32_t i = 0; i < count; ++i) {
     bytecode::Local l;
@@ -149,11 +149,16 @@ bool Compiler::compile(bytecode::Image& out) {
     for (const CodeBuilder::Label& site : return_sites_) debug_info_.return_sites.push_back(code_.target(site));
     for (const auto& [body, exit] : loop_marks_) debug_info_.loops.push_back({code_.target(body), code_.target(exit)});
   }
-  // The free user memory and the tasks' stacks follow the variables, so that addresses count
-  // words from the first variable (1.3) and LDM/STM reach every word.
+  // The free user memory and the tasks' stacks follow the variables, each stack at its address
+  // (layout.h), so that addresses count words from the first variable (1.3) and LDM/STM reach
+  // every word.
   if (user_words_ < kUserWords) image_.globals.push_back({"(free)", ValueType::Int, static_cast<uint32_t>(kUserWords - user_words_)});
-  for (uint32_t t = 1; t <= kTasks; ++t)
+  int32_t end = kUserWords;
+  for (uint32_t t = 1; t <= kTasks; ++t) {
+    image_.globals.push_back({"(unused)", ValueType::Int, static_cast<uint32_t>(stack_base(t) - end)});
     image_.globals.push_back({"(stack " + std::to_string(t) + ")", ValueType::Int, static_cast<uint32_t>(kStackWords)});
+    end = stack_base(t) + kStackWords;
+  }
   image_.dialect = "pdl";
   out = std::move(image_);
   return error_count_ == 0;

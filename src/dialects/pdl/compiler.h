@@ -212,7 +212,7 @@ class Compiler {
   void emit_post_increments(const Place& p);
   void emit_increment(const Var& v, int32_t by);
   void emit_translate(bool float_address);  // logical address -> flat (checked)
-  void emit_general_translate();
+  void emit_word_check(bool ignore_float_bit);
   void emit_user_check();                // flat address in user memory (checked)
   bool logical_address(bool for_store);  // pushes a memory place's logical address
   void read_var(const Var& v);

@@ -80,42 +80,38 @@ void Compiler::emit_user_check() {
   code_.bind(ok);
 }
 
-// A program's address (bit 29 ignored) to the flat memory: 0..399 as it is, 0x1000*t + k
-// (t = 1..3, k < 256) into task t's stack, 400 + 256*(t-1) + k; anything else is BadAddress.
-// The two common cases first, each one unsigned comparison: the user memory, then the task's own
-// stack, where the address less the task's bias is the flat one (a pointer to a caller's local).
-// A float's address (float_address) has its bit 29 cleared first; any other comes through the
-// general translation.
+// A program's address (bit 29 ignored) checked: 0..399, or 0x1000*t + k (t = 1..3, k < 256), are
+// the data memory's words themselves (layout.h); anything else is BadAddress. The two common
+// cases first, each one unsigned comparison: the user memory, then the task's own stack (a
+// pointer to a caller's local). A float's address (float_address) has its bit 29 cleared first;
+// any other comes through the general check.
 void Compiler::emit_translate(bool float_address) {
-  CodeBuilder::Label done = code_.new_label();
   if (float_address) {
     push_int(~kFloatAddressBit);
     code_.emit(Op::ANDI);
   }
+  emit_word_check(true);
+}
+
+// An address of a word that a program may reach, else BadAddress; with ignore_float_bit, bit 29
+// set where the type did not say so is cleared.
+void Compiler::emit_word_check(bool ignore_float_bit) {
+  CodeBuilder::Label done = code_.new_label();
   code_.emit(Op::DUP);
   push_int(kUserWords);
   code_.emit(Op::CMPU, kCmpLess);
   code_.emit_to(Op::JNZ, done);
-  code_.emit(Op::LDL, kBias);
-  code_.emit(Op::SUBI);
   code_.emit(Op::DUP);
   code_.emit(Op::LDL, kBase);
   code_.emit(Op::SUBI);
   push_int(kStackWords);
   code_.emit(Op::CMPU, kCmpLess);
   code_.emit_to(Op::JNZ, done);
-  code_.emit(Op::LDL, kBias);
-  code_.emit(Op::ADDI);
-  emit_general_translate();
-  code_.bind(done);
-}
-
-// The translation of any address: another task's stack, bit 29 set where the type did not say
-// so, or BadAddress.
-void Compiler::emit_general_translate() {
-  push_int(~kFloatAddressBit);
-  code_.emit(Op::ANDI);
-  CodeBuilder::Label stack = code_.new_label(), bad = code_.new_label(), done = code_.new_label();
+  if (ignore_float_bit) {
+    push_int(~kFloatAddressBit);
+    code_.emit(Op::ANDI);
+  }
+  CodeBuilder::Label stack = code_.new_label(), bad = code_.new_label();
   code_.emit(Op::DUP);
   push_int(kTaskAddressUnit);
   code_.emit_to(Op::JGEI, stack);
@@ -126,22 +122,14 @@ void Compiler::emit_general_translate() {
   code_.bind(bad);
   code_.emit(Op::RAISE, static_cast<uint32_t>(vm::RunError::BadAddress));
   code_.bind(stack);
-  // 0x1000..0x3FFF with bits 8..11 clear: t = a >> 12 is 1..3 and k = a & 0xFF.
+  // 0x1000..0x3FFF with bits 8..11 clear: task a >> 12 (1..3), word a & 0xFF.
   constexpr int32_t kNotStackBits = ~(kTaskAddressUnit * 4 - 1) | (kTaskAddressUnit - kStackWords);
-  static_assert(kTasks == 3 && kStackWords == 256, "t in bits 12..13, k in bits 0..7");
+  static_assert(kTasks == 3 && kStackWords == 256 && stack_base(1) == kTaskAddressUnit,
+                "t in bits 12..13, k in bits 0..7");
   code_.emit(Op::DUP);
   push_int(kNotStackBits);
   code_.emit(Op::ANDI);
   code_.emit_to(Op::JNZ, bad);
-  // flat = a - 0x1000*t + 400 + 256*(t-1) = a - (0x1000-256)*t + (400-256)
-  code_.emit(Op::DUP);
-  push_int(12);
-  code_.emit(Op::SHRU);
-  push_int(kTaskAddressUnit - kStackWords);
-  code_.emit(Op::MULI);
-  code_.emit(Op::SUBI);
-  push_int(kUserWords - kStackWords);
-  code_.emit(Op::ADDI);
   code_.bind(done);
 }
 
@@ -185,8 +173,6 @@ bool Compiler::logical_address(bool) {
   if (v->local) {
     code_.emit(Op::LDL, kFp);
     push_int(v->address);
-    code_.emit(Op::ADDI);
-    code_.emit(Op::LDL, kBias);
     code_.emit(Op::ADDI);
   } else {
     push_int(v->address);
@@ -273,13 +259,16 @@ std::optional<Place> Compiler::parse_place(bool for_store) {
     }
     p.form = Place::Form::Memory;
     if (!constant) {
-      if (!v->local) emit_user_check();
+      // An index past a local array may reach any word a pointer may, and no other.
+      if (v->local) emit_word_check(false);
+      else emit_user_check();
       return p;
     }
     if (v->local) {
       code_.emit(Op::LDL, kFp);
       push_int(v->address + index);
       code_.emit(Op::ADDI);
+      if (index < 0 || index >= static_cast<int32_t>(v->length)) emit_word_check(false);
       return p;
     }
     const int32_t flat = v->address + index;
