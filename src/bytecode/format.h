@@ -6,7 +6,8 @@
 namespace uprog::bytecode {
 
 constexpr uint8_t kMagic[4] = {'U', 'P', 'R', 'G'};
-constexpr uint16_t kFormatVersion = 3;  // 2: the dialect, texts and tasks; 3: the line-end mark
+constexpr uint16_t kFormatVersion = 4;  // 2: the dialect, texts and tasks; 3: the line-end mark;
+                                        // 4: CALLFEOL, and JCMPMKEOL and ADDMLK for DIVU and REMU
 constexpr uint32_t kHeaderSize = 36;
 constexpr uint32_t kCrcStart = 16;  // the CRC covers every byte from here to total_size
 constexpr uint32_t kSectionEntrySize = 16;

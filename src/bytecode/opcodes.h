@@ -9,7 +9,8 @@ namespace uprog::bytecode {
 enum class Operand : uint8_t {
   None, Imm, Const, Local, Global, Routine, Target, Count, Command, Unit, LocalPair, LocalImm,
   LocalConst, Width, Text, GlobalPair, GlobalConst, GlobalImm, Element, Lines, Window, GlobalsTest,
-  LoopStep, GlobalWindow, MemoryFrame
+  LoopStep, GlobalWindow, MemoryFrame, FrameTest,
+  OffsetImm
 };
 
 // The packed B operands of the fused comparisons and arithmetic (LocalConst, GlobalPair,
@@ -97,6 +98,21 @@ inline constexpr const char* kOpMeanings[] = {
 inline constexpr uint32_t kOpCount = sizeof(kOpInfo) / sizeof(kOpInfo[0]);
 static_assert(kOpCount <= 256, "an opcode is one byte");
 
+// ADDMLK's B packs like LocalImm, an offset (0..65535) in place of the local.
+// JCMPMKEOL's B: the local holding the frame's address (0..15) in bits 0-3, the word's offset
+// (0..4095) in bits 4-15, the comparison (0..5: == != < <= > >=) in bits 16-18, the immediate
+// (-8192..8191) in bits 19-31.
+constexpr uint32_t kFrameTestLocalMax = 15;
+constexpr uint32_t kFrameTestOffsetMax = 4095;
+constexpr int32_t kFrameTestImmMin = -8192;
+constexpr int32_t kFrameTestImmMax = 8191;
+constexpr uint32_t pack_frame_test(uint32_t local, uint32_t offset, uint32_t how, int32_t imm) {
+  return local | (offset << 4) | (how << 16) | (static_cast<uint32_t>(imm) << 19);
+}
+constexpr uint32_t frame_test_local(uint32_t b) { return b & 0xFu; }
+constexpr uint32_t frame_test_offset(uint32_t b) { return (b >> 4) & kFrameTestOffsetMax; }
+constexpr uint32_t frame_test_how(uint32_t b) { return (b >> 16) & 0x7u; }
+constexpr int32_t frame_test_imm(uint32_t b) { return static_cast<int32_t>(b) >> 19; }
 // CALLFEOL's B: the frame's words (1..4095) in bits 0-11, the arguments in bits 12-19, the
 // frame word the first goes to in bits 20-27.
 constexpr uint32_t kMemoryFrameMax = (1u << 12) - 1;
@@ -150,7 +166,7 @@ constexpr bool ends_line_itself(Op op) {
 constexpr bool is_superinstruction(Op op) {
   const auto in = [op](Op first, Op last) { return op >= first && op <= last; };
   return (in(Op::ADDLK, Op::MULFLLS) && !in(Op::JEQI, Op::JGEI)) || in(Op::STGEOL, Op::JULTLK) ||
-         in(Op::MULIK, Op::INCGJMPLN);
+         in(Op::MULIK, Op::INCGJMPLN) || op == Op::ADDMLK;
 }
 // The instructions that may carry the line-end mark: those that run to completion and go on in
 // the same slice. Not a call or a return (the line would end in another frame), nor one that

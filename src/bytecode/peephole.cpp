@@ -622,13 +622,52 @@ size_t stored_at(const std::vector<Instr>& code, size_t k, const std::vector<boo
   return 0;
 }
 
+// A frame's word with a constant: "ADDLK l k; LDM; PUSHI c; ADDI|SUBI" is ADDMLK, and "ADDLK l k;
+// LDM; PUSHI c; J<cmp>I T; EOL" with a skippable EOL at T (mark_after_target_eols) is JCMPMKEOL,
+// which jumps past it: a condition on a parameter or local, ending its line either way. With the
+// length of the sequence, or nullopt.
+std::optional<std::pair<Instr, size_t>> frame_word_with_constant(const std::vector<Instr>& code, size_t k,
+                                                                 const std::vector<bool>& boundary,
+                                                                 const std::vector<bool>& line_start) {
+  const auto free = [&](size_t n) {
+    if (k + n >= code.size()) return false;
+    for (size_t j = 1; j <= n; ++j)
+      if (boundary[code[k + j].pc]) return false;
+    return true;
+  };
+  const Instr& address = code[k];
+  if (address.op != Op::ADDLK || !free(3) || code[k + 1].op != Op::LDM || code[k + 2].op != Op::PUSHI)
+    return std::nullopt;
+  const auto offset = static_cast<int32_t>(address.b);
+  const int32_t c = imm_of(code[k + 2]);
+  const Op use = code[k + 3].op;
+  if ((use == Op::ADDI || use == Op::SUBI) && offset >= 0 && offset <= 0xFFFF &&
+      fits_int16(c) && fits_int16(-c)) {
+    const int32_t addend = use == Op::ADDI ? c : -c;
+    return std::pair{Instr{address.pc, Op::ADDMLK, address.a, pack_local_imm(static_cast<uint32_t>(offset), addend)},
+                     size_t{4}};
+  }
+  if (use < Op::JEQI || use > Op::JGEI || !free(4) || code[k + 4].op != Op::EOL ||
+      address.a > kFrameTestLocalMax || offset < 0 || offset > static_cast<int32_t>(kFrameTestOffsetMax) ||
+      c < kFrameTestImmMin || c > kFrameTestImmMax)
+    return std::nullopt;
+  const size_t target = index_at(code, code[k + 3].a);
+  if (target + 1 >= code.size() || !skippable_eol(code[target], line_start) || !boundary[code[target + 1].pc])
+    return std::nullopt;
+  const auto how = static_cast<uint32_t>(use) - static_cast<uint32_t>(Op::JEQI);
+  return std::pair{Instr{address.pc, Op::JCMPMKEOL, code[target + 1].pc,
+                         pack_frame_test(address.a, static_cast<uint32_t>(offset), how, c)},
+                   size_t{5}};
+}
+
 // An address of a frame in the data memory and its use: "ADDLK l k; LDM" is LDMLK, and
 // "ADDLK l k; <pure pushes of one value>; STM" is the pushes and STMLK (the address computed
 // after the value, which changes nothing, since the pushes write nothing). An address's
 // unsigned range tests that keep it: "DUP; PUSHI k; CMPU <; JNZ T" is JULTK, and "DUP; LDL l;
 // SUBI; PUSHI k; CMPU <; JNZ T" is JULTLK. Over the fused code; nothing control can enter is
 // inside a sequence.
-void fuse_memory_frames(std::vector<Instr>& code, const std::vector<bool>& boundary) {
+void fuse_memory_frames(std::vector<Instr>& code, const std::vector<bool>& boundary,
+                        const std::vector<bool>& line_start) {
   constexpr uint32_t kBelow = 2;  // CMPU's "<"
   const auto inside_free = [&](size_t k, size_t n) {
     if (k + n >= code.size()) return false;
@@ -644,7 +683,10 @@ void fuse_memory_frames(std::vector<Instr>& code, const std::vector<bool>& bound
   fused.reserve(code.size());
   for (size_t k = 0; k < code.size(); ++k) {
     const Instr& i = code[k];
-    if (i.op == Op::ADDLK && inside_free(k, 1) && is(k + 1, Op::LDM)) {
+    if (auto with_constant = frame_word_with_constant(code, k, boundary, line_start)) {
+      fused.push_back(with_constant->first);
+      k += with_constant->second - 1;
+    } else if (i.op == Op::ADDLK && inside_free(k, 1) && is(k + 1, Op::LDM)) {
       fused.push_back(Instr{i.pc, Op::LDMLK, i.a, i.b});
       k += 1;
     } else if (i.op == Op::DUP && inside_free(k, 3) && below_then_jump(k + 1) &&
@@ -821,7 +863,7 @@ PeepholeStats optimize(Image& image) {
   }
 
   fold_accumulations(out, boundary);
-  fuse_memory_frames(out, boundary);
+  fuse_memory_frames(out, boundary, line_start);
   // A jump dropped may leave the place it went to unentered: again until nothing changes.
   for (size_t before = out.size() + 1; out.size() < before;) {
     before = out.size();

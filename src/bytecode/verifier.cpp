@@ -130,6 +130,8 @@ class Verifier {
         const RoutineRecord callee = image_.routines[a];
         if (image_.code[pc + 1] > callee.outputs) return fail(VerifyError::BadOperand, pc);
       }
+      if (word_op(word) == Op::JCMPMKEOL && frame_test_how(image_.code[pc + 1]) > 5)
+        return fail(VerifyError::BadOperand, pc);
       if (word_op(word) == Op::CALLFEOL) {
         const uint32_t b = image_.code[pc + 1];
         if (image_.routines[a].inputs < 2 || b > pack_memory_frame(kMemoryFrameMax, 0xFF, 0xFF) ||
@@ -212,6 +214,8 @@ class Verifier {
 
     if (info.a == Operand::Local && a >= locals) return fail(VerifyError::BadLocal, pc);
     if (info.b == Operand::Local && image_.code[pc + 1] >= locals)
+      return fail(VerifyError::BadLocal, pc);
+    if (info.b == Operand::FrameTest && frame_test_local(image_.code[pc + 1]) >= locals)
       return fail(VerifyError::BadLocal, pc);
     if (info.b == Operand::LocalPair || info.b == Operand::LocalImm || info.b == Operand::LocalConst) {
       const uint32_t b = image_.code[pc + 1];

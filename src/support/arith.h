@@ -70,13 +70,7 @@ inline int32_t zero_extend(int32_t a, uint32_t bits) {
   return static_cast<int32_t>(static_cast<uint32_t>(a) & ((1u << bits) - 1u));
 }
 
-// The words as unsigned numbers. The caller checks b != 0 for the division.
-inline int32_t unsigned_div(int32_t a, int32_t b) {
-  return static_cast<int32_t>(static_cast<uint32_t>(a) / static_cast<uint32_t>(b));
-}
-inline int32_t unsigned_rem(int32_t a, int32_t b) {
-  return static_cast<int32_t>(static_cast<uint32_t>(a) % static_cast<uint32_t>(b));
-}
+// The word as an unsigned number.
 inline int32_t shift_right_logical(int32_t a, int32_t n) {
   if (n < 0 || n > 31) return 0;
   return static_cast<int32_t>(static_cast<uint32_t>(a) >> n);

@@ -1296,6 +1296,27 @@ op_JULTLK: {
   if (offset < static_cast<uint32_t>(bytecode::packed_imm(pair))) JUMP_TO(code + A()); else ip += 2;
   DISPATCH();
 }
+// A frame's word with a constant: `n - 1` of a parameter, and `if (n < 2)` ending its line.
+op_ADDMLK: {
+  const uint32_t pair = B();
+  const uint32_t address = static_cast<uint32_t>(locals[A()].i) + bytecode::packed_first(pair);
+  if (address >= memory_words_) FAIL(RunError::BadAddress);
+  (sp++)->i = arith::wrap_add(memory_[address].i, bytecode::packed_imm(pair));
+  ip += 2;
+  DISPATCH();
+}
+op_JCMPMKEOL: {
+  const uint32_t test = B();
+  const uint32_t address =
+      static_cast<uint32_t>(locals[bytecode::frame_test_local(test)].i) + bytecode::frame_test_offset(test);
+  if (address >= memory_words_) FAIL(RunError::BadAddress);
+  if (holds(bytecode::frame_test_how(test), int_outcome(memory_[address].i, bytecode::frame_test_imm(test))))
+    JUMP_OR(code + A(), out_of_back_jumps_at_line_end);
+  else
+    ip += 2;
+  if (--lines.now == 0) goto out_of_lines;
+  DISPATCH();
+}
 op_MULIK:
   sp[-1].i = arith::wrap_mul(sp[-1].i, IMM());
   ++ip;
@@ -1313,12 +1334,6 @@ op_ADDIG:
 
 op_SEXT: UNARY(Value::of_int(arith::sign_extend(a.i, A())))
 op_ZEXT: UNARY(Value::of_int(arith::zero_extend(a.i, A())))
-op_DIVU:
-  if (sp[-1].i == 0) FAIL(RunError::DivisionByZero);
-  INT_BINARY(arith::unsigned_div(a, b))
-op_REMU:
-  if (sp[-1].i == 0) FAIL(RunError::DivisionByZero);
-  INT_BINARY(arith::unsigned_rem(a, b))
 op_SHRU: INT_BINARY(arith::shift_right_logical(a, b))
 op_CMPU: {
   // Unsigned order is signed order with the sign bits flipped.

@@ -940,6 +940,18 @@ flat:
   LDM
   STM
   EOL
+  ADDLK 0 1
+  LDM
+  PUSHI 7
+  LTI
+  JZ big
+  EOL
+  PUSHI 8
+  PUSHI 1
+  STM
+  EOL
+big:
+  EOL
   RET
 )";
   const bytecode::Image image = optimized(text);
@@ -948,12 +960,15 @@ flat:
       Op::PUSHI, Op::STMLK, Op::EOL,                   // frame[1] = 7
       Op::ADDLK, Op::STMLK, Op::EOL,                   // frame[2] = base + 2 (a pointer: 6)
       Op::LDMLK, Op::JULTK, Op::JULTLK, Op::RAISE,     // r = frame[2], in the user memory or the frame
-      Op::LDMLK, Op::PUSHI, Op::SUBI, Op::STM,         // flat: *r = frame[1] - 1 (STM's mark)
+      Op::ADDMLK, Op::STM,                             // flat: *r = frame[1] - 1 (STM's mark)
       Op::LDMLK, Op::STMLK,                            // frame[0] = frame[3]
       Op::PUSHI, Op::LDMLK, Op::STM,                   // seen = frame[1]: the address first
+      Op::JCMPMKEOL,                                   // if (frame[1] < 7), ending its line
+      Op::PUSHI, Op::PUSHI, Op::STM,                   // seen = 1 (not run: frame[1] is 7)
+      Op::EOL,                                         // big's, after the body: it falls into it
       Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
-  EXPECT_EQ(marked_ops(image), (std::vector<Op>{Op::STM, Op::STM}))
+  EXPECT_EQ(marked_ops(image), (std::vector<Op>{Op::STM, Op::STM, Op::STM}))
       << bytecode::disassemble(image);
   expect_same_behaviour(text, "frames in the data memory");
   EXPECT_EQ(run_and_read(image, "seen"), 7);

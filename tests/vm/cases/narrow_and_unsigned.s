@@ -1,8 +1,7 @@
 ; Narrow and unsigned integers. SEXT keeps the low A bits sign-extended: ST's BYTE and WORD
 ; (-128..127, -32768..32767 in the S300 manual) and PDL's short. ZEXT keeps them zero-extended:
-; PDL's loop count, an unsigned 16-bit number. DIVU, REMU, SHRU and CMPU read words as unsigned.
+; PDL's loop count, an unsigned 16-bit number. SHRU and CMPU read words as unsigned.
 .global int "narrow" 8
-.global int "udiv" 4
 .global int "shru" 4
 .global int "cmpu" 7
 .const int 70000
@@ -43,26 +42,6 @@ main:
   PUSHK 1
   ZEXT 31
   STGX narrow       ; 0x7FFFFFFF
-  PUSHI 0
-  PUSHK 1
-  PUSHI 2
-  DIVU
-  STGX udiv         ; 0xFFFFFFFF / 2
-  PUSHI 1
-  PUSHK 1
-  PUSHI 10
-  REMU
-  STGX udiv         ; 4294967295 % 10
-  PUSHI 2
-  PUSHK 2
-  PUSHI 3
-  DIVU
-  STGX udiv         ; 2147483648 / 3
-  PUSHI 3
-  PUSHI 7
-  PUSHK 1
-  DIVU
-  STGX udiv         ; 7 / 4294967295
   PUSHI 0
   PUSHI -8
   PUSHI 1
@@ -128,10 +107,6 @@ main:
 ; expect narrow[5] = 200
 ; expect narrow[6] = -1
 ; expect narrow[7] = 2147483647
-; expect udiv[0] = 2147483647
-; expect udiv[1] = 5
-; expect udiv[2] = 715827882
-; expect udiv[3] = 0
 ; expect shru[0] = 2147483644
 ; expect shru[1] = 15
 ; expect shru[2] = 0
