@@ -45,25 +45,30 @@ bool compare(int32_t how, float a, float b) {
   }
 }
 // A call's words copied or set to 0: frames mostly have a few, which a call of memcpy or memset
-// (what a plain loop compiles to) would cost more than.
+// (what a plain loop compiles to) or a jump table would cost more than. 2 to 4 words are two
+// 8-byte moves that may overlap.
 void copy_words(Value* to, const Value* from, uint32_t n) {
-  switch (n) {
-    case 4: to[3] = from[3]; [[fallthrough]];
-    case 3: to[2] = from[2]; [[fallthrough]];
-    case 2: to[1] = from[1]; [[fallthrough]];
-    case 1: to[0] = from[0]; [[fallthrough]];
-    case 0: break;
-    default: std::memcpy(static_cast<void*>(to), from, n * sizeof(Value));
+  if (n - 2 <= 2) {
+    uint64_t head = 0, tail = 0;
+    std::memcpy(&head, from, sizeof head);
+    std::memcpy(&tail, from + n - 2, sizeof tail);
+    std::memcpy(static_cast<void*>(to), &head, sizeof head);
+    std::memcpy(static_cast<void*>(to + n - 2), &tail, sizeof tail);
+  } else if (n == 1) {
+    to[0] = from[0];
+  } else if (n != 0) {
+    std::memcpy(static_cast<void*>(to), from, n * sizeof(Value));
   }
 }
 void zero_words(Value* to, uint32_t n) {
-  switch (n) {
-    case 4: to[3].bits = 0; [[fallthrough]];
-    case 3: to[2].bits = 0; [[fallthrough]];
-    case 2: to[1].bits = 0; [[fallthrough]];
-    case 1: to[0].bits = 0; [[fallthrough]];
-    case 0: break;
-    default: std::memset(static_cast<void*>(to), 0, n * sizeof(Value));
+  if (n - 2 <= 2) {
+    const uint64_t zero = 0;
+    std::memcpy(static_cast<void*>(to), &zero, sizeof zero);
+    std::memcpy(static_cast<void*>(to + n - 2), &zero, sizeof zero);
+  } else if (n == 1) {
+    to[0].bits = 0;
+  } else if (n != 0) {
+    std::memset(static_cast<void*>(to), 0, n * sizeof(Value));
   }
 }
 // A 64-bit value on the stack or in memory: two words, the low one first (deeper).
