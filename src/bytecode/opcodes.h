@@ -10,7 +10,7 @@ enum class Operand : uint8_t {
   None, Imm, Const, Local, Global, Routine, Target, Count, Command, Unit, LocalPair, LocalImm,
   LocalConst, Width, Text, GlobalPair, GlobalConst, GlobalImm, Element, Lines, Window, GlobalsTest,
   LoopStep, GlobalWindow, MemoryFrame, FrameTest,
-  OffsetImm
+  OffsetImm, Comparison, PointerTest
 };
 
 // The packed B operands of the fused comparisons and arithmetic (LocalConst, GlobalPair,
@@ -113,6 +113,22 @@ constexpr uint32_t frame_test_local(uint32_t b) { return b & 0xFu; }
 constexpr uint32_t frame_test_offset(uint32_t b) { return (b >> 4) & kFrameTestOffsetMax; }
 constexpr uint32_t frame_test_how(uint32_t b) { return (b >> 16) & 0x7u; }
 constexpr int32_t frame_test_imm(uint32_t b) { return static_cast<int32_t>(b) >> 19; }
+// LDPMLK's B: the local holding the frame's address (0..15) in bits 0-3, the word's offset
+// (0..255) in bits 4-11, the bound below which an address passes (0..4095) in bits 12-23, the
+// window's local (0..15) in bits 24-27 and its size's power of two (0..15) in bits 28-31.
+constexpr uint32_t kPointerTestLocalMax = 15;
+constexpr uint32_t kPointerTestOffsetMax = 255;
+constexpr uint32_t kPointerTestBoundMax = 4095;
+constexpr uint32_t kPointerTestSizeMax = 15;
+constexpr uint32_t pack_pointer_test(uint32_t local, uint32_t offset, uint32_t bound, uint32_t window_local,
+                                     uint32_t size_power) {
+  return local | (offset << 4) | (bound << 12) | (window_local << 24) | (size_power << 28);
+}
+constexpr uint32_t pointer_test_local(uint32_t b) { return b & 0xFu; }
+constexpr uint32_t pointer_test_offset(uint32_t b) { return (b >> 4) & kPointerTestOffsetMax; }
+constexpr uint32_t pointer_test_bound(uint32_t b) { return (b >> 12) & kPointerTestBoundMax; }
+constexpr uint32_t pointer_test_window_local(uint32_t b) { return (b >> 24) & 0xFu; }
+constexpr uint32_t pointer_test_window(uint32_t b) { return 1u << (b >> 28); }
 // CALLFEOL's B: the frame's words (1..4095) in bits 0-11, the arguments in bits 12-19, the
 // frame word the first goes to in bits 20-27.
 constexpr uint32_t kMemoryFrameMax = (1u << 12) - 1;

@@ -83,7 +83,7 @@ std::optional<Op> ending_line_form(Op op) {
   };
   if (in(Op::JEQGK, Op::JGEGK)) return shifted(Op::JEQGK, Op::JEQGKEOL);
   if (in(Op::JNEQFGK, Op::JNGEFGK)) return shifted(Op::JNEQFGK, Op::JNEQFGKEOL);
-  if (in(Op::JNEQF, Op::JNGEF)) return shifted(Op::JNEQF, Op::JNEQFEOL);
+  if (in(Op::JNEQF, Op::JNGEF)) return Op::JNCMPFEOL;  // the comparison into B
   if (in(Op::JNEQFGG, Op::JNGEFGG)) return shifted(Op::JNEQFGG, Op::JNEQFGGEOL);
   if (op == Op::JZG) return Op::JZGEOL;
   if (op == Op::JNZG) return Op::JNZGEOL;
@@ -156,6 +156,8 @@ class Fuser {
     if (target + 1 >= in_.size() || !skippable_eol(at(target), line_start_) ||
         !boundary_[at(target + 1).pc])
       return;
+    if (*form == Op::JNCMPFEOL)
+      fused.first.b = static_cast<uint32_t>(fused.first.op) - static_cast<uint32_t>(Op::JNEQF);
     fused.first.op = *form;
     fused.first.a = at(target + 1).pc;
     ++fused.second;
@@ -660,6 +662,33 @@ std::optional<std::pair<Instr, size_t>> frame_word_with_constant(const std::vect
                    size_t{5}};
 }
 
+// A pointer read from a frame's word and its two common checks to one place: "LDMLK l k;
+// JULTK T bound; JULTLK T (w, 2^n)" is LDPMLK T, where its fields fit.
+void fuse_pointer_tests(std::vector<Instr>& code, const std::vector<bool>& boundary) {
+  std::vector<Instr> fused;
+  fused.reserve(code.size());
+  for (size_t k = 0; k < code.size(); ++k) {
+    const Instr& load = code[k];
+    if (load.op == Op::LDMLK && k + 2 < code.size() && !boundary[code[k + 1].pc] &&
+        !boundary[code[k + 2].pc] && code[k + 1].op == Op::JULTK && code[k + 2].op == Op::JULTLK &&
+        code[k + 1].a == code[k + 2].a && load.a <= kPointerTestLocalMax &&
+        load.b <= kPointerTestOffsetMax && code[k + 1].b <= kPointerTestBoundMax) {
+      const uint32_t window_local = packed_first(code[k + 2].b);
+      const int32_t window = packed_imm(code[k + 2].b);
+      uint32_t power = 0;
+      while (power < kPointerTestSizeMax && (1 << power) < window) ++power;
+      if (window_local <= kPointerTestLocalMax && window > 0 && (1 << power) == window) {
+        fused.push_back(Instr{load.pc, Op::LDPMLK, code[k + 1].a,
+                              pack_pointer_test(load.a, load.b, code[k + 1].b, window_local, power)});
+        k += 2;
+        continue;
+      }
+    }
+    fused.push_back(load);
+  }
+  code = std::move(fused);
+}
+
 // An address of a frame in the data memory and its use: "ADDLK l k; LDM" is LDMLK, and
 // "ADDLK l k; <pure pushes of one value>; STM" is the pushes and STMLK (the address computed
 // after the value, which changes nothing, since the pushes write nothing). An address's
@@ -716,6 +745,7 @@ void fuse_memory_frames(std::vector<Instr>& code, const std::vector<bool>& bound
     code.push_back(Instr{fused[store].pc, Op::STMLK, address.a, address.b});
     k = store;
   }
+  fuse_pointer_tests(code, boundary);
 }
 
 // The old code words control may arrive at other than from the instruction before: jump

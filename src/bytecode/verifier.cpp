@@ -132,6 +132,7 @@ class Verifier {
       }
       if (word_op(word) == Op::JCMPMKEOL && frame_test_how(image_.code[pc + 1]) > 5)
         return fail(VerifyError::BadOperand, pc);
+      if (info.b == Operand::Comparison && image_.code[pc + 1] > 5) return fail(VerifyError::BadOperand, pc);
       if (word_op(word) == Op::CALLFEOL) {
         const uint32_t b = image_.code[pc + 1];
         if (image_.routines[a].inputs < 2 || b > pack_memory_frame(kMemoryFrameMax, 0xFF, 0xFF) ||
@@ -216,6 +217,9 @@ class Verifier {
     if (info.b == Operand::Local && image_.code[pc + 1] >= locals)
       return fail(VerifyError::BadLocal, pc);
     if (info.b == Operand::FrameTest && frame_test_local(image_.code[pc + 1]) >= locals)
+      return fail(VerifyError::BadLocal, pc);
+    if (info.b == Operand::PointerTest && (pointer_test_local(image_.code[pc + 1]) >= locals ||
+                                           pointer_test_window_local(image_.code[pc + 1]) >= locals))
       return fail(VerifyError::BadLocal, pc);
     if (info.b == Operand::LocalPair || info.b == Operand::LocalImm || info.b == Operand::LocalConst) {
       const uint32_t b = image_.code[pc + 1];

@@ -109,7 +109,6 @@ static_assert(static_cast<int>(Op::JGEGK) - static_cast<int>(Op::JEQGK) == 5 &&
                   static_cast<int>(Op::JNGEFGK) - static_cast<int>(Op::JNEQFGK) == 5 &&
                   static_cast<int>(Op::JGEGKEOL) - static_cast<int>(Op::JEQGKEOL) == 5 &&
                   static_cast<int>(Op::JNGEFGKEOL) - static_cast<int>(Op::JNEQFGKEOL) == 5 &&
-                  static_cast<int>(Op::JNGEFEOL) - static_cast<int>(Op::JNEQFEOL) == 5 &&
                   static_cast<int>(Op::JNGEFGG) - static_cast<int>(Op::JNEQFGG) == 5 &&
                   static_cast<int>(Op::JNGEFGGEOL) - static_cast<int>(Op::JNEQFGGEOL) == 5,
               "a family of fused comparisons is six opcodes in the order == != < <= > >=");
@@ -1087,16 +1086,10 @@ op_JNGEFGKEOL: {
                                                constants_[bytecode::packed_second(pair)].f)),
                      2)
 }
-op_JNEQFEOL:
-op_JNNEFEOL:
-op_JNLTFEOL:
-op_JNLEFEOL:
-op_JNGTFEOL:
-op_JNGEFEOL: {
-  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFEOL);
+op_JNCMPFEOL: {
   const uint32_t outcome = float_outcome(sp[-2].f, sp[-1].f);
   sp -= 2;
-  BRANCH_ENDING_LINE(!holds(how, outcome), 1)
+  BRANCH_ENDING_LINE(!holds(B(), outcome), 2)
 }
 op_JZGEOL:
 op_JNZGEOL:
@@ -1294,6 +1287,20 @@ op_STMLK: {
 op_JULTK:
   if (static_cast<uint32_t>(sp[-1].i) < B()) JUMP_TO(code + A()); else ip += 2;
   DISPATCH();
+op_LDPMLK: {
+  const uint32_t test = B();
+  const uint32_t address =
+      static_cast<uint32_t>(locals[bytecode::pointer_test_local(test)].i) + bytecode::pointer_test_offset(test);
+  if (address >= memory_words_) FAIL(RunError::BadAddress);
+  const uint32_t pointer = memory_[address].bits;
+  (sp++)->bits = pointer;
+  if (pointer < bytecode::pointer_test_bound(test) ||
+      pointer - locals[bytecode::pointer_test_window_local(test)].bits < bytecode::pointer_test_window(test))
+    JUMP_TO(code + A());
+  else
+    ip += 2;
+  DISPATCH();
+}
 op_JULTLK: {
   const uint32_t pair = B();
   const uint32_t offset =

@@ -959,7 +959,7 @@ big:
       Op::PUSHI, Op::STL, Op::PUSHI, Op::STL,
       Op::PUSHI, Op::STMLK, Op::EOL,                   // frame[1] = 7
       Op::ADDLK, Op::STMLK, Op::EOL,                   // frame[2] = base + 2 (a pointer: 6)
-      Op::LDMLK, Op::JULTK, Op::JULTLK, Op::RAISE,     // r = frame[2], in the user memory or the frame
+      Op::LDPMLK, Op::RAISE,                           // r = frame[2], in the user memory or the frame
       Op::ADDMLK, Op::STM,                             // flat: *r = frame[1] - 1 (STM's mark)
       Op::LDMLK, Op::STMLK,                            // frame[0] = frame[3]
       Op::PUSHI, Op::LDMLK, Op::STM,                   // seen = frame[1]: the address first

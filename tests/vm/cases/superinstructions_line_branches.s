@@ -1,5 +1,6 @@
-; The branches that end their line on both paths (JxxGKEOL, JNxxFGKEOL, JNxxFEOL, JZGEOL,
-; JNZGEOL), each run directly: taken[k] is 1 when test k jumps. x = 5 (int), f = 1.5 (float).
+; The branches that end their line on both paths (JxxGKEOL, JNxxFGKEOL, JNCMPFEOL with the
+; comparison in B, JZGEOL, JNZGEOL), each run directly: taken[k] is 1 when test k jumps. x = 5
+; (int), f = 1.5 (float).
 ; Where the line ends is the peephole test's (line_slices); here, where each one goes.
 .global int "taken" 24
 .global int "x" 1
@@ -100,7 +101,7 @@ t11:
 n11:
   LDG f
   PUSHK 1
-  JNEQFEOL t12          ; unless 1.5 eq 1.5 (stack)
+  JNCMPFEOL t12 0        ; unless 1.5 eq 1.5 (stack)
   JMP n12
 t12:
   PUSHI 12
@@ -109,7 +110,7 @@ t12:
 n12:
   LDG f
   PUSHK 1
-  JNNEFEOL t13          ; unless 1.5 ne 1.5 (stack)
+  JNCMPFEOL t13 1        ; unless 1.5 ne 1.5 (stack)
   JMP n13
 t13:
   PUSHI 13
@@ -118,7 +119,7 @@ t13:
 n13:
   LDG f
   PUSHK 1
-  JNLTFEOL t14          ; unless 1.5 lt 1.5 (stack)
+  JNCMPFEOL t14 2        ; unless 1.5 lt 1.5 (stack)
   JMP n14
 t14:
   PUSHI 14
@@ -127,7 +128,7 @@ t14:
 n14:
   LDG f
   PUSHK 1
-  JNLEFEOL t15          ; unless 1.5 le 1.5 (stack)
+  JNCMPFEOL t15 3        ; unless 1.5 le 1.5 (stack)
   JMP n15
 t15:
   PUSHI 15
@@ -136,7 +137,7 @@ t15:
 n15:
   LDG f
   PUSHK 1
-  JNGTFEOL t16          ; unless 1.5 gt 1.5 (stack)
+  JNCMPFEOL t16 4        ; unless 1.5 gt 1.5 (stack)
   JMP n16
 t16:
   PUSHI 16
@@ -145,7 +146,7 @@ t16:
 n16:
   LDG f
   PUSHK 1
-  JNGEFEOL t17          ; unless 1.5 ge 1.5 (stack)
+  JNCMPFEOL t17 5        ; unless 1.5 ge 1.5 (stack)
   JMP n17
 t17:
   PUSHI 17
@@ -168,7 +169,7 @@ t19:
 n19:
   LDG nan
   PUSHK 1
-  JNNEFEOL t20          ; unless NaN != 1.5: it is, no jump
+  JNCMPFEOL t20 1        ; unless NaN != 1.5: it is, no jump
   JMP n20
 t20:
   PUSHI 20

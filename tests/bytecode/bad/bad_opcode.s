@@ -1,0 +1,6 @@
+; an opcode number that does not exist (255: 0..251 are taken)
+.routine function "main" in=0 out=0 entry=main
+main:
+  .word 0x000000ff
+  RET
+; expect verify: BadOpcode
