@@ -715,12 +715,14 @@ op_RET: {
       goto stop;
     }
   } else {
-    const Value* outputs = f.locals + routines_[f.routine].inputs;
     Value* base = f.stack_base;
-    if (f.nargout == 1) {
-      base[0] = outputs[0];
-    } else {
-      for (uint32_t i = 0; i < f.nargout; ++i) base[i] = outputs[i];
+    if (f.nargout != 0) {  // a procedure's call (PDL's, ST's) wants none
+      const Value* outputs = f.locals + routines_[f.routine].inputs;
+      if (f.nargout == 1) {
+        base[0] = outputs[0];
+      } else {
+        for (uint32_t i = 0; i < f.nargout; ++i) base[i] = outputs[i];
+      }
     }
     sp = base + f.nargout;
     if (tp->frame_count == 0) goto finished;
