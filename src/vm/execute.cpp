@@ -1270,18 +1270,21 @@ op_STM: {
 // Superinstructions again: no mark to look for.
 #undef DISPATCH
 #define DISPATCH() DISPATCH_NEXT()
-// A word of a frame in the data memory: local A's address plus B, wrapping as ADDLK does.
+// `word`, the word of a frame in the data memory at a local's address plus an offset, wrapping
+// as ADDLK does; outside the memory it is BadAddress.
+#define FRAME_WORD(word, local, offset)                                                  \
+  const uint32_t word##_address = static_cast<uint32_t>(locals[local].i) + (offset); \
+  if (word##_address >= memory_words_) FAIL(RunError::BadAddress);                 \
+  Value& word = memory_[word##_address]
 op_LDMLK: {
-  const uint32_t address = static_cast<uint32_t>(locals[A()].i) + B();
-  if (address >= memory_words_) FAIL(RunError::BadAddress);
-  *sp++ = memory_[address];
+  FRAME_WORD(at, A(), B());
+  *sp++ = at;
   ip += 2;
   DISPATCH();
 }
 op_STMLK: {
-  const uint32_t address = static_cast<uint32_t>(locals[A()].i) + B();
-  if (address >= memory_words_) FAIL(RunError::BadAddress);
-  memory_[address] = *--sp;
+  FRAME_WORD(at, A(), B());
+  at = *--sp;
   ip += 2;
   DISPATCH();
 }
@@ -1291,10 +1294,8 @@ op_JULTK:
   DISPATCH();
 op_LDPMLK: {
   const uint32_t test = B();
-  const uint32_t address =
-      static_cast<uint32_t>(locals[bytecode::pointer_test_local(test)].i) + bytecode::pointer_test_offset(test);
-  if (address >= memory_words_) FAIL(RunError::BadAddress);
-  const uint32_t pointer = memory_[address].bits;
+  FRAME_WORD(at, bytecode::pointer_test_local(test), bytecode::pointer_test_offset(test));
+  const uint32_t pointer = at.bits;
   (sp++)->bits = pointer;
   if (pointer < bytecode::pointer_test_bound(test) ||
       pointer - locals[bytecode::pointer_test_window_local(test)].bits < bytecode::pointer_test_window(test))
@@ -1313,18 +1314,15 @@ op_JULTLK: {
 // A frame's word with a constant: `n - 1` of a parameter, and `if (n < 2)` ending its line.
 op_ADDMLK: {
   const uint32_t pair = B();
-  const uint32_t address = static_cast<uint32_t>(locals[A()].i) + bytecode::packed_first(pair);
-  if (address >= memory_words_) FAIL(RunError::BadAddress);
-  (sp++)->i = arith::wrap_add(memory_[address].i, bytecode::packed_imm(pair));
+  FRAME_WORD(at, A(), bytecode::packed_first(pair));
+  (sp++)->i = arith::wrap_add(at.i, bytecode::packed_imm(pair));
   ip += 2;
   DISPATCH();
 }
 op_JCMPMKEOL: {
   const uint32_t test = B();
-  const uint32_t address =
-      static_cast<uint32_t>(locals[bytecode::frame_test_local(test)].i) + bytecode::frame_test_offset(test);
-  if (address >= memory_words_) FAIL(RunError::BadAddress);
-  if (holds(bytecode::frame_test_how(test), int_outcome(memory_[address].i, bytecode::frame_test_imm(test))))
+  FRAME_WORD(at, bytecode::frame_test_local(test), bytecode::frame_test_offset(test));
+  if (holds(bytecode::frame_test_how(test), int_outcome(at.i, bytecode::frame_test_imm(test))))
     JUMP_OR(code + A(), out_of_back_jumps_at_line_end);
   else
     ip += 2;
@@ -1469,6 +1467,7 @@ stop:
 #undef IMM
 #undef B
 #undef FAIL
+#undef FRAME_WORD
 #undef INT_BINARY
 #undef FLOAT_BINARY
 #undef COMPARE
