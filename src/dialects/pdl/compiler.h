@@ -211,7 +211,7 @@ class Compiler {
   void emit_store(const Place& p);
   void emit_post_increments(const Place& p);
   void emit_increment(const Var& v, int32_t by);
-  void emit_translate(bool float_address);  // logical address -> flat (checked)
+  void emit_pointer_check(bool float_address);  // a program's address, bit 29 cleared (checked)
   void emit_word_check(bool ignore_float_bit);
   void emit_user_check();                // flat address in user memory (checked)
   bool logical_address(bool for_store);  // pushes a memory place's logical address

@@ -1,6 +1,7 @@
 // The compiler's places and memory (1.3, 2.1): user variables in the 400 words, locals in the
-// task's stack frame, pointers translated from the program's addresses (0..399, 0x1000*t + k,
-// bit 29 for a float) to the flat data memory, system variables and states through the host;
+// task's stack frame, pointers checked to be the program's addresses of words (0..399,
+// 0x1000*t + k, bit 29 for a float), which are the data memory's own, system variables and
+// states through the host;
 // and the assignments, including the ones that fill blocks of words (initialisers, strings,
 // memcpy, memset) and the reductions (memmin, memmax, memsum).
 #include "dialects/pdl/compiler.h"
@@ -85,7 +86,7 @@ void Compiler::emit_user_check() {
 // cases first, each one unsigned comparison: the user memory, then the task's own stack (a
 // pointer to a caller's local). A float's address (float_address) has its bit 29 cleared first;
 // any other comes through the general check.
-void Compiler::emit_translate(bool float_address) {
+void Compiler::emit_pointer_check(bool float_address) {
   if (float_address) {
     push_int(~kFloatAddressBit);
     code_.emit(Op::ANDI);
@@ -196,7 +197,7 @@ std::optional<Place> Compiler::parse_place(bool for_store) {
   Place p;
   if (at_op("*")) {
     if (!logical_address(for_store)) return std::nullopt;
-    emit_translate(address_float_);
+    emit_pointer_check(address_float_);
     p.form = Place::Form::Memory;
     p.type = address_float_ ? Ty::Float : Ty::Int;
     return p;
@@ -445,7 +446,7 @@ void Compiler::memory_block_assignment(size_t lhs_start) {
     code_.emit(Op::LDL, d);
     push_int(i);
     code_.emit(Op::ADDI);
-    emit_translate(dest_float);
+    emit_pointer_check(dest_float);
   };
   if (accept_op("{")) {
     int32_t k = 0;
@@ -521,12 +522,12 @@ void Compiler::emit_copy_loop(bool set, bool is_float, uint32_t d, uint32_t s, u
   code_.emit(Op::LDL, d);
   code_.emit(Op::LDL, i);
   code_.emit(Op::ADDI);
-  emit_translate(is_float);
+  emit_pointer_check(is_float);
   code_.emit(Op::LDL, s);
   if (!set) {
     code_.emit(Op::LDL, i);
     code_.emit(Op::ADDI);
-    emit_translate(is_float);
+    emit_pointer_check(is_float);
     code_.emit(Op::LDM);
   }
   code_.emit(Op::STM);
@@ -576,7 +577,7 @@ Ty Compiler::memory_reduction(const std::string& raw, size_t at, CodeBuilder::La
   push_int(0);
   code_.emit_to(Op::JLEI, skip);
   code_.emit(Op::LDL, s);
-  emit_translate(f);
+  emit_pointer_check(f);
   code_.emit(Op::LDM);
   code_.emit(Op::STL, acc);
   push_int(1);
@@ -590,7 +591,7 @@ Ty Compiler::memory_reduction(const std::string& raw, size_t at, CodeBuilder::La
   code_.emit(Op::LDL, s);
   code_.emit(Op::LDL, i);
   code_.emit(Op::ADDI);
-  emit_translate(f);
+  emit_pointer_check(f);
   code_.emit(Op::LDM);
   if (sum) {
     code_.emit(f ? Op::ADDF : Op::ADDI);
