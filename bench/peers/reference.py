@@ -96,6 +96,7 @@ def main():
     print(f"floatmath {floatmath(f32)!r} {floatmath(exact)!r}")
     print(f"arrays {arrays()} {arrays()}")
     print(f"arrays960 {arrays(960)} {arrays(960)}")
+    print(f"arrays380 {arrays(380)} {arrays(380)}")
     print(f"fibloop {fibloop()} {fibloop()}")
     m32, p32 = profile(f32)
     m64, p64 = profile(exact)
