@@ -624,6 +624,14 @@ size_t stored_at(const std::vector<Instr>& code, size_t k, const std::vector<boo
   return 0;
 }
 
+// Instructions k + 1 .. k + n of the fused code exist and control enters none of them.
+bool unentered(const std::vector<Instr>& code, size_t k, size_t n, const std::vector<bool>& boundary) {
+  if (k + n >= code.size()) return false;
+  for (size_t j = 1; j <= n; ++j)
+    if (boundary[code[k + j].pc]) return false;
+  return true;
+}
+
 // A frame's word with a constant: "ADDLK l k; LDM; PUSHI c; ADDI|SUBI" is ADDMLK, and "ADDLK l k;
 // LDM; PUSHI c; J<cmp>I T; EOL" with a skippable EOL at T (mark_after_target_eols) is JCMPMKEOL,
 // which jumps past it: a condition on a parameter or local, ending its line either way. With the
@@ -631,12 +639,7 @@ size_t stored_at(const std::vector<Instr>& code, size_t k, const std::vector<boo
 std::optional<std::pair<Instr, size_t>> frame_word_with_constant(const std::vector<Instr>& code, size_t k,
                                                                  const std::vector<bool>& boundary,
                                                                  const std::vector<bool>& line_start) {
-  const auto free = [&](size_t n) {
-    if (k + n >= code.size()) return false;
-    for (size_t j = 1; j <= n; ++j)
-      if (boundary[code[k + j].pc]) return false;
-    return true;
-  };
+  const auto free = [&](size_t n) { return unentered(code, k, n, boundary); };
   const Instr& address = code[k];
   if (address.op != Op::ADDLK || !free(3) || code[k + 1].op != Op::LDM || code[k + 2].op != Op::PUSHI)
     return std::nullopt;
@@ -669,8 +672,8 @@ void fuse_pointer_tests(std::vector<Instr>& code, const std::vector<bool>& bound
   fused.reserve(code.size());
   for (size_t k = 0; k < code.size(); ++k) {
     const Instr& load = code[k];
-    if (load.op == Op::LDMLK && k + 2 < code.size() && !boundary[code[k + 1].pc] &&
-        !boundary[code[k + 2].pc] && code[k + 1].op == Op::JULTK && code[k + 2].op == Op::JULTLK &&
+    if (load.op == Op::LDMLK && unentered(code, k, 2, boundary) && code[k + 1].op == Op::JULTK &&
+        code[k + 2].op == Op::JULTLK &&
         code[k + 1].a == code[k + 2].a && load.a <= kPointerTestLocalMax &&
         load.b <= kPointerTestOffsetMax && code[k + 1].b <= kPointerTestBoundMax) {
       const uint32_t window_local = packed_first(code[k + 2].b);
@@ -698,12 +701,7 @@ void fuse_pointer_tests(std::vector<Instr>& code, const std::vector<bool>& bound
 void fuse_memory_frames(std::vector<Instr>& code, const std::vector<bool>& boundary,
                         const std::vector<bool>& line_start) {
   constexpr uint32_t kBelow = 2;  // CMPU's "<"
-  const auto inside_free = [&](size_t k, size_t n) {
-    if (k + n >= code.size()) return false;
-    for (size_t j = 1; j <= n; ++j)
-      if (boundary[code[k + j].pc]) return false;
-    return true;
-  };
+  const auto inside_free = [&](size_t k, size_t n) { return unentered(code, k, n, boundary); };
   const auto is = [&](size_t k, Op op) { return code[k].op == op; };
   const auto below_then_jump = [&](size_t k) {  // PUSHI k; CMPU <; JNZ
     return is(k, Op::PUSHI) && is(k + 1, Op::CMPU) && code[k + 1].a == kBelow && is(k + 2, Op::JNZ);

@@ -3,6 +3,8 @@
 // them. An instruction reached by several routines is rechecked with the smallest local count.
 #include "bytecode/verifier.h"
 
+#include <algorithm>
+
 #include "bytecode/opcodes.h"
 
 namespace uprog::bytecode {
@@ -235,8 +237,7 @@ class Verifier {
       push = static_cast<int32_t>(image_.code[pc + 1]);
     } else if (op == Op::CALLFEOL) {
       // The callee's inputs but the last are the caller's first locals, and 0 and 1 are read.
-      const uint32_t read = image_.routines[a].inputs > 3 ? image_.routines[a].inputs - 1 : 2;
-      if (read > locals) return fail(VerifyError::BadLocal, pc);
+      if (std::max<uint32_t>(image_.routines[a].inputs - 1, 2) > locals) return fail(VerifyError::BadLocal, pc);
       pop = static_cast<int32_t>(memory_frame_arguments(image_.code[pc + 1]));
     } else if (pops_host_arguments(op)) {
       pop = static_cast<int32_t>(image_.code[pc + 1]) + (op == Op::CMDRUNX ? 1 : 0);

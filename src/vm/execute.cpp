@@ -267,6 +267,12 @@ SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) 
     error = (e); \
     goto raise_error; \
   } while (0)
+// `word`, the word of a frame in the data memory at a local's address plus an offset, wrapping
+// as ADDLK does; outside the memory it is BadAddress.
+#define FRAME_WORD(word, local, offset)                                                  \
+  const uint32_t word##_address = static_cast<uint32_t>(locals[local].i) + (offset); \
+  if (word##_address >= memory_words_) FAIL(RunError::BadAddress);                 \
+  Value& word = memory_[word##_address]
 #define INT_BINARY(expr)           \
   {                                \
     const int32_t a = sp[-2].i;    \
@@ -1208,6 +1214,12 @@ op_JCMPGGEOL: {
                                        GLOBAL(bytecode::globals_test_second(b)).i)),
                      2)
 }
+// A frame's word compared with a constant: `if (n < 2)` of a parameter.
+op_JCMPMKEOL: {
+  const uint32_t test = B();
+  FRAME_WORD(at, bytecode::frame_test_local(test), bytecode::frame_test_offset(test));
+  BRANCH_ENDING_LINE(holds(bytecode::frame_test_how(test), int_outcome(at.i, bytecode::frame_test_imm(test))), 2)
+}
 #undef BRANCH_ENDING_LINE
 #undef GLOBAL
 #undef DISPATCH
@@ -1270,12 +1282,6 @@ op_STM: {
 // Superinstructions again: no mark to look for.
 #undef DISPATCH
 #define DISPATCH() DISPATCH_NEXT()
-// `word`, the word of a frame in the data memory at a local's address plus an offset, wrapping
-// as ADDLK does; outside the memory it is BadAddress.
-#define FRAME_WORD(word, local, offset)                                                  \
-  const uint32_t word##_address = static_cast<uint32_t>(locals[local].i) + (offset); \
-  if (word##_address >= memory_words_) FAIL(RunError::BadAddress);                 \
-  Value& word = memory_[word##_address]
 op_LDMLK: {
   FRAME_WORD(at, A(), B());
   *sp++ = at;
@@ -1311,22 +1317,12 @@ op_JULTLK: {
   if (offset < static_cast<uint32_t>(bytecode::packed_imm(pair))) JUMP_TO(code + A()); else ip += 2;
   DISPATCH();
 }
-// A frame's word with a constant: `n - 1` of a parameter, and `if (n < 2)` ending its line.
+// A frame's word plus a constant: `n - 1` of a parameter.
 op_ADDMLK: {
   const uint32_t pair = B();
   FRAME_WORD(at, A(), bytecode::packed_first(pair));
   (sp++)->i = arith::wrap_add(at.i, bytecode::packed_imm(pair));
   ip += 2;
-  DISPATCH();
-}
-op_JCMPMKEOL: {
-  const uint32_t test = B();
-  FRAME_WORD(at, bytecode::frame_test_local(test), bytecode::frame_test_offset(test));
-  if (holds(bytecode::frame_test_how(test), int_outcome(at.i, bytecode::frame_test_imm(test))))
-    JUMP_OR(code + A(), out_of_back_jumps_at_line_end);
-  else
-    ip += 2;
-  if (--lines.now == 0) goto out_of_lines;
   DISPATCH();
 }
 op_MULIK:
