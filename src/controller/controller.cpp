@@ -198,8 +198,9 @@ DownloadResult Controller::download(const std::vector<uint8_t>& stored_form) {
 
 bool Controller::download_source_file(const std::string& path, std::vector<Diagnostic>& diagnostics) {
   dialect::CompileOutput out = dialect().compile_file(path, {});
+  const bool compiled = out.ok();  // before its diagnostics move out
   diagnostics = std::move(out.diagnostics);
-  if (!out.ok()) return false;
+  if (!compiled) return false;
   const DownloadResult r = download(out.stored_form);
   if (r.ok && !out.debug_map.empty()) firmware().set_debug_map(out.debug_map);
   if (!r.ok) {

@@ -213,7 +213,8 @@ int run(const RunOptions& o) {
   auto print_log = [&] {
     for (const controller::LogEntry& e : drive.take_log()) {
       fmt::print("[{:10.3f} ms] {}\n", static_cast<double>(e.time_us) / 1000.0, e.text);
-      if (e.text.rfind("run-time error", 0) == 0) run_time_error = true;
+      // Every dialect's firmware logs a run-time error as such ("task 1: run-time error 4 ...").
+      if (e.text.find("run-time error") != std::string::npos) run_time_error = true;
     }
     for (const std::string& text : drive.take_output()) fmt::print("{}", text);
   };
@@ -257,32 +258,32 @@ int run(const RunOptions& o) {
   return run_time_error ? 3 : 0;
 }
 
-void add_run(CLI::App* cmd, Action& action) {
+void add_run(Options& cmd, Action& action) {
   auto o = std::make_shared<RunOptions>();
-  cmd->add_option("FILE", o->file, "source file")->required();
+  cmd.option("FILE", o->file, "source file").required();
   add_dialect_option(cmd, o->dialect);
-  cmd->add_option("--entry", o->entry, "where to start (a routine of the program; default: where its dialect starts one)");
-  cmd->add_option("--for", o->duration,
+  cmd.option("--entry", o->entry, "where to start (a routine of the program; default: where its dialect starts one)");
+  cmd.option("--for", o->duration,
                   "virtual time to run (default: until the program has ended and the axis is still)");
-  cmd->add_option("--limit", o->limit, "without --for, the longest virtual time to run")
-      ->capture_default_str();
+  cmd.option("--limit", o->limit, "without --for, the longest virtual time to run")
+      .show_default();
   add_drive_shape_options(cmd, o->shape);
-  cmd->add_option("--budget", o->budget, "source lines per servo cycle, or 'unlimited' (default 1)");
-  cmd->add_option("--input", o->inputs, "N=LEVEL@TIME: set digital input N at TIME");
-  cmd->add_option("--fault", o->faults, "NAME@TIME: latch a drive fault at TIME");
-  cmd->add_option("--record", o->record, "comma-separated channels for the drive's recorder: signals and globals (PX,VX,myvar)");
-  cmd->add_option("--trigger", o->trigger,
+  cmd.option("--budget", o->budget, "source lines per servo cycle, or 'unlimited' (default 1)");
+  cmd.option("--input", o->inputs, "N=LEVEL@TIME: set digital input N at TIME");
+  cmd.option("--fault", o->faults, "NAME@TIME: latch a drive fault at TIME");
+  cmd.option("--record", o->record, "comma-separated channels for the drive's recorder: signals and globals (PX,VX,myvar)");
+  cmd.option("--trigger", o->trigger,
                   "immediate, begin, rising:CH:LEVEL, falling:CH:LEVEL, leave:CH:LOW:HIGH, enter:CH:LOW:HIGH, input:N:rise|fall")
-      ->capture_default_str();
-  cmd->add_option("--pretrigger", o->pretrigger, "percent of the recording before the trigger")->capture_default_str();
-  cmd->add_option("--length", o->length, "samples per channel (default: the whole run with an immediate trigger, else 1000)");
-  cmd->add_option("--gap", o->gap, "servo cycles between samples")->capture_default_str();
-  cmd->add_option("--csv", o->csv, "where the recording goes (docs/recorder.md, \"The CSV file\")");
-  cmd->add_option("--plot", o->plot, "draw the recording: FILE.png or FILE.svg");
-  cmd->add_option("--expect", o->expect, "a reference recording (CSV): the run fails where this one differs");
-  cmd->add_option("--tolerance", o->tolerances, "CHANNEL=VALUE: how far --expect lets a channel differ");
-  cmd->add_option("--then", o->then, "a command line sent after the run; its answers are printed");
-  cmd->callback([&action, o] { action = [o] { return run(*o); }; });
+      .show_default();
+  cmd.option("--pretrigger", o->pretrigger, "percent of the recording before the trigger").show_default();
+  cmd.option("--length", o->length, "samples per channel (default: the whole run with an immediate trigger, else 1000)");
+  cmd.option("--gap", o->gap, "servo cycles between samples").show_default();
+  cmd.option("--csv", o->csv, "where the recording goes (docs/recorder.md, \"The CSV file\")");
+  cmd.option("--plot", o->plot, "draw the recording: FILE.png or FILE.svg");
+  cmd.option("--expect", o->expect, "a reference recording (CSV): the run fails where this one differs");
+  cmd.option("--tolerance", o->tolerances, "CHANNEL=VALUE: how far --expect lets a channel differ");
+  cmd.option("--then", o->then, "a command line sent after the run; its answers are printed");
+  cmd.on_chosen([&action, o] { action = [o] { return run(*o); }; });
 }
 
 const Subcommand kRun("run", "Run a program on a fresh simulated drive in virtual time", add_run);

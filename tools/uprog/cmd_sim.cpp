@@ -1,5 +1,6 @@
 // `uprog sim`: the simulated drive served to hosts over TCP and/or a pseudo-terminal, its virtual
 // time paced to the wall clock. Stops cleanly on SIGINT/SIGTERM. See docs/protocol.md.
+#include <algorithm>
 #include <fmt/core.h>
 
 #include <cstdio>
@@ -41,7 +42,12 @@ struct SimOptions {
 // reasons printed.
 bool install_program(controller::Controller& drive, const SimOptions& options) {
   const std::string& path = options.program;
-  if (path.ends_with(drive.dialect().stored_extension())) {
+  // A source is compiled here, so that its diagnostics come before anything is stored (ST's
+  // stored form is its source: it is checked too).
+  const auto sources = drive.dialect().source_extensions();
+  const bool source = std::any_of(sources.begin(), sources.end(),
+                                  [&](std::string_view ext) { return path.ends_with(ext); });
+  if (!source && path.ends_with(drive.dialect().stored_extension())) {
     std::string error;
     const auto bytes = read_binary_file(path, &error);
     if (!bytes) {
@@ -156,25 +162,25 @@ int run_sim(const SimOptions& options) {
 }
 
 
-void add_sim(CLI::App* cmd, Action& action) {
+void add_sim(Options& cmd, Action& action) {
   auto options = std::make_shared<SimOptions>();
-  cmd->add_option("--listen", options->listen,
+  cmd.option("--listen", options->listen,
                   "HOST:PORT to listen on (default 127.0.0.1:5025; port 0 picks a free one)");
-  cmd->add_flag("--pty", options->pty, "also open a pseudo-terminal and print its path");
-  cmd->add_option("--state", options->state_dir, "folder for the stored program and parameters");
-  cmd->add_option("--program", options->program, "source or stored form (.upi) to download and load");
+  cmd.flag("--pty", options->pty, "also open a pseudo-terminal and print its path");
+  cmd.option("--state", options->state_dir, "folder for the stored program and parameters");
+  cmd.option("--program", options->program, "source or stored form (.upi) to download and load");
   add_dialect_option(cmd, options->dialect);
   add_drive_shape_options(cmd, options->shape);
-  cmd->add_flag("--safe-boot", options->safe_boot, "boot without running AUTOEXEC");
-  cmd->add_option("--wire", options->wire,
+  cmd.flag("--safe-boot", options->safe_boot, "boot without running AUTOEXEC");
+  cmd.option("--wire", options->wire,
                   "drive: the bytes the vendor's drive sends (default); readable: error texts and a "
                   "line end after each line (docs/protocol.md)")
-      ->check(CLI::IsMember({"drive", "readable"}));
-  cmd->add_option("--dap", options->dap,
+      .one_of({"drive", "readable"});
+  cmd.option("--dap", options->dap,
                   "HOST:PORT: serve the debugger there, for `uprog dap`'s attach or an editor "
                   "(port 0 picks one; docs/debugging.md)");
-  cmd->add_flag("--log", options->log, "print what the firmware does (auto-routines, errors)");
-  cmd->callback([&action, options] { action = [options] { return run_sim(*options); }; });
+  cmd.flag("--log", options->log, "print what the firmware does (auto-routines, errors)");
+  cmd.on_chosen([&action, options] { action = [options] { return run_sim(*options); }; });
 }
 
 const Subcommand kSim("sim", "Serve the simulated drive over TCP and/or a pty", add_sim);

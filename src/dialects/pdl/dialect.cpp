@@ -57,7 +57,7 @@ class PdlDialect final : public dialect::Dialect {
     CompileResult r = pdl::compile_file(path, options);
     dialect::CompileOutput out;
     out.diagnostics = std::move(r.diagnostics);
-    if (r.ok() && !settings.check_only) {
+    if (out.ok() && !settings.check_only) {
       out.stored_form = bytecode::encode(r.image);
       out.image = std::move(r.image);
     }

@@ -161,7 +161,9 @@ void Firmware::on_thread_error(uint32_t thread) {
   if (thread == 1) reset_events();  // the held threads resume; no event is raised
   else latch(22);
   log_error(code, static_cast<int32_t>(thread), static_cast<int32_t>(cup_.line_of(m.pc(thread))));
-  runtime_.log(fmt::format("thread {}: error {} at line {}", thread, code, cup_.line_of(m.pc(thread))));
+  // The source's place: the PUP line when the build's debug map came with the program, else the
+  // CUP line.
+  runtime_.log(fmt::format("thread {}: run-time error {} at {}", thread, code, program_->where(m.pc(thread))));
 }
 
 void Firmware::log_error(int32_t code, int32_t source, int32_t line) {
