@@ -12,12 +12,12 @@ namespace uprog::cli {
 
 namespace {
 
-void add_asm(CLI::App* cmd, Action& action) {
+void add_asm(Options& cmd, Action& action) {
   auto input = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>();
-  cmd->add_option("FILE", *input, "assembly source")->required();
-  cmd->add_option("-o,--output", *output, "image to write (default: FILE with .upi)");
-  cmd->callback([&action, input, output] {
+  cmd.option("FILE", *input, "assembly source").required();
+  cmd.option("-o,--output", *output, "image to write (default: FILE with .upi)");
+  cmd.on_chosen([&action, input, output] {
     action = [input, output] {
       std::string error;
       auto text = read_text_file(*input, &error);
@@ -42,10 +42,10 @@ void add_asm(CLI::App* cmd, Action& action) {
   });
 }
 
-void add_disasm(CLI::App* cmd, Action& action) {
+void add_disasm(Options& cmd, Action& action) {
   auto input = std::make_shared<std::string>();
-  cmd->add_option("FILE", *input, "binary image (.upi)")->required();
-  cmd->callback([&action, input] {
+  cmd.option("FILE", *input, "binary image (.upi)").required();
+  cmd.on_chosen([&action, input] {
     action = [input] {
       std::string error;
       auto bytes = read_binary_file(*input, &error);

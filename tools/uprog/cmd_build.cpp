@@ -51,14 +51,14 @@ int build(const BuildOptions& o) {
   return 0;
 }
 
-void add_build(CLI::App* cmd, Action& action) {
+void add_build(Options& cmd, Action& action) {
   auto o = std::make_shared<BuildOptions>();
-  cmd->add_option("FILE", o->input, "source file")->required();
-  cmd->add_option("-o,--output", o->output, "output file (default FILE plus the stored form's extension, "
+  cmd.option("FILE", o->input, "source file").required();
+  cmd.option("-o,--output", o->output, "output file (default FILE plus the stored form's extension, "
                                             "e.g. FILE.upi, or FILE.s with --emit asm)");
-  cmd->add_option("--emit", o->emit, "image (the stored form) or asm")->check(CLI::IsMember({"image", "asm"}));
+  cmd.option("--emit", o->emit, "image (the stored form) or asm").one_of({"image", "asm"});
   add_dialect_option(cmd, o->dialect);
-  cmd->callback([&action, o] { action = [o] { return build(*o); }; });
+  cmd.on_chosen([&action, o] { action = [o] { return build(*o); }; });
 }
 
 const Subcommand kBuild("build", "Compile a source into the stored form a drive keeps", add_build);

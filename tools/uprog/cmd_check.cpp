@@ -46,13 +46,13 @@ int check(const CheckOptions& o) {
   return errors ? 1 : 0;
 }
 
-void add_check(CLI::App* cmd, Action& action) {
+void add_check(Options& cmd, Action& action) {
   auto o = std::make_shared<CheckOptions>();
-  cmd->add_option("FILE", o->files, "source files")->required();
-  cmd->add_option("--format", o->format, "text or json")->check(CLI::IsMember({"text", "json"}));
+  cmd.option("FILE", o->files, "source files").required();
+  cmd.option("--format", o->format, "text or json").one_of({"text", "json"});
   add_dialect_option(cmd, o->dialect);
-  cmd->add_option("-D", o->defines, "NAME=value: a name the preprocessor sees with that value (ST: a drive parameter in #IF)");
-  cmd->callback([&action, o] { action = [o] { return check(*o); }; });
+  cmd.option("-D", o->defines, "NAME=value: a name the preprocessor sees with that value (ST: a drive parameter in #IF)");
+  cmd.on_chosen([&action, o] { action = [o] { return check(*o); }; });
 }
 
 const Subcommand kCheck("check", "Compile sources and report diagnostics", add_check);

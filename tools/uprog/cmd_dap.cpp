@@ -167,12 +167,12 @@ int listen_and_serve(const std::string& where) {
   return serve(socket.native_handle(), socket.native_handle());
 }
 
-void add_options(CLI::App* cmd, Action& action) {
+void add_options(Options& cmd, Action& action) {
   auto listen = std::make_shared<std::string>();
-  cmd->add_option(
+  cmd.option(
       "--listen", *listen,
       "HOST:PORT: serve one client over TCP instead of stdin/stdout (port 0 picks one)");
-  cmd->callback([&action, listen] {
+  cmd.on_chosen([&action, listen] {
     action = [listen] {
       return listen->empty() ? serve(STDIN_FILENO, STDOUT_FILENO) : listen_and_serve(*listen);
     };

@@ -16,8 +16,8 @@ int list_dialects() {
   return 0;
 }
 
-void add_dialects(CLI::App* cmd, Action& action) {
-  cmd->callback([&action] { action = [] { return list_dialects(); }; });
+void add_dialects(Options& cmd, Action& action) {
+  cmd.on_chosen([&action] { action = [] { return list_dialects(); }; });
 }
 
 const Subcommand kDialects("dialects", "List the dialects: name, source extensions, stored form", add_dialects);

@@ -87,14 +87,14 @@ int run_download(const DownloadOptions& options) {
   return 0;
 }
 
-void add_download(CLI::App* cmd, Action& action) {
+void add_download(Options& cmd, Action& action) {
   auto options = std::make_shared<DownloadOptions>();
-  cmd->add_option("ADDRESS", options->address, "HOST:PORT of the drive (uprog sim prints it)")->required();
-  cmd->add_option("FILE", options->file, "source, or a stored form such as a .upi image")->required();
+  cmd.option("ADDRESS", options->address, "HOST:PORT of the drive (uprog sim prints it)").required();
+  cmd.option("FILE", options->file, "source, or a stored form such as a .upi image").required();
   add_dialect_option(cmd, options->dialect);
-  cmd->add_flag("--load", options->load, "then load the program to run, with the dialect's load command");
-  cmd->add_option("--timeout", options->timeout_s, "seconds to wait for each answer (default 10)");
-  cmd->callback([&action, options] { action = [options] { return run_download(*options); }; });
+  cmd.flag("--load", options->load, "then load the program to run, with the dialect's load command");
+  cmd.option("--timeout", options->timeout_s, "seconds to wait for each answer (default 10)");
+  cmd.on_chosen([&action, options] { action = [options] { return run_download(*options); }; });
 }
 
 const Subcommand kDownload("download", "Download a program into a running drive (uprog sim)", add_download);

@@ -119,12 +119,12 @@ int run(const std::string& path, const std::string& entry) {
   return failed ? 1 : 0;
 }
 
-void add_exec(CLI::App* cmd, Action& action) {
+void add_exec(Options& cmd, Action& action) {
   auto input = std::make_shared<std::string>();
   auto entry = std::make_shared<std::string>("main");
-  cmd->add_option("FILE", *input, "image (.upi) or assembly (.s)")->required();
-  cmd->add_option("--entry", *entry, "routine to start")->capture_default_str();
-  cmd->callback([&action, input, entry] { action = [input, entry] { return run(*input, *entry); }; });
+  cmd.option("FILE", *input, "image (.upi) or assembly (.s)").required();
+  cmd.option("--entry", *entry, "routine to start").show_default();
+  cmd.on_chosen([&action, input, entry] { action = [input, entry] { return run(*input, *entry); }; });
 }
 
 const Subcommand kExec("exec", "Run an image or assembly file on the bare VM", add_exec);

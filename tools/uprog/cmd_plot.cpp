@@ -41,12 +41,12 @@ int plot(const PlotOptions& o) {
   return 0;
 }
 
-void add_plot(CLI::App* cmd, Action& action) {
+void add_plot(Options& cmd, Action& action) {
   auto o = std::make_shared<PlotOptions>();
-  cmd->add_option("RECORDING", o->csv, "a recording's CSV file (uprog run --record ... --csv)")->required();
-  cmd->add_option("-o,--output", o->out, "the picture: FILE.png or FILE.svg")->required();
-  cmd->add_option("--title", o->title, "the plot's title (default: the recording's file name)");
-  cmd->callback([&action, o] { action = [o] { return plot(*o); }; });
+  cmd.option("RECORDING", o->csv, "a recording's CSV file (uprog run --record ... --csv)").required();
+  cmd.option("-o,--output", o->out, "the picture: FILE.png or FILE.svg").required();
+  cmd.option("--title", o->title, "the plot's title (default: the recording's file name)");
+  cmd.on_chosen([&action, o] { action = [o] { return plot(*o); }; });
 }
 
 const Subcommand kPlot("plot", "Draw a recording (CSV) as a PNG or SVG with gnuplot", add_plot);

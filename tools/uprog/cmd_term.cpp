@@ -82,15 +82,15 @@ int run_term(const TermOptions& options) {
   return options.fail_on_error && errors > 0 ? 4 : 0;
 }
 
-void add_term(CLI::App* cmd, Action& action) {
+void add_term(Options& cmd, Action& action) {
   auto options = std::make_shared<TermOptions>();
-  cmd->add_option("ADDRESS", options->address, "HOST:PORT of the drive (uprog sim prints it)")
-      ->required();
+  cmd.option("ADDRESS", options->address, "HOST:PORT of the drive (uprog sim prints it)")
+      .required();
   add_dialect_option(cmd, options->dialect);
-  cmd->add_option("--timeout", options->timeout_s, "seconds to wait for a line's answers (default 5)");
-  cmd->add_flag("--fail-on-error", options->fail_on_error,
+  cmd.option("--timeout", options->timeout_s, "seconds to wait for a line's answers (default 5)");
+  cmd.flag("--fail-on-error", options->fail_on_error,
                 "exit with status 4 if any answer was an error");
-  cmd->callback([&action, options] { action = [options] { return run_term(*options); }; });
+  cmd.on_chosen([&action, options] { action = [options] { return run_term(*options); }; });
 }
 
 const Subcommand kTerm("term", "Talk to a drive over TCP (interactive, or stdin piped)", add_term);

@@ -14,14 +14,14 @@
 namespace uprog::cli {
 namespace {
 
-void add_transcript(CLI::App* cmd, Action& action) {
+void add_transcript(Options& cmd, Action& action) {
   auto files = std::make_shared<std::vector<std::string>>();
   auto quiet = std::make_shared<bool>(false);
   auto dialect_name = std::make_shared<std::string>();
-  cmd->add_option("FILE", *files, "transcript files (shared/spec/transcript.md)")->required();
-  cmd->add_flag("-q,--quiet", *quiet, "print only mismatches");
-  cmd->add_option("--dialect", *dialect_name, "the dialect of transcripts without a `dialect` line (default: `uprog dialects` lists it first)");
-  cmd->callback([&action, files, quiet, dialect_name] {
+  cmd.option("FILE", *files, "transcript files (shared/spec/transcript.md)").required();
+  cmd.flag("-q,--quiet", *quiet, "print only mismatches");
+  cmd.option("--dialect", *dialect_name, "the dialect of transcripts without a `dialect` line (default: `uprog dialects` lists it first)");
+  cmd.on_chosen([&action, files, quiet, dialect_name] {
     action = [files, quiet, dialect_name] {
       const dialect::Dialect* d = &dialects::default_dialect();
       if (!dialect_name->empty() && (d = choose_dialect(*dialect_name, "", "transcript")) == nullptr) return 2;

@@ -7,8 +7,8 @@
 
 namespace uprog::cli {
 
-void add_dialect_option(CLI::App* cmd, std::string& name) {
-  cmd->add_option("--dialect", name, "the program's dialect (default: from the file's extension; `uprog dialects`)");
+void add_dialect_option(Options& cmd, std::string& name) {
+  cmd.option("--dialect", name, "the program's dialect (default: from the file's extension; `uprog dialects`)");
 }
 
 const dialect::Dialect* choose_dialect(const std::string& name, const std::string& path, const char* command) {

@@ -1,9 +1,9 @@
 // The simulated drive's shape for `uprog run` and `uprog sim`: how many axes, and their servo
 // period (PDL's phase), as a transcript's `drive axes=N phase_us=N` sets them.
 #pragma once
-#include <CLI/CLI.hpp>
 #include <cstdint>
 
+#include "commands.h"
 #include "controller/controller.h"
 
 namespace uprog::cli {
@@ -14,7 +14,7 @@ struct DriveShape {
 };
 
 // Adds `--axes N` and `--servo-us N` to `cmd`, stored in `shape`.
-void add_drive_shape_options(CLI::App* cmd, DriveShape& shape);
+void add_drive_shape_options(Options& cmd, DriveShape& shape);
 void apply(const DriveShape& shape, controller::ControllerOptions& options);
 
 }  // namespace uprog::cli
