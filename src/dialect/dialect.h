@@ -72,6 +72,9 @@ class Dialect {
   // marks no line end (Gold's drive form): a host counts its answers with it. nullopt (the
   // default): the drive ends the answers to each line with the wire's line end.
   virtual std::optional<FramerOptions> host_framing() const { return std::nullopt; }
+  // How a host reads the drive's own wire when the drive ends each line with a prompt (ST's
+  // `-->`); nullopt (the default): the semicolon wire or host_framing().
+  virtual std::optional<PromptWire> host_prompt() const { return std::nullopt; }
   // The largest stored form a drive takes over the wire.
   virtual std::size_t max_download_bytes() const = 0;
 };

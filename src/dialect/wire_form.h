@@ -42,6 +42,16 @@ class WireForm {
   virtual Answer framing_error(const Answer& standard) const { return standard; }
 };
 
+// How a host reads a drive that ends the answers to each line with a prompt and sends an error
+// as a prefix, a code and a text (the S300's `-->` and BEL `ERR n text`, each answer a line of
+// its own, the host's line echoed first). `start_line` is sent once on connecting so that the
+// drive prompts (the S300's `PROMPT 1`).
+struct PromptWire {
+  std::string prompt;
+  std::string error_prefix;
+  std::string start_line;
+};
+
 // Which of a drive's wire forms a firmware speaks, where its dialect has two: the bytes the
 // vendor's drive sends (the default: host software written for the real drive runs unchanged),
 // or uprog's readable form (error texts, a line end after each typed line) for people and tests.

@@ -75,6 +75,7 @@ Status Axis::set_motor_on(bool on) {
       return Status::kInhibitActive;
   if (motor_on_) return Status::kOk;
   fault_bits_ = 0;
+  power_stage_codes_ = 0;
   motor_on_ = true;
   servo_ready_ = false;
   enable_elapsed_us_ = 0;
@@ -101,7 +102,14 @@ void Axis::motor_off() {
 void Axis::latch_fault(uint32_t bits) {
   if (fault_bits_ == 0) pending_events_ |= kEventFault;
   fault_bits_ |= bits;
+  if ((bits & kFaultPowerStage) != 0) power_stage_codes_ |= 1u << power_stage_code(bits);
   motor_off();
+}
+
+void Axis::clear_faults() {
+  fault_bits_ &= fault_causes_;
+  const uint32_t code = power_stage_code(fault_causes_);
+  power_stage_codes_ = code != 0 ? 1u << code : 0u;
 }
 
 bool Axis::inject_fault(std::string_view name, bool persistent) {
@@ -144,6 +152,12 @@ void Axis::set_absolute_target(int32_t target_counts) {
     return;
   }
   target_internal_ = user_to_internal(target_counts);
+}
+
+void Axis::set_absolute_target_exact(double target_counts) {
+  set_absolute_target(
+      static_cast<int32_t>(std::clamp(std::round(target_counts), -2147483648.0, 2147483647.0)));
+  if (!modulo_active()) target_internal_ = target_counts - offset_counts_;
 }
 
 void Axis::set_relative_move(int32_t distance_counts) {

@@ -80,6 +80,9 @@ class Axis {
 
   // --- motion ---
   void set_absolute_target(int32_t target_counts);  // PA
+  // A target between two counts, for a drive whose position units do not divide into counts
+  // (its user units scaled by a gear ratio): the motor goes to the exact point (no modulo).
+  void set_absolute_target_exact(double target_counts);
   void set_relative_move(int32_t distance_counts);  // PR
   void set_jog_velocity(int32_t velocity_counts_per_s);  // JV
   int32_t absolute_target() const { return pa_counts_; }
@@ -98,6 +101,8 @@ class Axis {
   // --- feedback and status ---
   // Inline: a program polls them and the recorder samples them every servo cycle.
   int32_t position() const { return internal_to_user(motor_state_.position_counts); }  // PX
+  // PX unrounded: a drive that scales counts into its own units rounds once, at the end.
+  double position_exact() const { return motor_state_.position_counts + offset_counts_; }
   void set_position(int32_t position_counts);
   int32_t velocity() const { return static_cast<int32_t>(round_half_away(motor_state_.velocity_counts_per_s)); }  // VX
   int32_t position_error() const {  // PE
@@ -151,6 +156,12 @@ class Axis {
   // clear_fault_cause, and MO=1 is refused meanwhile. False when the name is unknown.
   bool inject_fault(std::string_view name, bool persistent = false);
   void clear_fault_cause(std::string_view name);
+  // A fault reset (a drive's clear-fault command): MF keeps only the faults whose cause is still
+  // present; the motor stays as it is.
+  void clear_faults();
+  // The power-stage codes latched since the faults were last cleared, bit n for code n: MF
+  // holds one code, and a second power-stage fault would hide the first.
+  uint32_t latched_power_stage_codes() const { return power_stage_codes_; }
 
   // --- time ---
   uint32_t time_us() const { return time_us_; }  // TM, wraps at 2^32
@@ -211,6 +222,7 @@ class Axis {
   bool target_set_while_enabling_ = false;  // PA or PR came during the enable delay
   uint32_t enable_elapsed_us_ = 0;
   uint32_t fault_bits_ = 0;
+  uint32_t power_stage_codes_ = 0;
   uint32_t fault_causes_ = 0;
   uint32_t pending_events_ = 0;
   uint32_t last_events_ = 0;

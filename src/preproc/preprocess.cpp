@@ -349,7 +349,8 @@ class Preprocessor {
     const std::string_view expr = args.substr(std::min(from, args.size()));
     const EvalResult r = evaluate_constant(expr, [this](std::string_view n) -> std::optional<TypedValue> {
       if (const Macro* m = macros_.find(n); m && m->value) return m->value;
-      if (std::optional<int32_t> v; !macros_.find(n) && options_.predefined && options_.predefined(n, v) && v)
+      if (std::optional<int32_t> v;
+          !macros_.find(n) && options_.predefined && options_.predefined(n, v, line_) && v)
         return TypedValue::of_int(*v);
       if (options_.undefined_identifier_is_zero && !macros_.find(n)) return TypedValue::of_int(0);
       return std::nullopt;
@@ -375,7 +376,7 @@ class Preprocessor {
     }
     std::optional<int32_t> value;
     const bool known = macros_.find(name.text) != nullptr ||
-                       (options_.predefined && options_.predefined(name.text, value));
+                       (options_.predefined && options_.predefined(name.text, value, line_));
     return known == want_defined;
   }
 

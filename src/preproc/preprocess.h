@@ -70,7 +70,8 @@ struct PreprocOptions {
   // Names the dialect knows before the source (ST: the drive's parameters and the program's
   // variables): true when `name` is one, with its value where it has one (#if reads it, #ifdef
   // finds it). Null: none.
-  std::function<bool(std::string_view name, std::optional<int32_t>& value)> predefined;
+  // `line` is the asking directive's (a name the source declares may count only below it).
+  std::function<bool(std::string_view name, std::optional<int32_t>& value, int line)> predefined;
 
   // Extension points for later dialects. Each switch names a directive; while it is off the
   // directive is UnknownDirective. Switching one on whose handler is not written yet in

@@ -1,6 +1,8 @@
 // Splits the drive's byte stream into answers and end-of-line marks (answer_reader.h).
 #include "transport/answer_reader.h"
 
+#include <utility>
+
 namespace uprog::transport {
 
 namespace {
@@ -17,7 +19,46 @@ Reply parse_answer(std::string_view answer) {
 
 }  // namespace
 
+// A prompting drive: each CR LF ends an answer (the echo of the line sent is dropped, an error
+// is `prefix code text`); the prompt, arriving without a line end, ends the line's answers.
+void AnswerReader::feed_prompted(char c, std::vector<AnswerEvent>& out) {
+  if (c == '\n') return;
+  if (c != '\r') {
+    partial_.push_back(c);
+    if (partial_ == prompt_->prompt) {
+      echo_.reset();
+      partial_.clear();
+      out.push_back({true, {}, false});
+    }
+    return;
+  }
+  std::string line = std::exchange(partial_, std::string());
+  if (echo_) {
+    const bool is_echo = line == *echo_;
+    echo_.reset();
+    if (is_echo) return;
+  }
+  const std::string& prefix = prompt_->error_prefix;
+  if (!prefix.empty() && line.starts_with(prefix)) {
+    std::string_view rest = std::string_view(line).substr(prefix.size());
+    int32_t code = 0;
+    size_t digits = 0;
+    for (; digits < rest.size() && digits < 9 && rest[digits] >= '0' && rest[digits] <= '9';
+         ++digits)
+      code = code * 10 + (rest[digits] - '0');
+    rest.remove_prefix(digits);
+    if (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
+    out.push_back({false, {std::string(rest), code == 0 ? 1 : code}});
+    return;
+  }
+  out.push_back({false, {std::move(line), 0}});
+}
+
 void AnswerReader::feed(std::string_view bytes, std::vector<AnswerEvent>& out) {
+  if (prompt_) {
+    for (const char c : bytes) feed_prompted(c, out);
+    return;
+  }
   for (const char c : bytes) {
     const bool was_after_cr = after_cr_;
     after_cr_ = c == '\r';

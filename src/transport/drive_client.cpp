@@ -19,10 +19,38 @@ std::unique_ptr<DriveClient> DriveClient::connect(const std::string& address, st
 
 void DriveClient::count_answers(const dialect::FramerOptions& framing) { framing_ = framing; }
 
+// Sends the start line and reads until its prompt comes back (the drive prompts), or until a
+// `;` line end does (the drive speaks the semicolon wire after all: `uprog sim --wire readable`).
+bool DriveClient::read_prompts(const dialect::PromptWire& wire, std::chrono::milliseconds timeout) {
+  std::string line = wire.start_line + "\r";
+  if (::send(socket_.native_handle(), line.data(), line.size(), MSG_NOSIGNAL) !=
+      static_cast<ssize_t>(line.size()))
+    return false;
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  std::string seen;
+  while (true) {
+    if (seen.find(wire.prompt) != std::string::npos) {
+      prompted_ = true;
+      reader_.read_prompts(wire);
+      return true;
+    }
+    if (seen.find(";\r\n") != std::string::npos) return true;
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
+    pollfd p{socket_.native_handle(), POLLIN, 0};
+    if (::poll(&p, 1, static_cast<int>(std::max<long long>(0, left.count()))) <= 0) return false;
+    char buffer[512];
+    const ssize_t n = ::read(socket_.native_handle(), buffer, sizeof buffer);
+    if (n <= 0) return false;
+    seen.append(buffer, static_cast<std::size_t>(n));
+  }
+}
+
 bool DriveClient::send_line(std::string_view line) {
   std::string framed(line);
-  framed += framing_ ? "\r" : "\r\n";
+  framed += framing_ || prompted_ ? "\r" : "\r\n";
   answered_ = 0;
+  if (prompted_) reader_.expect_echo(line);
   if (framing_) {
     expected_ = dialect::frame_text(line, *framing_).size();
     // A comment alone gets no answer and changes nothing; its echo would only be noise.

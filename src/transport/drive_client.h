@@ -27,6 +27,9 @@ class DriveClient {
   // For a drive that marks no line ends (Gold's drive form): lines end with CR, each line's
   // answers are counted by splitting it as `framing` says, and an echo is taken out of them.
   void count_answers(const dialect::FramerOptions& framing);
+  // For a drive that ends each line's answers with a prompt (dialect::PromptWire): lines end
+  // with CR; sends the wire's start line and waits for its prompt. False when none came.
+  bool read_prompts(const dialect::PromptWire& wire, std::chrono::milliseconds timeout);
   // Sends `line` and CR LF (CR alone when counting, and nothing for a line of comments alone);
   // false when the drive has gone.
   bool send_line(std::string_view line);
@@ -49,6 +52,7 @@ class DriveClient {
   std::vector<AnswerEvent> events_;
   std::size_t next_ = 0;
   std::optional<dialect::FramerOptions> framing_;  // set: answers are counted
+  bool prompted_ = false;                          // the drive ends each line with a prompt
   EchoFilter echo_;
   std::size_t expected_ = 0;  // answers the line sent last still has to get, when counting
   std::size_t answered_ = 0;  // answers it got so far

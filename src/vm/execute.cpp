@@ -2,8 +2,8 @@
 //
 // Invariants:
 // - ip, sp and locals live in registers while instructions run; the thread's pc and sp are
-//   written back (SAVE) before anything that may look at the thread: a host call that fails,
-//   a call or return, an error, the end of the slice.
+//   written back (SAVE) before anything that may look at the thread: a host call (the host
+//   may ask where the thread stands), a call or return, an error, the end of the slice.
 // - The verifier has proven every operand index, jump target and stack depth of the code, and
 //   enter() has checked that the new frame's stack fits, so no instruction checks them again.
 //   Only values can be wrong at run time: array indices, divisors, host refusals.
@@ -312,6 +312,7 @@ SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) 
 #define HOST_CALL(call, effect)                                       \
   {                                                                   \
     round_ends = true;                                                \
+    SAVE();                                                           \
     detail = (call);                                                  \
     if (detail != kCommandOk) {                                       \
       if (detail != kCommandEndSlice) FAIL(RunError::CommandRefused); \

@@ -103,6 +103,22 @@ TEST(st_diagnostics, SizesCountCodeLinesAndCalledFunctionsOnce) {
   EXPECT_EQ(r.image.dialect, "st");
 }
 
+// #IFDEF finds a variable only below its declaration, as a #DEFINE only below its own (issue
+// 39): B is declared after the program, so its block is skipped and PLCINIT has one line.
+TEST(st_diagnostics, IfdefSeesOnlyVariablesDeclaredAbove) {
+  const std::string text =
+      "LONG A;\n"
+      "PROGRAM PLCINIT\n"
+      "  A := 1;\n"
+      "#IFDEF B\n  A := 2;\n#ENDIF\n"
+      "#IFDEF A\n  A := 3;\n#ENDIF\n"
+      "END_PROGRAM\n"
+      "LONG B;\n";
+  const st::CompileResult r = st::compile(SourceFile{"p.st", text});
+  ASSERT_TRUE(r.ok()) << format_text(r.diagnostics);
+  EXPECT_EQ(r.sizes.sizes[0].size, 2u);  // A := 1 and A := 3
+}
+
 TEST(st_diagnostics, IfReadsDriveParametersAtCompileTime) {
   const std::string text =
       "LONG A;\n"

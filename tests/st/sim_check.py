@@ -32,7 +32,8 @@ try:
         if got != expected and got != also + expected:
             sys.exit(f"sent {data!r}: expected {expected!r}, got {got!r}")
 
-    talk(b"PROMPT 1\r", b"-->", also=b"Hello world in the year 2011\r\n")
+    # A fresh drive echoes and prompts (PROMPT's default is 1, the SERVOSTAR-family reference).
+    talk(b"PROMPT 1\r", b"PROMPT 1\r\n-->", also=b"Hello world in the year 2011\r\n")
     talk(b"VER\r", b"VER\r\nuprog S300 sim 1.0\r\n-->")
     talk(b"NOSUCH\r", b"NOSUCH\r\n\aERR 1 unknown command\r\n-->")
     talk(b"MSG 2\r", b"MSG 2\r\n-->")
@@ -44,6 +45,12 @@ try:
     talk(b"COLDSTART\r", b"COLDSTART\r\nPLC compile\r\nPLCMAIN (size=4)\r\nload factor 0\r\nPLC start\r\n"
                          b"Hello world in the year 2011\r\n-->")
     talk(b"MSG\r", b"MSG\r\n2\r\n-->")
+    # `uprog download` on the drive's own wire (issue 39): it reads the echo, BEL ERR and `-->`.
+    size = len(open(program, "rb").read())
+    r = subprocess.run([uprog, "download", f"127.0.0.1:{port}", program], capture_output=True,
+                       text=True, timeout=30)
+    if r.returncode != 0 or f"downloaded {size} bytes" not in r.stdout:
+        sys.exit(f"uprog download: exit {r.returncode}: {r.stdout!r} {r.stderr!r}")
     print("ok")
 finally:
     sim.kill()

@@ -6,6 +6,7 @@
 #include "controller/controller.h"
 #include "dialects/st/dialect.h"
 #include "dialects/st/wire.h"
+#include "drive/axis.h"
 #include "transport/controller_service.h"
 #include "transport/host_session.h"
 
@@ -29,8 +30,17 @@ struct Drive {
   transport::HostSession session;
 };
 
+// A fresh drive prompts and echoes: PROMPT's default is 1 (the SERVOSTAR-family ASCII
+// reference, PROMPT: "Default 1", "-->" plus echo; docs/dialects/st.md, "Echo").
+TEST(st_wire, AFreshDriveEchoesAndPrompts) {
+  Drive d;
+  EXPECT_EQ(d.say("PFB\r"), "PFB\r\n0\r\n-->");
+  EXPECT_EQ(d.say("PROMPT\r"), "PROMPT\r\n1\r\n-->");
+}
+
 TEST(st_wire, PromptZeroAnswersWithoutEchoOrPrompt) {
   Drive d;
+  EXPECT_EQ(d.say("PROMPT 0\r"), "PROMPT 0\r\n");  // echoed as it arrived, then no prompt
   EXPECT_EQ(d.say("VER\r"), "uprog S300 sim 1.0\r\n");
   EXPECT_EQ(d.say("PGEARI 20000\r"), "");  // a write answers none
   EXPECT_EQ(d.say("pgeari\n"), "20000\r\n");
@@ -39,6 +49,7 @@ TEST(st_wire, PromptZeroAnswersWithoutEchoOrPrompt) {
 
 TEST(st_wire, PromptOneEchoesAndPrompts) {
   Drive d;
+  EXPECT_EQ(d.say("PROMPT 0\r"), "PROMPT 0\r\n");
   EXPECT_EQ(d.say("PROMPT 1\r"), "-->");  // the echo is decided as the line arrives
   EXPECT_EQ(d.say("VER\r"), "VER\r\nuprog S300 sim 1.0\r\n-->");
   EXPECT_EQ(d.say("MSG 2\r"), "MSG 2\r\n-->");
@@ -48,6 +59,20 @@ TEST(st_wire, PromptOneEchoesAndPrompts) {
   EXPECT_EQ(d.say("PFB 3\r"), "PFB 3\r\n\aERR 4 read only\r\n-->");
   EXPECT_EQ(d.say("ERRCODE\r"), "ERRCODE\r\nno error\r\n-->");
   EXPECT_EQ(d.say("PROMPT 0\r"), "PROMPT 0\r\n");
+}
+
+// `T a` commands a amperes, fraction and all (spec: "OPMODE 2: a amperes"; issue 39: `T 0.5`
+// commanded 0 A): the axis' torque command is 0.5 A, and -1.25 A after `T -1.25`.
+TEST(st_wire, TorqueTakesAFraction) {
+  Drive d;
+  d.say("PROMPT 0\r");
+  EXPECT_EQ(d.say("OPMODE 2\r"), "");
+  EXPECT_EQ(d.say("EN\r"), "");
+  d.controller.advance(50'000);
+  EXPECT_EQ(d.say("T 0.5\r"), "");
+  EXPECT_FLOAT_EQ(d.controller.axis().torque_command(), 0.5f);
+  EXPECT_EQ(d.say("T -1.25\r"), "");
+  EXPECT_FLOAT_EQ(d.controller.axis().torque_command(), -1.25f);
 }
 
 TEST(st_wire, UnsolicitedTextEndsItsLinesWithCrLf) {

@@ -2,6 +2,7 @@
 #include "drive_link.h"
 
 #include <algorithm>
+#include <chrono>
 
 namespace uprog::cli {
 
@@ -10,6 +11,11 @@ std::unique_ptr<transport::DriveClient> connect_to_drive(const std::string& addr
   auto client = transport::DriveClient::connect(address, error);
   if (client) {
     if (const auto framing = d.host_framing()) client->count_answers(*framing);
+    const auto prompt = d.host_prompt();
+    if (prompt && !client->read_prompts(*prompt, std::chrono::seconds(10))) {
+      error = "the drive at " + address + " did not answer with its prompt";
+      return nullptr;
+    }
   }
   return client;
 }

@@ -57,7 +57,7 @@ constexpr AsciiEntry kTable[] = {
     {"RSTVAR", K::Command, A::Write, 0, false, false},
     {"COLDSTART", K::Command, A::Write, 0, false, false},
     {"MSG", K::Int, A::ReadWrite, 0, false, true},
-    {"PROMPT", K::Int, A::ReadWrite, 0, false, true},
+    {"PROMPT", K::Int, A::ReadWrite, 1, false, true},
     {"TASK", K::Text, A::Read, 0, false, false},
     {"VER", K::Text, A::Read, 0, false, false},
     {"PLCSTOP", K::Command, A::Write, 0, false, false},
@@ -70,8 +70,21 @@ constexpr AsciiEntry kTable[] = {
     {"PLCHOLD", K::Command, A::Write, 0, false, false},
     {"PLCCONT", K::Command, A::Write, 0, false, false},
     {"PLCSTEP", K::Command, A::Write, 0, false, false},
+    // Commands real hosts send (docs/dialects/st.md, "Host commands"; the SERVOSTAR-family
+    // ASCII reference's defaults). Appended: a compiled program names entries by their index.
+    {"VOSPD", K::Int, A::ReadWrite, 3600, false, true},
+    {"ANCNFG", K::Int, A::ReadWrite, 0, true, true},
+    {"MH", K::Command, A::Write, 0, false, false},
+    {"NREF", K::Int, A::ReadWrite, 0, false, true},
+    {"DREF", K::Int, A::ReadWrite, 0, false, true},
+    {"VREF", K::Int, A::ReadWrite, 10000, false, true},
+    {"ROFFS", K::Int, A::ReadWrite, 0, false, true},
+    {"SETREF", K::Command, A::Write, 0, false, false},
+    {"SRND", K::Int, A::ReadWrite, INT32_MIN, false, true},
+    {"ERND", K::Int, A::ReadWrite, INT32_MAX, false, true},
+    {"PRD", K::Int, A::Read, 0, false, false},
+    {"VUNIT", K::Int, A::ReadWrite, 0, false, true},
 };
-
 
 bool same_ignoring_case(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;

@@ -23,17 +23,18 @@ std::vector<std::string> words_of(std::string_view line) {
   return out;
 }
 
-bool to_int(const std::string& s, int64_t& out) {
+// A number: `out` whole (a float truncated, VLIM 3000.5), `real` as written (T 0.5).
+bool to_number(const std::string& s, int64_t& out, double& real) {
   const char* b = s.data();
   const char* e = b + s.size();
   if (b != e && *b == '+') ++b;
   const auto [p, ec] = std::from_chars(b, e, out);
-  if (ec == std::errc() && p == e) return true;
-  // A float is read truncated (VLIM 3000.5).
+  if (ec == std::errc() && p == e) return real = static_cast<double>(out), true;
   char* end = nullptr;
   const double d = std::strtod(s.c_str(), &end);
   if (end != s.c_str() + s.size() || s.empty() || !std::isfinite(d) || std::fabs(d) > 9.2e18) return false;
   out = static_cast<int64_t>(d);
+  real = d;
   return true;
 }
 
@@ -55,6 +56,18 @@ constexpr FaultName kAxisFaults[] = {
     {14, "overcurrent", drive::kFaultOvercurrent | drive::kFaultShort},
 };
 
+// The values a plain parameter takes: the SERVOSTAR-family reference's ranges where uprog
+// simulates the parameter's whole meaning (VUNIT: rpm only, NREF: every type is stored).
+std::pair<int64_t, int64_t> range_of(const std::string& name) {
+  if (name == "PGEARI" || name == "PGEARO") return {1, INT32_MAX};
+  if (name == "SRND" || name == "ERND" || name == "ROFFS") return {INT32_MIN, INT32_MAX};
+  if (name == "ANCNFG") return {0, 14};
+  if (name == "NREF") return {0, 20};
+  if (name == "DREF") return {0, 2};
+  if (name == "VUNIT") return {0, 1};
+  return {0, INT32_MAX};
+}
+
 bool has_bits(uint32_t mf, uint32_t bits) {
   // Power-stage faults are codes in bits 13..15 (with bit 12), the rest single bits.
   if ((bits & drive::kFaultPowerStage) != 0) {
@@ -73,13 +86,16 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   const std::string name = upper(w[0]);
   const size_t argc = w.size() - 1;
   std::vector<int64_t> args;
+  std::vector<double> reals;
   for (size_t i = 1; i < w.size(); ++i) {
     int64_t v = 0;
-    if (!to_int(w[i], v)) {
+    double real = 0;
+    if (!to_number(w[i], v, real)) {
       if (name == "PLCDL" || is_debug_command(name)) break;
       return {err(kErrSyntax, "syntax error")};
     }
     args.push_back(v);
+    reals.push_back(real);
   }
   const auto arg32 = [&](size_t i) { return static_cast<int32_t>(args[i]); };
   const auto fault_bits = [&] { return axis_->motor_fault(); };
@@ -99,7 +115,13 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
         return {value(static_cast<int64_t>((uint64_t(uint32_t(hi.i)) << 32) | uint32_t(lo.i)))};
       }
       if (argc != 1) return {err(kErrSyntax, "syntax error")};
-      m.write_global(id, 0, Value::of_int(static_cast<int32_t>(static_cast<uint32_t>(args[0]))));
+      // Cut to the variable's type, as the program's own store is (BB 200 reads -56).
+      const uint8_t bits = g < global_bits_.size() ? global_bits_[g] : 32;
+      const auto low = static_cast<uint32_t>(args[0]);
+      const int32_t stored = bits == 8    ? static_cast<int8_t>(low & 0xFFu)
+                             : bits == 16 ? static_cast<int16_t>(low & 0xFFFFu)
+                                          : static_cast<int32_t>(low);
+      m.write_global(id, 0, Value::of_int(stored));
       if (globals_[g].length == 2)
         m.write_global(id, 1, Value::of_int(static_cast<int32_t>(static_cast<uint64_t>(args[0]) >> 32)));
       return {};
@@ -131,6 +153,7 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   // --- enable, modes, motion ---
   if (name == "EN") {
     if (faulted()) return {err(kErrFault, "fault")};
+    apply_limits();
     if (axis_->set_motor_on(true) != drive::Status::kOk) return {err(kErrFault, "fault")};
     enabled_ = true;
     return {};
@@ -140,15 +163,17 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     axis_->set_motor_on(false);
     enabled_ = false;
     next_pending_ = false;
+    deferred_ = Deferred{};
     return {};
   }
   if (name == "ACTIVE") return {value(axis_->motor_on() ? 1 : 0)};
   if (name == "OPMODE") {
     if (argc == 0) return {value(opmode_)};
-    if (args[0] != 0 && args[0] != 2 && args[0] != 8) return {err(kErrRange, "out of range")};
+    if (args[0] != 0 && args[0] != 1 && args[0] != 2 && args[0] != 8)
+      return {err(kErrRange, "out of range")};
     if (axis_->motor_on()) return {err(kErrNeedsDisabled, "needs disabled")};
     opmode_ = arg32(0);
-    axis_->set_unit_mode(opmode_ == 0 ? 2 : opmode_ == 2 ? 1 : 5);
+    axis_->set_unit_mode(opmode_ <= 1 ? 2 : opmode_ == 2 ? 1 : 5);
     return {};
   }
   if (name == "J") {
@@ -160,7 +185,7 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     if (argc != 1) return {err(kErrSyntax, "syntax error")};
     if (!axis_->motor_on()) return {err(kErrNeedsEnabled, "needs enabled")};
     if (opmode_ != 2) return {err(kErrOpmode, "OPMODE")};
-    axis_->set_torque_command(static_cast<float>(args[0]));
+    axis_->set_torque_command(static_cast<float>(reals[0]));
     return {};
   }
   if (name == "ORDER") {
@@ -204,7 +229,19 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     *field = arg32(0);
     return {};
   }
-  if (name == "PFB") return {value(user_of(axis_->position()))};
+  if (name == "MH") {
+    const int32_t code = start_homing();
+    return code == 0 ? std::vector<Answer>{}
+                     : std::vector{err(code, code == kErrRange    ? "homing type"
+                                             : code == kErrOpmode ? "OPMODE"
+                                                                  : "needs enabled")};
+  }
+  if (name == "SETREF") {
+    set_reference();
+    return {};
+  }
+  if (name == "PRD") return {value(feedback_within_turn())};
+  if (name == "PFB") return {value(user_of(axis_->position_exact()))};
   if (name == "PE") return {value(user_of(axis_->position_error()))};
   if (name == "PV") return {value(user_of(axis_->velocity()))};
   if (name == "V") {
@@ -212,8 +249,11 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     return {Answer{fmt::format("{:.3f}", rpm), 0}};
   }
   if (name == "INPOS") {
-    const int64_t off = std::llabs(static_cast<long long>(int64_t{user_of(target_counts_)} - user_of(axis_->position())));
-    return {value(off <= values_.at("PEINPOS") && !axis_->profiler_moving() ? 1 : 0)};
+    const int64_t off =
+        std::llabs(int64_t{user_of(target_counts_)} - user_of(axis_->position_exact()));
+    // A task waiting for the enable delay's end is not there yet.
+    const bool waiting = deferred_.kind != Deferred::kNone;
+    return {value(off <= values_.at("PEINPOS") && !axis_->profiler_moving() && !waiting ? 1 : 0)};
   }
   if (name.size() == 3 && name.starts_with("IN")) return {value(axis_->input_active(name[2] - '0') ? 1 : 0)};
   if (name == "O1" || name == "O2") {
@@ -227,10 +267,8 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   // --- faults and status ---
   if (name == "ERRCODE") {
     std::vector<Answer> out;
-    std::set<int> all = faults_;
-    for (const FaultName& f : kAxisFaults)
-      if (has_bits(fault_bits(), f.bits)) all.insert(f.number);
-    for (int f : all) {
+    record_axis_faults();
+    for (int f : faults_) {
       const char* text = f == 31 ? "run-time error" : f == 32 ? "compile/load/overrun" : "fault";
       for (const FaultName& n : kAxisFaults)
         if (n.number == f) text = n.text;
@@ -243,16 +281,21 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     uint32_t w1 = 0, w2 = 0, w5 = 0;
     if (!axis_->motor_on()) w1 |= 1u << 1;
     if (faulted()) w1 |= 1u << 3;
+    record_axis_faults();
     for (int f : faults_) w2 |= 1u << (f - 1);
-    for (const FaultName& f : kAxisFaults)
-      if (has_bits(fault_bits(), f.bits)) w2 |= 1u << (f.number - 1);
     if (axis_->profiler_moving()) w5 |= 1u;
     if (command_line("INPOS")[0].text == "1") w5 |= 1u << 3;
     return {Answer{fmt::format("{:08X} {:08X} {:08X} {:08X} {:08X}", w1, w2, 0, 0, w5), 0}};
   }
   if (name == "CLRFAULT") {
-    faults_.clear();
-    if (axis_->motor_fault() != 0) axis_->set_motor_on(false);  // the axis clears what has gone
+    // Every fault whose cause is gone: the PLC's (its programs stay stopped) and the axis' that
+    // no persisting cause holds (a scenario's injected temperature, say).
+    record_axis_faults();
+    axis_->clear_faults();
+    std::set<int> kept;
+    for (const FaultName& f : kAxisFaults)
+      if (has_bits(fault_bits(), f.bits)) kept.insert(f.number);
+    faults_ = kept;
     return {};
   }
   if (name == "SAVE") {
@@ -324,10 +367,23 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   if (argc == 0) return {value(it->second)};
   if (argc != 1) return {err(kErrSyntax, "syntax error")};
   if (e->disabled_only && axis_->motor_on()) return {err(kErrNeedsDisabled, "needs disabled")};
-  if (args[0] < (name == "PGEARI" || name == "PGEARO" ? 1 : 0) || args[0] > INT32_MAX)
-    return {err(kErrRange, "out of range")};
+  const auto [low, high] = range_of(name);
+  if (args[0] < low || args[0] > high) return {err(kErrRange, "out of range")};
   it->second = arg32(0);
+  apply_limits();
   return {};
+}
+
+// The axis' latched faults as F numbers, kept until CLRFAULT (the axis' MF holds one
+// power-stage code at a time; ERRCODE lists every fault latched since).
+void Firmware::record_axis_faults() {
+  const uint32_t mf = axis_->motor_fault();
+  if (mf == 0) return;
+  const uint32_t codes = axis_->latched_power_stage_codes();
+  for (const FaultName& f : kAxisFaults) {
+    const uint32_t code = drive::power_stage_code(f.bits & ~drive::kFaultOvercurrent);
+    if (has_bits(mf, f.bits) || (code != 0 && (codes >> code & 1u) != 0)) faults_.insert(f.number);
+  }
 }
 
 }  // namespace uprog::st

@@ -70,11 +70,13 @@ std::string lower_directives(const std::string& text) {
   return out;
 }
 
-// The names a source declares, for #IFDEF of a variable: every word after BYTE, WORD, LONG or
-// DLONG up to the next ';'.
-std::set<std::string> declared_names(const std::string& text) {
-  std::set<std::string> out;
+// The names a source declares, for #IFDEF of a variable, each with the line of its first
+// declaration: every word after BYTE, WORD, LONG or DLONG up to the next ';'. A name counts
+// only below that line, as a #DEFINE does below its own.
+std::map<std::string, int> declared_names(const std::string& text) {
+  std::map<std::string, int> out;
   size_t i = 0;
+  int line = 1;
   bool in_declaration = false;
   while (i < text.size()) {
     const char c = text[i];
@@ -84,11 +86,13 @@ std::set<std::string> declared_names(const std::string& text) {
       const std::string w = text.substr(i, e - i);
       const std::string u = upper(w);
       if (u == "BYTE" || u == "WORD" || u == "LONG" || u == "DLONG") in_declaration = true;
-      else if (in_declaration) out.insert(w);
+      else if (in_declaration)
+        out.emplace(w, line);
       i = e;
       continue;
     }
     if (c == ';' || c == '\n') in_declaration = false;
+    if (c == '\n') ++line;
     ++i;
   }
   return out;
@@ -134,9 +138,10 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
     po.block_comments = false;
     po.string_quote = '\'';
     po.unknown_hash_lines_pass_through = false;
-    const std::set<std::string> declared = declared_names(source.text);
-    po.predefined = [&](std::string_view name, std::optional<int32_t>& value) {
-      if (declared.count(std::string(name)) != 0) return true;
+    const std::map<std::string, int> declared = declared_names(source.text);
+    po.predefined = [&](std::string_view name, std::optional<int32_t>& value, int line) {
+      if (auto d = declared.find(std::string(name)); d != declared.end() && d->second < line)
+        return true;
       if (auto d = options.defines.find(name); d != options.defines.end()) {
         value = d->second;
         return true;
@@ -160,6 +165,11 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   result.sizes = check(program, reporter);
   if (!reporter.has_errors() && !options.check_only) {
     result.image = generate(program, locator, source.name);
+    for (const GlobalVar& g : program.globals)
+      result.global_bits.push_back(g.type == VarType::Byte   ? 8
+                                   : g.type == VarType::Word ? 16
+                                   : g.type == VarType::Long ? 32
+                                                             : 64);
     result.image.created_unix_s = options.created_unix_s;
     // The superinstructions on globals (ST has no locals); lines and their ends are kept.
     bytecode::optimize(result.image);

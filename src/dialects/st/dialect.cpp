@@ -32,6 +32,9 @@ constexpr dialect::ErrorInfo kInterpreterErrors[] = {
     {kErrTask, "Task", "no such task"},
     {kErrStorage, "Storage", "storage"},
     {kErrCompileFailed, "CompileFailed", "compile failed"},
+    {kErrNoDownload, "NoDownload", "no download in progress (PLCDL BEGIN first)"},
+    {kErrDownloadSize, "DownloadSize", "bad download size"},
+    {kErrDownloadData, "DownloadData", "bad download data (PLCDL takes hex digit pairs)"},
 };
 
 std::vector<dialect::ErrorInfo> diagnostic_table() {
@@ -103,6 +106,11 @@ class StDialect final : public dialect::Dialect {
   std::unique_ptr<dialect::Firmware> make_firmware(dialect::Runtime& runtime,
                                                    const dialect::FirmwareOptions& options) const override {
     return std::make_unique<Firmware>(runtime, options.wire_style);
+  }
+
+  // The drive's own wire: BEL `ERR n text`, the prompt `-->` after each line once PROMPT is 1.
+  std::optional<dialect::PromptWire> host_prompt() const override {
+    return dialect::PromptWire{"-->", "\aERR ", "PROMPT 1"};
   }
 
   std::vector<std::string> download_lines(const std::vector<uint8_t>& source) const override {

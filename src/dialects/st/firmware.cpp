@@ -53,6 +53,7 @@ void Firmware::boot(std::vector<std::string>& messages) {
   jog_until_ns_ = 0;
   defaults();
   load();
+  apply_limits();
   std::string error;
   source_.reset();
   if (auto bytes = runtime_.flash().read(kSourceRecord, &error)) {
@@ -135,6 +136,7 @@ int32_t Firmware::compile_and_start() {
   faults_.erase(32);
   run_error_ = vm::RunError::None;
   globals_ = program_->image().globals;
+  global_bits_ = r.global_bits;
   vm::Machine& m = program_->machine();
   for (size_t i = 0; i < kUserVariables; ++i)
     m.write_global(static_cast<uint32_t>(i), 0, Value::of_int(user_vars_[i]));
@@ -211,6 +213,10 @@ void Firmware::latch(int fault) {
 }
 
 void Firmware::cycle(const std::vector<uint32_t>&) {
+  if (axis_->motor_fault() != 0) {
+    record_axis_faults();
+    enabled_ = false;  // the fault switched the stage off
+  }
   step_motion();
   if (!plc_started_ || !program_) return;
   on_report(schedule_.run(program_->machine(), runtime_.now_ns()));

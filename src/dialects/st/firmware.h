@@ -25,11 +25,25 @@ namespace uprog::st {
 
 // The error codes of the ASCII interface (`ERR code text`).
 enum AsciiError : int32_t {
-  kErrUnknown = 1, kErrSyntax = 2, kErrRange = 3, kErrReadOnly = 4, kErrNeedsDisabled = 5,
-  kErrNeedsEnabled = 6, kErrOpmode = 7, kErrFault = 8, kErrTask = 9, kErrStorage = 10,
+  kErrUnknown = 1,
+  kErrSyntax = 2,
+  kErrRange = 3,
+  kErrReadOnly = 4,
+  kErrNeedsDisabled = 5,
+  kErrNeedsEnabled = 6,
+  kErrOpmode = 7,
+  kErrFault = 8,
+  kErrTask = 9,
+  kErrStorage = 10,
   kErrCompileFailed = 11,
-  // 12–15 are the download's (session.cpp); the debug commands' own:
-  kErrNotHeld = 16, kErrPlcStopped = 17,
+  // The download's (session.cpp), as Gold's 210–213: PLCDL hex or END without BEGIN, a bad
+  // size (BEGIN's, or END before all bytes), bad data (not hex pairs, more than announced).
+  kErrNoDownload = 12,
+  kErrDownloadSize = 13,
+  kErrDownloadData = 14,
+  // The debug commands' own:
+  kErrNotHeld = 16,
+  kErrPlcStopped = 17,
 };
 
 // PLCSTAT, PLCHOLD, PLCCONT, PLCSTEP (debug_commands.cpp): their argument is a program's name.
@@ -89,6 +103,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   void report_compile(const CompileResult& r);
   void stop_plc(uint32_t failed = scheduling::kNoThread);  // a failed program stays where it failed
   void latch(int fault);
+  void record_axis_faults();  // command_line.cpp
   void on_report(const scheduling::Report& report);
   void sync_user_variables_out();
   std::optional<int32_t> parameter_value(std::string_view name);
@@ -106,8 +121,19 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   int32_t load();
 
   // --- motion (motion.cpp) ---
+  struct Deferred {
+    enum Kind : uint8_t { kNone, kJog, kTask } kind = kNone;
+    int32_t a = 0, b = 0;  // J's rpm and ms; MOVE's task
+  };
+  double counts_exact(double user) const;
   int32_t counts_of(int64_t user) const;
-  int32_t user_of(int64_t counts) const;
+  int32_t user_of(double counts) const;
+  void apply_limits();
+  bool defer_until_ready(Deferred::Kind kind, int32_t a, int32_t b);
+  int32_t start_homing();
+  void set_reference();
+  void set_reference(double at_motor);
+  int32_t feedback_within_turn() const;
   int32_t start_task(int32_t nr);
   void step_motion();
   int32_t jog(int32_t rpm, int32_t ms);
@@ -133,6 +159,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::string named_source_;
   std::unique_ptr<dialect::LoadedProgram> program_;
   std::vector<bytecode::Global> globals_;  // the loaded program's, for the command line
+  std::vector<uint8_t> global_bits_;       // their widths (CompileResult::global_bits)
   scheduling::CyclicTasks schedule_;
   std::vector<std::pair<uint32_t, std::string>> threads_;  // thread, program name
   bool compile_failed_ = false;
@@ -146,7 +173,10 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   int32_t last_move_ = 0;
   int32_t opmode_ = 8;
   bool enabled_ = false;
-  int64_t target_counts_ = 0;
+  double target_counts_ = 0;  // the last task's target, exact (between counts in user units)
+  bool homing_ = false;       // MH's move to a zero mark is under way
+  double homing_mark_ = 0;    // that mark, in motor counts
+  Deferred deferred_;         // a J or MOVE waiting for the end of EN's enable delay
   bool next_pending_ = false;
   int32_t next_task_ = 0;
   uint64_t next_at_ns_ = 0;

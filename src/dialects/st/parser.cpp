@@ -270,10 +270,14 @@ class Parser {
   }
 
   int label() {
+    // A label stands at the start of its line (shared/spec/s300-drive.md: `L:` at a line start).
+    const bool first_on_line = i_ == 0 || t_[i_ - 1].line != peek().line;
     const Token& t = next();
     next();  // ':'
     Stmt s = begin(Stmt::Kind::Label, t);
     s.name = t.text;
+    if (!first_on_line)
+      fail(Error::BadLabel, t.offset, "'" + t.text + "' is not at the start of its line");
     if (labels_.count(t.text) != 0) fail(Error::BadLabel, t.offset, "'" + t.text + "' defined twice");
     if (auto e = name_problem(t.text); e && *e != Error::ReservedName) fail(*e, t.offset, "'" + t.text + "'");
     labels_[t.text] = statement_count_;

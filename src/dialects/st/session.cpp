@@ -48,8 +48,9 @@ class Session final : public dialect::Session {
       const std::string n(rest.substr(5));
       char* end = nullptr;
       const long size = std::strtol(n.c_str(), &end, 10);
-      if (end == n.c_str() || *end != '\0' || size < 0 || size > static_cast<long>(kMaxStoredSource))
-        return fail(kErrRange, "out of range");
+      if (end == n.c_str() || *end != '\0' || size < 1 ||
+          size > static_cast<long>(kMaxStoredSource))
+        return fail(kErrDownloadSize, "PLCDL BEGIN needs a size from 1 to 61440");
       active_ = true;
       announced_ = static_cast<size_t>(size);
       bytes_.clear();
@@ -60,22 +61,24 @@ class Session final : public dialect::Session {
       bytes_.clear();
       return {};
     }
-    if (!active_) return fail(kErrSyntax, "no PLCDL BEGIN");
+    if (!active_) return fail(kErrNoDownload, "no download in progress (PLCDL BEGIN first)");
     if (word == "END") {
-      if (bytes_.size() != announced_) return fail(kErrStorage, "size differs from BEGIN");
+      if (bytes_.size() != announced_)
+        return fail(kErrDownloadSize, "fewer bytes than PLCDL BEGIN announced");
       const dialect::DownloadResult r = firmware_.download(bytes_);
       active_ = false;
       bytes_.clear();
       if (!r.ok) return {Answer{r.error, kErrStorage}};
       return {};
     }
-    if (rest.size() % 2 != 0) return fail(kErrSyntax, "odd number of hex digits");
+    if (rest.size() % 2 != 0) return fail(kErrDownloadData, "an odd number of hex digits");
     for (size_t i = 0; i < rest.size(); i += 2) {
       const int hi = hex_digit(rest[i]), lo = hex_digit(rest[i + 1]);
-      if (hi < 0 || lo < 0) return fail(kErrSyntax, "not hex");
+      if (hi < 0 || lo < 0) return fail(kErrDownloadData, "not hex digit pairs");
       bytes_.push_back(static_cast<uint8_t>(hi * 16 + lo));
     }
-    if (bytes_.size() > announced_) return fail(kErrStorage, "more than announced");
+    if (bytes_.size() > announced_)
+      return fail(kErrDownloadData, "more bytes than PLCDL BEGIN announced");
     return {};
   }
 

@@ -19,7 +19,8 @@ void Firmware::defaults() {
       values_[std::string(e.name)] = e.default_value;
   }
   user_vars_.fill(0);
-  msg_ = prompt_ = 0;
+  msg_ = 0;
+  prompt_ = 1;  // the reference's default: echo and `-->` (docs/dialects/st.md, "Echo")
   opmode_ = 8;
 }
 
