@@ -229,6 +229,7 @@ class Compiler {
   // --- places and memory (compiler_memory.cpp)
   std::optional<Place> parse_place(bool for_store);
   void emit_load(const Place& p, bool keep_prefix);
+  void load_for_update(const Place& p, bool bare_name);
   void emit_store(const Place& p);
   void emit_post_increments(const Place& p);
   void emit_increment(const Var& v, int32_t by);

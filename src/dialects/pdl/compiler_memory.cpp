@@ -332,6 +332,17 @@ void Compiler::emit_load(const Place& p, bool keep_prefix) {
   }
 }
 
+// The value an update (`n--`, `n += v`) starts from, its place's address kept below it. A
+// procedure's own variable by its bare name is read as any read of it is, from the frame word,
+// so that the peephole pass makes the command what `n = n - 1;` is (ADDMLK, STMLK).
+void Compiler::load_for_update(const Place& p, bool bare_name) {
+  if (bare_name && p.var != nullptr && p.var->local && p.form == Place::Form::Memory) {
+    read_var(*p.var);
+    return;
+  }
+  emit_load(p, true);
+}
+
 void Compiler::emit_store(const Place& p) {
   switch (p.form) {
     case Place::Form::Global: code_.emit(Op::STG, static_cast<uint32_t>(p.global)); break;
@@ -385,7 +396,7 @@ void Compiler::assignment() {
     if (is_float(p->type) || p->form == Place::Form::State || p->form == Place::Form::StateX) {
       error(Error::IntegerNeeded, op.offset, "++ and -- of long and short variables");
     }
-    emit_load(*p, true);
+    load_for_update(*p, op_at == 1);
     push_int(1);
     code_.emit(op.text == "++" ? Op::ADDI : Op::SUBI);
     convert(Ty::Int, p->type, p->is_short);
@@ -436,7 +447,7 @@ void Compiler::assignment() {
     return;
   }
   if (is_state) error(Error::NotAssignable, op.offset, "an operation assignment to a state");
-  emit_load(*p, true);
+  load_for_update(*p, op_at == 1);
   check_assignment_form(pos_, command_end(pos_), true);
   const Ty t = expr();
   if (slave_reads_ > 0) error(Error::SlaveOnRight, at);
