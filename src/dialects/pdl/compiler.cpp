@@ -331,7 +331,8 @@ void Compiler::procedure() {
     const Token& type = next();
     if (equal_ignoring_case(type.text, "long")) p.kind = Kind::Long;
     else if (equal_ignoring_case(type.text, "float")) p.kind = Kind::Float;
-    else if (!equal_ignoring_case(type.text, "short")) error(Error::Expected, type.offset, "long or float before '" + type.text + "'");
+    else if (!equal_ignoring_case(type.text, "short"))
+      error(Error::Expected, type.offset, "long or float before '" + type.text + "'");
     p.pointer = accept_op("*");
     if (equal_ignoring_case(type.text, "short")) {
       error(p.pointer ? Error::ShortPointer : Error::ShortLocal, type.offset, "parameter");

@@ -64,7 +64,8 @@ void Compiler::command(int depth, bool in_proc) {
   if (at_word("loop")) return loop_command(depth, in_proc);
   if (at_word("till")) return till_command();
   if (at_word("wait")) return wait_command();
-  const bool ends_task = depth == 0 && !in_proc && (at_word("halt") || at_word("ret") || at_word("retprintl"));
+  const bool ends_task =
+      depth == 0 && !in_proc && (at_word("halt") || at_word("ret") || at_word("retprintl"));
   simple_command(in_proc);
   // The task ends here, and its lock with it (pdl-drive.md): what follows is another entry's.
   if (ends_task) in_lock_ = false;

@@ -12,13 +12,16 @@ bool is_binary_operator(std::string_view op) {
          op == "%";
 }
 
-bool is_number(const Token& t) { return t.kind == Tok::Int || t.kind == Tok::Float || t.kind == Tok::Char; }
+bool is_number(const Token& t) {
+  return t.kind == Tok::Int || t.kind == Tok::Float || t.kind == Tok::Char;
+}
 
 }  // namespace
 
 bool is_builtin_function(std::string_view name) {
-  for (std::string_view b : {"max", "min", "abs", "sign", "sin", "cos", "sqrt", "divi", "shift", "bitset",
-                             "bitclr", "bittog", "sizeof", "memmin", "memmax", "memsum"}) {
+  for (std::string_view b :
+       {"max", "min", "abs", "sign", "sin", "cos", "sqrt", "divi", "shift", "bitset", "bitclr",
+        "bittog", "sizeof", "memmin", "memmax", "memsum"}) {
     if (equal_ignoring_case(b, name)) return true;
   }
   return false;
@@ -68,7 +71,8 @@ bool Compiler::is_variable(size_t first, size_t end) const {
 bool Compiler::is_constant(size_t first, size_t end) const {
   if (is_literal(first, end)) return true;
   // sizeof(v) is the array's size, known when compiling (2.1.4).
-  return end == first + 4 && toks_[first].kind == Tok::Name && equal_ignoring_case(toks_[first].text, "sizeof");
+  return end == first + 4 && toks_[first].kind == Tok::Name &&
+         equal_ignoring_case(toks_[first].text, "sizeof");
 }
 
 // 2.1.3: `v = sttovar …`, or a right side of states and bit tests (`var1 = s1 & var2->3`).
@@ -118,7 +122,8 @@ void Compiler::check_assignment_form(size_t first, size_t end, bool operation_as
       operand_expected = false;
       continue;
     }
-    if (operand_expected && t.text == "-" && i + 1 < end && is_number(toks_[i + 1])) continue;  // -5
+    if (operand_expected && t.text == "-" && i + 1 < end && is_number(toks_[i + 1]))
+      continue;  // -5
     const bool unary = operand_expected && (t.text == "-" || t.text == "~");
     if (!unary && !(is_binary_operator(t.text) && !operand_expected)) continue;  // &v, *p
     operand_expected = true;
@@ -129,8 +134,9 @@ void Compiler::check_assignment_form(size_t first, size_t end, bool operation_as
                 tokens_text(first, end) + "' to a variable of its own first");
     } else {
       error(Error::OneOperator, t.offset,
-            "'" + t.text + "' is a second one: split the command into assignments of one operator "
-            "each, computing a part into a variable of its own first (t = c * d; a = b + t;)");
+            "'" + t.text +
+                "' is a second one: split the command into assignments of one operator "
+                "each, computing a part into a variable of its own first (t = c * d; a = b + t;)");
     }
     return;
   }
@@ -151,7 +157,8 @@ void Compiler::check_function_argument(size_t first, size_t end, bool last) {
   const std::string what = tokens_text(first, end);
   if (is_constant(first, end)) {
     error(Error::FunctionArgument, toks_[first].offset,
-          "only the last may be a constant: assign " + what + " to a variable first and pass the variable");
+          "only the last may be a constant: assign " + what +
+              " to a variable first and pass the variable");
   } else {
     error(Error::FunctionArgument, toks_[first].offset,
           "assign '" + what + "' to a variable first and pass the variable");
@@ -161,7 +168,9 @@ void Compiler::check_function_argument(size_t first, size_t end, bool last) {
 // 1.4: "Each argument can be a constant or a variable"; `&v` passes an output parameter.
 void Compiler::check_proc_argument(size_t first, size_t end) {
   if (!strict_forms_ || is_variable(first, end) || is_constant(first, end)) return;
-  if (first < end && toks_[first].kind == Tok::Op && toks_[first].text == "&" && is_variable(first + 1, end)) return;
+  if (first < end && toks_[first].kind == Tok::Op && toks_[first].text == "&" &&
+      is_variable(first + 1, end))
+    return;
   error(Error::ProcArgument, toks_[first].offset,
         "assign '" + tokens_text(first, end) + "' to a variable first and pass the variable");
 }
