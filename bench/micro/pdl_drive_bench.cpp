@@ -16,14 +16,16 @@
 
 namespace {
 
-constexpr const char* kThreeTasks = R"(#long a, b, c, shared
+// In the drive's grammar: one operator an assignment (manual 2.1).
+constexpr const char* kThreeTasks = R"(#long a, b, c, shared, r7
 #task/1;
 while (1) do
   a++;
 end;
 #task/2;
 while (1) do
-  b=b+a%7;
+  r7=a%7;
+  b+=r7;
 end;
 #task/3;
 while (1) do

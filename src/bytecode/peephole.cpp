@@ -565,7 +565,7 @@ std::optional<int> pure_effect(Op op) {
   switch (op) {
     case Op::LDG: case Op::LDL: case Op::PUSHI: case Op::PUSHK: case Op::LDMLK:
     case Op::ADDIGG: case Op::SUBIGG: case Op::ADDFGG: case Op::SUBFGG: case Op::MULFGG:
-    case Op::ADDGK: case Op::REMGK: case Op::ADDLK: case Op::REMLK:
+    case Op::ADDGK: case Op::REMGK: case Op::ADDLK: case Op::REMLK: case Op::ADDMLK:
     case Op::ADDILL: case Op::SUBILL: case Op::ADDFLL: case Op::SUBFLL: case Op::MULFLL:
     case Op::ADDFGK: case Op::SUBFGK: case Op::MULFGK: case Op::MULFKG:
       return 1;

@@ -80,7 +80,10 @@ class Controller::Drive final : public dialect::Runtime, public drive::ProgramWo
   std::vector<uint32_t> events_;        // per axis, its event bits since the firmware's last cycle
 };
 
+// A reset makes fresh axes; the world outside them (inputs, switches, the index pulse) stays.
 void Controller::Drive::reboot() {
+  std::vector<drive::Axis::World> world;
+  for (const auto& axis : axes_) world.push_back(axis->world());
   axes_.clear();
   for (uint32_t a = 0; a < std::clamp(options_.axes, 1u, kMaxAxes); ++a) {
     axes_.push_back(std::make_unique<drive::Axis>());
@@ -96,6 +99,7 @@ void Controller::Drive::reboot() {
   if (options_.servo_period_us != 0) {
     for (auto& axis : axes_) axis->set_period_us(static_cast<int32_t>(options_.servo_period_us));
   }
+  for (size_t a = 0; a < std::min(world.size(), axes_.size()); ++a) axes_[a]->place_world(world[a]);
   firmware_->boot(boot_messages_);
   next_cycle_ns_ = now_ns_ + cycle_ns();
   next_step_ns_.resize(axes_.size());

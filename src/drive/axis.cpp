@@ -331,6 +331,17 @@ void Axis::remove_position_switch(int n) {
   for (const PositionSwitch& sw : switches_) any_switch_ = any_switch_ || sw.placed;
 }
 
+void Axis::place_world(const World& world) {
+  input_levels_ = world.input_levels;
+  switches_ = world.switches;
+  any_switch_ = false;
+  for (const PositionSwitch& sw : switches_) any_switch_ = any_switch_ || sw.placed;
+  index_offset_counts_ = world.index_offset_counts;
+  follow_position_switches();
+  for (int n = 1; n <= kInputCount; ++n) input_was_active_[n - 1] = input_active(n);
+  inputs_changed_ = true;  // the next scan summarises the limits and inhibits that hold
+}
+
 void Axis::follow_position_switches() {
   const double at = motor_state_.position_counts;
   for (int n = 1; n <= kInputCount; ++n) {

@@ -146,6 +146,20 @@ class Axis {
   // placed on an input replaces its level; set_input_level() on it removes the switch.
   void place_position_switch(int n, double from_counts, double to_counts);
   void remove_position_switch(int n);
+  struct PositionSwitch {
+    bool placed = false;
+    double from_counts = 0.0, to_counts = 0.0;
+  };
+  // All of the above: the world outside the drive, which a reset does not change, so that the
+  // controller carries it to the fresh axes.
+  struct World {
+    uint32_t input_levels = 0;  // bit n-1 for input n
+    std::array<PositionSwitch, kInputCount> switches{};
+    double index_offset_counts = 0.0;
+  };
+  World world() const { return {input_levels_, switches_, index_offset_counts_}; }
+  // The world as a drive finds it at power-up: the inputs start at its levels (no edge).
+  void place_world(const World& world);
 
   // --- auxiliary feedback: the simulated drive has no second encoder; PY is a plain counter ---
   int32_t aux_position() const { return aux_position_counts_; }
@@ -274,10 +288,6 @@ class Axis {
   bool home_input_rose_ = false;  // this cycle's scan saw a main-home input become active
   uint32_t outputs_ = 0;
 
-  struct PositionSwitch {
-    bool placed = false;
-    double from_counts = 0.0, to_counts = 0.0;
-  };
   std::array<PositionSwitch, kInputCount> switches_{};
   bool any_switch_ = false;
   double index_offset_counts_ = 0.0;

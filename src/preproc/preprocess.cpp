@@ -58,6 +58,20 @@ std::string_view trim(std::string_view s) {
   while (e > b && is_blank(s[e - 1])) --e;
   return s.substr(b, e - b);
 }
+// Two macro bodies alike but for the amount of whitespace between their tokens (C17 6.10.3 p1).
+bool same_but_whitespace(std::string_view a, std::string_view b) {
+  auto space = [](char c) { return is_blank(c) || c == '\n' || c == '\r'; };
+  size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    if (space(a[i]) && space(b[j])) {
+      while (i < a.size() && space(a[i])) ++i;
+      while (j < b.size() && space(b[j])) ++j;
+    } else if (a[i++] != b[j++]) {
+      return false;
+    }
+  }
+  return i == a.size() && j == b.size();
+}
 
 class Preprocessor {
  public:
@@ -306,7 +320,11 @@ class Preprocessor {
       }
     }
     if (!check_name(name, at)) return;
+    std::string body(trim(args.substr(std::min(body_at, args.size()))));
     if (const Macro* old = macros_.find(name.text)) {
+      if (options_.identical_redefinition_allowed && old->params == params &&
+          same_but_whitespace(old->body, body))
+        return;
       report(PreprocError::AlreadyDefined, here(name.at),
              {{old->defined_at, "'" + std::string(name.text) + "' was defined here"}});
       return;
@@ -317,7 +335,7 @@ class Preprocessor {
     }
     ++define_count_;
     Macro m;
-    m.body = std::string(trim(args.substr(std::min(body_at, args.size()))));
+    m.body = std::move(body);
     m.defined_at = at;
     m.params = std::move(params);
     if (!m.body.empty() && !m.params) {
@@ -333,6 +351,7 @@ class Preprocessor {
     const Word name = word_at(args, from);
     if (!check_name(name, at)) return;
     if (!macros_.undefine(name.text)) {
+      if (options_.undef_of_undefined_ignored) return;
       return report(PreprocError::NotDefined, here(name.at), {{here(name.at), "'" + std::string(name.text) + "' is not defined"}});
     }
     expander_.forget_failures();

@@ -60,6 +60,12 @@ struct PreprocOptions {
   // An identifier in #if/#elseif that is not defined with a value: false gives Gold 94
   // (manual 2.10 allows only numbers and #define values); true counts it as 0, as C does.
   bool undefined_identifier_is_zero = false;
+  // C's rules (C17 6.10.3 p2, 6.10.3.5 p2), where the dialect's manual says its directives are
+  // C's (HIWIN PDL 2.5.3): `#undef` of a name not defined is ignored, and a `#define` that repeats
+  // a macro's definition (the same parameters and body, whitespace aside) is accepted. Gold's
+  // manual makes both errors (93, 89).
+  bool undef_of_undefined_ignored = false;
+  bool identical_redefinition_allowed = false;
   // A `#word` line that is no directive: Gold has labels (`#start`, manual 2.6), so it passes
   // to the dialect untouched; false reports UnknownDirective.
   bool unknown_hash_lines_pass_through = true;

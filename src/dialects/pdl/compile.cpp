@@ -100,6 +100,8 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   po.text_of = preproc_text;
   po.star_star_comments = false;
   po.undefined_identifier_is_zero = true;
+  po.undef_of_undefined_ignored = true;  // 2.5.3 (11): the directives are C's
+  po.identical_redefinition_allowed = true;
   po.unknown_hash_lines_pass_through = true;
   po.max_name_length = 24;
   po.allow_elifdef = true;

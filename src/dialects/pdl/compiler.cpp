@@ -209,6 +209,7 @@ void Compiler::task_directive(size_t at) {
   const uint32_t task = static_cast<uint32_t>(n.int_value);
   if (tasks_seen_[task]) return error(Error::TaskTwice, at, "#task/" + n.text);
   tasks_seen_[task] = true;
+  in_lock_ = false;  // another task's code: the lock above is not its own (2.2.2)
   bytecode::Routine r;
   r.name = "task " + std::to_string(task);
   r.kind = bytecode::RoutineKind::Task;
@@ -273,8 +274,12 @@ void Compiler::declaration(Kind kind) {
     v.kind = kind;
     v.pointer = pointer;
     v.length = length;
+    if (kind == Kind::Short && pointer) {
+      error(Error::ShortPointer, name.offset, name.text);
+      continue;
+    }
     if (current_proc_ != nullptr) {
-      if (kind == Kind::Short && !pointer) error(Error::ShortLocal, name.offset, name.text);
+      if (kind == Kind::Short) error(Error::ShortLocal, name.offset, name.text);
       for (const Var& l : locals_)
         if (l.name == v.name) error(Error::Redefined, name.offset, v.name);
       v.local = true;
@@ -326,10 +331,17 @@ void Compiler::procedure() {
     const Token& type = next();
     if (equal_ignoring_case(type.text, "long")) p.kind = Kind::Long;
     else if (equal_ignoring_case(type.text, "float")) p.kind = Kind::Float;
-    else if (equal_ignoring_case(type.text, "short")) error(Error::ShortLocal, type.offset, "parameter");
-    else error(Error::Expected, type.offset, "long or float before '" + type.text + "'");
+    else if (!equal_ignoring_case(type.text, "short"))
+      error(Error::Expected, type.offset, "long or float before '" + type.text + "'");
     p.pointer = accept_op("*");
+    if (equal_ignoring_case(type.text, "short")) {
+      error(p.pointer ? Error::ShortPointer : Error::ShortLocal, type.offset, "parameter");
+    }
+    const Token& param = peek();
     p.name = expect_name();
+    // A parameter is a local variable (1.4): a variable's name, never a system one's.
+    if (p.name.size() > kMaxNameLength) error(Error::NameTooLong, param.offset, p.name);
+    if (!p.name.empty() && is_keyword(p.name)) error(Error::ReservedName, param.offset, p.name);
     params.push_back(p);
     if (!accept_op(",")) break;
   }
@@ -368,6 +380,8 @@ void Compiler::procedure() {
     locals_.push_back(v);
   }
   scratch_high_ = kFirstScratch;
+  const int loops_outside = loop_depth_;
+  loop_depth_ = 0;  // the procedure's own stack frame: no loop of the caller's is in it
   proc_end_ = code_.new_label();
   // The caller's CALLFEOL checked the frame's room, stored the arguments and set the locals to 0
   // (compiler_commands.cpp, proc_call).
@@ -397,6 +411,7 @@ void Compiler::procedure() {
   }
   proc_marks_.push_back(std::move(mark));
   scope_ = 0;
+  loop_depth_ = loops_outside;
   current_proc_ = nullptr;
   locals_.clear();
   code_.bind(after);
@@ -433,6 +448,7 @@ void Compiler::finish_scope() {
       info.defined = true;
     }
   }
+  patch_loop_exits(scope_);
 }
 
 LabelInfo& Compiler::label_named(const std::string& name, int scope, size_t offset) {
@@ -505,14 +521,38 @@ void Compiler::emit_indirect_stubs(int scope) {
     auto& labels = scopes_[static_cast<size_t>(g.scope)];
     auto it = labels.find(g.label);
     std::vector<std::pair<int32_t, CodeBuilder::Label>> cases;
+    struct Trampoline {
+      CodeBuilder::Label from, to;
+      int drop;
+    };
+    std::vector<Trampoline> exits;  // a target outside loops around the goto (emit_loop_exit())
     if (it != labels.end()) {
       for (const CommandStart& c : commands_) {
         if (c.scope != g.scope || c.slot < it->second.slot) continue;
         const int32_t offset = static_cast<int32_t>(c.slot - it->second.slot);
-        if (cases.empty() || cases.back().first != offset) cases.push_back({offset, c.label});
+        if (!cases.empty() && cases.back().first == offset) continue;
+        CodeBuilder::Label target = c.label;
+        if (g.loop_depth > c.loop_depth) {
+          target = code_.new_label();
+          exits.push_back({target, c.label, g.loop_depth - c.loop_depth});
+        }
+        cases.push_back({offset, target});
       }
     }
     emit_dispatch(kGotoN, cases);
+    for (const Trampoline& e : exits) {
+      code_.bind(e.from);
+      code_.emit(Op::INCL, kSp, static_cast<uint32_t>(-e.drop));
+      code_.emit_to(Op::JMP, e.to);
+    }
+  }
+}
+
+void Compiler::patch_loop_exits(int scope) {
+  for (const LoopExit& e : loop_exits_) {
+    if (e.scope != scope) continue;
+    const int target = scopes_[static_cast<size_t>(scope)][e.label].loop_depth;
+    if (e.depth > target) image_.code[e.code + 1] = static_cast<uint32_t>(target - e.depth);
   }
 }
 
@@ -521,6 +561,7 @@ void Compiler::emit_indirect_stubs(int scope) {
 bool Compiler::compile_evaluation(EvalForm form, std::vector<Var> globals, std::vector<Var> locals,
                                   const std::vector<bytecode::Global>& image_globals, bytecode::Image& out,
                                   bool& is_float) {
+  strict_forms_ = false;  // the debugger evaluates expressions of any shape
   globals_ = std::move(globals);
   locals_ = std::move(locals);
   // The program's globals as they are, so that LDG/STG and LDM/STM reach the same words.

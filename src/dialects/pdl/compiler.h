@@ -25,6 +25,8 @@ namespace uprog::pdl {
 using bytecode::CodeBuilder;
 using bytecode::Op;
 
+bool is_builtin_function(std::string_view name);  // max, min, abs, …, sizeof, memsum (2.3)
+
 // An expression's type: an integer, a float, or an address of either.
 enum class Ty : uint8_t { Int, Float, PtrInt, PtrFloat };
 inline bool is_float(Ty t) { return t == Ty::Float; }
@@ -68,6 +70,7 @@ struct LabelInfo {
   bool defined = false;
   uint32_t slot = 0;
   size_t first_use = 0;  // offset of the first goto/call naming it
+  int loop_depth = 0;    // the loops open where it is defined
   int routine = -1;      // global labels: its entry routine
 };
 
@@ -75,6 +78,7 @@ struct CommandStart {
   uint32_t slot;
   CodeBuilder::Label label;
   int scope;
+  int loop_depth;  // the loops open around the command
 };
 
 // `var = <label>` (2.1 form 5): a constant that becomes the label's slot once it is defined.
@@ -89,6 +93,7 @@ struct IndirectGoto {
   std::string label;
   CodeBuilder::Label stub;
   size_t offset;
+  int loop_depth;  // the loops open around the goto
 };
 
 // Where a value is read or stored (parse_place()).
@@ -171,6 +176,8 @@ class Compiler {
   void wait_command();
   void sleep_command();
   void goto_command();
+  void emit_loop_exit(const std::string& label);
+  void patch_loop_exits(int scope);
   void call_command();
   void ret_command();
   void emit_ret();
@@ -203,11 +210,26 @@ class Compiler {
   void push_float(float v);
   void convert(Ty from, Ty to, bool to_short);
   Ty arith(std::string_view op, Ty a, Ty b, size_t at);
+  void emit_rounded_division();
   Ty int_operand(Ty t, size_t at);
+
+  // --- the drive compiler's forms (compiler_forms.cpp), checked on the tokens
+  size_t command_end(size_t first) const;  // the `;`, the next line's start or the end
+  size_t closing(size_t open) const;       // the token after the bracket that closes `open`
+  bool is_builtin_call(size_t at) const;
+  bool is_variable(size_t first, size_t end) const;  // v, v[i], *p, *p[i]
+  bool is_constant(size_t first, size_t end) const;  // a number, -number, sizeof(v)
+  bool is_state_logic(size_t first, size_t end) const;
+  std::string tokens_text(size_t first, size_t end) const;
+  void check_assignment_form(size_t first, size_t end, bool operation_assignment);
+  bool check_call_alone(size_t at);  // a built-in function's call at token `at`
+  void check_function_argument(size_t first, size_t end, bool last);
+  void check_proc_argument(size_t first, size_t end);
 
   // --- places and memory (compiler_memory.cpp)
   std::optional<Place> parse_place(bool for_store);
   void emit_load(const Place& p, bool keep_prefix);
+  void load_for_update(const Place& p, bool bare_name);
   void emit_store(const Place& p);
   void emit_post_increments(const Place& p);
   void emit_increment(const Var& v, int32_t by);
@@ -269,6 +291,20 @@ class Compiler {
   uint32_t scratch_next_ = kFirstScratch;
   uint32_t scratch_high_ = kFirstScratch;  // one past the highest scratch local of the procedure
   bool in_lock_ = false;
+  // The drive compiler's forms are checked (compile()), not the debugger's evaluations.
+  bool strict_forms_ = true;
+  // The right side of the `=` being compiled: a function's call may be all of it.
+  size_t call_first_ = SIZE_MAX, call_end_ = 0;
+  // An integer assignment's `/` of two integers rounds exactly (2.3.6), not through a float.
+  bool integer_quotient_ = false;
+  int loop_depth_ = 0;  // the loops open around the command, in its scope (their counts)
+  struct LoopExit {
+    uint32_t code;  // the INCL kSp whose immediate drops the counts the target is not in
+    int scope;
+    std::string label;
+    int depth;
+  };
+  std::vector<LoopExit> loop_exits_;
   int32_t slave_reads_ = 0;
   int32_t operations_ = 0;
   bool in_short_if_ = false;

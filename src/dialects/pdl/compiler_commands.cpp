@@ -21,7 +21,7 @@ void Compiler::begin_command(uint32_t slots) {
     line_entry(peek().offset);
     const CodeBuilder::Label start = code_.new_label();
     code_.bind(start);
-    commands_.push_back({slots_, start, scope_});
+    commands_.push_back({slots_, start, scope_, loop_depth_});
   }
   slots_ += slots;
   check_code_size();
@@ -54,6 +54,7 @@ void Compiler::command(int depth, bool in_proc) {
     if (info.defined) return error(Error::LabelRedefined, t.offset, t.text);
     info.defined = true;
     info.slot = slots_;
+    info.loop_depth = loop_depth_;
     code_.bind(info.label);
     return;
   }
@@ -63,7 +64,11 @@ void Compiler::command(int depth, bool in_proc) {
   if (at_word("loop")) return loop_command(depth, in_proc);
   if (at_word("till")) return till_command();
   if (at_word("wait")) return wait_command();
+  const bool ends_task =
+      depth == 0 && !in_proc && (at_word("halt") || at_word("ret") || at_word("retprintl"));
   simple_command(in_proc);
+  // The task ends here, and its lock with it (pdl-drive.md): what follows is another entry's.
+  if (ends_task) in_lock_ = false;
 }
 
 // The commands a short `if` may hold (2.2.8), and every other one-line command.
@@ -227,7 +232,9 @@ void Compiler::loop_command(int depth, bool in_proc) {
   end_line();
   CodeBuilder::Label body = code_.new_label(), exit = code_.new_label();
   code_.bind(body);
+  ++loop_depth_;
   statement_list(depth + 1, in_proc);
+  --loop_depth_;
   if (!accept_word("end")) error(Error::UnclosedBlock, at, "loop");
   begin_command(1);
   const uint32_t c = scratch();
@@ -319,13 +326,23 @@ void Compiler::goto_command() {
     expect_op("]");
     code_.emit(Op::STL, kGotoN);
     end_line();
-    IndirectGoto g{scope_, label, code_.new_label(), name.offset};
+    IndirectGoto g{scope_, label, code_.new_label(), name.offset, loop_depth_};
     code_.emit_to(Op::JMP, g.stub);
     indirect_.push_back(g);
     return;
   }
+  emit_loop_exit(label);
   end_line();
   code_.emit_to(Op::JMP, info.label);
+}
+
+// A goto out of loops drops their counts from the task's stack, as their ends would have:
+// without it, each such exit left a word behind, and the task's stack overflowed after 256.
+// The label's loops are known once it is defined; compile() patches the count in then.
+void Compiler::emit_loop_exit(const std::string& label) {
+  if (loop_depth_ == 0) return;
+  loop_exits_.push_back({code_.here(), scope_, label, loop_depth_});
+  code_.emit(Op::INCL, kSp, 0);
 }
 
 void Compiler::call_command() {
@@ -362,6 +379,8 @@ void Compiler::ret_command() {
 }
 
 void Compiler::emit_ret() {
+  // A ret inside loops of the called code drops their counts first (emit_loop_exit()).
+  if (loop_depth_ > 0) code_.emit(Op::INCL, kSp, static_cast<uint32_t>(-loop_depth_));
   CodeBuilder::Label more = code_.new_label();
   code_.emit(Op::LDL, kSp);
   code_.emit(Op::LDL, kBase);
@@ -399,6 +418,7 @@ void Compiler::proc_call(Proc& proc) {
     const size_t arg_at = peek().offset;
     const size_t first = pos_;
     const Ty t = expr();
+    check_proc_argument(first, pos_);
     const bool constant = is_literal(first, pos_);
     if (count < params) {
       const Param& p = proc.params[static_cast<size_t>(count)];

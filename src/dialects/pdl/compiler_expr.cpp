@@ -1,6 +1,6 @@
 // The compiler's expressions (2.1's right-hand sides, the built-in functions of 2.3) and
 // conditions (2.2.8: states, relations, TOUT, `&`, `|`, `~`). Integers stay integers except
-// under `/`, which divides as floats so that the assignment rounds (2.3.6).
+// under `/`, which divides as floats, or into an integer exactly rounded (2.3.6).
 #include <cmath>
 #include <cstring>
 
@@ -23,14 +23,6 @@ bool op_at_level(std::string_view op, int level, bool in_condition) {
 }
 
 constexpr int kLevels = 5;
-
-bool is_builtin(std::string_view name) {
-  for (std::string_view b : {"max", "min", "abs", "sign", "sin", "cos", "sqrt", "divi", "shift", "bitset",
-                             "bitclr", "bittog", "sizeof", "memmin", "memmax", "memsum"}) {
-    if (equal_ignoring_case(b, name)) return true;
-  }
-  return false;
-}
 
 }  // namespace
 
@@ -78,6 +70,10 @@ Ty Compiler::arith(std::string_view op, Ty a, Ty b, size_t at) {
   ++operations_;
   const bool pa = a == Ty::PtrInt || a == Ty::PtrFloat, pb = b == Ty::PtrInt || b == Ty::PtrFloat;
   if (op == "/") {
+    if (integer_quotient_ && !is_float(a) && !is_float(b)) {
+      emit_rounded_division();
+      return Ty::Int;
+    }
     if (!is_float(a)) code_.emit(Op::I2F2);
     if (!is_float(b)) code_.emit(Op::I2F);
     code_.emit(Op::DIVF);
@@ -100,6 +96,52 @@ Ty Compiler::arith(std::string_view op, Ty a, Ty b, size_t at) {
   if (is_float(a) || is_float(b)) error(Error::IntegerNeeded, at, "'" + std::string(op) + "' of a float");
   code_.emit(op == "%" ? Op::REMI : op == "&" ? Op::ANDI : op == "|" ? Op::ORI : Op::XORI);
   return Ty::Int;
+}
+
+// a b -> a / b rounded to nearest, halves away from zero, as F2IR rounds the float quotient
+// (2.3.6: r=p/4 is 3), but exact for every 32-bit a (100000001/1 stays 100000001): the
+// truncated quotient, one more away from zero when twice the remainder reaches b (both
+// magnitudes unsigned, so that INT_MIN's is exact). b = 0 is DivisionByZero, as for a float.
+void Compiler::emit_rounded_division() {
+  constexpr uint32_t kCmpGreaterOrEqual = 5;
+  const uint32_t a = scratch(), b = scratch(), q = scratch(), r = scratch();
+  auto push_magnitude = [&](uint32_t local) {  // (x ^ m) - m, m = x >> 31: |x| as unsigned
+    code_.emit(Op::LDL, local);
+    code_.emit(Op::LDL, local);
+    push_int(31);
+    code_.emit(Op::SHRI);
+    code_.emit(Op::XORI);
+    code_.emit(Op::LDL, local);
+    push_int(31);
+    code_.emit(Op::SHRI);
+    code_.emit(Op::SUBI);
+  };
+  code_.emit(Op::STL, b);
+  code_.emit(Op::STL, a);
+  code_.emit(Op::LDL, a);
+  code_.emit(Op::LDL, b);
+  code_.emit(Op::DIVI);
+  code_.emit(Op::STL, q);
+  code_.emit(Op::LDL, a);
+  code_.emit(Op::LDL, b);
+  code_.emit(Op::REMI);
+  code_.emit(Op::STL, r);
+  push_magnitude(r);
+  code_.emit(Op::DUP);
+  code_.emit(Op::ADDI);
+  push_magnitude(b);
+  code_.emit(Op::CMPU, kCmpGreaterOrEqual);
+  code_.emit(Op::LDL, a);  // away from zero: +1, or -1 when the signs differ
+  code_.emit(Op::LDL, b);
+  code_.emit(Op::XORI);
+  push_int(31);
+  code_.emit(Op::SHRI);
+  push_int(1);
+  code_.emit(Op::ORI);
+  code_.emit(Op::MULI);
+  code_.emit(Op::LDL, q);
+  code_.emit(Op::ADDI);
+  release(4);
 }
 
 Ty Compiler::expr(bool in_condition, int level) {
@@ -222,7 +264,8 @@ Ty Compiler::primary(bool in_condition) {
     condition();
     return Ty::Int;
   }
-  if (t.kind == Tok::Name && at_op("(", 1) && is_builtin(t.text) && !find_var(t.text)) {
+  if (t.kind == Tok::Name && at_op("(", 1) && is_builtin_function(t.text) && !find_var(t.text)) {
+    if (!equal_ignoring_case(t.text, "sizeof")) check_call_alone(pos_);
     next();
     return builtin(t.text, t.offset);
   }
@@ -270,18 +313,16 @@ Ty Compiler::builtin(const std::string& raw, size_t at) {
     }
     return Ty::Int;
   }
-  if (name == "memmin" || name == "memmax" || name == "memsum") {
+  if ((name == "memmin" || name == "memmax" || name == "memsum") && !strict_forms_) {
     error(Error::Syntax, at, raw + " stands alone on the right of '='");
   }
   expect_op("(");
   std::vector<Ty> args;
   std::vector<uint32_t> temps;
   while (!at_op(")") && peek().kind != Tok::End) {
-    const bool literal = peek().kind == Tok::Int || peek().kind == Tok::Float ||
-                         (at_op("-") && (peek(1).kind == Tok::Int || peek(1).kind == Tok::Float));
-    const size_t arg_at = peek().offset;
+    const size_t first = pos_;
     args.push_back(expr());
-    if (literal && !at_op(")")) error(Error::FunctionArgument, arg_at, raw);
+    check_function_argument(first, pos_, at_op(")"));
     if (!accept_op(",")) break;
   }
   expect_op(")");

@@ -297,7 +297,7 @@ std::optional<Place> Compiler::parse_place(bool for_store) {
     p.slave = s->slave;
     p.command = s->id;
     p.form = Place::Form::System;
-    if (!axis_zero && accept_op("[")) {
+    if (accept_op("[")) {  // X_acc[0] is acc[0]: any variable may be indexed (1.3)
       if (peek().kind == Tok::Int && at_op("]", 1)) {
         p.index = next().int_value;
       } else {
@@ -330,6 +330,17 @@ void Compiler::emit_load(const Place& p, bool keep_prefix) {
     if (p.slave) ++slave_reads_;
     emit_post_increments(p);
   }
+}
+
+// The value an update (`n--`, `n += v`) starts from, its place's address kept below it. A
+// procedure's own variable by its bare name is read as any read of it is, from the frame word,
+// so that the peephole pass makes the command what `n = n - 1;` is (ADDMLK, STMLK).
+void Compiler::load_for_update(const Place& p, bool bare_name) {
+  if (bare_name && p.var != nullptr && p.var->local && p.form == Place::Form::Memory) {
+    read_var(*p.var);
+    return;
+  }
+  emit_load(p, true);
 }
 
 void Compiler::emit_store(const Place& p) {
@@ -368,6 +379,11 @@ void Compiler::assignment() {
   if (peek(op_at).text == "=" &&
       ((after.kind == Tok::Op && after.text == "{") || after.kind == Tok::String ||
        (after.kind == Tok::Name && is_memory_function(after.text) && !find_var(after.text)))) {
+    if (after.kind == Tok::Name) {
+      call_first_ = pos_ + op_at + 1;
+      call_end_ = command_end(call_first_);
+      if (!check_call_alone(call_first_)) return;
+    }
     return memory_block_assignment(at);
   }
   begin_command(1);
@@ -380,7 +396,7 @@ void Compiler::assignment() {
     if (is_float(p->type) || p->form == Place::Form::State || p->form == Place::Form::StateX) {
       error(Error::IntegerNeeded, op.offset, "++ and -- of long and short variables");
     }
-    emit_load(*p, true);
+    load_for_update(*p, op_at == 1);
     push_int(1);
     code_.emit(op.text == "++" ? Op::ADDI : Op::SUBI);
     convert(Ty::Int, p->type, p->is_short);
@@ -400,7 +416,10 @@ void Compiler::assignment() {
       return;
     }
     const Token& rhs = peek();
+    call_first_ = pos_;
+    call_end_ = command_end(pos_);
     if (rhs.kind == Tok::Name && is_reduction(rhs.text) && at_op("(", 1) && !find_var(rhs.text)) {
+      if (!check_call_alone(pos_)) return;
       next();
       CodeBuilder::Label skip = code_.new_label(), done = code_.new_label();
       const Ty t = memory_reduction(rhs.text, rhs.offset, skip, has_prefix(*p));
@@ -414,7 +433,11 @@ void Compiler::assignment() {
       end_line();
       return;
     }
+    check_assignment_form(call_first_, call_end_, false);
+    integer_quotient_ = strict_forms_ && !is_float(p->type);
     const Ty t = expr();
+    integer_quotient_ = false;
+    call_first_ = SIZE_MAX;
     if (p->slave && slave_reads_ > 0 && operations_ == 0) error(Error::SlaveBothSides, at);
     if (slave_reads_ > 0 && operations_ > 0) error(Error::SlaveOnRight, at);
     convert(t, p->type, p->is_short);
@@ -424,10 +447,13 @@ void Compiler::assignment() {
     return;
   }
   if (is_state) error(Error::NotAssignable, op.offset, "an operation assignment to a state");
-  emit_load(*p, true);
+  load_for_update(*p, op_at == 1);
+  check_assignment_form(pos_, command_end(pos_), true);
   const Ty t = expr();
   if (slave_reads_ > 0) error(Error::SlaveOnRight, at);
+  integer_quotient_ = strict_forms_ && !is_float(p->type);
   const Ty r = arith(std::string_view(op.text).substr(0, 1), p->type, t, op.offset);
+  integer_quotient_ = false;
   convert(r, p->type, p->is_short);
   emit_store(*p);
   emit_post_increments(*p);
@@ -485,6 +511,7 @@ void Compiler::memory_block_assignment(size_t lhs_start) {
       const size_t value_at = peek().offset;
       const size_t first = pos_;
       const Ty t = expr();
+      check_function_argument(first, pos_, false);
       const bool constant = is_literal(first, pos_);
       if (is_float(t) != dest_float && !constant) error(Error::ArgumentType, value_at, "memset does not convert");
       convert(t, dest_float ? Ty::Float : Ty::Int, dest_short);
@@ -498,7 +525,9 @@ void Compiler::memory_block_assignment(size_t lhs_start) {
     }
     code_.emit(Op::STL, s);
     expect_op(",");
+    const size_t count_first = pos_;
     int_operand(expr(), f.offset);
+    check_function_argument(count_first, pos_, true);
     code_.emit(Op::STL, n);
     expect_op(")");
     emit_copy_loop(set, dest_float, d, s, n);
@@ -570,7 +599,9 @@ Ty Compiler::memory_reduction(const std::string& raw, size_t at, CodeBuilder::La
   }
   code_.emit(Op::STL, s);
   expect_op(",");
+  const size_t count_first = pos_;
   int_operand(expr(), at);
+  check_function_argument(count_first, pos_, true);
   code_.emit(Op::STL, n);
   expect_op(")");
   code_.emit(Op::LDL, n);

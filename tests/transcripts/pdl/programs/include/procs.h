@@ -1,4 +1,5 @@
 // Included by common.h (found beside it): a procedure.
 proc add_to(long v, long * p) do
-  *p=*p+v+LIMIT;
+  *p+=v;
+  *p+=LIMIT;
 end;
