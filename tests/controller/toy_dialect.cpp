@@ -32,7 +32,7 @@ class ToyFirmware final : public dialect::Firmware {
     std::string error;
     if (auto form = runtime_.flash().read(kRecord, &error)) {
       every_ = every_of(*form);
-      if (every_ == 0) messages.push_back("toy: stored program refused");
+      if (every_ == 0) messages.emplace_back("toy: stored program refused");
     }
   }
   uint64_t cycle_ns() const override { return kCycleNs; }
