@@ -18,7 +18,7 @@ vm::MachineConfig machine_config() {
   vm::MachineConfig c;
   c.threads = kThreads + 1;
   c.stack = 50;
-  c.frames = 30;
+  c.frames = 31;  // the task's own and 30 calls (ProgCallStack "max. depth 30")
   c.locals = 16;
   return c;
 }
@@ -91,6 +91,7 @@ std::string Firmware::install(const std::string& cup, bool store) {
   latched_ = 0;
   event_frames_.clear();
   event_mask_ = 0x00FFFFFF;
+  line_stack_.clear();  // the manual: "the stack is cleared upon downloading of a new user program"
   previous_inputs_ = axis_->input_level_bits();
   if (store) stored_ = cup;
   return "";
