@@ -401,7 +401,11 @@ class Loader {
     }
     out_.line_depth = depth_;
     out_.waits.assign(count() + 2, false);
-    for (uint32_t l = 1; l <= count(); ++l) out_.waits[l] = ops_[l].key->id == KeywordId::WaitStatus;
+    out_.timed_waits.assign(count() + 2, false);
+    for (uint32_t l = 1; l <= count(); ++l) {
+      out_.waits[l] = ops_[l].key->id == KeywordId::WaitStatus;
+      out_.timed_waits[l] = ops_[l].key->id == KeywordId::WaitTime;
+    }
   }
 
   const CupProgram& p_;

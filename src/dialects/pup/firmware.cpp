@@ -237,7 +237,11 @@ uint32_t Firmware::next_line(uint32_t thread) const {
   const uint32_t line = cup_.line_of(pc);
   const bool closes_line = pc < code.size() && bytecode::word_op(code[pc]) == bytecode::Op::EOL &&
                            cup_.line_pc[line] != pc && cup_.line_of(pc + 1) != line;
-  if (m.status(thread) != vm::ThreadStatus::Waiting && closes_line) ++pc;
+  // A thread halted inside an AWaitTime stands on the EOL after its WAIT (resume() takes it back
+  // into the wait; once woken it runs the EOL in the same turn): it is at the wait's line.
+  const bool halted_in_wait =
+      m.status(thread) == vm::ThreadStatus::Halted && cup_.timed_waits[line];
+  if (m.status(thread) != vm::ThreadStatus::Waiting && !halted_in_wait && closes_line) ++pc;
   return cup_.line_of(pc);
 }
 
