@@ -243,7 +243,8 @@ bool Firmware::world_directive(std::string_view name, std::string_view arg, std:
   }
   if (name == "comm-error") {
     if (!arg.empty()) failure = "comm-error takes no argument";
-    else on_framing_error();
+    else
+      on_framing_error(900);  // as a line too long
     return true;
   }
   return false;

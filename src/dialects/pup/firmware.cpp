@@ -39,7 +39,9 @@ int32_t code_of(vm::RunError e, int32_t detail) {
 }  // namespace
 
 Firmware::Firmware(dialect::Runtime& runtime, const dialect::FirmwareOptions&)
-    : runtime_(runtime), wire_(dialect::FramerOptions{}, [this] { on_framing_error(); }), schedule_(scheduling::RatePrioritiesConfig{}) {}
+    : runtime_(runtime),
+      wire_(dialect::FramerOptions{}, [this](int32_t code) { on_framing_error(code); }),
+      schedule_(scheduling::RatePrioritiesConfig{}) {}
 
 void Firmware::boot(std::vector<std::string>& messages) {
   axis_ = &runtime_.axis();

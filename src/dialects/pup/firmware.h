@@ -106,8 +106,12 @@ class Firmware final : public dialect::Firmware, public vm::Host {
  public:
   // --- the world a transcript changes (docs/transcripts.md: analog, comm-error) ---
   bool world_directive(std::string_view name, std::string_view arg, std::string& failure) override;
-  // A line the framer refused (too long, a bad byte): event 23, the communication error.
-  void on_framing_error() { latch(23); }
+  // A line the framer refused (too long, a bad byte): event 23, the communication error, and the
+  // host's error in AErrLog (code, source 0, line 0).
+  void on_framing_error(int32_t code) {
+    latch(23);
+    log_error(code, 0, 0);
+  }
 
  private:
 
