@@ -310,8 +310,12 @@ void PupCompiler::message(TokenCursor& cur, const Location& at) {
   const Token& name = *cur.peek();
   const Keyword* k = vars_.count(name.text) != 0 ? nullptr : find_keyword(name.text);
   if (k == nullptr || k->kind == KeywordKind::Param || k->kind == KeywordKind::ReadOnly) {
+    const size_t before = out_.diagnostics.size();
     assignment(cur, at);
-    if (!cur.at_end()) error(Error::Syntax, cur.where(), "unexpected '" + cur.peek()->text + "'");
+    // The rest of the line after an error in it would only repeat that error.
+    if (out_.diagnostics.size() == before && !cur.at_end()) {
+      error(Error::Syntax, cur.where(), "unexpected '" + cur.peek()->text + "'");
+    }
     return;
   }
   cur.take();
