@@ -98,6 +98,12 @@ TEST(PupDebugger, VariablesByTheirNamesAndPupExpressions) {
   const dialect::Evaluation zero = s.debugger.evaluate(kThread2, 0, "One / (Two - 1)");
   EXPECT_FALSE(zero.ok);
   EXPECT_EQ(zero.error, "controller error 30");
+  // && and || as the program computes them: the right side only when the left does not decide
+  // (Two is 1, so the division by Two - 1 would be error 30).
+  EXPECT_EQ(s.debugger.evaluate(kThread2, 0, "Two == 0 && One / (Two - 1) > 0").value, "0");
+  EXPECT_EQ(s.debugger.evaluate(kThread2, 0, "Two == 1 || One / (Two - 1) > 0").value, "1");
+  // AGetStatus[1], motion ended: the drive has not moved
+  EXPECT_EQ(s.debugger.evaluate(kThread2, 0, "AGetStatus[1]").value, "1");
   const dialect::Evaluation bad = s.debugger.evaluate(kThread2, 0, "One +");
   EXPECT_FALSE(bad.ok);
   EXPECT_FALSE(bad.error.empty());

@@ -2,7 +2,8 @@
 """`uprog sim` serving an AG300 drive over TCP, as a host program sees it: `value;`, `;`,
 `?CODE TEXT;` and CR LF after each typed line; a program started over the line; a line the framer
 refuses (a control byte) answered `?901` and latched as the communication error, event 23, which
-the program's event function counts. Usage: sim_check.py UPROG PROGRAM.pup (all_events.pup)"""
+the program's event function counts, and logged in AErrLog.
+Usage: sim_check.py UPROG PROGRAM.pup (all_events.pup)"""
 import socket
 import subprocess
 import sys
@@ -45,6 +46,7 @@ try:
     talk(b"AProgStatus[1]\r", b"2;\r\n")
     talk(b"AGenData[24]\r", b"0;\r\n")
     talk(b"AGen\x01Data[1]\r", b"?901 Bad character;\r\n")
+    talk(b"AErrLog[1]\r", b"901,0,0;\r\n")  # the host's error, source 0, line 0
     # The event function runs within a few cycles of the next served line.
     deadline = time.time() + 5
     while ask(b"AGenData[24]\r") != b"1;\r\n":

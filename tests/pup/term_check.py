@@ -15,7 +15,8 @@ try:
              "AGenData[4]", "AErrLog[1]", "AProgHalt[1]", "AProgStatus[1]"]
     r = subprocess.run([uprog, "term", f"127.0.0.1:{port}"], input="\n".join(lines) + "\n",
                        capture_output=True, text=True, timeout=60)
-    want = ["-42", "?1 unknown keyword", "0", "2", "42", "0,0,0", "3"]
+    # AErrLog[1]: the refused ANoSuchThing, code 1 from the host (source 0, line 0)
+    want = ["-42", "?1 unknown keyword", "0", "2", "42", "1,0,0", "3"]
     got = r.stdout.splitlines()
     if r.returncode != 0 or got != want:
         sys.exit(f"uprog term exited {r.returncode}\nexpected {want}\ngot      {got}\n{r.stderr}")

@@ -2,6 +2,8 @@
 // keeps (Gold: a binary image, .upi), or with --emit asm into the image's uprog assembly text.
 #include <fmt/core.h>
 
+#include <cstdlib>
+#include <ctime>
 #include <memory>
 #include <string>
 
@@ -21,11 +23,24 @@ struct BuildOptions {
   std::string dialect;
 };
 
+// The build's date: SOURCE_DATE_EPOCH when set (reproducible builds,
+// reproducible-builds.org/specs/source-date-epoch), else now.
+uint64_t build_time_unix_s() {
+  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH"); epoch != nullptr && *epoch != '\0') {
+    char* end = nullptr;
+    const unsigned long long v = std::strtoull(epoch, &end, 10);
+    if (*end == '\0') return v;
+  }
+  return static_cast<uint64_t>(std::time(nullptr));
+}
+
 int build(const BuildOptions& o) {
   const dialect::Dialect* d = choose_dialect(o.dialect, o.input, "build");
   if (d == nullptr) return 2;
   prepare_heap_for_compiling({o.input});
-  const dialect::CompileOutput r = d->compile_file(o.input, {});
+  dialect::CompileSettings settings;
+  settings.created_unix_s = build_time_unix_s();
+  const dialect::CompileOutput r = d->compile_file(o.input, settings);
   if (!r.diagnostics.empty()) fmt::print(stderr, "{}", format_text(r.diagnostics));
   if (!r.ok()) return 1;
   std::string error;

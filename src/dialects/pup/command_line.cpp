@@ -55,6 +55,15 @@ std::optional<std::pair<int32_t, std::optional<std::string>>> parse_download(std
   return std::pair{step, std::optional<std::string>(trim(std::string_view(rest).substr(1)))};
 }
 
+// `AProgInfo` alone, which answers several times (info()); with an index or an argument it is
+// refused as any keyword is.
+bool is_info_request(std::string_view text) {
+  const auto m = parse_message(text, nullptr);
+  if (!m || m->tail != Message::Tail::None || m->target.has_index) return false;
+  const Keyword* k = find_keyword(m->target.key);
+  return k != nullptr && k->id == KeywordId::ProgInfo;
+}
+
 }  // namespace
 
 std::unique_ptr<dialect::Session> Firmware::open_session() { return std::make_unique<Session>(*this); }
@@ -66,7 +75,13 @@ std::vector<dialect::Answer> Firmware::send(std::string_view line, bool takes_ti
     const size_t end = std::min(line.find(';', start), line.size());
     const std::string text = trim(line.substr(start, end - start));
     if (!text.empty()) {
-      answers.push_back(serve_message(text, download));
+      if (is_info_request(text)) {
+        for (dialect::Answer& a : info()) answers.push_back(std::move(a));
+      } else {
+        answers.push_back(serve_message(text, download));
+      }
+      // A refused message is the host's error: AErrLog's source 0, line 0.
+      if (answers.back().is_error()) log_error(answers.back().error, 0, 0);
       if (takes_time) runtime_.advance_ns(cycle_ns());
     }
     start = end + 1;
@@ -98,6 +113,7 @@ dialect::Answer Firmware::serve_message(std::string_view text, DownloadState* do
     code = write_key(k->id, index, m->value);
     return code == 0 ? dialect::Answer{} : refusal(code);
   }
+  if (has_arg && m->tail_is_name && k->arg == ArgKind::Number) return refusal(6);  // `,abc`
   if (k->kind == KeywordKind::Command) {
     if ((k->arg != ArgKind::None) != has_arg) return refusal(has_arg ? 8 : 9);
     code = run_key(k->id, index, has_arg, m->value, 0);
@@ -105,7 +121,6 @@ dialect::Answer Firmware::serve_message(std::string_view text, DownloadState* do
   }
   if (k->id == KeywordId::UploadUProg) return has_arg ? upload(m->value) : refusal(9);
   if (has_arg) return refusal(8);
-  if (k->id == KeywordId::ProgInfo) return info();
   if (k->id == KeywordId::ErrLog) {
     if (static_cast<size_t>(index) > err_log_.size()) return {"0,0,0", 0};
     const auto& e = err_log_[static_cast<size_t>(index - 1)];
@@ -145,7 +160,8 @@ dialect::Answer Firmware::line_stack(const Message& m, const Keyword& k) {
   int32_t a = 0, b = 0, code = 0;
   switch (k.id) {
     case KeywordId::PushConstant:
-      if (m.tail != Message::Tail::Argument || m.tail_is_name) return refusal(9);
+      if (m.tail != Message::Tail::Argument) return refusal(9);
+      if (m.tail_is_name) return refusal(6);
       return push(m.value);
     case KeywordId::PushParam:
       if (name == nullptr) return refusal(m.tail_is_name ? 1 : 9);
@@ -192,7 +208,8 @@ dialect::Answer Firmware::line_stack(const Message& m, const Keyword& k) {
       return code == 0 ? dialect::Answer{} : refusal(code);
     }
     case KeywordId::GetStatus: {
-      if (m.tail != Message::Tail::Argument || m.tail_is_name) return refusal(9);
+      if (m.tail != Message::Tail::Argument) return refusal(9);
+      if (m.tail_is_name) return refusal(6);
       const int32_t s = status_of(m.target.index, m.value);
       return s < 0 ? refusal(-s) : dialect::Answer{std::to_string(s), 0};
     }

@@ -191,6 +191,7 @@ int32_t Firmware::run_key(KeywordId key, int32_t index, bool, int32_t arg, uint3
       event_mask_ = 0x00FFFFFF;
       latched_ = 0;
       event_frames_.clear();
+      line_stack_.clear();  // "... or upon resetting the user program" (the manual)
       return thread != 0 ? vm::kCommandEndSlice : 0;
     case KeywordId::ProgSingle: return program_ ? single_step(static_cast<uint32_t>(index), arg) : 15;
     case KeywordId::ProgClrCall: return clear_stacks(static_cast<uint32_t>(index), false);
@@ -242,7 +243,8 @@ bool Firmware::world_directive(std::string_view name, std::string_view arg, std:
   }
   if (name == "comm-error") {
     if (!arg.empty()) failure = "comm-error takes no argument";
-    else on_framing_error();
+    else
+      on_framing_error(900);  // as a line too long
     return true;
   }
   return false;

@@ -3,13 +3,16 @@
 
 #include <fmt/core.h>
 
+#include <string_view>
+
 #include "dialects/pup/message.h"
 #include "support/crc32.h"
 
 namespace uprog::pup {
 namespace {
 
-constexpr size_t kCrcLineSize = 11;  // "% XXXXXXXX" and its CR
+constexpr size_t kCrcLineSize = 11;  // "% XXXXXXXX" and its CR, as write_cup writes it
+constexpr std::string_view kUncheckedCrcLine = "% 000000\r";  // the manual's and the vendor's
 
 uint32_t crc_of(const std::string& text) {
   return crc32(reinterpret_cast<const uint8_t*>(text.data()), text.size());
@@ -80,6 +83,11 @@ bool read_table_line(const std::string& line, CupProgram& p) {
 
 }  // namespace
 
+std::string flash_refusal(size_t size) {
+  if (size <= kMaxProgramBytes) return "";
+  return fmt::format("the CUP file has {} characters, the flash sector {}", size, kMaxProgramBytes);
+}
+
 std::string cup_date(uint64_t unix_s) {
   if (unix_s == 0) return "01/01/00";
   // Days to civil date (proleptic Gregorian), as in Howard Hinnant's public-domain algorithm.
@@ -124,19 +132,31 @@ std::string write_cup(const CupProgram& program) {
   return fmt::format("% {:08X}\r", crc_of(rest)) + rest;
 }
 
+std::optional<DeclaredCrc> declared_crc(const std::string& bytes) {
+  if (bytes.starts_with(kUncheckedCrcLine)) return DeclaredCrc{0, false, kUncheckedCrcLine.size()};
+  if (bytes.size() < kCrcLineSize || bytes.compare(0, 2, "% ") != 0 || bytes[10] != '\r')
+    return std::nullopt;
+  const auto crc = parse_number("0x" + bytes.substr(2, 8));
+  if (!crc) return std::nullopt;
+  return DeclaredCrc{static_cast<uint32_t>(*crc), true, kCrcLineSize};
+}
+
+uint32_t expected_crc(const std::string& bytes) {
+  const auto declared = declared_crc(bytes);
+  if (!declared || !declared->checked) return 0;
+  return crc_of(bytes.substr(declared->line_size));
+}
+
 std::optional<CupProgram> read_cup(const std::string& bytes, CupReadError* error) {
   auto fail = [&](int32_t code, std::string text) -> std::optional<CupProgram> {
     if (error) *error = {code, std::move(text)};
     return std::nullopt;
   };
   // Line 1 and the CRC first: a changed byte anywhere is a CRC error (43), not a header one.
-  const auto crc = bytes.size() >= kCrcLineSize && bytes.compare(0, 2, "% ") == 0 && bytes[10] == '\r'
-                       ? parse_number("0x" + bytes.substr(2, 8))
-                       : std::nullopt;
-  if (!crc) return fail(44, "header line 1 is the CRC, 8 hex digits");
-  if (static_cast<uint32_t>(*crc) != crc_of(bytes.substr(kCrcLineSize))) {
+  const auto crc = declared_crc(bytes);
+  if (!crc) return fail(44, "header line 1 is the CRC, 8 hex digits (or 000000: not checked)");
+  if (crc->checked && crc->value != expected_crc(bytes))
     return fail(43, "the CRC in the header does not match the file");
-  }
   bool clean = false;
   const std::vector<std::string> lines = split_cr(bytes, &clean);
   if (!clean) return fail(44, "lines must end with CR alone");
@@ -154,12 +174,19 @@ std::optional<CupProgram> read_cup(const std::string& bytes, CupReadError* error
     if (!v || *v < 0) return fail(44, fmt::format("header line {} is an offset, 6 digits", 4 + i));
     offsets[i] = static_cast<size_t>(*v);
   }
-  // Walk the rest, checking each offset where its part starts.
-  size_t at = kCrcLineSize + lines[1].size() + lines[2].size() + 2 + 5 * 9;
+  // Walk the rest, checking each offset where its part starts: a table's where it has lines (an
+  // empty table's offset may be anywhere before the program: the manual's listing has 68, 70
+  // and 72 for empty tables and its program at 73).
+  size_t at = 0;
+  for (size_t k = 0; k < 8; ++k) at += lines[k].size() + 1;
   size_t i = 8;
   const char kinds[3] = {'I', 'T', 'E'};
   for (int part = 0; part < 3; ++part) {
-    if (offsets[part] != at) return fail(44, fmt::format("the offset of the %{} table is wrong", kinds[part]));
+    const bool empty = !(i < lines.size() && lines[i].size() >= 2 && lines[i][0] == '%' &&
+                         lines[i][1] == kinds[part]);
+    if (empty ? offsets[part] > offsets[3] : offsets[part] != at) {
+      return fail(44, fmt::format("the offset of the %{} table is wrong", kinds[part]));
+    }
     while (i < lines.size() && lines[i].size() >= 2 && lines[i][0] == '%' && lines[i][1] == kinds[part]) {
       if (!read_table_line(lines[i], p)) return fail(44, fmt::format("bad table line '{}'", lines[i]));
       at += lines[i++].size() + 1;

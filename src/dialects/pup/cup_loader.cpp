@@ -30,7 +30,13 @@ struct Refusal {
 // Parses and checks one line alone; the why on a refusal.
 std::optional<std::string> parse_line(const std::string& text, LineOp& op, size_t line_count) {
   if (text.empty()) return "empty line";
-  if (text.find_first_of(" \t") != std::string::npos) return "blanks in a program line";
+  // No blanks, but one after a comma, as the manual's Demo1 listing and the vendor's compiler
+  // write it (`AWaitTime, 3000`).
+  for (size_t at = text.find_first_of(" \t"); at != std::string::npos;
+       at = text.find_first_of(" \t", at + 1)) {
+    const bool after_comma = text[at] == ' ' && at > 0 && text[at - 1] == ',';
+    if (!after_comma) return "blanks in a program line";
+  }
   int32_t code = 0;
   auto m = parse_message(text, &code);
   if (!m) return fmt::format("syntax (error {})", code);
@@ -160,11 +166,13 @@ class Loader {
       const uint32_t l = work.back();
       work.pop_back();
       if (l > count()) continue;
-      const LineOp& op = ops_[l];
+      LineOp& op = ops_[l];
       const int32_t d = depth_[l];
-      if (d < op.pops) return Refusal{l, "a pop that may find the stack empty"};
       const int32_t after = d - op.pops + op.pushes;
-      if (after > kMaxDepth) return Refusal{l, "the expression stack would pass 50"};
+      if (d < op.pops || after > kMaxDepth) {
+        op.fails = d < op.pops ? 27 : 26;  // stack empty, stack full: when the line runs
+        continue;
+      }
       if (op.key->id == KeywordId::Return && d != 0) return Refusal{l, "AReturn with values on the stack"};
       auto flow = [&](uint32_t to) -> std::optional<Refusal> {
         if (depth_[to] >= 0 && depth_[to] != after) return Refusal{to, "reachable at two stack depths"};
@@ -211,6 +219,10 @@ class Loader {
     const uint32_t id = static_cast<uint32_t>(k.id);
     const int32_t i = m.target.index;
     const uint32_t start = b.here();
+    if (op.fails != 0) {  // the thread stops here: nothing after it is reached from this line
+      b.emit(Op::CMDRUN, kFailBase + static_cast<uint32_t>(op.fails), 0);
+      return b.emit(Op::EXIT);
+    }
     if (m.tail == Message::Tail::Assign) {
       push_constant(b, m.value);
       store(b, k.id, i);
@@ -389,7 +401,11 @@ class Loader {
     }
     out_.line_depth = depth_;
     out_.waits.assign(count() + 2, false);
-    for (uint32_t l = 1; l <= count(); ++l) out_.waits[l] = ops_[l].key->id == KeywordId::WaitStatus;
+    out_.timed_waits.assign(count() + 2, false);
+    for (uint32_t l = 1; l <= count(); ++l) {
+      out_.waits[l] = ops_[l].key->id == KeywordId::WaitStatus;
+      out_.timed_waits[l] = ops_[l].key->id == KeywordId::WaitTime;
+    }
   }
 
   const CupProgram& p_;

@@ -46,6 +46,7 @@ struct LoadedCup {
   std::vector<int32_t> event_routine;  // by event ID 0..23, -1 for none
   std::vector<int32_t> line_depth;     // stack depth before each line, -1 unreachable
   std::vector<bool> waits;             // per line: an AWaitStatus (a thread in it is waiting)
+  std::vector<bool> timed_waits;       // per line: an AWaitTime
   // Past the lines' code, the fused copies (line_runs.h): the CUP line of each copy's start and
   // of each of its instructions that may fail, by code word, in code order.
   std::vector<std::pair<uint32_t, uint32_t>> copy_lines;

@@ -69,6 +69,11 @@ dialect::Evaluation Firmware::evaluate(uint32_t, uint32_t, std::string_view expr
       tree, node,
       [this](const std::string& key, int32_t index, int32_t* code) {
         const Keyword* k = find_keyword(key);
+        if (k != nullptr && k->id == KeywordId::GetStatus) {  // AGetStatus[s] as compiled: v = 0
+          const int32_t status = status_of(index, 0);
+          *code = status < 0 ? -status : 0;
+          return status < 0 ? 0 : status;
+        }
         int32_t v = 0;
         *code = k == nullptr ? 2 : read_key(k->id, index, v);
         return v;

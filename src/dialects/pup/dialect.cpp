@@ -22,6 +22,16 @@ bool is_cup(const std::string& path) {
   return ext == ".cup" || ext == ".CUP";
 }
 
+// A refusal of a .cup, with the download's code for it ("[cup 45]").
+Diagnostic cup_diagnostic(int32_t code, const std::string& why, const std::string& path) {
+  Diagnostic d;
+  d.scheme = "cup";
+  d.code = code;
+  d.message = why;
+  d.where = Location{path, 0, 0};
+  return d;
+}
+
 // A hand-written .cup: read leniently, checked by the loader (a refusal names its line), and
 // written again with CR line ends and a fresh header.
 PupOutput rebuild_cup(const std::string& path, uint64_t created_unix_s) {
@@ -34,13 +44,11 @@ PupOutput rebuild_cup(const std::string& path, uint64_t created_unix_s) {
   }
   out.program = read_cup_text(*text, std::filesystem::path(path).stem().string());
   out.program.date = cup_date(created_unix_s);
-  if (!load_cup(out.program, &why)) {
-    Diagnostic d;
-    d.scheme = "cup";
-    d.code = 45;
-    d.message = why;
-    d.where = Location{path, 0, 0};
-    out.diagnostics.push_back(std::move(d));
+  if (!load_cup(out.program, &why)) out.diagnostics.push_back(cup_diagnostic(45, why, path));
+  // The flash sector (ADownloadUProg[1]'s 262 144 characters); 41 is the download's "length".
+  if (const std::string too_large = out.ok() ? flash_refusal(write_cup(out.program).size()) : "";
+      !too_large.empty()) {
+    out.diagnostics.push_back(cup_diagnostic(41, too_large, path));
   }
   return out;
 }

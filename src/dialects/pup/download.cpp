@@ -4,6 +4,8 @@
 
 #include <fmt/core.h>
 
+#include "dialects/pup/cup_file.h"
+
 namespace uprog::pup {
 
 std::string to_hex(const std::string& bytes) {
@@ -32,11 +34,12 @@ bool from_hex(const std::string& hex, std::string& out) {
 std::vector<std::string> download_lines(const std::vector<uint8_t>& cup) {
   const std::string bytes(cup.begin(), cup.end());
   std::vector<std::string> lines = {fmt::format("ADownloadUProg[1],{}", bytes.size())};
-  for (size_t at = 0; at < bytes.size(); at += kMaxChunkBytes) {
-    lines.push_back("ADownloadUProg[2]," + to_hex(bytes.substr(at, kMaxChunkBytes)));
+  for (size_t at = 0; at < bytes.size(); at += kHostChunkBytes) {
+    lines.push_back(std::string(kChunkPrefix) + to_hex(bytes.substr(at, kHostChunkBytes)));
   }
-  // The header's first line, "% XXXXXXXX", carries the CRC.
-  lines.push_back("ADownloadUProg[3],0x" + (bytes.size() >= 10 ? bytes.substr(2, 8) : std::string("0")));
+  // The CRC the header's first line declares (0 for `% 000000`, not checked).
+  const auto crc = declared_crc(bytes);
+  lines.push_back(fmt::format("ADownloadUProg[3],0x{:08X}", crc ? crc->value : 0));
   return lines;
 }
 

@@ -2,10 +2,10 @@
 // download is gathered, checked by length and CRC, then read, loaded and stored as one step.
 #include <fmt/core.h>
 
+#include "dialects/pup/cup_file.h"
 #include "dialects/pup/download.h"
 #include "dialects/pup/firmware.h"
 #include "dialects/pup/message.h"
-#include "support/crc32.h"
 
 namespace uprog::pup {
 namespace {
@@ -46,8 +46,7 @@ dialect::Answer Firmware::download_message(int32_t step, const std::optional<std
   if (d.data.size() != d.expected) return fail(d, 41, "length");
   const std::string cup = std::move(d.data);
   d = DownloadState{};
-  const uint32_t computed = cup.size() > 11 ? crc32(reinterpret_cast<const uint8_t*>(cup.data()) + 11, cup.size() - 11) : 0;
-  if (static_cast<uint32_t>(*crc) != computed) return fail(d, 43, "CRC");
+  if (static_cast<uint32_t>(*crc) != expected_crc(cup)) return fail(d, 43, "CRC");
   const std::string why = install(cup, true);
   if (why.empty()) {
     runtime_.log(fmt::format("program downloaded ({} bytes)", cup.size()));
@@ -64,13 +63,16 @@ dialect::Answer Firmware::upload(int32_t offset) {
   return {to_hex(stored_->substr(static_cast<size_t>(offset), kMaxChunkBytes)), 0};
 }
 
-// CRC, date, name and the #information strings, comma-separated.
-dialect::Answer Firmware::info() {
-  if (!stored_) return {"no user program", 15};
-  std::string text = stored_->size() >= 10 ? stored_->substr(2, 8) : "";
-  text += "," + cup_program_.date + "," + cup_program_.name;
-  for (const std::string& s : cup_program_.info) text += "," + s;
-  return {text, 0};
+// CRC, date, name and the #information strings: an answer each.
+std::vector<dialect::Answer> Firmware::info() {
+  if (!stored_) return {{"no user program", 15}};
+  std::vector<dialect::Answer> answers;
+  const auto crc = declared_crc(*stored_);  // as the header writes it: 8 hex digits or 000000
+  answers.push_back({crc && crc->checked ? stored_->substr(2, 8) : "000000", 0});
+  answers.push_back({cup_program_.date, 0});
+  answers.push_back({cup_program_.name, 0});
+  for (const std::string& s : cup_program_.info) answers.push_back({s, 0});
+  return answers;
 }
 
 }  // namespace uprog::pup

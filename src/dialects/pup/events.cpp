@@ -1,6 +1,6 @@
-// The AG300's events (the spec's IDs 0..23): latched when linked (#event) and enabled by
-// AProgEventMask, taken lowest first on thread 1 while it runs or waits; threads 2..8 are held
-// until the event function returns. Mask bit 31 lets an event function be interrupted.
+// The AG300's events (the spec's IDs 0..23): latched when linked (#event), enabled by
+// AProgEventMask and seen while thread 1 runs or waits; taken lowest first on thread 1, threads
+// 2..8 held until the event function returns. Mask bit 31 lets an event function be interrupted.
 #include <fmt/core.h>
 
 #include "dialects/pup/firmware.h"
@@ -16,6 +16,9 @@ constexpr uint32_t kNestingBit = 1u << 31;
 
 void Firmware::latch(int32_t id) {
   if (!program_ || id < 0 || id > 23) return;
+  // Only while the main thread runs or waits: an edge seen while it is idle or halted is not
+  // kept for later.
+  if (const int32_t s = program_status(1); s != 1 && s != 2) return;
   if (cup_.event_routine[static_cast<size_t>(id)] < 0 || ((event_mask_ >> id) & 1u) == 0) return;
   latched_ |= 1u << id;
 }
@@ -58,7 +61,9 @@ void Firmware::take_event() {
     return;
   }
   event_mask_ &= ~kNestingBit;
-  event_frames_.push_back(m.frame_count(1));
+  uint32_t held_before = 0;
+  for (uint32_t t = 2; t <= kThreads; ++t) held_before |= schedule_.held(t) ? 1u << t : 0;
+  event_frames_.push_back({m.frame_count(1), held_before});
   for (uint32_t t = 2; t <= kThreads; ++t) schedule_.hold(t);
   runtime_.log(fmt::format("event {} entered", id));
 }
@@ -72,8 +77,18 @@ void Firmware::check_event_return() {
     if (s != 3 && s != 4) reset_events();  // a halt or breakpoint keeps the event for resuming
     return;
   }
-  while (!event_frames_.empty() && m.frame_count(1) < event_frames_.back()) event_frames_.pop_back();
-  if (event_frames_.empty()) schedule_.release_all();
+  // Each event returned from gives back the threads as they were when it entered: an outer event
+  // function's `AProgRun[t],-1` stays in force after a nested one returns.
+  while (!event_frames_.empty() && m.frame_count(1) < event_frames_.back().frames) {
+    const uint32_t held_before = event_frames_.back().held_before;
+    event_frames_.pop_back();
+    for (uint32_t t = 2; t <= kThreads; ++t) {
+      if ((held_before >> t) & 1u)
+        schedule_.hold(t);
+      else
+        schedule_.release(t);
+    }
+  }
 }
 
 void Firmware::reset_events() {

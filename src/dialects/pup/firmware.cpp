@@ -18,7 +18,7 @@ vm::MachineConfig machine_config() {
   vm::MachineConfig c;
   c.threads = kThreads + 1;
   c.stack = 50;
-  c.frames = 30;
+  c.frames = 31;  // the task's own and 30 calls (ProgCallStack "max. depth 30")
   c.locals = 16;
   return c;
 }
@@ -39,7 +39,9 @@ int32_t code_of(vm::RunError e, int32_t detail) {
 }  // namespace
 
 Firmware::Firmware(dialect::Runtime& runtime, const dialect::FirmwareOptions&)
-    : runtime_(runtime), wire_(dialect::FramerOptions{}, [this] { on_framing_error(); }), schedule_(scheduling::RatePrioritiesConfig{}) {}
+    : runtime_(runtime),
+      wire_(dialect::FramerOptions{}, [this](int32_t code) { on_framing_error(code); }),
+      schedule_(scheduling::RatePrioritiesConfig{}) {}
 
 void Firmware::boot(std::vector<std::string>& messages) {
   axis_ = &runtime_.axis();
@@ -91,6 +93,7 @@ std::string Firmware::install(const std::string& cup, bool store) {
   latched_ = 0;
   event_frames_.clear();
   event_mask_ = 0x00FFFFFF;
+  line_stack_.clear();  // the manual: "the stack is cleared upon downloading of a new user program"
   previous_inputs_ = axis_->input_level_bits();
   if (store) stored_ = cup;
   return "";
@@ -238,7 +241,11 @@ uint32_t Firmware::next_line(uint32_t thread) const {
   const uint32_t line = cup_.line_of(pc);
   const bool closes_line = pc < code.size() && bytecode::word_op(code[pc]) == bytecode::Op::EOL &&
                            cup_.line_pc[line] != pc && cup_.line_of(pc + 1) != line;
-  if (m.status(thread) != vm::ThreadStatus::Waiting && closes_line) ++pc;
+  // A thread halted inside an AWaitTime stands on the EOL after its WAIT (resume() takes it back
+  // into the wait; once woken it runs the EOL in the same turn): it is at the wait's line.
+  const bool halted_in_wait =
+      m.status(thread) == vm::ThreadStatus::Halted && cup_.timed_waits[line];
+  if (m.status(thread) != vm::ThreadStatus::Waiting && !halted_in_wait && closes_line) ++pc;
   return cup_.line_of(pc);
 }
 

@@ -106,8 +106,12 @@ class Firmware final : public dialect::Firmware, public vm::Host {
  public:
   // --- the world a transcript changes (docs/transcripts.md: analog, comm-error) ---
   bool world_directive(std::string_view name, std::string_view arg, std::string& failure) override;
-  // A line the framer refused (too long, a bad byte): event 23, the communication error.
-  void on_framing_error() { latch(23); }
+  // A line the framer refused (too long, a bad byte): event 23, the communication error, and the
+  // host's error in AErrLog (code, source 0, line 0).
+  void on_framing_error(int32_t code) {
+    latch(23);
+    log_error(code, 0, 0);
+  }
 
  private:
 
@@ -115,7 +119,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   dialect::Answer serve_message(std::string_view text, DownloadState* download);
   dialect::Answer download_message(int32_t step, const std::optional<std::string>& argument, DownloadState& d);
   dialect::Answer upload(int32_t offset);
-  dialect::Answer info();
+  std::vector<dialect::Answer> info();
   dialect::Answer line_stack(const Message& m, const Keyword& k);
 
   dialect::Runtime& runtime_;
@@ -147,7 +151,11 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::array<std::vector<uint32_t>, kThreads + 1> breaks_{};  // lines, ascending
   uint32_t event_mask_ = 0x00FFFFFF;
   uint32_t latched_ = 0;                 // event IDs latched, one bit each
-  std::vector<uint32_t> event_frames_;   // thread 1's frame count inside each event entered
+  struct EventEntry {
+    uint32_t frames;       // thread 1's frame count inside the event
+    uint32_t held_before;  // the threads 2..8 held when it entered (a bit each): held again after
+  };
+  std::vector<EventEntry> event_frames_;  // each event entered, innermost last
   uint32_t previous_inputs_ = 0;         // input levels, bit n-1 for input n
   bool was_moving_ = false;
   bool above_max_ = false, below_min_ = false;

@@ -32,6 +32,7 @@ bool is_gen_data(const Keyword* k) { return k != nullptr && k->id == KeywordId::
 // path arrives by a jump or starts).
 bool may_copy(const LineOp& op, const LineOp* before) {
   const Message& m = op.msg;
+  if (op.fails != 0) return false;
   if (m.tail == Message::Tail::Assign) return is_gen_data(op.key);
   switch (op.key->id) {
     case KeywordId::PushConstant: case KeywordId::Compare: case KeywordId::Jump: return true;

@@ -17,7 +17,14 @@ namespace uprog::pup {
 int32_t Firmware::single_step(uint32_t thread, int32_t kind) {
   if (program_status(thread) != 3 && program_status(thread) != 4) return 19;
   vm::Machine& m = program_->machine();
-  single_[thread] = Single{kind != 0, next_line(thread), m.frame_count(thread)};
+  // Back from a call (after stepping an AReturn), the thread stands on the end of the call's
+  // line, which is no step of its own: the step starts at the next line.
+  const uint32_t line = next_line(thread);
+  if (line != cup_.line_of(m.pc(thread)) && line >= 1 && line <= cup_program_.lines.size()) {
+    std::vector<uint32_t> scratch(bytecode::verify_scratch_size(m.image()) / sizeof(uint32_t) + 1);
+    m.move_pc(thread, cup_.line_pc[line], scratch.data(), scratch.size() * sizeof(uint32_t));
+  }
+  single_[thread] = Single{kind != 0, line, m.frame_count(thread)};
   stepping_ |= 1u << thread;
   m.resume(thread);
   return 0;

@@ -38,7 +38,7 @@ struct Block {
   int end = -1;       // the line after the block
   int cont = -1;      // While/For: where `continue` goes
   bool seen_else = false;
-  std::vector<std::string> step;  // For: the step's lines; Switch: the selector's lines
+  Code step;  // For: the step's lines; Switch: the selector's lines
   std::vector<std::pair<int32_t, int>> cases;  // Switch: value, label
   int default_label = -1;
 };
@@ -72,7 +72,9 @@ class PupCompiler {
   std::optional<int32_t> constant(TokenCursor& cur, const char* what, bool needs_end);
   void condition_false_jump(const ExprTree& tree, int node, int label, const Location& at);
   void emit(std::string text, const Location& at, int label = -1);
-  void emit_all(const std::vector<std::string>& lines, const Location& at);
+  // The code's lines, its labels made fresh; label0 (when given) stands for its label 0.
+  void place_code(const Code& code, const Location& at, int label0 = -1);
+  Code take_code(size_t first_line, size_t first_label);
   int new_label();
   void bind(int label);
   Block* innermost(bool loops_only);

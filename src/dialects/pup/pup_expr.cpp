@@ -3,6 +3,8 @@
 
 #include <fmt/core.h>
 
+#include <cstdint>
+
 #include "dialects/pup/cup_math.h"
 #include "dialects/pup/errors.h"
 #include "dialects/pup/keywords.h"
@@ -58,6 +60,17 @@ int math_of_binary(const std::string& op) {
   return 0;
 }
 
+// Parameters have a value, and AGetStatus[s] (the manual's "read-only parameter keyword"); a
+// command, a CUP keyword or a marker has none.
+bool has_value(const Keyword& k) {
+  return k.kind == KeywordKind::Param || k.kind == KeywordKind::ReadOnly ||
+         k.id == KeywordId::GetStatus;
+}
+
+bool is_logical(const Node& n) {
+  return n.kind == NodeKind::Binary && (n.key == "&&" || n.key == "||");
+}
+
 int math_of_unary(const std::string& op) { return op == "-" ? 6 : op == "~" ? 13 : 22; }
 
 class Parser {
@@ -100,6 +113,16 @@ class Parser {
   }
 
   int unary() {
+    // `-2147483648`: the literal is the int32 minimum, whose digits alone do not fit.
+    if (cur_.is("-") && cur_.peek(1) != nullptr && cur_.peek(1)->kind == TokenKind::Number) {
+      if (const auto v = parse_number("-" + cur_.peek(1)->text); v && *v == INT32_MIN) {
+        Node n;
+        n.value = *v;
+        n.where = cur_.take().where;
+        cur_.take();
+        return tree_.add(std::move(n));
+      }
+    }
     if (cur_.is("-") || cur_.is("~") || cur_.is("!")) {
       if (++depth_ > kMaxDepth) return error(Error::ExpressionTooDeep, "nested too deeply");
       Node n;
@@ -189,6 +212,7 @@ class Parser {
                    "'" + t.text + "'", t.where);
     }
     n.key = std::string(k->name);
+    if (!has_value(*k)) return error(Error::NotAValue, "'" + n.key + "'", t.where);
     const int index = index_expression();
     if (index == -1) return -1;
     if (index == -2) {
@@ -197,6 +221,10 @@ class Parser {
       return tree_.add(std::move(n));
     }
     if (!k->indexed()) return error(Error::IndexNotAllowed, "'" + n.key + "'", t.where);
+    if (k->id == KeywordId::GetStatus && !constant_of(tree_, index)) {
+      return error(Error::NotConstant, "a status number",
+                   tree_.nodes[static_cast<size_t>(index)].where);
+    }
     const std::string key = n.key;
     return indexed(std::move(n), index, k->index_min, k->index_max - k->index_min + 1, key);
   }
@@ -229,9 +257,15 @@ class Parser {
       value = apply_math(math_of_unary(n.key), 0, *a, &err);
     } else if (n.kind == NodeKind::Binary) {
       const auto a = constant_of(tree_, n.a), b = constant_of(tree_, n.b);
-      if (!a || !b) return node;
-      if (is_comparison(n)) value = condition_holds(condition_of(n.key), *a, *b) ? 1 : 0;
-      else value = apply_math(math_of_binary(n.key), *a, *b, &err);
+      if (a && is_logical(n) && (*a != 0) == (n.key == "||")) {
+        value = *a != 0 ? 1 : 0;  // the left side decides: the right is never computed
+      } else if (!a || !b) {
+        return node;
+      } else if (is_comparison(n)) {
+        value = condition_holds(condition_of(n.key), *a, *b) ? 1 : 0;
+      } else {
+        value = apply_math(math_of_binary(n.key), *a, *b, &err);
+      }
       if (err == 30) return error(Error::DivisionByZero, "", n.where);
     } else {
       return node;  // math functions are the controller's to compute
@@ -247,33 +281,88 @@ class Parser {
   int depth_ = 0;
 };
 
-void emit(const ExprTree& tree, int node, std::vector<std::string>& out) {
+// `a && b`, `a || b` as a value: the jumps of emit_jump, then 1 or 0.
+void emit_logical_value(const ExprTree& tree, int node, Code& out) {
+  const bool is_or = tree.nodes[static_cast<size_t>(node)].key == "||";
+  const int decided = out.new_label(), end = out.new_label();
+  emit_jump(tree, node, is_or, decided, out);
+  out.line(fmt::format("APushConstant,{}", is_or ? 0 : 1));
+  out.line("AJump[1],", end);
+  out.bind(decided);
+  out.line(fmt::format("APushConstant,{}", is_or ? 1 : 0));
+  out.bind(end);
+}
+
+}  // namespace
+
+void emit_value(const ExprTree& tree, int node, Code& out) {
   const Node& n = tree.nodes[static_cast<size_t>(node)];
   switch (n.kind) {
-    case NodeKind::Number: out.push_back(fmt::format("APushConstant,{}", n.value)); return;
-    case NodeKind::Param: out.push_back("APushParam," + param_text(n)); return;
+    case NodeKind::Number:
+      out.line(fmt::format("APushConstant,{}", n.value));
+      return;
+    case NodeKind::Param:
+      if (const Keyword* k = find_keyword(n.key); k != nullptr && k->id == KeywordId::GetStatus) {
+        out.line(fmt::format("{},0", param_text(n)));  // a status as a value: v = 0
+        return;
+      }
+      out.line("APushParam," + param_text(n));
+      return;
     case NodeKind::Indexed:
-      emit(tree, n.a, out);
-      out.push_back(fmt::format("APushParamIdx[{}],{}[{}]", n.size, n.key, n.base));
+      emit_value(tree, n.a, out);
+      out.line(fmt::format("APushParamIdx[{}],{}[{}]", n.size, n.key, n.base));
       return;
     case NodeKind::Unary:
-      emit(tree, n.a, out);
-      out.push_back(fmt::format("AMath[{}]", math_of_unary(n.key)));
+      emit_value(tree, n.a, out);
+      out.line(fmt::format("AMath[{}]", math_of_unary(n.key)));
       return;
     case NodeKind::Binary:
-      emit(tree, n.a, out);
-      emit(tree, n.b, out);
-      if (is_comparison(n)) out.push_back(fmt::format("ACompare[{}]", condition_of(n.key)));
-      else out.push_back(fmt::format("AMath[{}]", math_of_binary(n.key)));
+      if (is_logical(n)) return emit_logical_value(tree, node, out);
+      emit_value(tree, n.a, out);
+      emit_value(tree, n.b, out);
+      if (is_comparison(n))
+        out.line(fmt::format("ACompare[{}]", condition_of(n.key)));
+      else
+        out.line(fmt::format("AMath[{}]", math_of_binary(n.key)));
       return;
     case NodeKind::Call:
-      for (int a : n.args) emit(tree, a, out);
-      out.push_back(fmt::format("AMath[{}]", n.value));
+      for (int a : n.args) emit_value(tree, a, out);
+      out.line(fmt::format("AMath[{}]", n.value));
       return;
   }
 }
 
-}  // namespace
+void emit_jump(const ExprTree& tree, int node, bool when_true, int label, Code& out) {
+  const Node& n = tree.nodes[static_cast<size_t>(node)];
+  if (const auto v = constant_of(tree, node)) {
+    if ((*v != 0) == when_true) out.line("AJump[1],", label);
+    return;
+  }
+  if (is_comparison(n)) {
+    emit_value(tree, n.a, out);
+    emit_value(tree, n.b, out);
+    const int c = condition_of(n.key);
+    out.line(fmt::format("AJump[{}],", when_true ? c : opposite_condition(c)), label);
+    return;
+  }
+  if (is_logical(n)) {
+    // The left side jumps out when it decides the outcome; the right decides otherwise.
+    const bool decides_when = n.key == "||";
+    if (decides_when == when_true) {
+      emit_jump(tree, n.a, when_true, label, out);
+    } else {
+      const int right_not_needed = out.new_label();
+      emit_jump(tree, n.a, decides_when, right_not_needed, out);
+      emit_jump(tree, n.b, when_true, label, out);
+      out.bind(right_not_needed);
+      return;
+    }
+    emit_jump(tree, n.b, when_true, label, out);
+    return;
+  }
+  emit_value(tree, node, out);
+  out.line(when_true ? "AJump[10]," : "AJump[9],", label);
+}
 
 int parse_expression(TokenCursor& cur, ExprContext& cx, ExprTree& tree) { return Parser(cur, cx, tree).expression(); }
 int parse_place(TokenCursor& cur, ExprContext& cx, ExprTree& tree) { return Parser(cur, cx, tree).place(); }
@@ -313,8 +402,6 @@ std::string param_text(const Node& n) {
   return n.has_index ? fmt::format("{}[{}]", n.key, n.value) : n.key;
 }
 
-void emit_value(const ExprTree& tree, int node, std::vector<std::string>& out) { emit(tree, node, out); }
-
 int32_t evaluate_now(const ExprTree& tree, int node, const ParamReader& read, int32_t* error) {
   const Node& n = tree.nodes[static_cast<size_t>(node)];
   auto value = [&](int child) { return *error == 0 ? evaluate_now(tree, child, read, error) : 0; };
@@ -337,7 +424,9 @@ int32_t evaluate_now(const ExprTree& tree, int node, const ParamReader& read, in
       return *error != 0 ? 0 : apply_math(math_of_unary(n.key), 0, a, error);
     }
     case NodeKind::Binary: {
-      const int32_t a = value(n.a), b = value(n.b);
+      const int32_t a = value(n.a);
+      if (*error == 0 && is_logical(n) && (a != 0) == (n.key == "||")) return a != 0 ? 1 : 0;
+      const int32_t b = value(n.b);
       if (*error != 0) return 0;
       if (is_comparison(n)) return condition_holds(condition_of(n.key), a, b) ? 1 : 0;
       return apply_math(math_of_binary(n.key), a, b, error);
@@ -360,7 +449,10 @@ int stack_need(const ExprTree& tree, int node) {
     case NodeKind::Param: return 1;
     case NodeKind::Indexed:
     case NodeKind::Unary: return stack_need(tree, n.a);
-    case NodeKind::Binary: return std::max(stack_need(tree, n.a), 1 + stack_need(tree, n.b));
+    case NodeKind::Binary:
+      // && and || pop their left side before they compute the right.
+      if (is_logical(n)) return std::max(stack_need(tree, n.a), stack_need(tree, n.b));
+      return std::max(stack_need(tree, n.a), 1 + stack_need(tree, n.b));
     case NodeKind::Call: {
       int need = 0;
       for (size_t i = 0; i < n.args.size(); ++i) need = std::max(need, static_cast<int>(i) + stack_need(tree, n.args[i]));

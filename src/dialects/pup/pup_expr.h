@@ -86,8 +86,28 @@ int opposite_condition(int condition);
 
 // "AGenData[200]", "ASpeed": a Param node as the CUP writes it.
 std::string param_text(const Node& n);
+
+// CUP lines whose jumps aim at labels of their own (0, 1, ...). Placing the code gives its labels
+// line numbers (PupCompiler::place_code), fresh ones each time: the same code can be placed twice.
+struct CodeLine {
+  std::string text;  // a CUP line; empty where a label stands
+  int target = -1;   // a jump: the label whose line number ends the line
+  int label = -1;    // text empty: the label standing at the next line
+};
+struct Code {
+  std::vector<CodeLine> lines;
+  int labels = 0;
+  void line(std::string text, int target = -1) { lines.push_back({std::move(text), target, -1}); }
+  int new_label() { return labels++; }
+  void bind(int label) { lines.push_back({{}, -1, label}); }
+};
+
 // Lines that leave the value of `node` on the stack.
-void emit_value(const ExprTree& tree, int node, std::vector<std::string>& out);
+void emit_value(const ExprTree& tree, int node, Code& out);
+// Lines that jump to `label` when `node` is nonzero (`when_true`) or zero, else go on with the
+// stack as before: a comparison jumps on its condition, and && and || skip their right side when
+// the left decides (the manual's "similar implementation to C").
+void emit_jump(const ExprTree& tree, int node, bool when_true, int label, Code& out);
 // The value of `node` now, as the controller's CUP lines would compute it, with `read` giving a
 // parameter's value (its spelling, its index or 0; a controller error in `*error`): for the
 // debugger's watches and conditions. 0 with `*error` set (4, 30, 31, or what `read` set).

@@ -47,6 +47,11 @@ PupOutput PupCompiler::run(const std::string& path, const std::string& text) {
   include_stack_.push_back(path);
   read_text(path, text, false);
   finish();
+  // The flash sector: ADownloadUProg[1] takes at most 262 144 characters of CUP.
+  if (const std::string why = out_.ok() ? flash_refusal(write_cup(out_.program).size()) : "";
+      !why.empty()) {
+    error(Error::ProgramTooLarge, Location{path, 1, 1}, why);
+  }
   out_.vars = vars_;
   return std::move(out_);
 }
@@ -135,9 +140,14 @@ void PupCompiler::include(const std::string& raw, const Location& at, const std:
   if (name.empty()) return error(Error::BadDirective, at, "#include needs a file name");
   if (!ends_with_ignoring_case(name, ".puh")) return error(Error::IncludeNotHeader, at, "'" + name + "'");
   if (include_stack_.size() >= kMaxIncludeDepth) return error(Error::IncludeLoop, at, "'" + name + "'");
-  const std::filesystem::path full = std::filesystem::path(path).parent_path() / name;
+  // Beside the includer, then (a header's #include without a path) beside the .pup.
+  std::filesystem::path full = std::filesystem::path(path).parent_path() / name;
   std::string why;
   std::optional<std::string> text = read_text_file(full.string(), &why);
+  if (!text && include_stack_.size() > 1 && std::filesystem::path(name).parent_path().empty()) {
+    full = std::filesystem::path(include_stack_.front()).parent_path() / name;
+    text = read_text_file(full.string(), &why);
+  }
   std::string shown = full.string();
   if (!text && name == kBuiltinHeaderName) {
     text = std::string(kBuiltinHeader);

@@ -24,8 +24,35 @@ void PupCompiler::emit(std::string text, const Location& at, int label) {
   lines_.push_back(OutLine{std::move(text), at, label, -1});
 }
 
-void PupCompiler::emit_all(const std::vector<std::string>& lines, const Location& at) {
-  for (const std::string& l : lines) emit(l, at);
+void PupCompiler::place_code(const Code& code, const Location& at, int label0) {
+  std::vector<int> labels;
+  for (int i = 0; i < code.labels; ++i)
+    labels.push_back(i == 0 && label0 >= 0 ? label0 : new_label());
+  for (const CodeLine& l : code.lines) {
+    if (l.label >= 0)
+      bind(labels[static_cast<size_t>(l.label)]);
+    else
+      emit(l.text, at, l.target >= 0 ? labels[static_cast<size_t>(l.target)] : -1);
+  }
+}
+
+// The lines emitted since `first_line` as code of their own, removed; the labels made since
+// `first_label` become the code's (a for's step, placed again at the loop's end).
+Code PupCompiler::take_code(size_t first_line, size_t first_label) {
+  Code code;
+  const auto local = [&](int label) { return label - static_cast<int>(first_label); };
+  code.labels = static_cast<int>(labels_.size() - first_label);
+  for (size_t i = first_line; i <= lines_.size(); ++i) {
+    for (size_t l = first_label; l < labels_.size(); ++l) {
+      if (labels_[l] == i + 1) code.bind(local(static_cast<int>(l)));
+    }
+    if (i == lines_.size()) break;
+    const OutLine& line = lines_[i];
+    code.line(line.text, line.label >= 0 ? local(line.label) : -1);
+  }
+  lines_.resize(first_line);
+  labels_.resize(first_label);
+  return code;
 }
 
 int PupCompiler::new_label() {
@@ -83,24 +110,11 @@ void PupCompiler::statement(std::vector<Token>& tokens, const Location& at) {
   message(cur, first.where);
 }
 
-// The false side of a condition: a comparison jumps on its opposite, anything else on zero.
+// The false side of a condition: jumps to `label` when it does not hold (pup_expr.h's emit_jump).
 void PupCompiler::condition_false_jump(const ExprTree& tree, int node, int label, const Location& at) {
-  const Node& n = tree.nodes[static_cast<size_t>(node)];
-  if (auto v = constant_of(tree, node)) {
-    if (*v == 0) emit("AJump[1],", at, label);
-    return;
-  }
-  std::vector<std::string> lines;
-  if (is_comparison(n)) {
-    emit_value(tree, n.a, lines);
-    emit_value(tree, n.b, lines);
-    emit_all(lines, at);
-    emit(fmt::format("AJump[{}],", opposite_condition(condition_of(n.key))), at, label);
-    return;
-  }
-  emit_value(tree, node, lines);
-  emit_all(lines, at);
-  emit("AJump[9],", at, label);
+  Code code;
+  emit_jump(tree, node, false, code.new_label(), code);  // the code's label 0 is `label`
+  place_code(code, at, label);
 }
 
 void PupCompiler::flow(const std::string& word, TokenCursor& cur, const Location& at) {
@@ -157,10 +171,9 @@ void PupCompiler::flow(const std::string& word, TokenCursor& cur, const Location
     b.next = top;
     bind(top);
     condition_false_jump(tree, node, b.end, at);
-    const size_t before = lines_.size();
+    const size_t before = lines_.size(), labels_before = labels_.size();
     assignment(cur, at);  // the step, compiled now and moved to the end of the loop
-    for (size_t i = before; i < lines_.size(); ++i) b.step.push_back(lines_[i].text);
-    lines_.resize(before);
+    b.step = take_code(before, labels_before);
     if (!cur.take_if(")") || !needs_end()) return error(Error::Syntax, cur.where(), "')' is expected");
     open(std::move(b));
   } else if (word == "switch") {
@@ -220,7 +233,7 @@ void PupCompiler::close_block(const Location& at) {
       break;
     case BlockKind::For:
       bind(b.cont);
-      emit_all(b.step, at);
+      place_code(b.step, at);
       emit("AJump[1],", at, b.next);
       bind(b.end);
       break;
@@ -228,7 +241,7 @@ void PupCompiler::close_block(const Location& at) {
       emit("AJump[1],", at, b.end);
       bind(b.next);
       for (const auto& [value, label] : b.cases) {
-        emit_all(b.step, b.where);
+        place_code(b.step, b.where);
         emit(fmt::format("APushConstant,{}", value), b.where);
         emit("AJump[3],", b.where, label);
       }
@@ -254,7 +267,7 @@ void PupCompiler::assignment(TokenCursor& cur, const Location& at) {
   int value = -1;
   if (!expression(cur, tree, value, false)) return;
   const Node& target = tree.nodes[static_cast<size_t>(place)];
-  std::vector<std::string> lines;
+  Code lines;
   const auto v = constant_of(tree, value);
   if (target.kind == NodeKind::Param) {
     if (v) {
@@ -262,13 +275,13 @@ void PupCompiler::assignment(TokenCursor& cur, const Location& at) {
       return;
     }
     emit_value(tree, value, lines);
-    lines.push_back("APopParam," + param_text(target));
+    lines.line("APopParam," + param_text(target));
   } else {  // an element at a computed index: the value, then the index
     emit_value(tree, value, lines);
     emit_value(tree, target.a, lines);
-    lines.push_back(fmt::format("APopParamIdx[{}],{}[{}]", target.size, target.key, target.base));
+    lines.line(fmt::format("APopParamIdx[{}],{}[{}]", target.size, target.key, target.base));
   }
-  emit_all(lines, at);
+  place_code(lines, at);
 }
 
 void PupCompiler::marker(const Keyword& k, int32_t index, const Location& at) {
@@ -297,8 +310,12 @@ void PupCompiler::message(TokenCursor& cur, const Location& at) {
   const Token& name = *cur.peek();
   const Keyword* k = vars_.count(name.text) != 0 ? nullptr : find_keyword(name.text);
   if (k == nullptr || k->kind == KeywordKind::Param || k->kind == KeywordKind::ReadOnly) {
+    const size_t before = out_.diagnostics.size();
     assignment(cur, at);
-    if (!cur.at_end()) error(Error::Syntax, cur.where(), "unexpected '" + cur.peek()->text + "'");
+    // The rest of the line after an error in it would only repeat that error.
+    if (out_.diagnostics.size() == before && !cur.at_end()) {
+      error(Error::Syntax, cur.where(), "unexpected '" + cur.peek()->text + "'");
+    }
     return;
   }
   cur.take();
@@ -335,6 +352,10 @@ void PupCompiler::message(TokenCursor& cur, const Location& at) {
     if (place < 0) return;
     const Node& p = tree.nodes[static_cast<size_t>(place)];
     if (p.kind != NodeKind::Param) return error(Error::NotConstant, p.where, "the parameter's index");
+    const bool pop = k->id == KeywordId::PopParam || k->id == KeywordId::PopParamIdx;
+    if (pop && find_keyword(p.key)->kind != KeywordKind::Param) {
+      return error(Error::NotAssignable, p.where, "'" + p.key + "'");
+    }
     if (!cur.at_end()) return error(Error::Syntax, cur.where(), "unexpected '" + cur.peek()->text + "'");
     return emit(text + "," + param_text(p), at);
   }
