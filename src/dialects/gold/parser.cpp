@@ -719,6 +719,10 @@ void Parser::function_definition(Program& p, FunctionBodySink* on_body) {
       ok = false;
     }
     if (ok) next();
+  } else if ((at_kw(Keyword::Int) || at_kw(Keyword::Float)) && peek(1).kind == Tok::LParen) {
+    error(Error::NameIsKeyword, peek().offset, text(peek()));  // "function int()": error 24
+    skip_line();
+    ok = false;
   } else if (at_kw(Keyword::Int) || at_kw(Keyword::Float)) {
     VarType type;
     type_keyword(type);
