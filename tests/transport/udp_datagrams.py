@@ -4,6 +4,7 @@ drives speak over Ethernet (issue 38). The replies are the drive form of docs/pr
 SimplIQ Software Manual, chapter 3): the echo while EO=1, `value;`, `;` for a command without a
 value, the EC code as one byte then `?;` for a refusal, `0x13 ?;` (19) for a line too long or a
 bad byte. Bad datagrams (empty, oversized, binary) do no harm: the drive answers the next one.
+`uprog term udp:HOST:PORT` speaks to it too.
 
 Usage: udp_datagrams.py UPROG_BINARY
 """
@@ -83,6 +84,12 @@ def main():
         expect(other, b"PX", b"1234;")
         expect(other, b"UI[1]=7;UI[1]", b";7;")
         expect(host, b"UI[1]", b"7;")
+        # `uprog term udp:HOST:PORT`: a line a datagram, the answers as over TCP (sim_test.cpp)
+        term = subprocess.run([sys.argv[1], "term", "udp:127.0.0.1:%d" % port],
+                              input="PX=7; PX-3\n(3.2+4)/2\nAC=-5\n", capture_output=True,
+                              text=True, timeout=30)
+        if not term.stdout.startswith("4\n3.600000\n?21"):
+            failures.append("uprog term over UDP printed %r (stderr %r)" % (term.stdout, term.stderr))
     finally:
         sim.terminate()
         sim.wait(timeout=10)

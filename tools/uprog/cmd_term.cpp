@@ -84,7 +84,8 @@ int run_term(const TermOptions& options) {
 
 void add_term(CLI::App* cmd, Action& action) {
   auto options = std::make_shared<TermOptions>();
-  cmd->add_option("ADDRESS", options->address, "HOST:PORT of the drive (uprog sim prints it)")
+  cmd->add_option("ADDRESS", options->address,
+                  "HOST:PORT of the drive (uprog sim prints it); udp:HOST:PORT over UDP")
       ->required();
   add_dialect_option(cmd, options->dialect);
   cmd->add_option("--timeout", options->timeout_s, "seconds to wait for a line's answers (default 5)");
