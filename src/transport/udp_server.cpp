@@ -77,10 +77,9 @@ void UdpServer::send(const udp::endpoint& to, std::string bytes) {
   if (bytes.empty() || sends_in_flight_ >= kMaxUdpSendsInFlight) return;
   ++sends_in_flight_;
   auto buffer = std::make_shared<std::string>(std::move(bytes));
-  socket_.async_send_to(asio::buffer(*buffer), to,
-                        [this, buffer](const boost::system::error_code&, std::size_t) {
-                          --sends_in_flight_;
-                        });
+  socket_.async_send_to(
+      asio::buffer(*buffer), to,
+      [this, buffer](const boost::system::error_code&, std::size_t) { --sends_in_flight_; });
 }
 
 bool parse_udp_endpoint(std::string_view text, udp::endpoint& endpoint, std::string& error) {

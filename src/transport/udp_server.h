@@ -17,8 +17,8 @@
 
 namespace uprog::transport {
 
-inline constexpr std::size_t kMaxDatagramBytes = 65507;  // the largest UDP payload over IPv4
-inline constexpr std::size_t kMaxUdpPeers = 16;          // peers with a session of their own
+inline constexpr std::size_t kMaxDatagramBytes = 65507;   // the largest UDP payload over IPv4
+inline constexpr std::size_t kMaxUdpPeers = 16;           // peers with a session of their own
 inline constexpr std::size_t kMaxUdpSendsInFlight = 256;  // beyond: a reply is dropped
 
 // One peer's datagrams, free of I/O (the UDP server's and the fuzz target's).
