@@ -187,6 +187,7 @@ int main(int argc, char** argv) {
   } else {
     uprog::gold::CompileOptions options;
     options.optimize = peephole;
+    options.max_program_bytes = 0;  // the workloads are larger than a drive's 64 KB (2.17)
     compiled = uprog::gold::compile_file(file, options);
   }
   if (!compiled.ok()) {

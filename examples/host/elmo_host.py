@@ -26,6 +26,7 @@ SR_MOTOR_ON = 1 << 4
 SR_MOTOR_FAILURE = 1 << 6
 SR_HOMING = 1 << 11
 SR_PROGRAM_RUNNING = 1 << 12
+SR_STO = (1 << 14) | (1 << 15)  # Gold: both STO inputs permit enabling
 SR_STOPPED_BY_LIMIT = 1 << 28
 # IP bits as host drivers decode them (docs/dialects/gold.md, "IP and IB").
 IP_LEVEL_SHIFT = 16
@@ -95,7 +96,7 @@ def describe_sr(sr):
                                    ("motor failure", SR_MOTOR_FAILURE), ("homing", SR_HOMING),
                                    ("program running", SR_PROGRAM_RUNNING),
                                    ("stopped by limit", SR_STOPPED_BY_LIMIT)) if sr & bit]
-    return (f"SR={sr:#010x}: UM={(sr >> 7) & 7}, MS={(sr >> 14) & 3}"
+    return (f"SR={sr:#010x}: UM={(sr >> 8) & 7}, STO={'permits' if (sr & SR_STO) == SR_STO else 'blocks'}"
             + (", " + ", ".join(bits) if bits else ""))
 
 
@@ -149,7 +150,7 @@ def session(drive):
         raise AssertionError("UM=2 with the motor on was accepted")
 
     drive.command("MO=0")
-    expect(drive.value("MS") == 1, "MS is not 1 with the motor off")
+    expect(drive.value("MS") == 3, "MS is not 3 with the motor off")  # Gold reference
 
 
 def start_sim(uprog, program):

@@ -120,7 +120,7 @@ std::vector<Variable> Debugger::signals() const {
       {"position error", number(a.position_error()), "counts", 0},
       {"reference position", number(a.reference_position()), "counts", 0},
       {"motor on", a.motor_on() ? "1" : "0", "bool", 0},
-      {"motion status", number(a.motion_status()), "0 settled, 1 stationary or off, 2 moving", 0},
+      {"motion status", number(a.motion_status()), "0 settled, 1 stationary, 2 moving, 3 off", 0},
       {"status register", fmt::format("0x{:08X}", a.status_register()), "bits", 0},
       {"motor fault", fmt::format("0x{:08X}", a.motor_fault()), "bits", 0},
       {"input port", fmt::format("0x{:08X}", a.input_port()), "bits", 0},

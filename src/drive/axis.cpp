@@ -93,6 +93,7 @@ void Axis::motor_off() {
   moving_ = false;
   ramping_ = false;
   pt_active_ = false;
+  motion_kind_ = MotionKind::kNone;
   has_target_ = false;
   in_window_us_ = -1;
   current_command_a_ = 0.0;
@@ -224,11 +225,13 @@ Status Axis::begin_motion() {
     // The PT motion runs in advance_pt; the smoothing window does not apply to it.
     start_profile(plan_stop(raw_.position_counts, 0.0, 1.0), false);
     pt_active_ = true;
+    motion_kind_ = MotionKind::kPt;
     pt_executing_ = pt_start_;
     pt_offset_counts_ = offset_counts_;
     return Status::kOk;
   }
   if (params_.unit_mode == 2 || pending_ == Pending::kJog) {
+    motion_kind_ = MotionKind::kJog;
     const double jog = std::clamp(static_cast<double>(params_.jog_velocity_counts_per_s), vl, vh);
     if (params_.unit_mode == 2 && params_.profiler_mode == 0) {
       // No profiler (PM=0): the reference is the jog velocity at once.
@@ -252,6 +255,7 @@ Status Axis::begin_motion() {
     }
     return Status::kOk;
   }
+  motion_kind_ = MotionKind::kPointToPoint;
   double target = target_internal_;
   if (!modulo_active()) {
     target = std::clamp(target, user_to_internal(params_.position_low_counts),
@@ -281,7 +285,7 @@ void Axis::set_position(int32_t position_counts) {
 }
 
 int32_t Axis::motion_status() const {
-  if (!servo_ready_) return 1;  // the motor is off (or still enabling): nothing is commanded
+  if (!servo_ready_) return 3;  // the motor is off (or still enabling): Gold's "motor off"
   switch (params_.unit_mode) {
     case 1: return 1;                  // no software motion in current mode
     case 2: return ramping_ ? 2 : 1;   // the reference differs from the JV target while ramping
@@ -301,7 +305,8 @@ uint32_t Axis::status_register() const {
   sr |= (static_cast<uint32_t>(params_.unit_mode) & 7u) << kSrUnitModeShift;
   if (homing_.armed()) sr |= kSrHoming;
   if (above_continuous_s_ > kPeakCurrentTime_s) sr |= kSrCurrentLimited;
-  sr |= static_cast<uint32_t>(motion_status() & 3) << kSrMotionStatusShift;
+  sr |= kSrSafeTorqueOff1 | kSrSafeTorqueOff2;
+  if (params_.reference_mode != 0) sr |= kSrReferenceMode;
   if (stopped_by_limit_) sr |= kSrStoppedByLimit;
   return sr;
 }
@@ -392,6 +397,8 @@ uint32_t Axis::scan_inputs() {
     const bool rose = active && !input_was_active_[n - 1];
     const bool fell = !active && input_was_active_[n - 1];
     input_was_active_[n - 1] = active;
+    if (rose) inputs_rose_ |= 1u << (n - 1);
+    if (fell) inputs_fell_ |= 1u << (n - 1);
     switch (input_function(logic)) {
       case InputFunction::kInhibit:
         if (active && motor_on_) motor_off();
@@ -586,7 +593,7 @@ uint32_t Axis::step_homing(double position_before_counts) {
     return home_input_rose_ ? static_cast<uint32_t>(kEventHome) : 0u;
   }
   HomingCycle cycle;
-  cycle.home_input_rose = home_input_rose_;
+  cycle.switch_edge = home_switch_edge();
   cycle.position_counts = motor_state_.position_counts;
   const HomeTrigger trigger = homing_settings_.trigger;
   if (trigger == HomeTrigger::kIndex || trigger == HomeTrigger::kHomeInputThenIndex) {
@@ -597,6 +604,31 @@ uint32_t Axis::step_homing(double position_before_counts) {
   if (!at) return 0;
   home_event(*at);
   return kEventHome;
+}
+
+namespace {
+// The input function whose edge a homing switch waits for (kInput names an input instead).
+InputFunction switch_function(HomeSwitch s) {
+  switch (s) {
+    case HomeSwitch::kForwardLimit: return InputFunction::kForwardLimit;
+    case HomeSwitch::kReverseLimit: return InputFunction::kReverseLimit;
+    default: return InputFunction::kHome;
+  }
+}
+}  // namespace
+
+bool Axis::home_switch_edge() const {
+  const HomingSettings& h = homing_settings_;
+  const uint32_t edges = h.on_release ? inputs_fell_ : inputs_rose_;
+  if (edges == 0) return false;
+  if (h.home_switch == HomeSwitch::kInput)
+    return h.input >= 1 && h.input <= kInputCount && (edges & (1u << (h.input - 1))) != 0;
+  const InputFunction wanted = switch_function(h.home_switch);
+  for (int n = 1; n <= kInputCount; ++n) {
+    const bool edge = (edges & (1u << (n - 1))) != 0;
+    if (edge && input_function(params_.input_logic[n - 1]) == wanted) return true;
+  }
+  return false;
 }
 
 void Axis::home_event(double at_counts) {
@@ -638,6 +670,7 @@ uint32_t Axis::step() {
   time_us_ += period_us();
   if (any_switch_) follow_position_switches();
   home_input_rose_ = false;
+  inputs_rose_ = inputs_fell_ = 0;
   if (inputs_changed_ || inhibit_active_) events |= scan_inputs();
   const double position_before = motor_state_.position_counts;
 

@@ -43,13 +43,14 @@ enum StatusRegisterBits : uint32_t {
   kSrDriveProblem = 1u << 0,        // a power-stage problem; its code is bits 1..3
   kSrPowerStageShift = 1,           // bits 1..3: the MF power-stage code
   kSrMotorOn = 1u << 4,
-  kSrReferenceMode = 1u << 5,       // RM: an external reference (never: none is simulated)
+  kSrReferenceMode = 1u << 5,       // RM=1: an external reference selected
   kSrMotorFailure = 1u << 6,        // MF != 0
-  kSrUnitModeShift = 7,             // bits 7..9
+  kSrUnitModeShift = 8,             // bits 8..10 (Gold: bit 7 stays clear)
   kSrHoming = 1u << 11,             // a homing process is armed
   kSrProgramRunning = 1u << 12,
   kSrCurrentLimited = 1u << 13,     // the current is limited to CL[1] after PL[1]'s time
-  kSrMotionStatusShift = 14,        // bits 14..15: MS
+  kSrSafeTorqueOff1 = 1u << 14,     // Gold: STO input 1 permits enabling (no STO circuit:
+  kSrSafeTorqueOff2 = 1u << 15,     // both always permit)
   kSrStoppedByLimit = 1u << 28,     // RLS, FLS, a stop input, or a VH[3]/VL[3] target limit
   kSrProgramError = 1u << 29,
 };
@@ -111,7 +112,10 @@ class Axis {
   int32_t reference_velocity() const { return static_cast<int32_t>(round_half_away(ref_.velocity_counts_per_s)); }  // DV[2]
   int32_t reference_position() const { return internal_to_user(ref_.position_counts); }  // DV[3]
   float current_command() const { return static_cast<float>(current_command_a_); }  // DV[1]
-  int32_t motion_status() const;            // MS: 0 settled in TR, 1 stationary or off, 2 moving
+  int32_t motion_status() const;            // MS: 0 settled, 1 stationary, 2 moving, 3 motor off
+  // The kind of motion BG last began while the motor is on (Gold OV[2]).
+  enum class MotionKind : uint8_t { kNone, kPointToPoint, kJog, kPt };
+  MotionKind motion_kind() const { return motor_on_ ? motion_kind_ : MotionKind::kNone; }
   uint32_t status_register() const;         // SR, without the program's bits 12 and 29
   // Nothing more will happen by itself: the motor is off, or no profiler runs and a reached
   // target has settled (MS=0). What the old "MS is 0 or 3" meant (tools/uprog/cmd_run.cpp).
@@ -219,6 +223,7 @@ class Axis {
   void check_faults();
   void track_target_window();
   uint32_t step_homing(double position_before_counts);
+  bool home_switch_edge() const;  // the edge the homing settings wait for came this cycle
   void home_event(double at_counts);
 
   // The motor model's per-cycle constants for the current TS (refreshed when TS changes).
@@ -259,6 +264,7 @@ class Axis {
   PtTable pt_;
   int32_t pt_start_ = 1;
   bool pt_active_ = false;
+  MotionKind motion_kind_ = MotionKind::kNone;
   int32_t pt_executing_ = 1;
   double pt_offset_counts_ = 0.0;  // user-to-internal at the PT start
   Profile profile_;
@@ -286,6 +292,8 @@ class Axis {
   bool reverse_limit_active_ = false;
   bool hard_stop_active_ = false;
   bool home_input_rose_ = false;  // this cycle's scan saw a main-home input become active
+  uint32_t inputs_rose_ = 0;      // this cycle's scan: bit n-1, input n became active
+  uint32_t inputs_fell_ = 0;      // this cycle's scan: bit n-1, input n became inactive
   uint32_t outputs_ = 0;
 
   std::array<PositionSwitch, kInputCount> switches_{};

@@ -13,15 +13,15 @@ std::optional<double> Homing::step(HomeTrigger trigger, const HomingCycle& cycle
       at = cycle.position_counts;
       break;
     case HomeTrigger::kHomeInput:
-      if (cycle.home_input_rose) at = cycle.position_counts;
+      if (cycle.switch_edge) at = cycle.position_counts;
       break;
     case HomeTrigger::kIndex:
       at = cycle.index_at_counts;
       break;
     case HomeTrigger::kHomeInputThenIndex:
-      // An index met in the same cycle as the input lies before the input's edge: not yet.
+      // An index met in the same cycle as the edge lies before it: not yet.
       if (home_input_seen_) at = cycle.index_at_counts;
-      if (cycle.home_input_rose) home_input_seen_ = true;
+      if (cycle.switch_edge) home_input_seen_ = true;
       break;
   }
   if (at) armed_ = false;

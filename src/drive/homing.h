@@ -1,6 +1,6 @@
 // Homing and capture, as every vendor's drive does it: an armed homing process waits for its
-// event (at once, a home input, the encoder's index pulse, or the first index after the home
-// input), captures the position there, and then sets the position counter and stops or
+// event (at once, a switch's edge, the encoder's index pulse, or the first index after the
+// switch's edge), captures the position there, and then sets the position counter and stops or
 // continues the motion. The axis feeds it one servo cycle at a time (axis.cpp).
 #pragma once
 #include <cstdint>
@@ -8,14 +8,21 @@
 
 namespace uprog::drive {
 
-// What ends the homing process (Gold HM[3]).
+// What ends the homing process (Gold HM[3]; the vendor's numbering is the dialect's).
 enum class HomeTrigger : uint8_t {
-  kImmediate = 0,           // the next servo cycle
-  kHomeInput = 1,           // a main-home input becomes active
-  kIndex = 2,               // the encoder's index pulse is crossed
-  kHomeInputThenIndex = 3,  // the first index pulse after a main-home input became active
+  kImmediate,           // the next servo cycle
+  kHomeInput,           // the home switch's edge (HomingSettings::home_switch, on_release)
+  kIndex,               // the encoder's index pulse is crossed
+  kHomeInputThenIndex,  // the first index pulse after the home switch's edge
 };
-constexpr int32_t kHomeTriggerMax = 3;
+
+// The switch whose edge kHomeInput and kHomeInputThenIndex wait for.
+enum class HomeSwitch : uint8_t {
+  kMainHome,      // any input whose function is main home (IL 16/17)
+  kForwardLimit,  // any input whose function is the forward limit
+  kReverseLimit,  // any input whose function is the reverse limit
+  kInput,         // input HomingSettings::input, whatever its function
+};
 
 // What the motion does at the home event (Gold HM[4]).
 enum class HomeAction : uint8_t {
@@ -35,6 +42,9 @@ constexpr int32_t kHomePositionSettingMax = 2;
 
 struct HomingSettings {
   HomeTrigger trigger = HomeTrigger::kImmediate;
+  HomeSwitch home_switch = HomeSwitch::kMainHome;
+  int32_t input = 1;        // kInput: the input, 1..kInputCount
+  bool on_release = false;  // the switch's edge: false when it becomes active, true inactive
   HomeAction action = HomeAction::kStop;
   HomePositionSetting setting = HomePositionSetting::kAbsolute;
   int32_t home_value_counts = 0;  // Gold HM[2]
@@ -45,7 +55,7 @@ struct HomingSettings {
 
 // What one servo cycle saw.
 struct HomingCycle {
-  bool home_input_rose = false;           // a main-home input became active
+  bool switch_edge = false;                // the home switch's edge came this cycle
   std::optional<double> index_at_counts;  // the index pulse crossed, where (motor counts)
   double position_counts = 0.0;           // the motor's position at the end of the cycle
 };
@@ -61,7 +71,7 @@ class Homing {
 
  private:
   bool armed_ = false;
-  bool home_input_seen_ = false;  // kHomeInputThenIndex: the input came, the index is awaited
+  bool home_input_seen_ = false;  // kHomeInputThenIndex: the edge came, the index is awaited
 };
 
 // The index position (offset + k * period) a move from `from` to `to` crossed, if any; the first

@@ -54,6 +54,12 @@ std::vector<Field> fields_of(Parameters& p) {
   add_int("TR[1]", p.target_radius_counts);
   add_int("TR[2]", p.target_time_ms);
   add_int("PM", p.profiler_mode);
+  add_int("SF[2]", p.smoothing2_ms);
+  add_int("FS", p.final_speed_counts_per_s);
+  add_int("RM", p.reference_mode);
+  for (int n = 1; n <= 2; ++n) add_int(indexed("BP", n), p.brake_delay_ms[static_cast<size_t>(n - 1)]);
+  for (int n = 1; n <= 12; ++n) add_int(indexed("FC", n), p.feedback_config[static_cast<size_t>(n - 1)]);
+  for (int n = 1; n <= 16; ++n) add_int(indexed("SC", n), p.stop_config[static_cast<size_t>(n - 1)]);
   add_float("CL[1]", p.continuous_current_a);
   add_float("PL[1]", p.peak_current_a);
   for (int n = 1; n <= 3; ++n) add_float(indexed("KP", n), p.gains.kp[n]);

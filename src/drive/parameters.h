@@ -12,7 +12,7 @@ namespace uprog::drive {
 constexpr int kUserVariableCount = 24;  // UI[1..24], UF[1..24]
 constexpr int kInputCount = 6;
 constexpr int kOutputCount = 4;
-constexpr int kCommutationCount = 50;  // CA[1..50]
+constexpr int kCommutationCount = 57;  // CA[1..57]
 
 constexpr int kCountsPerRevolutionIndex = 18;  // CA[18]
 
@@ -58,7 +58,13 @@ struct Parameters {
   int32_t accel_counts_per_s2 = 100000;          // AC
   int32_t decel_counts_per_s2 = 100000;          // DC
   int32_t stop_decel_counts_per_s2 = 1000000;    // SD
-  int32_t smoothing_ms = 0;                      // SF
+  int32_t smoothing_ms = 0;                      // SF[1] (SF)
+  int32_t smoothing2_ms = 0;                     // SF[2]: stored, no effect (gold.md)
+  int32_t final_speed_counts_per_s = 0;          // FS: stored, no effect (gold.md)
+  int32_t reference_mode = 0;                    // RM: 0 none, 1 external (SR bit 5)
+  std::array<int32_t, 2> brake_delay_ms{};       // BP[1], BP[2]: stored, no brake simulated
+  std::array<int32_t, 12> feedback_config{1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};  // FC[1..12]
+  std::array<int32_t, 16> stop_config{};         // SC[1..16]: stored
   int32_t jog_velocity_counts_per_s = 0;         // JV
   int32_t unit_mode = 5;                         // UM
   int32_t servo_period_us = 50;                  // TS

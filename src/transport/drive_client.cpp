@@ -1,4 +1,4 @@
-// The host's TCP client to a drive (drive_client.h).
+// The host's TCP or UDP client to a drive (drive_client.h).
 #include "transport/drive_client.h"
 
 #include <poll.h>
@@ -8,11 +8,24 @@
 #include <algorithm>
 
 #include "transport/tcp_connect.h"
+#include "transport/udp_server.h"
 
 namespace uprog::transport {
 
 std::unique_ptr<DriveClient> DriveClient::connect(const std::string& address, std::string& error) {
   std::unique_ptr<DriveClient> client(new DriveClient());
+  if (address.rfind("udp:", 0) == 0) {
+    boost::asio::ip::udp::endpoint endpoint;
+    if (!parse_udp_endpoint(address.substr(4), endpoint, error)) return nullptr;
+    boost::system::error_code ec;
+    client->udp_.open(endpoint.protocol(), ec);
+    if (!ec) client->udp_.connect(endpoint, ec);
+    if (ec) {
+      error = "cannot reach " + address + ": " + ec.message();
+      return nullptr;
+    }
+    return client;
+  }
   if (!connect_tcp(client->io_, address, client->socket_, error)) return nullptr;
   return client;
 }
@@ -59,7 +72,7 @@ bool DriveClient::send_line(std::string_view line) {
   }
   std::string_view bytes = framed;
   while (!bytes.empty()) {
-    const ssize_t n = ::send(socket_.native_handle(), bytes.data(), bytes.size(), MSG_NOSIGNAL);
+    const ssize_t n = ::send(fd(), bytes.data(), bytes.size(), MSG_NOSIGNAL);
     if (n <= 0) return false;
     bytes.remove_prefix(static_cast<std::size_t>(n));
   }
@@ -97,10 +110,10 @@ DriveClient::Wait DriveClient::read_answers(std::chrono::milliseconds timeout, b
     next_ = 0;
     const auto left =
         std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    pollfd p{socket_.native_handle(), POLLIN, 0};
+    pollfd p{fd(), POLLIN, 0};
     if (::poll(&p, 1, static_cast<int>(std::max<long long>(0, left.count()))) <= 0) return Wait::kTimeout;
-    char buffer[8192];
-    const ssize_t n = ::read(socket_.native_handle(), buffer, sizeof buffer);
+    char buffer[65536];  // a whole reply datagram over UDP
+    const ssize_t n = ::read(fd(), buffer, sizeof buffer);
     if (n <= 0) return Wait::kClosed;
     std::string answers;
     echo_.feed(std::string_view(buffer, static_cast<std::size_t>(n)), answers);

@@ -1,6 +1,6 @@
-// A host's connection to a drive over TCP (a `uprog sim`, or anything speaking the semicolon wire
-// of docs/protocol.md): send a line, read its answers up to the line's end mark. The one client
-// `uprog term`, `uprog download` and the tests' host scripts share.
+// A host's connection to a drive over TCP, or UDP with `udp:HOST:PORT` (a `uprog sim`, or anything
+// speaking the semicolon wire of docs/protocol.md): send a line, read its answers up to the
+// line's end mark. The one client `uprog term`, `uprog download` and the tests' host scripts share.
 #pragma once
 #include <chrono>
 #include <functional>
@@ -13,6 +13,7 @@
 #include "dialect/line_framer.h"
 #include "transport/answer_reader.h"
 #include "transport/asio.h"
+#include <boost/asio/ip/udp.hpp>
 #include "transport/echo_filter.h"
 
 namespace uprog::transport {
@@ -21,7 +22,8 @@ class DriveClient {
  public:
   enum class Wait { kLineDone, kTimeout, kClosed };
 
-  // Connects to "HOST:PORT" or "[V6]:PORT"; nullptr with `error` set when it cannot.
+  // Connects to "HOST:PORT" or "[V6]:PORT" over TCP, "udp:HOST:PORT" over UDP (a line a
+  // datagram, an answer datagram back: udp_server.h); nullptr with `error` set when it cannot.
   static std::unique_ptr<DriveClient> connect(const std::string& address, std::string& error);
 
   // For a drive that marks no line ends (Gold's drive form): lines end with CR, each line's
@@ -44,10 +46,12 @@ class DriveClient {
                                              std::string& error);
 
  private:
-  DriveClient() : socket_(io_) {}
+  DriveClient() : socket_(io_), udp_(io_) {}
+  int fd() { return udp_.is_open() ? udp_.native_handle() : socket_.native_handle(); }
 
   boost::asio::io_context io_;
   boost::asio::ip::tcp::socket socket_;
+  boost::asio::ip::udp::socket udp_;  // open instead of socket_ for a udp: address
   AnswerReader reader_;
   std::vector<AnswerEvent> events_;
   std::size_t next_ = 0;

@@ -25,6 +25,8 @@ class HostSession {
   // The host went away: any partial line is dropped, and with the channel whatever the service
   // kept for this host (a download in progress); a host that comes back starts afresh.
   void disconnect();
+  // Ends the line being received as CR would, without echoing anything (a datagram's end).
+  void end_line(std::string& out) { take("\r", out); }
 
  private:
   void take(std::string_view bytes, std::string& out);

@@ -28,7 +28,7 @@ TEST(drive_axis_fault, FollowingErrorLatchesAndOpensLoop) {
   EXPECT_FALSE(axis.motor_on());
   EXPECT_EQ(axis.status_register() & kSrMotorFailure, kSrMotorFailure);
   EXPECT_EQ(axis.status_register() & kSrDriveProblem, 0u);  // not a power-stage problem
-  EXPECT_EQ(axis.motion_status(), 1);                       // the motor is off
+  EXPECT_EQ(axis.motion_status(), 3);                       // the motor is off
   // The cause is gone once the motor is off: MO=1 succeeds and clears MF.
   EXPECT_EQ(axis.set_motor_on(true), Status::kOk);
   EXPECT_EQ(axis.motor_fault(), 0u);

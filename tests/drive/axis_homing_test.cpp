@@ -1,5 +1,6 @@
-// Homing and capture on the axis: each home event (at once, a home switch, the index pulse, the
-// index after the switch), each action and position setting, and the index-crossing test.
+// Homing and capture on the axis: each home event (at once, a home switch, a limit, an input's
+// release, the index pulse, the index after the switch), each action and position setting, and
+// the index-crossing test.
 #include <gtest/gtest.h>
 
 #include "axis_helpers.h"
@@ -72,6 +73,48 @@ TEST(drive_homing, HomeSwitchStopsWithSdAndSetsPosition) {
   // PX was 0 at the event; the stop with SD = 1e6 adds v^2 / (2 SD) = 50 counts.
   EXPECT_NEAR(axis.position(), 50, 3);
   EXPECT_EQ(axis.motion_status(), 1);  // stopped, not at a point-to-point target
+}
+
+TEST(drive_homing, ReverseLimitIsTheHomeSwitch) {
+  Axis axis;
+  ASSERT_EQ(axis.set_input_logic(1, 9), Status::kOk);  // reverse limit, active high
+  axis.place_position_switch(1, -1000000.0, -2000.0);
+  enable(axis);
+  HomingSettings& h = axis.homing_settings();
+  h.trigger = HomeTrigger::kHomeInput;
+  h.home_switch = HomeSwitch::kMainHome;  // no main-home input: the limit is not the event
+  axis.arm_homing(true);
+  jog(axis, -10000);
+  EXPECT_EQ(run_until_home(axis, 400000), 0u);
+  EXPECT_TRUE(axis.homing_armed());
+  // Off the limit again, then armed on the reverse limit itself: its edge is the event.
+  axis.set_absolute_target(0);
+  ASSERT_EQ(axis.begin(), Status::kOk);
+  run_us(axis, 500000);
+  h.home_switch = HomeSwitch::kReverseLimit;
+  h.home_value_counts = -100;
+  jog(axis, -10000);
+  ASSERT_NE(run_until_home(axis, 1000000), 0u);
+  EXPECT_NEAR(axis.home_capture(), -2000, 2);
+  EXPECT_NEAR(axis.position(), -100, 1);  // PX := HM[2] where the limit rose
+}
+
+TEST(drive_homing, AnInputsReleaseIsTheEventWhateverItsFunction) {
+  Axis axis;
+  axis.place_position_switch(3, 1000.0, 3000.0);  // input 3 stays general purpose (IL 7)
+  enable(axis);
+  HomingSettings& h = axis.homing_settings();
+  h.trigger = HomeTrigger::kHomeInput;
+  h.home_switch = HomeSwitch::kInput;
+  h.input = 3;
+  h.on_release = true;
+  h.action = HomeAction::kContinue;
+  h.setting = HomePositionSetting::kKeep;
+  axis.arm_homing(true);
+  jog(axis, 20000);
+  ASSERT_NE(run_until_home(axis, 1000000), 0u);
+  EXPECT_NEAR(axis.home_capture(), 3000, 2);  // the far edge, not the near one at 1000
+  EXPECT_TRUE(axis.profiler_moving());        // kContinue: the jog goes on
 }
 
 TEST(drive_homing, IndexCapturesExactlyAndRelativeSettingKeepsTheDistance) {

@@ -164,15 +164,16 @@ TEST(drive_axis_io, OutputsPortAndBits) {
 
 TEST(drive_axis_io, StatusRegisterAndMotionStatus) {
   Axis axis;
-  // UM=5 in bits 7..9, MS=1 (motor off) in bits 14..15.
-  EXPECT_EQ(axis.status_register(), (5u << kSrUnitModeShift) | (1u << kSrMotionStatusShift));
-  EXPECT_EQ(axis.motion_status(), 1);
+  // UM=5 in bits 8..10, the two STO inputs (bits 14, 15) permit; MS=3: the motor is off.
+  const uint32_t sto = kSrSafeTorqueOff1 | kSrSafeTorqueOff2;
+  EXPECT_EQ(axis.status_register(), (5u << kSrUnitModeShift) | sto);
+  EXPECT_EQ(axis.motion_status(), 3);
   enable(axis);
-  EXPECT_EQ(axis.status_register(), kSrMotorOn | (5u << kSrUnitModeShift) | (1u << kSrMotionStatusShift));
+  EXPECT_EQ(axis.status_register(), kSrMotorOn | (5u << kSrUnitModeShift) | sto);
   EXPECT_EQ(axis.motion_status(), 1);  // no point-to-point target yet: MS=0 does not apply
   axis.set_absolute_target(1000);
   axis.begin();
-  EXPECT_EQ((axis.status_register() >> kSrMotionStatusShift) & 3u, 2u);
+  EXPECT_EQ(axis.status_register() & sto, sto);
   EXPECT_EQ(axis.motion_status(), 2);
 }
 

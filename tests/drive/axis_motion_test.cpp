@@ -46,7 +46,7 @@ TEST(drive_axis_motion, EnableDelayThenServoReady) {
   EXPECT_TRUE(axis.motor_on());
   run_us(axis, kEnableDelay_us - 50);
   EXPECT_FALSE(axis.servo_ready());
-  EXPECT_EQ(axis.motion_status(), 1);  // MO=0 or not yet closed: the reference is stationary
+  EXPECT_EQ(axis.motion_status(), 3);  // the loop not yet closed: Gold's "motor off"
   axis.step();
   EXPECT_TRUE(axis.servo_ready());
   axis.set_motor_on(false);

@@ -15,7 +15,8 @@ using testing::enable;
 using testing::run_us;
 using testing::set_motion;
 
-uint32_t sr_motion_status(const Axis& axis) { return (axis.status_register() >> kSrMotionStatusShift) & 3u; }
+// Gold's SR bits 14 and 15 are the STO inputs, both set (docs/dialects/gold.md, "SR").
+uint32_t sr_sto_bits(const Axis& axis) { return (axis.status_register() >> 14) & 3u; }
 
 // A 10000-count move at SP=50000, AC=DC=1e6: 0.05 s ramps and 0.15 s of cruise, 0.25 s in all.
 void start_move(Axis& axis) {
@@ -35,10 +36,10 @@ TEST(drive_status, MsSettlesThroughTargetRadiusAndTime) {
   EXPECT_EQ(axis.motion_status(), 2);
   run_us(axis, 20000);  // 10 ms after the profile's end: the reference stands, not yet settled
   EXPECT_EQ(axis.motion_status(), 1);
-  EXPECT_EQ(sr_motion_status(axis), 1u);
+  EXPECT_EQ(sr_sto_bits(axis), 3u);
   run_us(axis, 20000);  // 30 ms after: within TR[1] for more than TR[2]
   EXPECT_EQ(axis.motion_status(), 0);
-  EXPECT_EQ(sr_motion_status(axis), 0u);
+  EXPECT_EQ(sr_sto_bits(axis), 3u);
 }
 
 TEST(drive_status, AtRestWhenOffStoppedOrSettled) {

@@ -25,7 +25,6 @@ const std::map<int, const char*> kNoCase = {
     {21, "the compiler keeps no database"},
     {23, "the number of functions has no limit of its own"},
     {31, "unused, as the manual says: arrays have one dimension"},
-    {36, "a program too long for the image is 65"},
     {40, "a command line that does not compile gets the code of what is wrong in it"},
     {53, "a statement ends with its line (continued with ...: 52 when too long)"},
     {55, "file paths have no length limit"},

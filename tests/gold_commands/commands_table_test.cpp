@@ -20,7 +20,8 @@ const char* const kSpecCommands[] = {
 // host drivers send.
 const char* const kReferenceCommands[] = {"HM", "CA", "QP", "TR", "TI", "WS", "EO", "LL", "HL", "FP",
                                           "FV", "VR", "SN", "MP", "PT", "PY", "PM", "IQ", "HX",
-                                          "RC", "RP", "WI", "BH"};  // issue 17: the recorder's
+                                          "RC", "RP", "WI", "BH",   // issue 17: the recorder's
+                                          "RM", "ID", "FC", "BP", "SC", "FS", "OV", "LC"};  // 38
 
 const CommandInfo& get(const char* name) {
   const CommandInfo* c = find_command(name);
@@ -99,7 +100,7 @@ TEST(gold_commands_table, StatusesAreReadOnly) {
 TEST(gold_commands_table, IndexRanges) {
   struct Range { const char* name; int32_t lo, hi; };
   for (const Range& r : {Range{"UI", 1, 24}, Range{"UF", 1, 24}, Range{"IL", 1, 6}, Range{"IB", 0, 31},
-                         Range{"HM", 1, 7}, Range{"CA", 1, 50}, Range{"QP", 1, 1024}, Range{"TR", 1, 2},
+                         Range{"HM", 1, 7}, Range{"CA", 1, 57}, Range{"QP", 1, 1024}, Range{"TR", 1, 2},
                          Range{"LL", 2, 3}, Range{"HL", 2, 3}, Range{"SN", 1, 4}, Range{"MP", 1, 6},
                          Range{"OB", 1, 4}, Range{"RV", 1, 8}, Range{"DV", 2, 3}, Range{"ER", 2, 3},
                          Range{"VH", 2, 3}, Range{"VL", 2, 3}, Range{"XM", 1, 2}, Range{"KP", 1, 3},

@@ -75,6 +75,9 @@ const std::map<std::string, Sample> kWritable{
     {"HL", {3, false, 900, 900}},      {"MP", {2, false, 10, 10}},
     {"PT", {0, false, 5, 5}},          {"PY", {0, false, 77, 77}},
     {"PM", {0, false, 0, 0}},          {"HX", {0, false, 1, 1}},
+    {"RM", {0, false, 1, 1}},          {"FC", {5, false, 2, 2}},
+    {"BP", {2, false, 100, 100}},      {"SC", {13, false, 3, 3}},
+    {"FS", {0, false, 0, 0}},
 };
 
 TEST(gold_commands_mapping, EveryCommandIsReadWrittenOrExecuted) {
@@ -114,7 +117,7 @@ TEST(gold_commands_mapping, EveryCommandIsReadWrittenOrExecuted) {
       EXPECT_EQ(v.i, static_cast<int32_t>(s.read_back)) << c.name;
     }
   }
-  EXPECT_EQ(served, 66);  // with the recorder's RC, RP, WI and BH (issue 17)
+  EXPECT_EQ(served, 74);  // with the recorder's RC, RP, WI, BH (17) and the preflight's 8 (38)
   // The actions the drive serves.
   EXPECT_EQ(f.commands.execute(id("ST"), 0), kDriveOk);
   f.write_int("UM", 5);
@@ -131,7 +134,7 @@ TEST(gold_commands_mapping, MoveThroughCommands) {
   ASSERT_EQ(f.write_int("PA", 10000), kDriveOk);
   ASSERT_EQ(f.commands.execute(id("BG"), 0), kDriveOk);
   EXPECT_EQ(f.read_int("MS"), 2);
-  EXPECT_EQ((f.read_int("SR") >> 14) & 3, 2);  // SR bits 14..15 reflect MS
+  EXPECT_EQ((f.read_int("SR") >> 14) & 3, 3);  // Gold: SR bits 14..15 are the STO inputs
   // Trapezoid: 0.05 s ramps of 1250 counts, 7500 counts of cruise (0.15 s): ends at 0.25 s.
   f.run_us(300000);
   EXPECT_NEAR(f.read_int("PX"), 10000, 1);
@@ -140,7 +143,8 @@ TEST(gold_commands_mapping, MoveThroughCommands) {
   EXPECT_NEAR(f.read_int("PE"), 0, 1);
   EXPECT_NEAR(f.read_int("VX"), 0, 50);
   EXPECT_EQ(f.read_int("MS"), 0);  // 50 ms within TR[1] after the profile: more than TR[2]
-  EXPECT_EQ(f.read_int("SR"), 0x10 | (5 << 7));  // MO in bit 4, UM in bits 7..9, MS=0
+  // MO in bit 4, UM in bits 8..10, the STO inputs in 14 and 15 (docs/dialects/gold.md, "SR")
+  EXPECT_EQ(f.read_int("SR"), 0x10 | (5 << 8) | (3 << 14));
 }
 
 TEST(gold_commands_mapping, UserVariablesAndIo) {

@@ -58,7 +58,8 @@ TEST(gold_reference_commands, HomingThroughHm) {
 TEST(gold_reference_commands, HmRangesPerIndex) {
   Fixture f;
   EXPECT_EQ(f.write("HM", 1, 2), kErrorOutOfRange);
-  EXPECT_EQ(f.write("HM", 3, 4), kErrorOutOfRange);
+  EXPECT_EQ(f.write("HM", 3, 10), kErrorOutOfRange);  // 10..12 are no event (homing_events.cpp)
+  EXPECT_EQ(f.write("HM", 3, 25), kErrorOutOfRange);
   EXPECT_EQ(f.write("HM", 4, 3), kErrorOutOfRange);
   EXPECT_EQ(f.write("HM", 5, -1), kErrorOutOfRange);
   EXPECT_EQ(f.write("HM", 6, 5), kErrorOutOfRange);  // outputs 1..4 (0: none)

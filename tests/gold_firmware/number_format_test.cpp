@@ -19,6 +19,11 @@ TEST(controller_number_format, Floats) {
   EXPECT_EQ(format_gold_float(10.0f), "10.0");
   EXPECT_EQ(format_gold_float(-4.5f), "-4.500000");
   EXPECT_EQ(format_gold_float(0.00255f), "0.002550");
+  // 1.3.2: at most 7 significant digits; 1.7: abs(-123.54) "is 123.5400"
+  EXPECT_EQ(format_gold_float(123.45678f), "123.4568");
+  EXPECT_EQ(format_gold_float(1.2345678f), "1.234568");
+  EXPECT_EQ(format_gold_float(2321.66458f), "2321.665");
+  EXPECT_EQ(format_gold_float(123.54f), "123.5400");
   EXPECT_EQ(format_gold_float(9999999.0f), "9999999.0");
   EXPECT_EQ(format_gold_float(12345678.0f), "1.234568e07");
   EXPECT_EQ(format_gold_float(1.0e10f), "1.000000e10");

@@ -4,6 +4,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -33,6 +34,7 @@ struct RunOptions {
   std::string budget = "1";
   std::vector<std::string> inputs;  // N=LEVEL@TIME
   std::vector<std::string> faults;  // NAME@TIME
+  std::vector<std::string> switches;  // N=FROM:TO
   std::string record;               // PX,VX,myvar
   std::string trigger = "immediate";
   std::string pretrigger = "0";
@@ -81,6 +83,24 @@ bool parse_schedule(const RunOptions& o, std::vector<Scheduled>& out) {
     out.push_back(e);
   }
   std::stable_sort(out.begin(), out.end(), [](const Scheduled& a, const Scheduled& b) { return a.at_us < b.at_us; });
+  return true;
+}
+
+// --switch N=FROM:TO: input N is high while the motor lies in [FROM, TO] counts, as the
+// transcripts' `switch` directive places a home or limit cam (docs/transcripts.md).
+bool place_switches(const RunOptions& o, controller::Controller& drive) {
+  for (const std::string& s : o.switches) {
+    int n = 0;
+    double from = 0.0, to = 0.0;
+    char tail = 0;
+    if (std::sscanf(s.c_str(), "%d=%lf:%lf%c", &n, &from, &to, &tail) != 3 || n < 1 || n > 6 ||
+        !std::isfinite(from) || !std::isfinite(to) || !(from <= to)) {
+      fmt::print(stderr, "uprog run: --switch {}: expected N=FROM:TO, N 1..6, FROM <= TO in motor "
+                 "counts, e.g. 5=40000:42000\n", s);
+      return false;
+    }
+    drive.axis().place_position_switch(n, from, to);
+  }
   return true;
 }
 
@@ -191,6 +211,7 @@ int run(const RunOptions& o) {
   }
 
   controller::Controller drive(copts);
+  if (!place_switches(o, drive)) return 2;
   std::vector<Diagnostic> diagnostics;
   const bool compiled = drive.download_source_file(o.file, diagnostics);
   if (!diagnostics.empty()) fmt::print(stderr, "{}", format_text(diagnostics));
@@ -270,6 +291,8 @@ void add_run(Options& cmd, Action& action) {
   add_drive_shape_options(cmd, o->shape);
   cmd.option("--budget", o->budget, "source lines per servo cycle, or 'unlimited' (default 1)");
   cmd.option("--input", o->inputs, "N=LEVEL@TIME: set digital input N at TIME");
+  cmd.option("--switch", o->switches,
+                  "N=FROM:TO: input N is high while the motor lies in [FROM, TO] counts (a cam)");
   cmd.option("--fault", o->faults, "NAME@TIME: latch a drive fault at TIME");
   cmd.option("--record", o->record, "comma-separated channels for the drive's recorder: signals and globals (PX,VX,myvar)");
   cmd.option("--trigger", o->trigger,

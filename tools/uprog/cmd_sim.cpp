@@ -16,6 +16,7 @@
 #include "transport/controller_service.h"
 #include "transport/pacer.h"
 #include "transport/pty_server.h"
+#include "transport/udp_server.h"
 #include "transport/tcp_server.h"
 #include "sim_debugger.h"
 
@@ -26,6 +27,7 @@ namespace {
 struct SimOptions {
   std::string listen;
   bool pty = false;
+  std::string udp;  // HOST:PORT of the UDP port, empty for none
   std::string state_dir;
   std::string program;
   std::string dialect;
@@ -91,7 +93,7 @@ int run_sim(const SimOptions& options) {
   namespace asio = boost::asio;
   asio::ip::tcp::endpoint endpoint;
   std::string error;
-  const bool listen = !options.listen.empty() || !options.pty;
+  const bool listen = !options.listen.empty() || (!options.pty && options.udp.empty());
   if (listen && !transport::parse_endpoint(options.listen.empty() ? "127.0.0.1:5025" : options.listen,
                                            endpoint, error)) {
     fmt::print(stderr, "uprog sim: {}\n", error);
@@ -116,8 +118,14 @@ int run_sim(const SimOptions& options) {
     fmt::print(stderr, "uprog sim: --dap: {}\n", error);
     return 2;
   }
+  asio::ip::udp::endpoint udp_endpoint;
+  if (!options.udp.empty() && !transport::parse_udp_endpoint(options.udp, udp_endpoint, error)) {
+    fmt::print(stderr, "uprog sim: --udp: {}\n", error);
+    return 2;
+  }
   asio::io_context io;
   std::unique_ptr<transport::TcpServer> tcp;
+  std::unique_ptr<transport::UdpServer> udp;
   std::unique_ptr<transport::PtyServer> pty;
   std::unique_ptr<SimDebugger> debugger;
   try {
@@ -126,6 +134,13 @@ int run_sim(const SimOptions& options) {
       const auto where = tcp->local_endpoint();
       const auto address = where.address().to_string();
       fmt::print("listening on tcp {}:{}\n",
+                 where.address().is_v6() ? "[" + address + "]" : address, where.port());
+    }
+    if (!options.udp.empty()) {
+      udp = std::make_unique<transport::UdpServer>(io, service, udp_endpoint);
+      const auto where = udp->local_endpoint();
+      const auto address = where.address().to_string();
+      fmt::print("listening on udp {}:{}\n",
                  where.address().is_v6() ? "[" + address + "]" : address, where.port());
     }
     if (options.pty) {
@@ -152,6 +167,7 @@ int run_sim(const SimOptions& options) {
     if (ec) return;
     pacer.stop();
     if (tcp) tcp->stop();
+    if (udp) udp->stop();
     if (pty) pty->stop();
     if (debugger) debugger->stop();
     io.stop();
@@ -167,6 +183,9 @@ void add_sim(Options& cmd, Action& action) {
   cmd.option("--listen", options->listen,
                   "HOST:PORT to listen on (default 127.0.0.1:5025; port 0 picks a free one)");
   cmd.flag("--pty", options->pty, "also open a pseudo-terminal and print its path");
+  cmd.option("--udp", options->udp,
+                  "HOST:PORT of a UDP port too: one command per datagram, one reply datagram "
+                  "(Elmo drives use 5001; port 0 picks a free one)");
   cmd.option("--state", options->state_dir, "folder for the stored program and parameters");
   cmd.option("--program", options->program, "source or stored form (.upi) to download and load");
   add_dialect_option(cmd, options->dialect);

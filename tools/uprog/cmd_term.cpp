@@ -84,7 +84,8 @@ int run_term(const TermOptions& options) {
 
 void add_term(Options& cmd, Action& action) {
   auto options = std::make_shared<TermOptions>();
-  cmd.option("ADDRESS", options->address, "HOST:PORT of the drive (uprog sim prints it)")
+  cmd.option("ADDRESS", options->address,
+                  "HOST:PORT of the drive (uprog sim prints it); udp:HOST:PORT over UDP")
       .required();
   add_dialect_option(cmd, options->dialect);
   cmd.option("--timeout", options->timeout_s, "seconds to wait for a line's answers (default 5)");

@@ -437,6 +437,13 @@ class Checker {
         if (rhs.ref == RefKind::Function) call(rhs, n);
         else if (n > 1 && rhs.ref != RefKind::Unresolved) error(Error::SidesMismatch, rhs.offset);
         else value(rhs);
+      } else if (rhs.kind == ExprKind::Unary && rhs.op == Tok::Minus &&
+                 rhs.lhs->kind == ExprKind::Ref && rhs.lhs->has_parens) {
+        value(rhs);  // "[a, b] = -func(c)": a minus before a call of several outputs is 34
+        const Expr& x = *rhs.lhs;
+        const bool several = x.ref == RefKind::Function &&
+                             syms_.functions[static_cast<size_t>(x.slot)].outputs > 1;
+        if (!several && n > 1) error(Error::SidesMismatch, start_of(rhs));
       } else {
         const Expr* left = &rhs;
         while (left->kind == ExprKind::Binary) left = left->lhs;
@@ -606,8 +613,8 @@ class Checker {
       return;
     }
     if (c.flags & kIndexed) {
-      if (!e.has_index) error(Error::BadIndexExpression, e.offset, e.name);
-      else value(*e.args[0]);
+      if (e.has_index) value(*e.args[0]);
+      else if (!(c.flags & kIndexOptional)) error(Error::BadIndexExpression, e.offset, e.name);
     } else if (e.has_index) {
       error(Error::VariableIsNotArray, e.offset, e.name);
     }

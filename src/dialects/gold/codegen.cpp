@@ -242,7 +242,31 @@ class Gen {
     }
     static constexpr Op kInt[6] = {Op::EQI, Op::NEI, Op::LTI, Op::LEI, Op::GTI, Op::GEI};
     static constexpr Op kFloat[6] = {Op::EQF, Op::NEF, Op::LTF, Op::LEF, Op::GTF, Op::GEF};
-    emit(k == Kind::Int ? kInt[how] : kFloat[how]);
+    if (k == Kind::Float && how <= 1) float_equality(how == 0);
+    else emit(k == Kind::Int ? kInt[how] : kFloat[how]);
+  }
+
+  // Float == (or !=) at the manual's precision (1.3.2: 25000.001 == 25000 is true, 25000.01 ==
+  // 25000 false; 2.11.1, 2.11.3: 4 digits after the point compare fine): the two floats on the
+  // stack are equal when |a - b| <= 1e-7 * (|a| + |b| + 1) (docs/dialects/gold.md, decision 41).
+  void float_equality(bool equal) {
+    const uint32_t b = temp(ValueType::Float), a = temp(ValueType::Float);
+    emit(Op::STL, b);
+    emit(Op::STL, a);
+    emit(Op::LDL, a);
+    emit(Op::LDL, b);
+    emit(Op::SUBF);
+    emit(Op::ABSF);
+    emit(Op::LDL, a);
+    emit(Op::ABSF);
+    emit(Op::LDL, b);
+    emit(Op::ABSF);
+    emit(Op::ADDF);
+    push_float(1.0f);
+    emit(Op::ADDF);
+    push_float(1e-7f);
+    emit(Op::MULF);
+    emit(equal ? Op::LEF : Op::GTF);
   }
 
   // A variable's index as an int; a scalar indexed [0] needs none.
@@ -694,7 +718,8 @@ class Gen {
       const StoreHow how = store_prefix(var);
       value(var);
       if (step_slot >= 0) emit(Op::LDL, static_cast<uint32_t>(step_slot));
-      else push_int(1);
+      else if (k == Kind::Int) push_int(1);
+      else push_float(1.0f);  // the implied step of a float variable is 1.0, not int bits (2.12.2)
       emit(k == Kind::Int ? Op::ADDI : Op::ADDF);
       store(var, how);
     }
@@ -732,7 +757,8 @@ class Gen {
         convert(sk, k);
         value(*c.value, k);
         if (k == Kind::Dynamic) emit(Op::CMPD, 0);
-        else emit(k == Kind::Int ? Op::EQI : Op::EQF);
+        else if (k == Kind::Int) emit(Op::EQI);
+        else float_equality(true);
         cb_.emit_to(Op::JZ, next_case);
         emit(Op::EOL);
       }

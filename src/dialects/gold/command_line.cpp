@@ -3,6 +3,7 @@
 // the loaded program's globals (copied in before, and back after).
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <optional>
 
 #include "dialects/gold/firmware.h"
@@ -188,6 +189,14 @@ void Firmware::run_line(const std::string& text, std::vector<Answer>& answers) {
       Value tag;
       m.read_global(static_cast<uint32_t>(v.tag_global), 0, tag);
       is_float = tag.i == 1;
+    }
+    if (is_float && !(std::fabs(value.f) < 1e37f)) {
+      // 1.3.2: "If a floating-point number exceeds the floating-point range, it is also
+      // interpreted as an error" (-1e37 < N < 1e37): 1e36*100 is not shown as inf.
+      const vm::RunError overflow = vm::RunError::Overflow;
+      answers.push_back(error_answer(kErrorRunTimeBase + static_cast<int32_t>(overflow),
+                                     vm::run_error_text(overflow)));
+      continue;
     }
     answers.push_back(Answer{is_float ? format_gold_float(value.f) : format_gold_int(value.i), 0});
   }

@@ -37,7 +37,7 @@ constexpr std::array kCommands{
     CommandInfo{"AC", 7, kI, 0, 0, 0, 1, kIntMax, "acceleration, counts/s^2"},
     CommandInfo{"DC", 8, kI, 0, 0, 0, 1, kIntMax, "deceleration, counts/s^2"},
     CommandInfo{"SD", 9, kI, 0, 0, 0, 1, kIntMax, "stop deceleration (limits, hard stop), counts/s^2"},
-    CommandInfo{"SF", 10, kI, 0, 0, 0, 0, 500, "smoothing (jerk limit) time, ms; 0 = trapezoid"},
+    CommandInfo{"SF", 10, kI, kIx | kIndexOptional, 1, 2, 0, 500, "smoothing: [1] (or SF) jerk-limit time, ms, 0 = trapezoid; [2] stored"},
     CommandInfo{"JV", 11, kI, 0, 0, 0, kIntMin, kIntMax, "jog velocity, counts/s"},
     CommandInfo{"BG", 12, kI, kAct, 0, 0, 0, 0, "begin the motion defined by PA, PR or JV"},
     CommandInfo{"ST", 13, kI, kAct, 0, 0, 0, 0, "stop: decelerate with SD"},
@@ -46,7 +46,7 @@ constexpr std::array kCommands{
     CommandInfo{"VX", 16, kI, kR, 0, 0, kIntMin, kIntMax, "main velocity feedback, counts/s"},
     CommandInfo{"PE", 17, kI, kR, 0, 0, kIntMin, kIntMax, "position error (reference - feedback), counts"},
     CommandInfo{"DV", 18, kI, kR | kIx, 2, 3, kIntMin, kIntMax, "desired values: [2] velocity, [3] position"},
-    CommandInfo{"MS", 19, kI, kR, 0, 0, 0, 3, "motion status: 0 settled in TR, 1 stationary or off, 2 moving"},
+    CommandInfo{"MS", 19, kI, kR, 0, 0, 0, 3, "motion status: 0 settled in TR, 1 stationary, 2 moving, 3 motor off"},
     CommandInfo{"ER", 20, kI, kIx, 2, 3, 1, kIntMax, "maximum error: [2] velocity, [3] position"},
     CommandInfo{"VH", 21, kI, kIx, 2, 3, kIntMin, kIntMax, "high limits: [2] velocity, [3] position"},
     CommandInfo{"VL", 22, kI, kIx, 2, 3, kIntMin, kIntMax, "low limits: [2] velocity, [3] position"},
@@ -88,7 +88,7 @@ constexpr std::array kCommands{
     CommandInfo{"RR", 56, kI, 0, 0, 0, -1, 3, "recorder: -1 invalidate, 0 kill, 1 on BG, 2 now, 3 on RP's trigger; reads its status"},
     // From the Elmo reference (docs/dialects/gold.md)
     CommandInfo{"HM", 57, kI, kIx, 1, 7, kIntMin, kIntMax, "homing: [1] arm, [2] value, [3] event, [4] action, [5] PX, [6] output, [7] capture"},
-    CommandInfo{"CA", 58, kI, kIx | kMotorOffOnly, 1, 50, kIntMin, kIntMax, "commutation and feedback set-up; CA[18] counts per revolution"},
+    CommandInfo{"CA", 58, kI, kIx | kMotorOffOnly, 1, 57, kIntMin, kIntMax, "commutation and feedback set-up; CA[18] counts per revolution"},
     CommandInfo{"QP", 59, kI, kIx, 1, 1024, kIntMin, kIntMax, "PT motion: position table"},
     CommandInfo{"TR", 60, kI, kIx, 1, 2, 0, 32000, "target: [1] radius, counts; [2] time, ms (MS=0)"},
     CommandInfo{"TI", 61, kI, kR | kIx, 1, 2, kIntMin, kIntMax, "temperature indications, degrees C"},
@@ -110,6 +110,15 @@ constexpr std::array kCommands{
     CommandInfo{"RP", 77, kI, kIx, 0, 9, kIntMin, kIntMax, "recorder: [0] quantum, [1] trigger signal, [2] pre-trigger %, [3] trigger type, [4] [5] levels, [6] [7] input polarity and mask, [8] [9] upload range"},
     CommandInfo{"WI", 78, kI, kR | kIx, 21, 21, kIntMin, kIntMax, "WI[21]: samples per signal the recorder holds"},
     CommandInfo{"BH", 79, kI, kHostAct, 0, 0, 0, 0, "BH=n: upload the recorded signal RC&n, hexadecimal (command_line.cpp)"},
+    // What a Gold host's preflight reads (issue 38; docs/dialects/gold.md, "Preflight")
+    CommandInfo{"RM", 80, kI, kMotorOffOnly, 0, 0, 0, 1, "reference mode: 0 none, 1 external (SR bit 5)"},
+    CommandInfo{"ID", 81, kF, kR, 0, 0, -1e6, 1e6, "reactive current, A (0: the motor model has none)"},
+    CommandInfo{"FC", 82, kI, kIx | kMotorOffOnly, 1, 12, kIntMin, kIntMax, "feedback and gear configuration; 1 = unity"},
+    CommandInfo{"BP", 83, kI, kIx, 1, 2, 0, 32000, "brake delays, ms: [1] engage, [2] release (stored)"},
+    CommandInfo{"SC", 84, kI, kIx, 1, 16, kIntMin, kIntMax, "system configuration words (stored)"},
+    CommandInfo{"FS", 85, kI, 0, 0, 0, kIntMin, kIntMax, "final speed of a point-to-point move, counts/s (stored)"},
+    CommandInfo{"OV", 86, kI, kR | kIx, 2, 2, 0, 3, "OV[2]: the motion BG began: 0 none, 1 PTP, 2 PT, 3 jog"},
+    CommandInfo{"LC", 87, kI, kR, 0, 0, 0, 1, "current limit: 1 limited to CL[1], 0 PL[1] or motor off"},
 };
 
 // find_command(id) indexes the table directly: row i must hold id i + 1.

@@ -17,6 +17,7 @@ enum CommandFlag : uint32_t {
   kAction = 1u << 4,         // executed, not read or written (BG, ST, SV, LD, RS, ...)
   kIndexed = 1u << 5,        // takes an index: UI[3], IL[2]
   kText = 1u << 6,           // answers text, not a number (VR): DriveCommands::text()
+  kIndexOptional = 1u << 7,  // kIndexed, and without an index it is its first (SF is SF[1])
 };
 
 struct CommandInfo {

@@ -6,6 +6,7 @@
 
 #include <sys/stat.h>
 
+#include "bytecode/image.h"
 #include "bytecode/peephole.h"
 
 #include "dialects/gold/lexer.h"
@@ -80,6 +81,10 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
     result.image.source_name = source.name;
     result.image.created_unix_s = options.created_unix_s;
     if (options.optimize && !options.check_only) bytecode::optimize(result.image);
+    if (options.max_program_bytes != 0 && !options.check_only) {
+      const size_t bytes = text.size() + bytecode::encode(result.image).size();
+      if (bytes > options.max_program_bytes) reporter.error(Error::ProgramIsTooLong, 0);
+    }
   }
   result.diagnostics = reporter.finish();
   attach_source_lines(result.diagnostics, source);

@@ -22,6 +22,10 @@ struct CompileOptions {
   // Diagnostics only (`uprog check`): the same diagnostics as a build, but no peephole pass,
   // no line table, and an empty image.
   bool check_only = false;
+  // Manual 2.17: "Maximum length of user program text and non-text: 64 Kilobytes (Code,
+  // symbols, variables)": the source text and the image's binary form together; beyond it a
+  // build is error 36. 0: no limit (benchmarks of large programs).
+  size_t max_program_bytes = 65536;
 };
 
 struct CompileResult {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "dialects/gold/homing_events.h"
 #include "drive/faults.h"
 #include "drive/parameters.h"
 
@@ -16,6 +17,7 @@ enum Id : uint16_t {
   KP, KI, KV, CL, PL, IL, IP, IB, OP, OB, MF, SR, TM, TS, UI, UF, SV, LD, RS, MI, XQ, HP, XC, KL,
   PS, CC, LS, EC, DB, RV, RL, RG, RR,
   HM, CA, QP, TR, TI, WS, EO, LL, HL, FP, FV, VR, SN, MP, PT, PY, PM, IQ, HX, RC, RP, WI, BH,
+  RM, ID, FC, BP, SC, FS, OV, LC,
 };
 
 bool from_reference(uint16_t id) { return id >= HM; }
@@ -24,7 +26,10 @@ bool from_reference(uint16_t id) { return id >= HM; }
 bool homing_value_in_range(int32_t index, int32_t v) {
   switch (index) {
     case 1: return v == 0 || v == 1;
-    case 3: return v >= 0 && v <= drive::kHomeTriggerMax;
+    case 3: {
+      drive::HomingSettings probe;
+      return set_home_event(v, probe);
+    }
     case 4: return v >= 0 && v <= drive::kHomeActionMax;
     case 5: return v >= 0 && v <= drive::kHomePositionSettingMax;
     case 6: return v >= 0 && v <= drive::kOutputCount;
@@ -49,6 +54,7 @@ int32_t check(uint16_t id, int32_t index, const CommandInfo*& info) {
   if (info == nullptr) return kErrorBadCommand;
   if (controller_command(id)) return kErrorNotHandledHere;
   if (info->flags & kIndexed) {
+    if (index == 0 && (info->flags & kIndexOptional)) return kDriveOk;  // SF is SF[1]
     if (index < info->min_index || index > info->max_index) return kErrorBadIndex;
   } else if (index != 0) {
     return kErrorBadIndex;
@@ -66,6 +72,17 @@ bool in_range(const CommandInfo& info, Value value) {
 }
 
 size_t slot(int32_t index) { return static_cast<size_t>(index - 1); }
+
+// OV[2]: the motion mode of the motion BG began (docs/dialects/gold.md, "Preflight").
+int32_t motion_mode(drive::Axis::MotionKind kind) {
+  switch (kind) {
+    case drive::Axis::MotionKind::kPointToPoint: return 1;
+    case drive::Axis::MotionKind::kPt: return 2;
+    case drive::Axis::MotionKind::kJog: return 3;
+    case drive::Axis::MotionKind::kNone: break;
+  }
+  return 0;
+}
 
 }  // namespace
 
@@ -102,7 +119,7 @@ int32_t DriveCommands::read(uint16_t id, int32_t index, Value& out) {
     case AC: return i(p.accel_counts_per_s2);
     case DC: return i(p.decel_counts_per_s2);
     case SD: return i(p.stop_decel_counts_per_s2);
-    case SF: return i(p.smoothing_ms);
+    case SF: return i(index == 2 ? p.smoothing2_ms : p.smoothing_ms);
     case JV: return i(p.jog_velocity_counts_per_s);
     case TC: return f(axis_.torque_command());
     case PX: return i(axis_.position());
@@ -157,7 +174,7 @@ int32_t DriveCommands::write(uint16_t id, int32_t index, Value value) {
     case AC: p.accel_counts_per_s2 = v; break;
     case DC: p.decel_counts_per_s2 = v; break;
     case SD: p.stop_decel_counts_per_s2 = v; break;
-    case SF: p.smoothing_ms = v; break;
+    case SF: (index == 2 ? p.smoothing2_ms : p.smoothing_ms) = v; break;
     case JV: axis_.set_jog_velocity(v); break;
     case TC: axis_.set_torque_command(value.f); break;
     case PX: axis_.set_position(v); break;
@@ -206,7 +223,7 @@ int32_t DriveCommands::read_reference(uint16_t id, int32_t index, Value& out) {
       switch (index) {
         case 1: return i(axis_.homing_armed() ? 1 : 0);
         case 2: return i(h.home_value_counts);
-        case 3: return i(static_cast<int32_t>(h.trigger));
+        case 3: return i(home_event_code(h));
         case 4: return i(static_cast<int32_t>(h.action));
         case 5: return i(static_cast<int32_t>(h.setting));
         case 6: return i(h.output);
@@ -246,6 +263,14 @@ int32_t DriveCommands::read_reference(uint16_t id, int32_t index, Value& out) {
     case PM: return i(p.profiler_mode);
     case IQ: out = Value::of_float(static_cast<float>(axis_.motor_state().current_a)); return kDriveOk;
     case HX: return i(hex_);
+    case RM: return i(p.reference_mode);
+    case ID: out = Value::of_float(0.0f); return kDriveOk;  // the motor model has no d axis
+    case FC: return i(p.feedback_config[slot(index)]);
+    case BP: return i(p.brake_delay_ms[slot(index)]);
+    case SC: return i(p.stop_config[slot(index)]);
+    case FS: return i(p.final_speed_counts_per_s);
+    case OV: return i(motion_mode(axis_.motion_kind()));
+    case LC: return i((axis_.status_register() & drive::kSrCurrentLimited) != 0 ? 1 : 0);
     default: return kErrorBadCommand;
   }
 }
@@ -261,7 +286,7 @@ int32_t DriveCommands::write_reference(uint16_t id, int32_t index, Value value) 
       switch (index) {
         case 1: axis_.arm_homing(v == 1); break;
         case 2: h.home_value_counts = v; break;
-        case 3: h.trigger = static_cast<drive::HomeTrigger>(v); break;
+        case 3: set_home_event(v, h); break;
         case 4: h.action = static_cast<drive::HomeAction>(v); break;
         case 5: h.setting = static_cast<drive::HomePositionSetting>(v); break;
         default: h.output = v; break;
@@ -298,6 +323,11 @@ int32_t DriveCommands::write_reference(uint16_t id, int32_t index, Value value) 
     case PY: axis_.set_aux_position(v); return kDriveOk;
     case PM: p.profiler_mode = v; return kDriveOk;
     case HX: hex_ = v; return kDriveOk;
+    case RM: p.reference_mode = v; return kDriveOk;
+    case FC: p.feedback_config[slot(index)] = v; return kDriveOk;
+    case BP: p.brake_delay_ms[slot(index)] = v; return kDriveOk;
+    case SC: p.stop_config[slot(index)] = v; return kDriveOk;
+    case FS: p.final_speed_counts_per_s = v; return kDriveOk;
     default: return kErrorBadCommand;
   }
 }

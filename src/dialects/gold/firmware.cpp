@@ -6,6 +6,7 @@
 #include <fmt/core.h>
 
 #include "dialects/gold/commands.h"
+#include "dialects/gold/recorder_signals.h"
 #include "drive/axis.h"
 #include "vm/run_error.h"
 
@@ -95,8 +96,21 @@ dialect::DownloadResult Firmware::download(const std::vector<uint8_t>& bytes) {
     return r;
   }
   stored_ = bytes;
+  forget_recorder_variables();
   log("program downloaded (" + std::to_string(bytes.size()) + " bytes)");
   return r;
+}
+
+// Manual 2.16: "The command DB##RV[N]=varname is needed after each user program download": a
+// new program's variables are not the old one's, so every RV[n] that named one records nothing.
+void Firmware::forget_recorder_variables() {
+  const uint16_t rv = find_command("RV")->id;
+  RecorderCommands& recorder = drive_commands_->recorder();
+  for (int32_t n = 1; n <= static_cast<int32_t>(kRecorderSlots); ++n) {
+    Value signal;
+    if (recorder.read(rv, n, signal) == 0 && signal.i == kRecorderVariableSignal)
+      (void)recorder.write(rv, n, Value::of_int(0));
+  }
 }
 
 void Firmware::unload() {

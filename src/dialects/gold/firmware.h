@@ -72,6 +72,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   dialect::DownloadResult verify(const std::vector<uint8_t>& bytes);
   int32_t load_stored(std::string* error);  // CC
   void unload();
+  void forget_recorder_variables();  // 2.16: DB##RV[n] mappings end with a download
   int32_t start_program(uint32_t routine, const Value* args, uint32_t n);
   int32_t execute_program(std::string_view name, const std::vector<double>& args);
   int32_t program_status() const;

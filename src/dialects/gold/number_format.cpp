@@ -2,6 +2,7 @@
 // does not reproduce are listed there.
 #include "dialects/gold/number_format.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -31,7 +32,11 @@ std::string format_gold_float(float value) {
   if (v == std::floor(v)) {
     std::snprintf(buffer, sizeof buffer, "%.1f", v);
   } else {
-    std::snprintf(buffer, sizeof buffer, "%.6f", v);
+    // Six decimals, but no more than 7 significant digits (1.3.2: "123.45678 becomes 123.4568",
+    // "2321.66458 becomes 2321.665"; 1.7: abs(-123.54) "is 123.5400").
+    const int integer_digits = magnitude < 1.0 ? 0 : static_cast<int>(std::log10(magnitude)) + 1;
+    const int decimals = std::clamp(7 - integer_digits, 1, 6);
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, v);
   }
   return buffer;
 }

@@ -349,6 +349,12 @@ StmtPtr Parser::statement() {
       return nullptr;
     default: break;
   }
+  // XQ##name in a program (the spec's program command, "start the program at a function, label
+  // or auto-routine"): the stack is cleared and the program goes on there, as reset does
+  // (docs/dialects/gold.md, decision 45).
+  if (t.kind == Tok::Ident && text(t).size() == 2 && (text(t)[0] | 0x20) == 'x' &&
+      (text(t)[1] | 0x20) == 'q' && peek(1).kind == Tok::Label)
+    return goto_or_reset(false);
   return simple_statement();
 }
 
@@ -719,6 +725,10 @@ void Parser::function_definition(Program& p, FunctionBodySink* on_body) {
       ok = false;
     }
     if (ok) next();
+  } else if ((at_kw(Keyword::Int) || at_kw(Keyword::Float)) && peek(1).kind == Tok::LParen) {
+    error(Error::NameIsKeyword, peek().offset, text(peek()));  // "function int()": error 24
+    skip_line();
+    ok = false;
   } else if (at_kw(Keyword::Int) || at_kw(Keyword::Float)) {
     VarType type;
     type_keyword(type);
