@@ -30,13 +30,14 @@ using testing::TestClient;
 constexpr int kKills = 50;
 constexpr int kUserVariables = 24;
 
-// Two programs of about 64 KB each (some 260 DL lines), so that a kill often lands mid-transfer.
+// Two programs of 1000 lines each, within the 64 KB program limit (manual 2.17), so that a kill
+// often lands mid-transfer.
 std::vector<uint8_t> program_image(int which) {
   const std::string g = which == 0 ? "ga" : "gb";
   SourceFile source;
   source.name = which == 0 ? "a.ehl" : "b.ehl";
   source.text = "int " + g + ";\nfunction main()\n";
-  for (int k = 0; k < 2000; ++k) {
+  for (int k = 0; k < 1000; ++k) {
     source.text += "  " + g + " = " + g + " + " + std::to_string(k * (which == 0 ? 7 : 11) + 3) + "\n";
   }
   source.text += "return\n";

@@ -44,12 +44,18 @@ struct SimOptions {
 // reasons printed.
 bool install_program(controller::Controller& drive, const SimOptions& options) {
   const std::string& path = options.program;
-  // A source is compiled here, so that its diagnostics come before anything is stored (ST's
-  // stored form is its source: it is checked too).
-  const auto sources = drive.dialect().source_extensions();
-  const bool source = std::any_of(sources.begin(), sources.end(),
-                                  [&](std::string_view ext) { return path.ends_with(ext); });
-  if (!source && path.ends_with(drive.dialect().stored_extension())) {
+  if (path.ends_with(drive.dialect().stored_extension())) {
+    // A stored form that is also source text (ST's macro, PUP's hand-written CUP) is checked
+    // first, so that its diagnostics come before anything is stored.
+    const auto sources = drive.dialect().source_extensions();
+    if (std::any_of(sources.begin(), sources.end(),
+                    [&](std::string_view ext) { return path.ends_with(ext); })) {
+      dialect::CompileSettings check;
+      check.check_only = true;
+      const dialect::CompileOutput checked = drive.dialect().compile_file(path, check);
+      fmt::print(stderr, "{}", format_text(checked.diagnostics));
+      if (!checked.ok()) return false;
+    }
     std::string error;
     const auto bytes = read_binary_file(path, &error);
     if (!bytes) {
