@@ -23,7 +23,8 @@ constexpr const char* kProgram =
 
 const std::vector<uint8_t>& program_image() {
   static const std::vector<uint8_t> bytes = [] {
-    const uprog::gold::CompileResult r = uprog::gold::compile(uprog::SourceFile{"fuzz.ehl", kProgram});
+    const uprog::gold::CompileResult r =
+        uprog::gold::compile(uprog::SourceFile{"fuzz.ehl", kProgram});
     if (!r.ok()) abort();
     return uprog::bytecode::encode(r.image);
   }();

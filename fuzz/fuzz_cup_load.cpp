@@ -29,7 +29,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   bytecode::ImageView view;
   if (bytecode::load_image(image.data(), image.size(), view) != bytecode::LoadError::Ok) abort();
   std::vector<uint32_t> scratch(bytecode::verify_scratch_size(view) / 4 + 1);
-  if (!bytecode::verify(view, bytecode::VerifyLimits{}, scratch.data(), scratch.size() * 4).ok()) abort();
+  if (!bytecode::verify(view, bytecode::VerifyLimits{}, scratch.data(), scratch.size() * 4).ok())
+    abort();
   // The image alone, in slices of many lines too, which take the loader's fused copies.
   if (!fuzz::load_and_run(image.data(), image.size()).ok()) abort();
   // Run it: stored through the firmware's own download, every task on a thread of its own.

@@ -19,7 +19,8 @@ class FuzzHost final : public vm::Host {
     ++now;
     return (command + static_cast<uint32_t>(index) + value.bits) % 13 == 5 ? 33 : vm::kCommandOk;
   }
-  vm::CommandStatus execute(uint32_t command, int32_t index, const Value*, uint32_t arg_count) override {
+  vm::CommandStatus execute(uint32_t command, int32_t index, const Value*,
+                            uint32_t arg_count) override {
     ++now;
     if ((command + arg_count) % 7 == 3) return 19;
     return static_cast<uint32_t>(index) % 5 == 4 ? vm::kCommandEndSlice : vm::kCommandOk;

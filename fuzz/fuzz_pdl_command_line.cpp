@@ -19,12 +19,14 @@ constexpr const char* kProgram =
     "#long counter, arr[4], *p\n#short sh\n#float fl\n#long _ro fixed\n#long _lp(2,3) guarded\n"
     "proc bump(long by, long * where) do\n  *where = *where + by;\nend;\n"
     "#task/1;\nloop (0) do\n  counter++;\n  bump(2, &arr[1]);\nend;\n"
-    "_run:\n  printl/103(\"c=%d f=%g \", counter, fl);\n  p = &arr;\n  *p[sh] = 5;\n  retprintl(\"done\");\n"
+    "_run:\n  printl/103(\"c=%d f=%g \", counter, fl);\n  p = &arr;\n  *p[sh] = 5;\n  "
+    "retprintl(\"done\");\n"
     "_spin:\n  sleep 1;\n  goto _spin;\n";
 
 const std::vector<uint8_t>& program_image() {
   static const std::vector<uint8_t> bytes = [] {
-    const uprog::pdl::CompileResult r = uprog::pdl::compile(uprog::SourceFile{"fuzz.pdl", kProgram});
+    const uprog::pdl::CompileResult r =
+        uprog::pdl::compile(uprog::SourceFile{"fuzz.pdl", kProgram});
     if (!r.ok()) abort();
     return uprog::bytecode::encode(r.image);
   }();

@@ -29,6 +29,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   bytecode::ImageView view;
   if (bytecode::load_image(bytes.data(), bytes.size(), view) != bytecode::LoadError::Ok) abort();
   std::vector<uint32_t> scratch(bytecode::verify_scratch_size(view) / 4 + 1);
-  if (!bytecode::verify(view, bytecode::VerifyLimits{}, scratch.data(), scratch.size() * 4).ok()) abort();
+  if (!bytecode::verify(view, bytecode::VerifyLimits{}, scratch.data(), scratch.size() * 4).ok())
+    abort();
   return 0;
 }

@@ -18,7 +18,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     return 0;
   }
   const std::string first = uprog::drive::write_recording_csv(*r);
-  const std::optional<uprog::drive::Recording> again = uprog::drive::read_recording_csv(first, &error);
+  const std::optional<uprog::drive::Recording> again =
+      uprog::drive::read_recording_csv(first, &error);
   if (!again || uprog::drive::write_recording_csv(*again) != first) std::abort();
   return 0;
 }

@@ -17,7 +17,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::string directive, duration;
     words >> directive >> duration;
     uint64_t us = 0;
-    if (directive == "wait" && transcript::parse_duration_us(duration, us) && us > 2'000'000) return 0;
+    if (directive == "wait" && transcript::parse_duration_us(duration, us) && us > 2'000'000)
+      return 0;
   }
   (void)transcript::run_transcript_text(text, "fuzz.txt", UPROG_FUZZ_EXAMPLES_DIR);
   return 0;

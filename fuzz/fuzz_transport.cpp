@@ -1,7 +1,7 @@
-// libFuzzer target: the wire protocol's framing (src/dialect, src/transport). The host's bytes go through a
-// LineFramer in one piece and in chunks the input chooses, which must give the same frames, and
-// through a HostSession whose service echoes each line; the drive's answers go back through the
-// host's EchoFilter and AnswerReader. Memory must stay bounded by the line limit.
+// libFuzzer target: the wire protocol's framing (src/dialect, src/transport). The host's bytes go
+// through a LineFramer in one piece and in chunks the input chooses, which must give the same
+// frames, and through a HostSession whose service echoes each line; the drive's answers go back
+// through the host's EchoFilter and AnswerReader. Memory must stay bounded by the line limit.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -22,10 +22,14 @@ class EchoingWire final : public uprog::dialect::WireForm {
  public:
   EchoingWire(uprog::dialect::FramerOptions options, bool echo) : plain_(options), echo_(echo) {}
   uprog::dialect::FramerOptions framing() const override { return plain_.framing(); }
-  void write_answer(const uprog::dialect::Answer& a, std::string& out) const override { plain_.write_answer(a, out); }
+  void write_answer(const uprog::dialect::Answer& a, std::string& out) const override {
+    plain_.write_answer(a, out);
+  }
   void write_silent_line(std::string& out) const override { plain_.write_silent_line(out); }
   void write_line_end(std::string& out) const override { plain_.write_line_end(out); }
-  void write_output(std::string_view text, std::string& out) const override { plain_.write_output(text, out); }
+  void write_output(std::string_view text, std::string& out) const override {
+    plain_.write_output(text, out);
+  }
   void write_echo(std::string_view bytes, std::string& out) const override { out += bytes; }
   bool echoes() const override { return echo_; }
 
@@ -81,14 +85,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   EchoService service(options, echo);
   HostSession session(service);
   std::string wire;
-  for (size_t at = 0; at < bytes.size(); at += chunk) session.receive(bytes.substr(at, chunk), wire);
+  for (size_t at = 0; at < bytes.size(); at += chunk)
+    session.receive(bytes.substr(at, chunk), wire);
   session.disconnect();
 
   // The host takes what would be the echo out, in the same chunks; it never adds a byte.
   EchoFilter filter;
   filter.expect(bytes, ";\r\n");
   std::string answers;
-  for (size_t at = 0; at < wire.size(); at += chunk) filter.feed(std::string_view(wire).substr(at, chunk), answers);
+  for (size_t at = 0; at < wire.size(); at += chunk)
+    filter.feed(std::string_view(wire).substr(at, chunk), answers);
   if (answers.size() > wire.size()) abort();
 
   AnswerReader reader;

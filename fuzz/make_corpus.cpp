@@ -22,7 +22,8 @@ std::vector<fs::path> files_in(const fs::path& dir, const std::string& ext) {
   std::vector<fs::path> out;
   if (!fs::is_directory(dir)) return out;
   for (const auto& e : fs::recursive_directory_iterator(dir))
-    if (e.is_regular_file() && (ext.empty() || e.path().extension() == ext)) out.push_back(e.path());
+    if (e.is_regular_file() && (ext.empty() || e.path().extension() == ext))
+      out.push_back(e.path());
   return out;
 }
 
@@ -104,9 +105,10 @@ int main(int argc, char** argv) {
         uprog::gold::compile(uprog::SourceFile{p.filename().string(), read(p)});
     if (r.ok()) image.add(as_string(uprog::bytecode::encode(r.image)));
   }
-  std::printf("seeds: fuzz_preproc %zu, fuzz_gold_compile %zu, fuzz_gold_line %zu, fuzz_image %zu, "
-              "fuzz_command_line %zu, fuzz_transcript %zu, fuzz_transport %zu\n", preproc.size(),
-              compile.size(), line.size(), image.size(), command_line.size(), transcript.size(),
-              transport.size());
+  std::printf(
+      "seeds: fuzz_preproc %zu, fuzz_gold_compile %zu, fuzz_gold_line %zu, fuzz_image %zu, "
+      "fuzz_command_line %zu, fuzz_transcript %zu, fuzz_transport %zu\n",
+      preproc.size(), compile.size(), line.size(), image.size(), command_line.size(),
+      transcript.size(), transport.size());
   return 0;
 }

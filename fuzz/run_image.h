@@ -30,8 +30,8 @@ inline vm::LoadStatus load_and_run(const uint8_t* bytes, size_t size) {
     return machine.load(bytes, size, config, memory, sizeof memory, host);
   }
   const size_t need = vm::Machine::memory_needed(view, config);
-  if (need > kMaxMachineMemory) return vm::LoadStatus{bytecode::LoadError::Ok,
-                                                       bytecode::VerifyError::Ok, 0, true};
+  if (need > kMaxMachineMemory)
+    return vm::LoadStatus{bytecode::LoadError::Ok, bytecode::VerifyError::Ok, 0, true};
   std::vector<uint64_t> memory(need / 8 + 1);
   FuzzHost host;
   vm::Machine machine;

@@ -12,8 +12,8 @@
 
 #include "bytecode/image.h"
 #include "controller/controller.h"
-#include "dialects/gold/dialect.h"
 #include "dialects/gold/compile.h"
+#include "dialects/gold/dialect.h"
 #include "drive/axis.h"
 #include "support/diagnostic.h"
 #include "support/source.h"
@@ -74,12 +74,14 @@ void report(benchmark::State& state, double wall_s, Controller& drive) {
 
 void BM_DriveProgram(benchmark::State& state) {
   Controller drive(gold_drive());  // no state dir, one line per servo cycle
-  const uprog::gold::CompileResult compiled = uprog::gold::compile(uprog::SourceFile{"drive_bench.ehl", kMotionProgram});
+  const uprog::gold::CompileResult compiled =
+      uprog::gold::compile(uprog::SourceFile{"drive_bench.ehl", kMotionProgram});
   if (!compiled.ok()) {
     state.SkipWithError(uprog::format_text(compiled.diagnostics).c_str());
     return;
   }
-  if (!drive.download(uprog::bytecode::encode(compiled.image)).ok || !drive.start_program("main").empty()) {
+  if (!drive.download(uprog::bytecode::encode(compiled.image)).ok ||
+      !drive.start_program("main").empty()) {
     state.SkipWithError("the program does not download or start");
     return;
   }
@@ -102,14 +104,16 @@ void BM_DriveProgram(benchmark::State& state) {
     }
     position = now;
   }
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   const int32_t moves = query_int(drive, "moves") - moves_before;
   // Each move of 40 000 counts takes well under 1 s: fewer moves than seconds means a stall.
   if (moves < static_cast<int64_t>(state.iterations())) {
     state.SkipWithError("the program made fewer moves than one per virtual second");
   }
   report(state, wall_s, drive);
-  state.counters["moves_per_virtual_s"] = static_cast<double>(moves) / static_cast<double>(state.iterations());
+  state.counters["moves_per_virtual_s"] =
+      static_cast<double>(moves) / static_cast<double>(state.iterations());
   state.counters["travel_counts"] = static_cast<double>(travel_counts);
 }
 BENCHMARK(BM_DriveProgram)->Unit(benchmark::kMillisecond);
@@ -126,7 +130,8 @@ void BM_DriveIdle(benchmark::State& state) {
   }
   const auto wall_start = std::chrono::steady_clock::now();
   for (auto _ : state) drive.advance(kVirtualPerIteration_us);
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   report(state, wall_s, drive);
 }
 BENCHMARK(BM_DriveIdle)->Unit(benchmark::kMillisecond);

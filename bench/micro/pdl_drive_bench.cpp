@@ -45,12 +45,14 @@ void BM_PdlDriveThreeTasks(benchmark::State& state) {
   uprog::controller::ControllerOptions o;
   o.dialect = &uprog::pdl::dialect();
   uprog::controller::Controller drive(o);
-  const uprog::pdl::CompileResult compiled = uprog::pdl::compile(uprog::SourceFile{"three_tasks.pdl", kThreeTasks});
+  const uprog::pdl::CompileResult compiled =
+      uprog::pdl::compile(uprog::SourceFile{"three_tasks.pdl", kThreeTasks});
   if (!compiled.ok()) {
     state.SkipWithError(uprog::format_text(compiled.diagnostics).c_str());
     return;
   }
-  if (!drive.download(uprog::bytecode::encode(compiled.image)).ok || !drive.start_program().empty()) {
+  if (!drive.download(uprog::bytecode::encode(compiled.image)).ok ||
+      !drive.start_program().empty()) {
     state.SkipWithError("the program does not download or start");
     return;
   }
@@ -62,7 +64,8 @@ void BM_PdlDriveThreeTasks(benchmark::State& state) {
   }
   const double virtual_s = static_cast<double>(state.iterations());
   state.counters["rt_factor_cpu"] = benchmark::Counter(virtual_s, benchmark::Counter::kIsRate);
-  state.counters["phases_per_s"] = benchmark::Counter(virtual_s * 20'000, benchmark::Counter::kIsRate);
+  state.counters["phases_per_s"] =
+      benchmark::Counter(virtual_s * 20'000, benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_PdlDriveThreeTasks)->Unit(benchmark::kMillisecond);
 

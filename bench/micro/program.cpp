@@ -37,8 +37,8 @@ std::string Program::load(bytecode::Image image) {
     return "the image does not load";
   const vm::MachineConfig config;
   memory_.assign(vm::Machine::memory_needed(view, config) / 8 + 1, 0);
-  const vm::LoadStatus st =
-      machine_.load(bytes_.data(), bytes_.size(), config, memory_.data(), memory_.size() * 8, host_);
+  const vm::LoadStatus st = machine_.load(bytes_.data(), bytes_.size(), config, memory_.data(),
+                                          memory_.size() * 8, host_);
   if (!st.ok()) return "the VM refuses the image";
   const int r = image_.find_routine("main");
   if (r < 0) return "no routine main";

@@ -18,7 +18,8 @@ void run_drive(benchmark::State& state, const char* file, double lines_per_virtu
   o.dialect = &uprog::pup::dialect();
   uprog::controller::Controller drive(o);
   std::vector<uprog::Diagnostic> diagnostics;
-  if (!drive.download_source_file(std::string(UPROG_SOURCE_DIR) + "/bench/pup/" + file, diagnostics) ||
+  if (!drive.download_source_file(std::string(UPROG_SOURCE_DIR) + "/bench/pup/" + file,
+                                  diagnostics) ||
       !drive.start_program().empty()) {
     state.SkipWithError("the program did not download or start");
     return;
@@ -32,7 +33,9 @@ void run_drive(benchmark::State& state, const char* file, double lines_per_virtu
 }
 
 // Eight threads, one line each in each of 20 000 cycles a virtual second.
-void BM_PupDriveEightThreads(benchmark::State& state) { run_drive(state, "eight_threads.pup", 8 * 20'000); }
+void BM_PupDriveEightThreads(benchmark::State& state) {
+  run_drive(state, "eight_threads.pup", 8 * 20'000);
+}
 void BM_PupDriveIdle(benchmark::State& state) { run_drive(state, "idle.pup", 0); }
 BENCHMARK(BM_PupDriveEightThreads)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PupDriveIdle)->Unit(benchmark::kMillisecond);

@@ -45,8 +45,10 @@ return
 )";
 
 // The program's run records one of its globals; the host's moves record the motion status.
-constexpr std::array<const char*, 8> kProgramChannels = {"PX", "VX", "PE", "DV[3]", "DV[2]", "DV[1]", "IQ", "moves"};
-constexpr std::array<const char*, 8> kHostChannels = {"PX", "VX", "PE", "DV[3]", "DV[2]", "DV[1]", "IQ", "MS"};
+constexpr std::array<const char*, 8> kProgramChannels = {"PX",    "VX",    "PE", "DV[3]",
+                                                         "DV[2]", "DV[1]", "IQ", "moves"};
+constexpr std::array<const char*, 8> kHostChannels = {"PX",    "VX",    "PE", "DV[3]",
+                                                      "DV[2]", "DV[1]", "IQ", "MS"};
 using ChannelNames = std::array<const char*, 8>;
 
 bool arm(Controller& drive, const ChannelNames& names, std::string& why) {
@@ -64,7 +66,8 @@ bool arm(Controller& drive, const ChannelNames& names, std::string& why) {
 // reports the real-time factor of the seconds alone (re-arming when the memory is full is not
 // timed).
 template <typename OneSecond>
-void measure_recording(benchmark::State& state, Controller& drive, const ChannelNames& names, OneSecond one_second) {
+void measure_recording(benchmark::State& state, Controller& drive, const ChannelNames& names,
+                       OneSecond one_second) {
   std::string why;
   if (!arm(drive, names, why)) {
     state.SkipWithError(why.c_str());
@@ -74,7 +77,8 @@ void measure_recording(benchmark::State& state, Controller& drive, const Channel
   double wall_s = 0;
   const uint64_t cycles_per_iteration = kVirtualPerIteration_us / drive.axis().period_us();
   for (auto _ : state) {
-    if (drive.recorder().samples_recorded() + cycles_per_iteration + 1 > drive.recorder().settings().length) {
+    if (drive.recorder().samples_recorded() + cycles_per_iteration + 1 >
+        drive.recorder().settings().length) {
       state.PauseTiming();  // the recording would fill up in this second: take the memory again
       if (!arm(drive, names, why)) state.SkipWithError(why.c_str());
       state.ResumeTiming();
@@ -98,14 +102,16 @@ void measure_recording(benchmark::State& state, Controller& drive, const Channel
 
 void BM_DriveProgramRecording8(benchmark::State& state) {
   Controller drive(uprog::controller::ControllerOptions{&uprog::gold::dialect(), {}, false, {}});
-  const uprog::gold::CompileResult compiled = uprog::gold::compile(uprog::SourceFile{"recorder_bench.ehl", kMoves});
+  const uprog::gold::CompileResult compiled =
+      uprog::gold::compile(uprog::SourceFile{"recorder_bench.ehl", kMoves});
   if (!compiled.ok() || !drive.download(uprog::bytecode::encode(compiled.image)).ok ||
       !drive.start_program("main").empty()) {
     state.SkipWithError("the program does not compile, download or start");
     return;
   }
   drive.advance(200'000);
-  measure_recording(state, drive, kProgramChannels, [&] { drive.advance(kVirtualPerIteration_us); });
+  measure_recording(state, drive, kProgramChannels,
+                    [&] { drive.advance(kVirtualPerIteration_us); });
 }
 BENCHMARK(BM_DriveProgramRecording8)->Unit(benchmark::kMillisecond);
 
@@ -114,7 +120,8 @@ BENCHMARK(BM_DriveProgramRecording8)->Unit(benchmark::kMillisecond);
 void BM_DriveMovesRecording8(benchmark::State& state) {
   Controller drive(uprog::controller::ControllerOptions{&uprog::gold::dialect(), {}, false, {}});
   drive.set_lines_take_time(false);  // each second is exactly its servo cycles, all recorded
-  for (const char* line : {"SP=200000", "AC=5000000", "DC=5000000", "UM=5", "MO=1"}) drive.send(line);
+  for (const char* line : {"SP=200000", "AC=5000000", "DC=5000000", "UM=5", "MO=1"})
+    drive.send(line);
   drive.advance(200'000);
   if (!drive.axis().servo_ready()) {
     state.SkipWithError("the servo is not ready 200 ms after MO=1");
@@ -129,7 +136,8 @@ void BM_DriveMovesRecording8(benchmark::State& state) {
       forward = !forward;
     }
   });
-  if (drive.axis().motion_status() != 0) state.SkipWithError("the last move did not settle in 200 ms");
+  if (drive.axis().motion_status() != 0)
+    state.SkipWithError("the last move did not settle in 200 ms");
 }
 BENCHMARK(BM_DriveMovesRecording8)->Unit(benchmark::kMillisecond);
 

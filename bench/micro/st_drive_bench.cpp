@@ -32,7 +32,8 @@ void run_drive(benchmark::State& state, bool with_main) {
   o.dialect = &uprog::st::dialect();
   uprog::controller::Controller drive(o);
   const std::string text = st_program(with_main);
-  if (!drive.download(std::vector<uint8_t>(text.begin(), text.end())).ok || !drive.query("PLCRUN").empty()) {
+  if (!drive.download(std::vector<uint8_t>(text.begin(), text.end())).ok ||
+      !drive.query("PLCRUN").empty()) {
     state.SkipWithError("the program did not start");
     return;
   }
@@ -41,7 +42,8 @@ void run_drive(benchmark::State& state, bool with_main) {
   state.counters["rt_factor_cpu"] = benchmark::Counter(virtual_s, benchmark::Counter::kIsRate);
   // With PLCMAIN, it gets 6250 lines a ms less the real-time programs' 320 + 200: every line.
   const double lines = with_main ? 6.25e6 : kRealTimeLines;
-  state.counters["lines_per_s"] = benchmark::Counter(virtual_s * lines, benchmark::Counter::kIsRate);
+  state.counters["lines_per_s"] =
+      benchmark::Counter(virtual_s * lines, benchmark::Counter::kIsRate);
 }
 
 void BM_StDrive(benchmark::State& state) { run_drive(state, true); }

@@ -1,6 +1,6 @@
-// The peers' bench driver: compiles a Gold (or PDL) file, runs `main` to its end with an unlimited budget
-// on the bare VM (a fake Host, no drive simulation), prints the globals named by --then.
-// A .pup file is compiled to CUP and loaded as the AG300 loads it; it runs task 1 on a host that
+// The peers' bench driver: compiles a Gold (or PDL) file, runs `main` to its end with an unlimited
+// budget on the bare VM (a fake Host, no drive simulation), prints the globals named by --then. A
+// .pup file is compiled to CUP and loaded as the AG300 loads it; it runs task 1 on a host that
 // keeps AGenData[1..1000] (--then AGenData[N]), every other keyword reading 0.
 // --histogram counts executed opcodes and opcode pairs instead (one instruction per slice);
 // A .s file (uprog assembly, e.g. hand-edited --asm output) is assembled and run through the
@@ -26,10 +26,10 @@
 #include "bytecode/opcodes.h"
 #include "bytecode/peephole.h"
 #include "dialects/gold/compile.h"
-#include "dialects/pup/cup_loader.h"
-#include "dialects/pup/pup_compiler.h"
 #include "dialects/pdl/compile.h"
 #include "dialects/pdl/layout.h"
+#include "dialects/pup/cup_loader.h"
+#include "dialects/pup/pup_compiler.h"
 #include "dialects/st/compile.h"
 #include "support/diagnostic.h"
 #include "vm/machine.h"
@@ -71,7 +71,9 @@ class PupHost final : public vm::Host {
     if (Value* cell = at(command, index)) *cell = value;
     return vm::kCommandOk;
   }
-  vm::CommandStatus execute(uint32_t, int32_t, const Value*, uint32_t) override { return vm::kCommandOk; }
+  vm::CommandStatus execute(uint32_t, int32_t, const Value*, uint32_t) override {
+    return vm::kCommandOk;
+  }
   uint32_t now_us() override { return now; }
   uint32_t now = 0;
   std::array<Value, uprog::pup::kGenDataSize> gen_data{};
@@ -79,14 +81,17 @@ class PupHost final : public vm::Host {
  private:
   Value* at(uint32_t command, int32_t index) {
     int32_t n = index;
-    if (command >= uprog::pup::kIndexedBase && command - uprog::pup::kIndexedBase < indexed_.size()) {
+    if (command >= uprog::pup::kIndexedBase &&
+        command - uprog::pup::kIndexedBase < indexed_.size()) {
       const uprog::pup::IndexedAccess& a = indexed_[command - uprog::pup::kIndexedBase];
       if (a.key != uprog::pup::KeywordId::GenData || index < 1 || index > a.size) return nullptr;
       n = a.base + index - 1;
     } else if (command != static_cast<uint32_t>(uprog::pup::KeywordId::GenData)) {
       return nullptr;
     }
-    return n >= 1 && n <= static_cast<int32_t>(gen_data.size()) ? &gen_data[static_cast<size_t>(n - 1)] : nullptr;
+    return n >= 1 && n <= static_cast<int32_t>(gen_data.size())
+               ? &gen_data[static_cast<size_t>(n - 1)]
+               : nullptr;
   }
   const std::vector<uprog::pup::IndexedAccess>& indexed_;
 };
@@ -139,17 +144,27 @@ int main(int argc, char** argv) {
   bool histogram = false, emit_asm = false, timing = false, check = false, peephole = true;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--then" && i + 1 < argc) then.emplace_back(argv[++i]);
-    else if (arg == "--histogram") histogram = true;
-    else if (arg == "--asm") emit_asm = true;
-    else if (arg == "--timing") timing = true;
-    else if (arg == "--check") check = true;
-    else if (arg == "--no-peephole") peephole = false;
-    else if (arg == "--limit" && i + 1 < argc) limit = std::stoull(argv[++i]);
-    else file = arg;
+    if (arg == "--then" && i + 1 < argc)
+      then.emplace_back(argv[++i]);
+    else if (arg == "--histogram")
+      histogram = true;
+    else if (arg == "--asm")
+      emit_asm = true;
+    else if (arg == "--timing")
+      timing = true;
+    else if (arg == "--check")
+      check = true;
+    else if (arg == "--no-peephole")
+      peephole = false;
+    else if (arg == "--limit" && i + 1 < argc)
+      limit = std::stoull(argv[++i]);
+    else
+      file = arg;
   }
   if (file.empty()) {
-    std::fprintf(stderr, "usage: uprog_bench FILE.ehl|FILE.s [--then GLOBAL]... [--asm] [--no-peephole] [--check] [--histogram [--limit N]] [--timing]\n");
+    std::fprintf(stderr,
+                 "usage: uprog_bench FILE.ehl|FILE.s [--then GLOBAL]... [--asm] [--no-peephole] "
+                 "[--check] [--histogram [--limit N]] [--timing]\n");
     return 2;
   }
   const auto compile_start = std::chrono::steady_clock::now();
@@ -215,7 +230,8 @@ int main(int argc, char** argv) {
   FakeHost fake_host;
   static const std::vector<uprog::pup::IndexedAccess> kNoAccess;
   PupHost pup_host(pup_loaded ? pup_loaded->indexed : kNoAccess);
-  vm::Host& vm_host = pup_loaded ? static_cast<vm::Host&>(pup_host) : static_cast<vm::Host&>(fake_host);
+  vm::Host& vm_host =
+      pup_loaded ? static_cast<vm::Host&>(pup_host) : static_cast<vm::Host&>(fake_host);
   uint32_t& now = pup_loaded ? pup_host.now : fake_host.now;
   vm::Machine machine;
   const vm::LoadStatus status =

@@ -1,13 +1,13 @@
 // Reads uprog assembly (docs/assembly.md) into an Image. Two steps: parse every line, recording
 // labels and names; then resolve label and name operands and sort the line table.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <map>
-
-#include <fmt/format.h>
 
 #include "bytecode/assembly.h"
 #include "bytecode/code_builder.h"
@@ -151,8 +151,10 @@ class Assembler {
   }
 
   bool type(const Token& t, ValueType& out) {
-    if (t.text == "int") out = ValueType::Int;
-    else if (t.text == "float") out = ValueType::Float;
+    if (t.text == "int")
+      out = ValueType::Int;
+    else if (t.text == "float")
+      out = ValueType::Float;
     else {
       error(t.column, fmt::format("'{}' is not a type (int or float)", t.text));
       return false;
@@ -227,7 +229,8 @@ class Assembler {
       image_.routines.back().locals.push_back(l);
     } else if (d == ".event") {
       int64_t r = 0;
-      if (want(ts, 3, d.c_str()) && number(ts[1], n, 0, UINT32_MAX) && number(ts[2], r, 0, UINT32_MAX))
+      if (want(ts, 3, d.c_str()) && number(ts[1], n, 0, UINT32_MAX) &&
+          number(ts[2], r, 0, UINT32_MAX))
         image_.events.push_back({static_cast<uint32_t>(n), static_cast<uint32_t>(r)});
     } else if (d == ".line") {
       line_directive(ts);
@@ -269,11 +272,13 @@ class Assembler {
 
   void routine(const std::vector<Token>& ts) {
     if (!want(ts, 6, ".routine")) return;
-    static const std::map<std::string, RoutineKind> kinds = {
-        {"function", RoutineKind::Function}, {"label", RoutineKind::Label},
-        {"auto", RoutineKind::AutoRoutine}, {"task", RoutineKind::Task}};
+    static const std::map<std::string, RoutineKind> kinds = {{"function", RoutineKind::Function},
+                                                             {"label", RoutineKind::Label},
+                                                             {"auto", RoutineKind::AutoRoutine},
+                                                             {"task", RoutineKind::Task}};
     const auto kind = kinds.find(ts[1].text);
-    if (kind == kinds.end()) return error(ts[1].column, fmt::format("unknown routine kind '{}'", ts[1].text));
+    if (kind == kinds.end())
+      return error(ts[1].column, fmt::format("unknown routine kind '{}'", ts[1].text));
     Routine r;
     r.kind = kind->second;
     r.name = ts[2].text;
@@ -315,7 +320,8 @@ class Assembler {
   void line_directive(const std::vector<Token>& ts) {
     int64_t n = 0, at = 0;
     if (ts.size() == 4) {
-      if (ts[1].text.empty() || ts[1].text[0] != '@') return error(ts[1].column, "'@offset' expected");
+      if (ts[1].text.empty() || ts[1].text[0] != '@')
+        return error(ts[1].column, "'@offset' expected");
       Token offset = ts[1];
       offset.text = offset.text.substr(1);
       if (!number(offset, at, 0, UINT32_MAX) || !number(ts[3], n, 0, UINT32_MAX)) return;
@@ -323,8 +329,8 @@ class Assembler {
       return;
     }
     if (!want(ts, 3, ".line") || !number(ts[2], n, 0, UINT32_MAX)) return;
-    image_.lines.push_back({static_cast<uint32_t>(image_.code.size()), ts[1].text,
-                            static_cast<uint32_t>(n)});
+    image_.lines.push_back(
+        {static_cast<uint32_t>(image_.code.size()), ts[1].text, static_cast<uint32_t>(n)});
   }
 
   void instruction(const std::vector<Token>& ts) {
@@ -349,8 +355,9 @@ class Assembler {
       int64_t n = 0;
       const bool is_signed = info.b == Operand::Imm;
       const Token& b = ts[info.a != Operand::None ? 2 : 1];
-      const bool is_name = !b.text.empty() && (b.quoted || std::isalpha(static_cast<unsigned char>(b.text[0])) ||
-                                               b.text[0] == '_');
+      const bool is_name =
+          !b.text.empty() &&
+          (b.quoted || std::isalpha(static_cast<unsigned char>(b.text[0])) || b.text[0] == '_');
       if (info.b == Operand::Global && is_name) {
         // A global as the second word (STGJEOL, LDG2) may be its name too.
         fixups_.push_back({pc + 1, true, Operand::Global, b.text, line_, b.column});

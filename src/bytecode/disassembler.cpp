@@ -1,10 +1,10 @@
 // Prints an image as uprog assembly: directives first, then the code with labels at jump
 // targets and routine entries, and comments naming what the numbers refer to.
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstring>
 #include <set>
-
-#include <fmt/format.h>
 
 #include "bytecode/assembly.h"
 #include "bytecode/opcodes.h"
@@ -33,10 +33,14 @@ const char* type_name(ValueType t) { return t == ValueType::Float ? "float" : "i
 
 const char* kind_name(RoutineKind k) {
   switch (k) {
-    case RoutineKind::Function: return "function";
-    case RoutineKind::Label: return "label";
-    case RoutineKind::AutoRoutine: return "auto";
-    case RoutineKind::Task: return "task";
+    case RoutineKind::Function:
+      return "function";
+    case RoutineKind::Label:
+      return "label";
+    case RoutineKind::AutoRoutine:
+      return "auto";
+    case RoutineKind::Task:
+      return "task";
   }
   return "function";
 }
@@ -98,7 +102,8 @@ std::string disassemble(const Image& image) {
     const auto& r = image.routines[i];
     out += fmt::format(".routine {} {} in={} out={} entry={}  ; r{}\n", kind_name(r.kind),
                        quote(r.name), r.inputs, r.outputs, label_ref(r.entry), i);
-    for (const auto& l : r.locals) out += fmt::format(".local {} {}\n", type_name(l.type), quote(l.name));
+    for (const auto& l : r.locals)
+      out += fmt::format(".local {} {}\n", type_name(l.type), quote(l.name));
   }
   for (const auto& e : image.events) out += fmt::format(".event {} {}\n", e.event, e.routine);
   for (const auto& t : image.tasks) {
@@ -136,10 +141,17 @@ std::string disassemble(const Image& image) {
     std::string text = fmt::format("  {}{}", op_name(op), word_ends_line(word) ? ".eol" : "");
     std::string comment;
     switch (info.a) {
-      case Operand::None: break;
-      case Operand::Imm: text += fmt::format(" {}", word_imm(word)); break;
-      case Operand::Target: text += " " + label_ref(word_a(word)); break;
-      default: text += fmt::format(" {}", word_a(word)); break;
+      case Operand::None:
+        break;
+      case Operand::Imm:
+        text += fmt::format(" {}", word_imm(word));
+        break;
+      case Operand::Target:
+        text += " " + label_ref(word_a(word));
+        break;
+      default:
+        text += fmt::format(" {}", word_a(word));
+        break;
     }
     const uint32_t a = word_a(word);
     if (info.a == Operand::Global && a < image.globals.size()) comment = image.globals[a].name;
@@ -155,7 +167,8 @@ std::string disassemble(const Image& image) {
     } else if (info.b != Operand::None) {
       text += fmt::format(" {}", image.code[pc + 1]);
     }
-    if ((info.a == Operand::None && word_a(word) != 0) || (word_ends_line(word) && !may_end_line(op))) {
+    if ((info.a == Operand::None && word_a(word) != 0) ||
+        (word_ends_line(word) && !may_end_line(op))) {
       // A stray operand on an opcode without one, or a line end where none may be: keep the
       // word exact.
       text = fmt::format("  .word 0x{:08x}", word);

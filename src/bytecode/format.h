@@ -46,10 +46,10 @@ struct GlobalRecord {
 struct RoutineRecord {
   uint32_t name;
   uint32_t kind;
-  uint32_t inputs;   // locals [0, inputs) are the inputs
-  uint32_t outputs;  // locals [inputs, inputs + outputs) are the outputs
-  uint32_t locals;   // all locals, inputs and outputs included
-  uint32_t entry;    // code word index
+  uint32_t inputs;       // locals [0, inputs) are the inputs
+  uint32_t outputs;      // locals [inputs, inputs + outputs) are the outputs
+  uint32_t locals;       // all locals, inputs and outputs included
+  uint32_t entry;        // code word index
   uint32_t first_local;  // index of its first LocalRecord
 };
 struct LocalRecord {
@@ -57,7 +57,7 @@ struct LocalRecord {
   uint32_t type;
 };
 struct EventRecord {
-  uint32_t event;    // a dialect-defined event number (Gold: an auto-routine)
+  uint32_t event;  // a dialect-defined event number (Gold: an auto-routine)
   uint32_t routine;
 };
 struct LineRecord {

@@ -21,7 +21,8 @@ class Writer {
     bytes.push_back(static_cast<uint8_t>(v >> 8));
   }
   void put_u32(size_t at, uint32_t v) {
-    for (int i = 0; i < 4; ++i) bytes[at + static_cast<size_t>(i)] = static_cast<uint8_t>(v >> (8 * i));
+    for (int i = 0; i < 4; ++i)
+      bytes[at + static_cast<size_t>(i)] = static_cast<uint8_t>(v >> (8 * i));
   }
   std::vector<uint8_t> bytes;
 };
@@ -91,13 +92,18 @@ std::vector<uint8_t> encode(const Image& image) {
   counts.push_back(static_cast<uint32_t>(image.code.size()));
   {
     auto& w = add(Section::Constants);
-    for (const auto& c : image.constants) { w.push_back(c.bits); w.push_back(type_word(c.type)); }
+    for (const auto& c : image.constants) {
+      w.push_back(c.bits);
+      w.push_back(type_word(c.type));
+    }
     counts.push_back(static_cast<uint32_t>(image.constants.size()));
   }
   {
     auto& w = add(Section::Globals);
     for (const auto& g : image.globals) {
-      w.push_back(strings.intern(g.name)); w.push_back(type_word(g.type)); w.push_back(g.length);
+      w.push_back(strings.intern(g.name));
+      w.push_back(type_word(g.type));
+      w.push_back(g.length);
     }
     counts.push_back(static_cast<uint32_t>(image.globals.size()));
   }
@@ -106,9 +112,12 @@ std::vector<uint8_t> encode(const Image& image) {
   {
     auto& w = add(Section::Routines);
     for (const auto& r : image.routines) {
-      w.push_back(strings.intern(r.name)); w.push_back(static_cast<uint32_t>(r.kind));
-      w.push_back(r.inputs); w.push_back(r.outputs);
-      w.push_back(static_cast<uint32_t>(r.locals.size())); w.push_back(r.entry);
+      w.push_back(strings.intern(r.name));
+      w.push_back(static_cast<uint32_t>(r.kind));
+      w.push_back(r.inputs);
+      w.push_back(r.outputs);
+      w.push_back(static_cast<uint32_t>(r.locals.size()));
+      w.push_back(r.entry);
       w.push_back(local_count);
       for (const auto& l : r.locals) {
         local_words.push_back(strings.intern(l.name));
@@ -122,7 +131,10 @@ std::vector<uint8_t> encode(const Image& image) {
   counts.push_back(local_count);
   {
     auto& w = add(Section::Events);
-    for (const auto& e : image.events) { w.push_back(e.event); w.push_back(e.routine); }
+    for (const auto& e : image.events) {
+      w.push_back(e.event);
+      w.push_back(e.routine);
+    }
     counts.push_back(static_cast<uint32_t>(image.events.size()));
   }
   {
@@ -133,7 +145,9 @@ std::vector<uint8_t> encode(const Image& image) {
   {
     auto& w = add(Section::Lines);
     for (const auto& l : image.lines) {
-      w.push_back(l.code); w.push_back(strings.intern(l.file)); w.push_back(l.line);
+      w.push_back(l.code);
+      w.push_back(strings.intern(l.file));
+      w.push_back(l.line);
     }
     counts.push_back(static_cast<uint32_t>(image.lines.size()));
   }
@@ -145,8 +159,11 @@ std::vector<uint8_t> encode(const Image& image) {
   {
     auto& w = add(Section::Tasks);
     for (const auto& t : image.tasks) {
-      w.push_back(t.routine); w.push_back(t.number); w.push_back(t.period_ns);
-      w.push_back(t.priority); w.push_back(t.starts_at_reset ? kTaskStartsAtReset : 0u);
+      w.push_back(t.routine);
+      w.push_back(t.number);
+      w.push_back(t.period_ns);
+      w.push_back(t.priority);
+      w.push_back(t.starts_at_reset ? kTaskStartsAtReset : 0u);
     }
     counts.push_back(static_cast<uint32_t>(image.tasks.size()));
   }
@@ -212,8 +229,8 @@ bool decode(const uint8_t* bytes, size_t size, Image& out, std::string& error) {
   }
   for (uint32_t i = 0; i < view.routines.size(); ++i) {
     const auto r = view.routines[i];
-    Routine routine{view.string(r.name), static_cast<RoutineKind>(r.kind), r.inputs, r.outputs, {},
-                    r.entry};
+    Routine routine{
+        view.string(r.name), static_cast<RoutineKind>(r.kind), r.inputs, r.outputs, {}, r.entry};
     for (uint32_t k = 0; k < r.locals; ++k) {
       const auto l = view.locals[r.first_local + k];
       routine.locals.push_back({view.string(l.name), static_cast<ValueType>(l.type)});
@@ -230,8 +247,8 @@ bool decode(const uint8_t* bytes, size_t size, Image& out, std::string& error) {
   for (uint32_t i = 0; i < view.texts.size(); ++i) out.texts.emplace_back(view.text(i));
   for (uint32_t i = 0; i < view.tasks.size(); ++i) {
     const auto t = view.tasks[i];
-    out.tasks.push_back({t.routine, t.number, t.period_ns, t.priority,
-                         (t.flags & kTaskStartsAtReset) != 0});
+    out.tasks.push_back(
+        {t.routine, t.number, t.period_ns, t.priority, (t.flags & kTaskStartsAtReset) != 0});
   }
   return true;
 }

@@ -10,23 +10,32 @@ uint32_t read_u32(const uint8_t* p) {
   return static_cast<uint32_t>(p[0]) | (static_cast<uint32_t>(p[1]) << 8) |
          (static_cast<uint32_t>(p[2]) << 16) | (static_cast<uint32_t>(p[3]) << 24);
 }
-uint16_t read_u16(const uint8_t* p) {
-  return static_cast<uint16_t>(p[0] | (p[1] << 8));
-}
+uint16_t read_u16(const uint8_t* p) { return static_cast<uint16_t>(p[0] | (p[1] << 8)); }
 
 constexpr uint32_t record_size(Section s) {
   switch (s) {
-    case Section::Strings: return 1;
-    case Section::Code: return 4;
-    case Section::Constants: return sizeof(ConstantRecord);
-    case Section::Globals: return sizeof(GlobalRecord);
-    case Section::Routines: return sizeof(RoutineRecord);
-    case Section::Locals: return sizeof(LocalRecord);
-    case Section::Events: return sizeof(EventRecord);
-    case Section::Info: return 4;
-    case Section::Lines: return sizeof(LineRecord);
-    case Section::Texts: return 4;
-    case Section::Tasks: return sizeof(TaskRecord);
+    case Section::Strings:
+      return 1;
+    case Section::Code:
+      return 4;
+    case Section::Constants:
+      return sizeof(ConstantRecord);
+    case Section::Globals:
+      return sizeof(GlobalRecord);
+    case Section::Routines:
+      return sizeof(RoutineRecord);
+    case Section::Locals:
+      return sizeof(LocalRecord);
+    case Section::Events:
+      return sizeof(EventRecord);
+    case Section::Info:
+      return 4;
+    case Section::Lines:
+      return sizeof(LineRecord);
+    case Section::Texts:
+      return 4;
+    case Section::Tasks:
+      return sizeof(TaskRecord);
   }
   return 0;
 }
@@ -42,16 +51,26 @@ bool host_is_little_endian() {
 
 const char* load_error_text(LoadError e) {
   switch (e) {
-    case LoadError::Ok: return "ok";
-    case LoadError::TooShort: return "the image is shorter than its header";
-    case LoadError::BadMagic: return "not a uprog image (bad magic)";
-    case LoadError::BadVersion: return "unsupported image format version";
-    case LoadError::BadSize: return "the image size does not match its header";
-    case LoadError::BadCrc: return "the image is corrupt (CRC mismatch)";
-    case LoadError::BadSectionTable: return "bad section table";
-    case LoadError::BadSection: return "a section lies outside the image or has a bad size";
-    case LoadError::BadString: return "a string reference is out of range";
-    case LoadError::BadRecord: return "a record holds a value out of range";
+    case LoadError::Ok:
+      return "ok";
+    case LoadError::TooShort:
+      return "the image is shorter than its header";
+    case LoadError::BadMagic:
+      return "not a uprog image (bad magic)";
+    case LoadError::BadVersion:
+      return "unsupported image format version";
+    case LoadError::BadSize:
+      return "the image size does not match its header";
+    case LoadError::BadCrc:
+      return "the image is corrupt (CRC mismatch)";
+    case LoadError::BadSectionTable:
+      return "bad section table";
+    case LoadError::BadSection:
+      return "a section lies outside the image or has a bad size";
+    case LoadError::BadString:
+      return "a string reference is out of range";
+    case LoadError::BadRecord:
+      return "a record holds a value out of range";
   }
   return "unknown load error";
 }
@@ -73,7 +92,8 @@ LoadError load_image(const uint8_t* bytes, size_t size, ImageView& out) {
   out.source_name = read_u32(bytes + 24);
   const uint32_t sections = read_u32(bytes + 28);
   out.dialect = read_u32(bytes + 32);
-  if (sections > kSectionKinds || kHeaderSize + static_cast<size_t>(sections) * kSectionEntrySize > size)
+  if (sections > kSectionKinds ||
+      kHeaderSize + static_cast<size_t>(sections) * kSectionEntrySize > size)
     return LoadError::BadSectionTable;
 
   bool seen[kSectionKinds + 1] = {};
@@ -94,20 +114,41 @@ LoadError load_image(const uint8_t* bytes, size_t size, ImageView& out) {
         out.strings = reinterpret_cast<const char*>(data);
         out.strings_size = length;
         break;
-      case Section::Code: out.code = {data, count}; break;
-      case Section::Constants: out.constants = {data, count}; break;
-      case Section::Globals: out.globals = {data, count}; break;
-      case Section::Routines: out.routines = {data, count}; break;
-      case Section::Locals: out.locals = {data, count}; break;
-      case Section::Events: out.events = {data, count}; break;
-      case Section::Info: out.info = {data, count}; break;
-      case Section::Lines: out.lines = {data, count}; break;
-      case Section::Texts: out.texts = {data, count}; break;
-      case Section::Tasks: out.tasks = {data, count}; break;
+      case Section::Code:
+        out.code = {data, count};
+        break;
+      case Section::Constants:
+        out.constants = {data, count};
+        break;
+      case Section::Globals:
+        out.globals = {data, count};
+        break;
+      case Section::Routines:
+        out.routines = {data, count};
+        break;
+      case Section::Locals:
+        out.locals = {data, count};
+        break;
+      case Section::Events:
+        out.events = {data, count};
+        break;
+      case Section::Info:
+        out.info = {data, count};
+        break;
+      case Section::Lines:
+        out.lines = {data, count};
+        break;
+      case Section::Texts:
+        out.texts = {data, count};
+        break;
+      case Section::Tasks:
+        out.tasks = {data, count};
+        break;
     }
   }
   // Every string must end inside the blob: then any offset below its size is a valid string.
-  if (out.strings_size == 0 || out.strings[out.strings_size - 1] != '\0') return LoadError::BadString;
+  if (out.strings_size == 0 || out.strings[out.strings_size - 1] != '\0')
+    return LoadError::BadString;
 
   const auto str_ok = [&](uint32_t offset) { return offset < out.strings_size; };
   const auto type_ok = [](uint32_t t) { return t <= 1; };
@@ -129,7 +170,8 @@ LoadError load_image(const uint8_t* bytes, size_t size, ImageView& out) {
     if (!str_ok(r.name)) return LoadError::BadString;
     if (r.kind >= kRoutineKinds || r.entry >= out.code.size()) return LoadError::BadRecord;
     if (static_cast<uint64_t>(r.inputs) + r.outputs > r.locals) return LoadError::BadRecord;
-    if (static_cast<uint64_t>(r.first_local) + r.locals > out.locals.size()) return LoadError::BadRecord;
+    if (static_cast<uint64_t>(r.first_local) + r.locals > out.locals.size())
+      return LoadError::BadRecord;
   }
   for (uint32_t i = 0; i < out.events.size(); ++i)
     if (out.events[i].routine >= out.routines.size()) return LoadError::BadRecord;
@@ -139,7 +181,8 @@ LoadError load_image(const uint8_t* bytes, size_t size, ImageView& out) {
     if (!str_ok(out.texts[i])) return LoadError::BadString;
   for (uint32_t i = 0; i < out.tasks.size(); ++i) {
     const TaskRecord t = out.tasks[i];
-    if (t.routine >= out.routines.size() || (t.flags & ~kTaskFlags) != 0) return LoadError::BadRecord;
+    if (t.routine >= out.routines.size() || (t.flags & ~kTaskFlags) != 0)
+      return LoadError::BadRecord;
   }
   for (uint32_t i = 0; i < out.lines.size(); ++i) {
     const LineRecord l = out.lines[i];

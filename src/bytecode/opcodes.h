@@ -7,10 +7,35 @@
 namespace uprog::bytecode {
 
 enum class Operand : uint8_t {
-  None, Imm, Const, Local, Global, Routine, Target, Count, Command, Unit, LocalPair, LocalImm,
-  LocalConst, Width, Text, GlobalPair, GlobalConst, GlobalImm, Element, Lines, Window, GlobalsTest,
-  LoopStep, GlobalWindow, MemoryFrame, FrameTest,
-  OffsetImm, Comparison, PointerTest
+  None,
+  Imm,
+  Const,
+  Local,
+  Global,
+  Routine,
+  Target,
+  Count,
+  Command,
+  Unit,
+  LocalPair,
+  LocalImm,
+  LocalConst,
+  Width,
+  Text,
+  GlobalPair,
+  GlobalConst,
+  GlobalImm,
+  Element,
+  Lines,
+  Window,
+  GlobalsTest,
+  LoopStep,
+  GlobalWindow,
+  MemoryFrame,
+  FrameTest,
+  OffsetImm,
+  Comparison,
+  PointerTest
 };
 
 // The packed B operands of the fused comparisons and arithmetic (LocalConst, GlobalPair,
@@ -120,8 +145,8 @@ constexpr uint32_t kPointerTestLocalMax = 15;
 constexpr uint32_t kPointerTestOffsetMax = 255;
 constexpr uint32_t kPointerTestBoundMax = 4095;
 constexpr uint32_t kPointerTestSizeMax = 15;
-constexpr uint32_t pack_pointer_test(uint32_t local, uint32_t offset, uint32_t bound, uint32_t window_local,
-                                     uint32_t size_power) {
+constexpr uint32_t pack_pointer_test(uint32_t local, uint32_t offset, uint32_t bound,
+                                     uint32_t window_local, uint32_t size_power) {
   return local | (offset << 4) | (bound << 12) | (window_local << 24) | (size_power << 28);
 }
 constexpr uint32_t pointer_test_local(uint32_t b) { return b & 0xFu; }
@@ -167,7 +192,9 @@ constexpr bool word_ends_line(uint32_t word) { return (word & kLineEndBit) != 0;
 constexpr uint32_t a_field(uint32_t a) { return (a & kOperandMax) << 9; }
 constexpr uint32_t make_word(Op op, uint32_t a) { return static_cast<uint32_t>(op) | a_field(a); }
 // The word with another operand A; its opcode and line-end mark stay.
-constexpr uint32_t with_a(uint32_t word, uint32_t a) { return (word & ~a_field(kOperandMax)) | a_field(a); }
+constexpr uint32_t with_a(uint32_t word, uint32_t a) {
+  return (word & ~a_field(kOperandMax)) | a_field(a);
+}
 
 // The instructions that end their line themselves: EOL and the fused forms named ...EOL.
 constexpr bool ends_line_itself(Op op) {

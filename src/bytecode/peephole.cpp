@@ -42,8 +42,8 @@ bool decode(const std::vector<uint32_t>& code, std::vector<Instr>& out) {
 
 // Int comparisons and the fused jumps taken when they are true; for JZ, their negation.
 struct CompareFamily {
-  Op compare, when_true, when_false, locals_true, locals_false, imm_true, imm_false,
-      global_true, global_false;
+  Op compare, when_true, when_false, locals_true, locals_false, imm_true, imm_false, global_true,
+      global_false;
 };
 constexpr CompareFamily kIntCompares[] = {
     {Op::EQI, Op::JEQI, Op::JNEI, Op::JEQLL, Op::JNELL, Op::JEQLK, Op::JNELK, Op::JEQGK, Op::JNEGK},
@@ -70,10 +70,12 @@ constexpr FloatCompareFamily kFloatCompares[] = {
 
 // Two globals' arithmetic: the plain operation, the form that pushes its result, and the
 // three-address form that stores it into a global and ends the line.
-constexpr std::array<std::array<Op, 3>, 5> kGlobalsArithmetic = {{
-    {Op::ADDI, Op::ADDIGG, Op::ADDIGGEOL}, {Op::SUBI, Op::SUBIGG, Op::SUBIGGEOL},
-    {Op::ADDF, Op::ADDFGG, Op::ADDFGGEOL}, {Op::SUBF, Op::SUBFGG, Op::SUBFGGEOL},
-    {Op::MULF, Op::MULFGG, Op::MULFGGEOL}}};
+constexpr std::array<std::array<Op, 3>, 5> kGlobalsArithmetic = {
+    {{Op::ADDI, Op::ADDIGG, Op::ADDIGGEOL},
+     {Op::SUBI, Op::SUBIGG, Op::SUBIGGEOL},
+     {Op::ADDF, Op::ADDFGG, Op::ADDFGGEOL},
+     {Op::SUBF, Op::SUBFGG, Op::SUBFGGEOL},
+     {Op::MULF, Op::MULFGG, Op::MULFGGEOL}}};
 
 // A branch's form that ends the line on both paths (opcodes.def), or nullopt.
 std::optional<Op> ending_line_form(Op op) {
@@ -123,7 +125,10 @@ class Fuser {
   // every constant in 16 bits.
   Fuser(const std::vector<Instr>& in, const std::vector<bool>& boundary,
         const std::vector<bool>& line_start, bool room_for_constants)
-      : in_(in), boundary_(boundary), line_start_(line_start), room_for_constants_(room_for_constants) {}
+      : in_(in),
+        boundary_(boundary),
+        line_start_(line_start),
+        room_for_constants_(room_for_constants) {}
 
   // The fused instruction for the sequence at `i` and how many instructions it replaces.
   std::optional<std::pair<Instr, size_t>> match(size_t i) const {
@@ -134,14 +139,28 @@ class Fuser {
 
  private:
   std::optional<std::pair<Instr, size_t>> fuse(size_t i) const {
-    for (auto m : {&Fuser::compare_locals, &Fuser::arithmetic_locals, &Fuser::local_constant,
-                   &Fuser::two_locals, &Fuser::store_constant, &Fuser::test_global,
-                   &Fuser::compare_global, &Fuser::global_constant, &Fuser::arithmetic_globals,
-                   &Fuser::compare_globals, &Fuser::float_global_constant, &Fuser::two_globals,
-                   &Fuser::add_global, &Fuser::window_by_global, &Fuser::stack_constant,
-                   &Fuser::store_global_constant, &Fuser::store_global_eol,
-                   &Fuser::compare_branch, &Fuser::test_zero, &Fuser::line_ending_jump,
-                   &Fuser::eol_jump, &Fuser::wait_for_command}) {
+    for (auto m : {&Fuser::compare_locals,
+                   &Fuser::arithmetic_locals,
+                   &Fuser::local_constant,
+                   &Fuser::two_locals,
+                   &Fuser::store_constant,
+                   &Fuser::test_global,
+                   &Fuser::compare_global,
+                   &Fuser::global_constant,
+                   &Fuser::arithmetic_globals,
+                   &Fuser::compare_globals,
+                   &Fuser::float_global_constant,
+                   &Fuser::two_globals,
+                   &Fuser::add_global,
+                   &Fuser::window_by_global,
+                   &Fuser::stack_constant,
+                   &Fuser::store_global_constant,
+                   &Fuser::store_global_eol,
+                   &Fuser::compare_branch,
+                   &Fuser::test_zero,
+                   &Fuser::line_ending_jump,
+                   &Fuser::eol_jump,
+                   &Fuser::wait_for_command}) {
       if (auto r = (this->*m)(i)) return r;
     }
     return std::nullopt;
@@ -173,7 +192,8 @@ class Fuser {
   // Instruction i + k is an EOL that fuses with what is before it, and not with a JMP after it
   // (JMPEOL, which costs the same).
   bool lone_eol(size_t i, size_t k) const {
-    return free(i, k) && at(i + k).op == Op::EOL && !(free(i, k + 1) && at(i + k + 1).op == Op::JMP);
+    return free(i, k) && at(i + k).op == Op::EOL &&
+           !(free(i, k + 1) && at(i + k + 1).op == Op::JMP);
   }
   static bool is_branch(Op op) { return op == Op::JZ || op == Op::JNZ; }
 
@@ -183,21 +203,23 @@ class Fuser {
     if (!free(i, 3) || at(i).op != Op::LDL || !is_branch(at(i + 3).op)) return std::nullopt;
     const Instr& second = at(i + 1);
     // Both halves of a packed operand hold 16 bits: a local or a constant's index.
-    const bool second_packs = (second.op == Op::LDL || second.op == Op::PUSHK) && second.a <= 0xFFFF;
+    const bool second_packs =
+        (second.op == Op::LDL || second.op == Op::PUSHK) && second.a <= 0xFFFF;
     if (at(i).a > 0xFFFF) return std::nullopt;
     for (const auto& f : kFloatCompares) {
       if (at(i + 2).op != f.compare || at(i + 3).op != Op::JZ) continue;
       if (!second_packs) return std::nullopt;
       const Op fused = second.op == Op::LDL ? f.locals_unless : f.constant_unless;
-      return std::pair{Instr{at(i).pc, fused, at(i + 3).a, pack_locals(at(i).a, second.a)}, size_t{4}};
+      return std::pair{Instr{at(i).pc, fused, at(i + 3).a, pack_locals(at(i).a, second.a)},
+                       size_t{4}};
     }
     for (const auto& f : kIntCompares) {
       if (at(i + 2).op != f.compare) continue;
       const bool jump_if_true = at(i + 3).op == Op::JNZ;
       const uint32_t local = at(i).a;
       if (second.op == Op::LDL && second_packs) {
-        return std::pair{Instr{at(i).pc, jump_if_true ? f.locals_true : f.locals_false,
-                               at(i + 3).a, pack_locals(local, second.a)},
+        return std::pair{Instr{at(i).pc, jump_if_true ? f.locals_true : f.locals_false, at(i + 3).a,
+                               pack_locals(local, second.a)},
                          size_t{4}};
       }
       if (second.op == Op::PUSHI && fits_int16(imm_of(second))) {
@@ -244,7 +266,8 @@ class Fuser {
     const Op op = at(i + 2).op;
     if (op == Op::ADDI || op == Op::SUBI) {
       const int32_t addend = op == Op::ADDI ? k : -k;  // |k| < 2^23: no overflow
-      return std::pair{Instr{at(i).pc, Op::ADDLK, at(i).a, static_cast<uint32_t>(addend)}, size_t{3}};
+      return std::pair{Instr{at(i).pc, Op::ADDLK, at(i).a, static_cast<uint32_t>(addend)},
+                       size_t{3}};
     }
     if (op == Op::REMI && k != 0)
       return std::pair{Instr{at(i).pc, Op::REMLK, at(i).a, static_cast<uint32_t>(k)}, size_t{3}};
@@ -255,10 +278,12 @@ class Fuser {
   std::optional<std::pair<Instr, size_t>> arithmetic_locals(size_t i) const {
     if (!free(i, 2) || at(i).op != Op::LDL || at(i + 1).op != Op::LDL) return std::nullopt;
     if (at(i).a > 0xFFFF || at(i + 1).a > 0xFFFF) return std::nullopt;
-    static constexpr std::array<std::array<Op, 3>, 5> kForms = {{
-        {Op::ADDI, Op::ADDILL, Op::ADDILLS}, {Op::SUBI, Op::SUBILL, Op::SUBILLS},
-        {Op::ADDF, Op::ADDFLL, Op::ADDFLLS}, {Op::SUBF, Op::SUBFLL, Op::SUBFLLS},
-        {Op::MULF, Op::MULFLL, Op::MULFLLS}}};
+    static constexpr std::array<std::array<Op, 3>, 5> kForms = {
+        {{Op::ADDI, Op::ADDILL, Op::ADDILLS},
+         {Op::SUBI, Op::SUBILL, Op::SUBILLS},
+         {Op::ADDF, Op::ADDFLL, Op::ADDFLLS},
+         {Op::SUBF, Op::SUBFLL, Op::SUBFLLS},
+         {Op::MULF, Op::MULFLL, Op::MULFLLS}}};
     const uint32_t pair = pack_locals(at(i).a, at(i + 1).a);
     for (const auto& [plain, push, store] : kForms) {
       if (at(i + 2).op != plain) continue;
@@ -275,8 +300,8 @@ class Fuser {
     if (!free(i, 1)) return std::nullopt;
     const Instr& first = at(i);
     const Instr& second = at(i + 1);
-    if (second.op == Op::LDL && (arithmetic_locals(i + 1) || compare_locals(i + 1) ||
-                                 local_constant(i + 1)))
+    if (second.op == Op::LDL &&
+        (arithmetic_locals(i + 1) || compare_locals(i + 1) || local_constant(i + 1)))
       return std::nullopt;
     if (first.op == Op::LDL && second.op == Op::LDL)
       return std::pair{Instr{first.pc, Op::LDL2, first.a, second.a}, size_t{2}};
@@ -310,9 +335,9 @@ class Fuser {
     for (const auto& f : kFloatCompares) {
       if (at(i + 2).op != f.compare) continue;
       if (at(i + 3).op != Op::JZ || !constant) return std::nullopt;
-      return std::pair{Instr{at(i).pc, f.global_constant_unless, at(i + 3).a,
-                             pack_locals(at(i).a, second.a)},
-                       size_t{4}};
+      return std::pair{
+          Instr{at(i).pc, f.global_constant_unless, at(i + 3).a, pack_locals(at(i).a, second.a)},
+          size_t{4}};
     }
     for (const auto& f : kIntCompares) {
       if (at(i + 2).op != f.compare) continue;
@@ -349,9 +374,9 @@ class Fuser {
     if (!free(i, 5) || at(i + 4).op != Op::EOL || at(i + 5).op != Op::JMPLN || at(i).a > 0xFFFF ||
         step < -128 || step > 127 || at(i + 5).b >= 255)
       return std::nullopt;
-    return std::pair{Instr{at(i).pc, Op::INCGJMPLN, at(i + 5).a,
-                           pack_loop_step(at(i).a, step, at(i + 5).b + 1)},
-                     size_t{6}};
+    return std::pair{
+        Instr{at(i).pc, Op::INCGJMPLN, at(i + 5).a, pack_loop_step(at(i).a, step, at(i + 5).b + 1)},
+        size_t{6}};
   }
 
   // LDG g; PUSHI k; ADDI|SUBI [; STG g [; EOL]] | LDG g; PUSHI k; REMI
@@ -398,14 +423,14 @@ class Fuser {
     for (uint32_t how = 0; how < std::size(kIntCompares); ++how) {
       const CompareFamily& f = kIntCompares[how];
       if (at(i + 2).op == f.when_true)
-        return std::pair{Instr{at(i).pc, Op::JCMPGG, at(i + 2).a,
-                               pack_globals_test(at(i).a, at(i + 1).a, how)},
-                         size_t{3}};
+        return std::pair{
+            Instr{at(i).pc, Op::JCMPGG, at(i + 2).a, pack_globals_test(at(i).a, at(i + 1).a, how)},
+            size_t{3}};
       if (at(i + 2).op != f.compare || !free(i, 3) || !is_branch(at(i + 3).op)) continue;
       const uint32_t holds = at(i + 3).op == Op::JNZ ? how : kNegatedCompare[how];
-      return std::pair{Instr{at(i).pc, Op::JCMPGG, at(i + 3).a,
-                             pack_globals_test(at(i).a, at(i + 1).a, holds)},
-                       size_t{4}};
+      return std::pair{
+          Instr{at(i).pc, Op::JCMPGG, at(i + 3).a, pack_globals_test(at(i).a, at(i + 1).a, holds)},
+          size_t{4}};
     }
     return std::nullopt;
   }
@@ -447,7 +472,8 @@ class Fuser {
   // LDG a; STG b | LDG a; LDG b — unless the second starts a longer pattern of its own.
   std::optional<std::pair<Instr, size_t>> two_globals(size_t i) const {
     if (!free(i, 1) || at(i).op != Op::LDG) return std::nullopt;
-    if (at(i + 1).op == Op::STG) return std::pair{Instr{at(i).pc, Op::MOVG, at(i + 1).a, at(i).a}, size_t{2}};
+    if (at(i + 1).op == Op::STG)
+      return std::pair{Instr{at(i).pc, Op::MOVG, at(i + 1).a, at(i).a}, size_t{2}};
     if (at(i + 1).op != Op::LDG) return std::nullopt;
     if (arithmetic_globals(i + 1) || compare_global(i + 1) || test_global(i + 1) ||
         global_constant(i + 1) || compare_globals(i + 1) || float_global_constant(i + 1) ||
@@ -477,7 +503,8 @@ class Fuser {
   // PUSHI k; MULI | PUSHI k; REMI (k != 0) — the stack's int with an immediate.
   std::optional<std::pair<Instr, size_t>> stack_constant(size_t i) const {
     if (!free(i, 1) || at(i).op != Op::PUSHI) return std::nullopt;
-    if (at(i + 1).op == Op::MULI) return std::pair{Instr{at(i).pc, Op::MULIK, at(i).a, 0}, size_t{2}};
+    if (at(i + 1).op == Op::MULI)
+      return std::pair{Instr{at(i).pc, Op::MULIK, at(i).a, 0}, size_t{2}};
     if (at(i + 1).op == Op::REMI && imm_of(at(i)) != 0)
       return std::pair{Instr{at(i).pc, Op::REMIK, at(i).a, 0}, size_t{2}};
     return std::nullopt;
@@ -501,7 +528,8 @@ class Fuser {
   std::optional<std::pair<Instr, size_t>> store_global_eol(size_t i) const {
     if (!free(i, 1) || at(i).op != Op::STG) return std::nullopt;
     const Instr& next = at(i + 1);
-    if (next.op == Op::JMPEOL) return std::pair{Instr{at(i).pc, Op::STGJEOL, next.a, at(i).a}, size_t{2}};
+    if (next.op == Op::JMPEOL)
+      return std::pair{Instr{at(i).pc, Op::STGJEOL, next.a, at(i).a}, size_t{2}};
     if (next.op != Op::EOL) return std::nullopt;
     if (free(i, 2) && at(i + 2).op == Op::JMP)
       return std::pair{Instr{at(i).pc, Op::STGJEOL, at(i + 2).a, at(i).a}, size_t{3}};
@@ -513,10 +541,12 @@ class Fuser {
     if (!free(i, 2) || at(i + 1).op != Op::EOL || at(i + 2).op != Op::JMP) return std::nullopt;
     const Instr& first = at(i);
     const uint32_t target = at(i + 2).a;
-    if (first.op == Op::STL) return std::pair{Instr{first.pc, Op::STLJEOL, target, first.a}, size_t{3}};
+    if (first.op == Op::STL)
+      return std::pair{Instr{first.pc, Op::STLJEOL, target, first.a}, size_t{3}};
     const int32_t step = static_cast<int32_t>(first.b);
     if (first.op == Op::INCL && first.a <= 0xFFFF && fits_int16(step))
-      return std::pair{Instr{first.pc, Op::INCLJEOL, target, pack_local_imm(first.a, step)}, size_t{3}};
+      return std::pair{Instr{first.pc, Op::INCLJEOL, target, pack_local_imm(first.a, step)},
+                       size_t{3}};
     return std::nullopt;
   }
 
@@ -563,17 +593,41 @@ class Fuser {
 // address and the STM that stores at it. nullopt for any other.
 std::optional<int> pure_effect(Op op) {
   switch (op) {
-    case Op::LDG: case Op::LDL: case Op::PUSHI: case Op::PUSHK: case Op::LDMLK:
-    case Op::ADDIGG: case Op::SUBIGG: case Op::ADDFGG: case Op::SUBFGG: case Op::MULFGG:
-    case Op::ADDGK: case Op::REMGK: case Op::ADDLK: case Op::REMLK: case Op::ADDMLK:
-    case Op::ADDILL: case Op::SUBILL: case Op::ADDFLL: case Op::SUBFLL: case Op::MULFLL:
-    case Op::ADDFGK: case Op::SUBFGK: case Op::MULFGK: case Op::MULFKG:
+    case Op::LDG:
+    case Op::LDL:
+    case Op::PUSHI:
+    case Op::PUSHK:
+    case Op::LDMLK:
+    case Op::ADDIGG:
+    case Op::SUBIGG:
+    case Op::ADDFGG:
+    case Op::SUBFGG:
+    case Op::MULFGG:
+    case Op::ADDGK:
+    case Op::REMGK:
+    case Op::ADDLK:
+    case Op::REMLK:
+    case Op::ADDMLK:
+    case Op::ADDILL:
+    case Op::SUBILL:
+    case Op::ADDFLL:
+    case Op::SUBFLL:
+    case Op::MULFLL:
+    case Op::ADDFGK:
+    case Op::SUBFGK:
+    case Op::MULFGK:
+    case Op::MULFKG:
       return 1;
-    case Op::MULIK: case Op::REMIK: case Op::ADDIG:
+    case Op::MULIK:
+    case Op::REMIK:
+    case Op::ADDIG:
       return 0;
-    case Op::LDL2: case Op::LDG2:
+    case Op::LDL2:
+    case Op::LDG2:
       return 2;
-    case Op::ADDI: case Op::SUBI: case Op::MULI:
+    case Op::ADDI:
+    case Op::SUBI:
+    case Op::MULI:
       return -1;
     default:
       return std::nullopt;
@@ -589,9 +643,8 @@ void fold_accumulations(std::vector<Instr>& code, const std::vector<bool>& bound
   for (size_t k = 0; k < code.size(); ++k) {
     const bool shaped = k + 3 < code.size() && code[k].op == Op::LDG &&
                         pure_effect(code[k + 1].op) == 1 && code[k + 3].op == Op::STGEOL &&
-                        code[k + 3].a == code[k].a &&
-                        !boundary[code[k + 1].pc] && !boundary[code[k + 2].pc] &&
-                        !boundary[code[k + 3].pc];
+                        code[k + 3].a == code[k].a && !boundary[code[k + 1].pc] &&
+                        !boundary[code[k + 2].pc] && !boundary[code[k + 3].pc];
     const Op combine = shaped ? code[k + 2].op : Op::NOP;
     const Op accumulate = combine == Op::ADDI   ? Op::ADDIGEOL
                           : combine == Op::ADDF ? Op::ADDFGEOL
@@ -625,7 +678,8 @@ size_t stored_at(const std::vector<Instr>& code, size_t k, const std::vector<boo
 }
 
 // Instructions k + 1 .. k + n of the fused code exist and control enters none of them.
-bool unentered(const std::vector<Instr>& code, size_t k, size_t n, const std::vector<bool>& boundary) {
+bool unentered(const std::vector<Instr>& code, size_t k, size_t n,
+               const std::vector<bool>& boundary) {
   if (k + n >= code.size()) return false;
   for (size_t j = 1; j <= n; ++j)
     if (boundary[code[k + j].pc]) return false;
@@ -636,28 +690,32 @@ bool unentered(const std::vector<Instr>& code, size_t k, size_t n, const std::ve
 // LDM; PUSHI c; J<cmp>I T; EOL" with a skippable EOL at T (mark_after_target_eols) is JCMPMKEOL,
 // which jumps past it: a condition on a parameter or local, ending its line either way. With the
 // length of the sequence, or nullopt.
-std::optional<std::pair<Instr, size_t>> frame_word_with_constant(const std::vector<Instr>& code, size_t k,
-                                                                 const std::vector<bool>& boundary,
-                                                                 const std::vector<bool>& line_start) {
+std::optional<std::pair<Instr, size_t>> frame_word_with_constant(
+    const std::vector<Instr>& code, size_t k, const std::vector<bool>& boundary,
+    const std::vector<bool>& line_start) {
   const auto free = [&](size_t n) { return unentered(code, k, n, boundary); };
   const Instr& address = code[k];
-  if (address.op != Op::ADDLK || !free(3) || code[k + 1].op != Op::LDM || code[k + 2].op != Op::PUSHI)
+  if (address.op != Op::ADDLK || !free(3) || code[k + 1].op != Op::LDM ||
+      code[k + 2].op != Op::PUSHI)
     return std::nullopt;
   const auto offset = static_cast<int32_t>(address.b);
   const int32_t c = imm_of(code[k + 2]);
   const Op use = code[k + 3].op;
-  if ((use == Op::ADDI || use == Op::SUBI) && offset >= 0 && offset <= 0xFFFF &&
-      fits_int16(c) && fits_int16(-c)) {
+  if ((use == Op::ADDI || use == Op::SUBI) && offset >= 0 && offset <= 0xFFFF && fits_int16(c) &&
+      fits_int16(-c)) {
     const int32_t addend = use == Op::ADDI ? c : -c;
-    return std::pair{Instr{address.pc, Op::ADDMLK, address.a, pack_local_imm(static_cast<uint32_t>(offset), addend)},
+    return std::pair{Instr{address.pc, Op::ADDMLK, address.a,
+                           pack_local_imm(static_cast<uint32_t>(offset), addend)},
                      size_t{4}};
   }
   if (use < Op::JEQI || use > Op::JGEI || !free(4) || code[k + 4].op != Op::EOL ||
-      address.a > kFrameTestLocalMax || offset < 0 || offset > static_cast<int32_t>(kFrameTestOffsetMax) ||
-      c < kFrameTestImmMin || c > kFrameTestImmMax)
+      address.a > kFrameTestLocalMax || offset < 0 ||
+      offset > static_cast<int32_t>(kFrameTestOffsetMax) || c < kFrameTestImmMin ||
+      c > kFrameTestImmMax)
     return std::nullopt;
   const size_t target = index_at(code, code[k + 3].a);
-  if (target + 1 >= code.size() || !skippable_eol(code[target], line_start) || !boundary[code[target + 1].pc])
+  if (target + 1 >= code.size() || !skippable_eol(code[target], line_start) ||
+      !boundary[code[target + 1].pc])
     return std::nullopt;
   const auto how = static_cast<uint32_t>(use) - static_cast<uint32_t>(Op::JEQI);
   return std::pair{Instr{address.pc, Op::JCMPMKEOL, code[target + 1].pc,
@@ -673,16 +731,17 @@ void fuse_pointer_tests(std::vector<Instr>& code, const std::vector<bool>& bound
   for (size_t k = 0; k < code.size(); ++k) {
     const Instr& load = code[k];
     if (load.op == Op::LDMLK && unentered(code, k, 2, boundary) && code[k + 1].op == Op::JULTK &&
-        code[k + 2].op == Op::JULTLK &&
-        code[k + 1].a == code[k + 2].a && load.a <= kPointerTestLocalMax &&
-        load.b <= kPointerTestOffsetMax && code[k + 1].b <= kPointerTestBoundMax) {
+        code[k + 2].op == Op::JULTLK && code[k + 1].a == code[k + 2].a &&
+        load.a <= kPointerTestLocalMax && load.b <= kPointerTestOffsetMax &&
+        code[k + 1].b <= kPointerTestBoundMax) {
       const uint32_t window_local = packed_first(code[k + 2].b);
       const int32_t window = packed_imm(code[k + 2].b);
       uint32_t power = 0;
       while (power < kPointerTestSizeMax && (1 << power) < window) ++power;
       if (window_local <= kPointerTestLocalMax && window > 0 && (1 << power) == window) {
-        fused.push_back(Instr{load.pc, Op::LDPMLK, code[k + 1].a,
-                              pack_pointer_test(load.a, load.b, code[k + 1].b, window_local, power)});
+        fused.push_back(
+            Instr{load.pc, Op::LDPMLK, code[k + 1].a,
+                  pack_pointer_test(load.a, load.b, code[k + 1].b, window_local, power)});
         k += 2;
         continue;
       }
@@ -718,11 +777,12 @@ void fuse_memory_frames(std::vector<Instr>& code, const std::vector<bool>& bound
       k += 1;
     } else if (i.op == Op::DUP && inside_free(k, 3) && below_then_jump(k + 1) &&
                imm_of(code[k + 1]) >= 0) {
-      fused.push_back(Instr{i.pc, Op::JULTK, code[k + 3].a, static_cast<uint32_t>(imm_of(code[k + 1]))});
+      fused.push_back(
+          Instr{i.pc, Op::JULTK, code[k + 3].a, static_cast<uint32_t>(imm_of(code[k + 1]))});
       k += 3;
-    } else if (i.op == Op::DUP && inside_free(k, 5) && is(k + 1, Op::LDL) && code[k + 1].a <= 0xFFFF &&
-               is(k + 2, Op::SUBI) && below_then_jump(k + 3) && fits_int16(imm_of(code[k + 3])) &&
-               imm_of(code[k + 3]) >= 0) {
+    } else if (i.op == Op::DUP && inside_free(k, 5) && is(k + 1, Op::LDL) &&
+               code[k + 1].a <= 0xFFFF && is(k + 2, Op::SUBI) && below_then_jump(k + 3) &&
+               fits_int16(imm_of(code[k + 3])) && imm_of(code[k + 3]) >= 0) {
       fused.push_back(Instr{i.pc, Op::JULTLK, code[k + 5].a,
                             pack_local_imm(code[k + 1].a, imm_of(code[k + 3]))});
       k += 5;
@@ -739,7 +799,8 @@ void fuse_memory_frames(std::vector<Instr>& code, const std::vector<bool>& bound
     }
     const Instr& address = fused[k];
     for (size_t j = k + 1; j < store; ++j) code.push_back(fused[j]);
-    code[code.size() - (store - k - 1)].pc = address.pc;  // the sequence starts where the address did
+    code[code.size() - (store - k - 1)].pc =
+        address.pc;  // the sequence starts where the address did
     code.push_back(Instr{fused[store].pc, Op::STMLK, address.a, address.b});
     k = store;
   }
@@ -802,8 +863,8 @@ void drop_dead_code(std::vector<Instr>& code, const Image& image, size_t size) {
   code.clear();
   for (size_t k = 0; k < live.size(); ++k) {
     Instr i = live[k];
-    const bool to_next = k + 1 < live.size() && op_info(i.op).a == Operand::Target &&
-                         i.a == live[k + 1].pc;
+    const bool to_next =
+        k + 1 < live.size() && op_info(i.op).a == Operand::Target && i.a == live[k + 1].pc;
     if (to_next && i.op == Op::JMP && !entered[i.pc]) continue;
     // Before a RET the jump stays: thread_jumps makes it one RETEOL.
     if (to_next && i.op == Op::JMPEOL && live[k + 1].op != Op::RET) i = Instr{i.pc, Op::EOL, 0, 0};

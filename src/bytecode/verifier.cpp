@@ -104,7 +104,8 @@ class Verifier {
         case Operand::Text:
           if (a >= image_.texts.size()) return fail(VerifyError::BadOperand, pc);
           break;
-        default: break;
+        default:
+          break;
       }
       if ((word_op(word) == Op::CMPD || word_op(word) == Op::CMPU) && a > 5)
         return fail(VerifyError::BadOperand, pc);
@@ -125,16 +126,19 @@ class Verifier {
               image_.globals[a].length)
         return fail(VerifyError::BadOperand, pc);
       if (info.b == Operand::Window &&
-          window_first(image_.code[pc + 1]) + window_size(image_.code[pc + 1]) > image_.globals[a].length)
+          window_first(image_.code[pc + 1]) + window_size(image_.code[pc + 1]) >
+              image_.globals[a].length)
         return fail(VerifyError::BadOperand, pc);
-      if (info.b == Operand::Lines && image_.code[pc + 1] == 0) return fail(VerifyError::BadOperand, pc);
+      if (info.b == Operand::Lines && image_.code[pc + 1] == 0)
+        return fail(VerifyError::BadOperand, pc);
       if (word_op(word) == Op::CALL) {
         const RoutineRecord callee = image_.routines[a];
         if (image_.code[pc + 1] > callee.outputs) return fail(VerifyError::BadOperand, pc);
       }
       if (word_op(word) == Op::JCMPMKEOL && frame_test_how(image_.code[pc + 1]) > 5)
         return fail(VerifyError::BadOperand, pc);
-      if (info.b == Operand::Comparison && image_.code[pc + 1] > 5) return fail(VerifyError::BadOperand, pc);
+      if (info.b == Operand::Comparison && image_.code[pc + 1] > 5)
+        return fail(VerifyError::BadOperand, pc);
       if (word_op(word) == Op::CALLFEOL) {
         const uint32_t b = image_.code[pc + 1];
         if (image_.routines[a].inputs < 2 || b > pack_memory_frame(kMemoryFrameMax, 0xFF, 0xFF) ||
@@ -184,7 +188,8 @@ class Verifier {
       case Operand::GlobalWindow:
         if (global_window_index(b) >= globals) return fail(VerifyError::BadGlobal, pc);
         break;
-      default: break;
+      default:
+        break;
     }
     return {};
   }
@@ -220,10 +225,12 @@ class Verifier {
       return fail(VerifyError::BadLocal, pc);
     if (info.b == Operand::FrameTest && frame_test_local(image_.code[pc + 1]) >= locals)
       return fail(VerifyError::BadLocal, pc);
-    if (info.b == Operand::PointerTest && (pointer_test_local(image_.code[pc + 1]) >= locals ||
-                                           pointer_test_window_local(image_.code[pc + 1]) >= locals))
+    if (info.b == Operand::PointerTest &&
+        (pointer_test_local(image_.code[pc + 1]) >= locals ||
+         pointer_test_window_local(image_.code[pc + 1]) >= locals))
       return fail(VerifyError::BadLocal, pc);
-    if (info.b == Operand::LocalPair || info.b == Operand::LocalImm || info.b == Operand::LocalConst) {
+    if (info.b == Operand::LocalPair || info.b == Operand::LocalImm ||
+        info.b == Operand::LocalConst) {
       const uint32_t b = image_.code[pc + 1];
       if (bytecode::packed_first(b) >= locals) return fail(VerifyError::BadLocal, pc);
       if (info.b == Operand::LocalPair && bytecode::packed_second(b) >= locals)
@@ -237,7 +244,8 @@ class Verifier {
       push = static_cast<int32_t>(image_.code[pc + 1]);
     } else if (op == Op::CALLFEOL) {
       // The callee's inputs but the last are the caller's first locals, and 0 and 1 are read.
-      if (std::max<uint32_t>(image_.routines[a].inputs - 1, 2) > locals) return fail(VerifyError::BadLocal, pc);
+      if (std::max<uint32_t>(image_.routines[a].inputs - 1, 2) > locals)
+        return fail(VerifyError::BadLocal, pc);
       pop = static_cast<int32_t>(memory_frame_arguments(image_.code[pc + 1]));
     } else if (pops_host_arguments(op)) {
       pop = static_cast<int32_t>(image_.code[pc + 1]) + (op == Op::CMDRUNX ? 1 : 0);
@@ -256,7 +264,8 @@ class Verifier {
           if (VerifyResult r = reach(a, after, locals, pc); !r.ok()) return r;
         }
         return reach(next, after, locals, pc);
-      case Flow::Jump: return reach(a, after, locals, pc);
+      case Flow::Jump:
+        return reach(a, after, locals, pc);
       case Flow::Branch: {
         if (VerifyResult r = reach(a, after, locals, pc); !r.ok()) return r;
         return reach(next, after, locals, pc);
@@ -279,25 +288,44 @@ class Verifier {
 
 const char* verify_error_text(VerifyError e) {
   switch (e) {
-    case VerifyError::Ok: return "ok";
-    case VerifyError::EmptyCode: return "the image has no code";
-    case VerifyError::BadOpcode: return "unknown opcode";
-    case VerifyError::Truncated: return "an instruction runs past the end of the code";
-    case VerifyError::BreakInImage: return "a breakpoint instruction in an image";
-    case VerifyError::BadConstant: return "constant index out of range";
-    case VerifyError::BadGlobal: return "global index out of range";
-    case VerifyError::BadLocal: return "local index out of range for the routine";
-    case VerifyError::BadRoutine: return "routine index out of range";
-    case VerifyError::BadTarget: return "jump target is not an instruction";
-    case VerifyError::BadOperand: return "operand out of range";
-    case VerifyError::BadEntry: return "routine entry is not an instruction";
-    case VerifyError::StackUnderflow: return "expression stack underflow";
-    case VerifyError::StackOverflow: return "expression stack deeper than the limit";
-    case VerifyError::StackMismatch: return "paths join with different stack depths";
-    case VerifyError::FallsOffEnd: return "a path falls off the end of the code";
-    case VerifyError::ReturnWithValues: return "return with values left on the stack";
-    case VerifyError::NoScratch: return "verifier scratch memory too small";
-    case VerifyError::BadLineEnd: return "a line end on an instruction that cannot end a line";
+    case VerifyError::Ok:
+      return "ok";
+    case VerifyError::EmptyCode:
+      return "the image has no code";
+    case VerifyError::BadOpcode:
+      return "unknown opcode";
+    case VerifyError::Truncated:
+      return "an instruction runs past the end of the code";
+    case VerifyError::BreakInImage:
+      return "a breakpoint instruction in an image";
+    case VerifyError::BadConstant:
+      return "constant index out of range";
+    case VerifyError::BadGlobal:
+      return "global index out of range";
+    case VerifyError::BadLocal:
+      return "local index out of range for the routine";
+    case VerifyError::BadRoutine:
+      return "routine index out of range";
+    case VerifyError::BadTarget:
+      return "jump target is not an instruction";
+    case VerifyError::BadOperand:
+      return "operand out of range";
+    case VerifyError::BadEntry:
+      return "routine entry is not an instruction";
+    case VerifyError::StackUnderflow:
+      return "expression stack underflow";
+    case VerifyError::StackOverflow:
+      return "expression stack deeper than the limit";
+    case VerifyError::StackMismatch:
+      return "paths join with different stack depths";
+    case VerifyError::FallsOffEnd:
+      return "a path falls off the end of the code";
+    case VerifyError::ReturnWithValues:
+      return "return with values left on the stack";
+    case VerifyError::NoScratch:
+      return "verifier scratch memory too small";
+    case VerifyError::BadLineEnd:
+      return "a line end on an instruction that cannot end a line";
   }
   return "unknown verifier error";
 }

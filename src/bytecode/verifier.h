@@ -13,22 +13,22 @@ enum class VerifyError : uint8_t {
   Ok = 0,
   EmptyCode,
   BadOpcode,
-  Truncated,          // an instruction's B word lies past the end
-  BreakInImage,       // BREAK belongs to debuggers, never to an image
+  Truncated,     // an instruction's B word lies past the end
+  BreakInImage,  // BREAK belongs to debuggers, never to an image
   BadConstant,
   BadGlobal,
   BadLocal,
   BadRoutine,
-  BadTarget,          // a jump into the middle of an instruction or outside the code
-  BadOperand,         // a count or unit out of its range
-  BadEntry,           // a routine entry that is not an instruction
+  BadTarget,   // a jump into the middle of an instruction or outside the code
+  BadOperand,  // a count or unit out of its range
+  BadEntry,    // a routine entry that is not an instruction
   StackUnderflow,
   StackOverflow,
-  StackMismatch,      // two paths join with different depths
+  StackMismatch,  // two paths join with different depths
   FallsOffEnd,
-  ReturnWithValues,   // RET with values left on the expression stack
-  NoScratch,          // the caller's scratch memory is too small
-  BadLineEnd,         // the line-end mark on an instruction that cannot carry it
+  ReturnWithValues,  // RET with values left on the expression stack
+  NoScratch,         // the caller's scratch memory is too small
+  BadLineEnd,        // the line-end mark on an instruction that cannot carry it
 };
 const char* verify_error_text(VerifyError e);
 
@@ -38,8 +38,8 @@ struct VerifyLimits {
 
 struct VerifyResult {
   VerifyError error = VerifyError::Ok;
-  uint32_t pc = 0;          // where it was found
-  uint32_t max_depth = 0;   // the deepest expression stack any frame reaches (when Ok)
+  uint32_t pc = 0;         // where it was found
+  uint32_t max_depth = 0;  // the deepest expression stack any frame reaches (when Ok)
   bool ok() const { return error == VerifyError::Ok; }
 };
 

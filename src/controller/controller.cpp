@@ -21,7 +21,8 @@ std::span<const uint8_t> bytes_of(const std::string& text) {
 
 class Controller::Drive final : public dialect::Runtime, public drive::ProgramWords {
  public:
-  explicit Drive(ControllerOptions options) : options_(std::move(options)), flash_(options_.state_dir) {
+  explicit Drive(ControllerOptions options)
+      : options_(std::move(options)), flash_(options_.state_dir) {
     dialect::FirmwareOptions firmware_options;
     firmware_options.timing = options_.timing;
     firmware_options.safe_boot = options_.safe_boot;
@@ -43,12 +44,15 @@ class Controller::Drive final : public dialect::Runtime, public drive::ProgramWo
   void advance_by(uint64_t ns);
   // From the time given so far to the firmware's next cycle (0 when a reboot made it due already:
   // run_until() then runs it).
-  uint64_t until_next_cycle_ns() const { return next_cycle_ns_ > target_ns_ ? next_cycle_ns_ - target_ns_ : 0; }
+  uint64_t until_next_cycle_ns() const {
+    return next_cycle_ns_ > target_ns_ ? next_cycle_ns_ - target_ns_ : 0;
+  }
   void log(std::string text) override { log_.push_back({now_ns_ / 1000, std::move(text)}); }
   void output(std::string_view text) override { output_.emplace_back(text); }
   void reboot() override;
   bool save_axis_parameters(std::string* error) override {
-    return flash_.write(kParametersRecord, bytes_of(drive::serialize_parameters(axis(0).parameters())), error);
+    return flash_.write(kParametersRecord,
+                        bytes_of(drive::serialize_parameters(axis(0).parameters())), error);
   }
   std::optional<drive::Parameters> saved_axis_parameters(std::string* error) override;
 
@@ -69,7 +73,9 @@ class Controller::Drive final : public dialect::Runtime, public drive::ProgramWo
  private:
   void run_until(uint64_t target_ns);
   void run_one_axis_until(uint64_t target_ns);
-  uint64_t axis_period_ns(size_t a) const { return uint64_t{std::max(axes_[a]->period_us(), 1u)} * 1000; }
+  uint64_t axis_period_ns(size_t a) const {
+    return uint64_t{std::max(axes_[a]->period_us(), 1u)} * 1000;
+  }
   // A firmware's cycle of at least a microsecond: time always moves on.
   uint64_t cycle_ns() const { return std::max<uint64_t>(firmware_->cycle_ns(), 1000); }
 
@@ -113,10 +119,11 @@ std::optional<drive::Parameters> Controller::Drive::saved_axis_parameters(std::s
 }
 
 std::optional<drive::ProgramWords::Word> Controller::Drive::find_global(std::string_view name,
-                                                                      uint32_t element) const {
+                                                                        uint32_t element) const {
   const dialect::LoadedProgram* program = firmware_->loaded_program();
   if (program == nullptr) return std::nullopt;
-  uint32_t address = 0;  // the globals' words lie in table order (architecture.md, "The data memory")
+  uint32_t address =
+      0;  // the globals' words lie in table order (architecture.md, "The data memory")
   for (const bytecode::Global& g : program->image().globals) {
     if (g.name == name) {
       if (element >= g.length) return std::nullopt;
@@ -185,7 +192,8 @@ void Controller::Drive::run_one_axis_until(uint64_t target_ns) {
 
 // --- the public face ---
 
-Controller::Controller(ControllerOptions options) : drive_(std::make_unique<Drive>(std::move(options))) {}
+Controller::Controller(ControllerOptions options)
+    : drive_(std::make_unique<Drive>(std::move(options))) {}
 Controller::~Controller() = default;
 
 const dialect::Dialect& Controller::dialect() const { return *drive_->options_.dialect; }
@@ -193,14 +201,19 @@ dialect::Firmware& Controller::firmware() { return *drive_->firmware_; }
 const std::vector<std::string>& Controller::boot_messages() const { return drive_->boot_messages_; }
 
 std::vector<Answer> Controller::send(std::string_view line) { return drive_->console_->send(line); }
-std::vector<Answer> Controller::query(std::string_view line) { return drive_->firmware_->query(line); }
-std::unique_ptr<dialect::Session> Controller::open_session() { return drive_->firmware_->open_session(); }
+std::vector<Answer> Controller::query(std::string_view line) {
+  return drive_->firmware_->query(line);
+}
+std::unique_ptr<dialect::Session> Controller::open_session() {
+  return drive_->firmware_->open_session();
+}
 
 DownloadResult Controller::download(const std::vector<uint8_t>& stored_form) {
   return drive_->firmware_->download(stored_form);
 }
 
-bool Controller::download_source_file(const std::string& path, std::vector<Diagnostic>& diagnostics) {
+bool Controller::download_source_file(const std::string& path,
+                                      std::vector<Diagnostic>& diagnostics) {
   dialect::CompileOutput out = dialect().compile_file(path, {});
   const bool compiled = out.ok();  // before its diagnostics move out
   diagnostics = std::move(out.diagnostics);
@@ -217,7 +230,9 @@ bool Controller::download_source_file(const std::string& path, std::vector<Diagn
   return r.ok;
 }
 
-std::string Controller::start_program(std::string_view entry) { return drive_->firmware_->start(entry); }
+std::string Controller::start_program(std::string_view entry) {
+  return drive_->firmware_->start(entry);
+}
 void Controller::reboot() { drive_->reboot(); }
 
 void Controller::advance(uint64_t duration_us) { drive_->advance_by(duration_us * 1000); }
@@ -226,24 +241,30 @@ void Controller::set_lines_take_time(bool on) { drive_->lines_take_time_ = on; }
 uint64_t Controller::ns_to_next_cycle() const { return drive_->until_next_cycle_ns(); }
 uint64_t Controller::now_us() const { return drive_->now_ns() / 1000; }
 uint64_t Controller::now_ns() const { return drive_->now_ns(); }
-void Controller::set_input_level(int input, bool high) { drive_->axis(0).set_input_level(input, high); }
+void Controller::set_input_level(int input, bool high) {
+  drive_->axis(0).set_input_level(input, high);
+}
 bool Controller::inject_fault(std::string_view name, bool persistent) {
   return drive_->axis(0).inject_fault(name, persistent);
 }
 drive::Axis& Controller::axis() { return drive_->axis(0); }
 drive::Recorder& Controller::recorder() { return drive_->axis(0).recorder(); }
 
-std::optional<drive::Channel> Controller::recorder_channel(std::string_view name, std::string* why) {
+std::optional<drive::Channel> Controller::recorder_channel(std::string_view name,
+                                                           std::string* why) {
   if (const std::optional<drive::Signal> s = drive_->firmware_->recorder_signal(name)) {
     return drive::signal_channel(*s, std::string(name));
   }
-  if (const drive::SignalInfo* info = drive::find_signal(name)) return drive::signal_channel(info->signal, std::string(name));
+  if (const drive::SignalInfo* info = drive::find_signal(name))
+    return drive::signal_channel(info->signal, std::string(name));
   return drive::global_channel(*drive_, name, why);
 }
 
 bool Controller::program_running() const { return drive_->firmware_->running(); }
 int32_t Controller::program_error() const { return drive_->firmware_->program_error(); }
-std::string Controller::program_error_text() const { return drive_->firmware_->program_error_text(); }
+std::string Controller::program_error_text() const {
+  return drive_->firmware_->program_error_text();
+}
 
 std::vector<LogEntry> Controller::take_log() {
   std::vector<LogEntry> out;

@@ -98,7 +98,7 @@ class Controller {
 
   // --- state ---
   bool program_running() const;
-  int32_t program_error() const;           // last run-time error of the program (vm RunError), 0 none
+  int32_t program_error() const;  // last run-time error of the program (vm RunError), 0 none
   std::string program_error_text() const;  // "" when none
   // Notable events since the last call (auto-routines entered, run-time errors, boot).
   std::vector<LogEntry> take_log();

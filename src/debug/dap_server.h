@@ -107,7 +107,7 @@ class DapServer {
   std::function<void(const std::string&)> send_;
   int64_t seq_ = 1;
   std::unique_ptr<controller::Controller> owned_drive_;  // a launch's drive
-  controller::Controller* drive_ = nullptr;               // the launched or attached drive
+  controller::Controller* drive_ = nullptr;              // the launched or attached drive
   bool attached_ = false;
   std::string initialize_request_;
   std::vector<std::string> relay_start_;

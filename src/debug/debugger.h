@@ -166,7 +166,7 @@ class Debugger {
   std::optional<Stepping> stepping_;
   RunState state_ = RunState::Running;
   Stop stop_;
-  std::vector<uint32_t> halted_;     // threads the debugger halted, to resume
+  std::vector<uint32_t> halted_;  // threads the debugger halted, to resume
   // The thread a stop showed, where it stood, when it goes on: a breakpoint set on that very
   // place while it stood there is no hit as it leaves (as in gdb), only when it comes back.
   struct Standing {

@@ -61,7 +61,8 @@ std::vector<Variable> Debugger::locals(uint32_t thread, uint32_t depth) const {
   if (p == nullptr) return out;
   if (const auto frames = drive_.firmware().debug_frames(thread)) {
     if (depth < frames->size())
-      for (const dialect::DebugVariable& v : (*frames)[depth].locals) out.push_back({v.name, v.value, v.type, 0});
+      for (const dialect::DebugVariable& v : (*frames)[depth].locals)
+        out.push_back({v.name, v.value, v.type, 0});
     return out;
   }
   if (depth >= p->machine().frame_count(thread)) return out;

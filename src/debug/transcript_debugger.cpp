@@ -61,7 +61,8 @@ std::string TranscriptDebugger::command(controller::Controller& drive, const std
       into = modifier.substr(w.size());
       return true;
     };
-    if (!modifier.empty() && !take("if", b.condition) && !take("hits", b.hit_condition) && !take("log", b.log_message))
+    if (!modifier.empty() && !take("if", b.condition) && !take("hits", b.hit_condition) &&
+        !take("log", b.log_message))
       return "debug break: '" + modifier + "' is not if, hits or log";
     std::vector<BreakpointSpec>& specs = breakpoints_[file];
     specs.push_back(b);
@@ -110,7 +111,8 @@ std::string TranscriptDebugger::command(controller::Controller& drive, const std
     if (arrow == std::string::npos) return "debug eval needs EXPR -> VALUE";
     const dialect::Evaluation e = debugger_->evaluate(thread(), depth_, rest.substr(0, arrow));
     const std::string got = e.ok ? e.value : "error: " + e.error;
-    return got == rest.substr(arrow + 4) ? "" : "debug eval " + rest.substr(0, arrow) + ": got " + got;
+    return got == rest.substr(arrow + 4) ? ""
+                                         : "debug eval " + rest.substr(0, arrow) + ": got " + got;
   }
   if (verb == "stack") return check_stack(rest);
   if (verb == "thread" || verb == "frame") {
@@ -163,7 +165,9 @@ std::string TranscriptDebugger::check_stopped(const std::string& rest) {
   return got == rest ? "" : "expected stopped " + rest + ", got " + got;
 }
 
-uint32_t TranscriptDebugger::thread() const { return thread_ != 0 ? thread_ : debugger_->last_stop().thread; }
+uint32_t TranscriptDebugger::thread() const {
+  return thread_ != 0 ? thread_ : debugger_->last_stop().thread;
+}
 
 // "twice@scale.h:5 scale@scale.h:12 _t1@pdl_debug.pdl:11": the stopped thread's frames, innermost
 // first, each routine@file:line.
@@ -171,8 +175,8 @@ std::string TranscriptDebugger::check_stack(const std::string& rest) {
   if (debugger_->state() != RunState::Stopped) return "expected the program stopped, it is not";
   std::string got;
   for (const StackFrame& f : debugger_->stack(thread())) {
-    got += (got.empty() ? "" : " ") + f.routine + "@" + std::filesystem::path(f.file).filename().string() + ":" +
-           std::to_string(f.line);
+    got += (got.empty() ? "" : " ") + f.routine + "@" +
+           std::filesystem::path(f.file).filename().string() + ":" + std::to_string(f.line);
   }
   return got == rest ? "" : "expected stack " + rest + ", got " + got;
 }

@@ -34,11 +34,12 @@ struct CompileSettings {
 };
 
 struct CompileOutput {
-  std::vector<uint8_t> stored_form;    // what is downloaded and stored; empty on errors
+  std::vector<uint8_t> stored_form;      // what is downloaded and stored; empty on errors
   std::optional<bytecode::Image> image;  // the image it loads into, where the compiler has it
   std::vector<Diagnostic> diagnostics;
   // The debug map of a stored form that carries no line table of its own (PUP's X.cup.json: the
-  // source place of each CUP line, the variables' names), in the dialect's own JSON; empty for none.
+  // source place of each CUP line, the variables' names), in the dialect's own JSON; empty for
+  // none.
   std::string debug_map;
   bool ok() const {
     for (const Diagnostic& d : diagnostics)
@@ -58,15 +59,20 @@ class Dialect {
   virtual std::string_view stored_extension() const = 0;
   // Where `uprog build SOURCE` writes the stored form by default: SOURCE plus the extension
   // ("f.ehl.upi"); a dialect whose stored form replaces the source's extension says so.
-  virtual std::string stored_path(const std::string& source) const { return source + std::string(stored_extension()); }
-  virtual CompileOutput compile_file(const std::string& path, const CompileSettings& settings) const = 0;
+  virtual std::string stored_path(const std::string& source) const {
+    return source + std::string(stored_extension());
+  }
+  virtual CompileOutput compile_file(const std::string& path,
+                                     const CompileSettings& settings) const = 0;
   virtual std::span<const ErrorInfo> diagnostic_codes() const = 0;
   virtual std::span<const ErrorInfo> interpreter_errors() const = 0;
-  virtual std::unique_ptr<Firmware> make_firmware(Runtime& runtime, const FirmwareOptions& options) const = 0;
+  virtual std::unique_ptr<Firmware> make_firmware(Runtime& runtime,
+                                                  const FirmwareOptions& options) const = 0;
 
   // The host's side: the command lines that download a stored form into a running drive, and
   // the one that then loads it to run ("" when storing is enough).
-  virtual std::vector<std::string> download_lines(const std::vector<uint8_t>& stored_form) const = 0;
+  virtual std::vector<std::string> download_lines(
+      const std::vector<uint8_t>& stored_form) const = 0;
   virtual std::string load_line() const = 0;
   // How the drive splits a host's lines into expressions when it answers each of them once and
   // marks no line end (Gold's drive form): a host counts its answers with it. nullopt (the

@@ -128,12 +128,13 @@ class Firmware {
     return std::nullopt;
   }
 
-  // --- for the debugger (src/debug); the defaults offer nothing, so a dialect adds them as it can ---
-  // The program in RAM (its machine and hosted image: line table, locals), or nullptr.
+  // --- for the debugger (src/debug); the defaults offer nothing, so a dialect adds them as it can
+  // --- The program in RAM (its machine and hosted image: line table, locals), or nullptr.
   virtual LoadedProgram* debug_program() { return nullptr; }
   // An expression in the dialect's syntax, seeing the locals of frame `depth` (0 innermost) of
   // `thread` and the globals; what it assigns stays assigned. It takes no virtual time.
-  virtual Evaluation evaluate(uint32_t /*thread*/, uint32_t /*depth*/, std::string_view /*expression*/) {
+  virtual Evaluation evaluate(uint32_t /*thread*/, uint32_t /*depth*/,
+                              std::string_view /*expression*/) {
     return {false, {}, false, "this dialect evaluates no expressions for the debugger"};
   }
   // The debug map (dialect::CompileOutput::debug_map) of the program just downloaded, given by the
@@ -144,20 +145,25 @@ class Firmware {
   virtual std::vector<DebugVariable> debug_variables() { return {}; }
   // The frames of `thread`, innermost first, where the dialect keeps them itself; nullopt (the
   // default) when the VM's frames are the program's.
-  virtual std::optional<std::vector<DebugFrame>> debug_frames(uint32_t /*thread*/) { return std::nullopt; }
+  virtual std::optional<std::vector<DebugFrame>> debug_frames(uint32_t /*thread*/) {
+    return std::nullopt;
+  }
   // The number of frames debug_frames() would give, for stepping over and out: asked at each line
   // start while a step runs, so cheaper than the frames. nullopt: the VM's frame count.
   virtual std::optional<uint32_t> debug_call_depth(uint32_t /*thread*/) { return std::nullopt; }
   // The code word where a function breakpoint on `name` stands, for a routine of the dialect's
   // that is no image routine (a PDL procedure); nullopt (the default): none.
-  virtual std::optional<uint32_t> debug_function_entry(std::string_view /*name*/) { return std::nullopt; }
+  virtual std::optional<uint32_t> debug_function_entry(std::string_view /*name*/) {
+    return std::nullopt;
+  }
   // Sets a local of a frame of debug_frames(): the value now stored, or why not (.ok false).
-  virtual Evaluation set_debug_local(uint32_t /*thread*/, uint32_t /*depth*/, std::string_view /*name*/,
-                                     std::string_view /*value*/) {
+  virtual Evaluation set_debug_local(uint32_t /*thread*/, uint32_t /*depth*/,
+                                     std::string_view /*name*/, std::string_view /*value*/) {
     return {false, {}, false, "this dialect has no frames of its own"};
   }
   // As start(), with inputs for the entry routine (the debugger's `args`): "" or why not.
-  virtual std::string start_with_arguments(std::string_view entry, const std::vector<double>& args) {
+  virtual std::string start_with_arguments(std::string_view entry,
+                                           const std::vector<double>& args) {
     return args.empty() ? start(entry) : "this dialect starts a program without arguments";
   }
 };

@@ -81,9 +81,7 @@ void LineFramer::add_character(char c) {
   }
   const auto marker = options_.comment_marker;
   if (!marker.empty()) {
-    marker_matched_ = c == marker[marker_matched_] ? marker_matched_ + 1
-                      : c == marker[0]             ? 1
-                                                   : 0;
+    marker_matched_ = c == marker[marker_matched_] ? marker_matched_ + 1 : c == marker[0] ? 1 : 0;
     if (marker_matched_ == marker.size()) {
       // The marker's earlier characters are already in the line: take them out again.
       const std::size_t held = std::min(marker.size() - 1, line_.size());
@@ -108,7 +106,8 @@ void LineFramer::end_expression(std::vector<Frame>& out) {
     out.push_back({Frame::Kind::kTooLong, {}});
   } else if (bad_character_) {
     out.push_back({Frame::Kind::kBadCharacter, {}});
-  } else if (const auto text = trim(line_); !text.empty() || (options_.answer_empty_expressions && !in_comment_)) {
+  } else if (const auto text = trim(line_);
+             !text.empty() || (options_.answer_empty_expressions && !in_comment_)) {
     out.push_back({Frame::Kind::kLine, std::string(text)});
   }
   line_.clear();

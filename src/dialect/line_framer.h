@@ -13,8 +13,8 @@ namespace uprog::dialect {
 
 // Each dialect's WireForm gives its own; these defaults only end lines at CR and LF.
 struct FramerOptions {
-  std::size_t max_line_length = 255;    // characters of one line, comments excluded
-  bool semicolon_ends_line = false;     // `;` ends a line, as CR and LF do
+  std::size_t max_line_length = 255;     // characters of one line, comments excluded
+  bool semicolon_ends_line = false;      // `;` ends a line, as CR and LF do
   std::string_view comment_marker = "";  // the rest of the physical line is ignored; "" for none
   // An empty expression ended by `;`, CR or a lone LF is a line of its own (kLine with no text), as
   // a real Elmo drive answers it; LF right after CR ends nothing. False: blank lines are dropped.

@@ -5,8 +5,9 @@
 
 namespace uprog::dialect {
 
-std::unique_ptr<LoadedProgram> LoadedProgram::load(std::vector<uint8_t> bytes, const vm::MachineConfig& config,
-                                                   vm::Host& host, std::string* error, bool decode,
+std::unique_ptr<LoadedProgram> LoadedProgram::load(std::vector<uint8_t> bytes,
+                                                   const vm::MachineConfig& config, vm::Host& host,
+                                                   std::string* error, bool decode,
                                                    std::string_view dialect) {
   auto fail = [error](std::string why) {
     if (error) *error = std::move(why);
@@ -15,7 +16,8 @@ std::unique_ptr<LoadedProgram> LoadedProgram::load(std::vector<uint8_t> bytes, c
   std::unique_ptr<LoadedProgram> p(new LoadedProgram());
   p->bytes_ = std::move(bytes);
   bytecode::ImageView view;
-  if (const auto le = bytecode::load_image(p->bytes_.data(), p->bytes_.size(), view); le != bytecode::LoadError::Ok) {
+  if (const auto le = bytecode::load_image(p->bytes_.data(), p->bytes_.size(), view);
+      le != bytecode::LoadError::Ok) {
     return fail(std::string("not a valid image: ") + bytecode::load_error_text(le));
   }
   const std::string_view made_for = view.dialect_name();
@@ -24,13 +26,14 @@ std::unique_ptr<LoadedProgram> LoadedProgram::load(std::vector<uint8_t> bytes, c
                 std::string(dialect));
   }
   p->memory_.assign((vm::Machine::memory_needed(view, config) + 7) / 8, 0);
-  const vm::LoadStatus s =
-      p->machine_.load(p->bytes_.data(), p->bytes_.size(), config, p->memory_.data(), p->memory_.size() * 8, host);
+  const vm::LoadStatus s = p->machine_.load(p->bytes_.data(), p->bytes_.size(), config,
+                                            p->memory_.data(), p->memory_.size() * 8, host);
   if (!s.ok()) {
-    if (s.load != bytecode::LoadError::Ok) return fail(std::string("not a valid image: ") + bytecode::load_error_text(s.load));
+    if (s.load != bytecode::LoadError::Ok)
+      return fail(std::string("not a valid image: ") + bytecode::load_error_text(s.load));
     if (s.verify != bytecode::VerifyError::Ok) {
-      return fail(std::string("the verifier refused it: ") + bytecode::verify_error_text(s.verify) + " at code word " +
-                  std::to_string(s.pc));
+      return fail(std::string("the verifier refused it: ") + bytecode::verify_error_text(s.verify) +
+                  " at code word " + std::to_string(s.pc));
     }
     return fail("it needs more memory than the drive has");
   }
@@ -42,7 +45,8 @@ std::unique_ptr<LoadedProgram> LoadedProgram::load(std::vector<uint8_t> bytes, c
 }
 
 std::string LoadedProgram::where(uint32_t pc) const {
-  if (const bytecode::LineEntry* line = image_.line_at(pc)) return line->file + ":" + std::to_string(line->line);
+  if (const bytecode::LineEntry* line = image_.line_at(pc))
+    return line->file + ":" + std::to_string(line->line);
   return "code word " + std::to_string(pc);
 }
 

@@ -18,8 +18,9 @@ class LoadedProgram {
   // verifier refused it: … at code word N"). With `decode`, image() holds the hosted form (names,
   // line table) for the command line and the debugger. With `dialect`, an image another
   // dialect's compiler made is refused too (a hand-made image names none and is taken).
-  static std::unique_ptr<LoadedProgram> load(std::vector<uint8_t> bytes, const vm::MachineConfig& config,
-                                             vm::Host& host, std::string* error, bool decode = true,
+  static std::unique_ptr<LoadedProgram> load(std::vector<uint8_t> bytes,
+                                             const vm::MachineConfig& config, vm::Host& host,
+                                             std::string* error, bool decode = true,
                                              std::string_view dialect = {});
   LoadedProgram(const LoadedProgram&) = delete;
   LoadedProgram& operator=(const LoadedProgram&) = delete;

@@ -49,7 +49,8 @@ Status Axis::set_input_logic(int n, int32_t logic) {
 }
 
 Status Axis::set_period_us(int32_t period_us) {
-  if (period_us < static_cast<int32_t>(kMinPeriod_us) || period_us > static_cast<int32_t>(kMaxPeriod_us))
+  if (period_us < static_cast<int32_t>(kMinPeriod_us) ||
+      period_us > static_cast<int32_t>(kMaxPeriod_us))
     return Status::kOutOfRange;
   params_.servo_period_us = period_us;
   return Status::kOk;
@@ -136,7 +137,8 @@ int32_t Axis::internal_to_user_slow(double exact) const {
     const double range = static_cast<double>(params_.modulo_high_counts) - low;
     return static_cast<int32_t>(low + floor_mod(user - low, range));
   }
-  return static_cast<int32_t>(static_cast<uint32_t>(static_cast<int64_t>(floor_mod(user, 4294967296.0))));
+  return static_cast<int32_t>(
+      static_cast<uint32_t>(static_cast<int64_t>(floor_mod(user, 4294967296.0))));
 }
 
 void Axis::set_absolute_target(int32_t target_counts) {
@@ -191,8 +193,8 @@ void Axis::start_profile(const Profile& profile, bool stopping) {
   if (!moving_) {
     // A new motion from rest takes the current SF; while moving the window stays as it is.
     const double window_us = params_.smoothing_ms * 1000.0;
-    const auto length =
-        std::max<uint32_t>(1u, static_cast<uint32_t>(std::lround(window_us / params_.servo_period_us)));
+    const auto length = std::max<uint32_t>(
+        1u, static_cast<uint32_t>(std::lround(window_us / params_.servo_period_us)));
     smooth_position_.reset(length, raw_.position_counts);
     smooth_velocity_.reset(length, raw_.velocity_counts_per_s);
     smooth_accel_.reset(length, 0.0);
@@ -249,7 +251,8 @@ Status Axis::begin_motion() {
       const double limit = jog > 0 ? user_to_internal(params_.position_high_counts)
                                    : user_to_internal(params_.position_low_counts);
       ends_at_limit_ = true;  // a position-mode jog can only end at the software limit
-      start_profile(plan_move(raw_.position_counts, raw_.velocity_counts_per_s, limit, to_limit), false);
+      start_profile(plan_move(raw_.position_counts, raw_.velocity_counts_per_s, limit, to_limit),
+                    false);
     } else {
       start_profile(plan_jog(raw_.position_counts, raw_.velocity_counts_per_s, jog, limits), false);
     }
@@ -263,7 +266,8 @@ Status Axis::begin_motion() {
     ends_at_limit_ = target != target_internal_;
   }
   MotionLimits move = limits;
-  move.speed_counts_per_s = std::min(move.speed_counts_per_s, target >= raw_.position_counts ? vh : -vl);
+  move.speed_counts_per_s =
+      std::min(move.speed_counts_per_s, target >= raw_.position_counts ? vh : -vl);
   start_profile(plan_move(raw_.position_counts, raw_.velocity_counts_per_s, target, move), false);
   has_target_ = true;
   return Status::kOk;
@@ -271,7 +275,8 @@ Status Axis::begin_motion() {
 
 void Axis::stop_with(double decel_counts_per_s2) {
   if (!moving_) return;
-  start_profile(plan_stop(raw_.position_counts, raw_.velocity_counts_per_s, decel_counts_per_s2), true);
+  start_profile(plan_stop(raw_.position_counts, raw_.velocity_counts_per_s, decel_counts_per_s2),
+                true);
   has_target_ = false;  // a stopped motion has no target to settle at: MS stays 1
   ends_at_limit_ = false;
 }
@@ -287,12 +292,16 @@ void Axis::set_position(int32_t position_counts) {
 int32_t Axis::motion_status() const {
   if (!servo_ready_) return 3;  // the motor is off (or still enabling): Gold's "motor off"
   switch (params_.unit_mode) {
-    case 1: return 1;                  // no software motion in current mode
-    case 2: return ramping_ ? 2 : 1;   // the reference differs from the JV target while ramping
-    default: break;
+    case 1:
+      return 1;  // no software motion in current mode
+    case 2:
+      return ramping_ ? 2 : 1;  // the reference differs from the JV target while ramping
+    default:
+      break;
   }
   if (moving_) return 2;
-  const bool settled = has_target_ && in_window_us_ >= static_cast<int64_t>(params_.target_time_ms) * 1000;
+  const bool settled =
+      has_target_ && in_window_us_ >= static_cast<int64_t>(params_.target_time_ms) * 1000;
   return settled ? 0 : 1;
 }
 
@@ -442,11 +451,20 @@ uint32_t Axis::scan_inputs() {
   for (int n = 1; n <= kInputCount; ++n) {
     if (!input_was_active_[n - 1]) continue;
     switch (input_function(params_.input_logic[n - 1])) {
-      case InputFunction::kInhibit: inhibit_active_ = true; break;
-      case InputFunction::kForwardLimit: forward_limit_active_ = true; break;
-      case InputFunction::kReverseLimit: reverse_limit_active_ = true; break;
-      case InputFunction::kHardStop: hard_stop_active_ = true; break;
-      default: break;
+      case InputFunction::kInhibit:
+        inhibit_active_ = true;
+        break;
+      case InputFunction::kForwardLimit:
+        forward_limit_active_ = true;
+        break;
+      case InputFunction::kReverseLimit:
+        reverse_limit_active_ = true;
+        break;
+      case InputFunction::kHardStop:
+        hard_stop_active_ = true;
+        break;
+      default:
+        break;
     }
   }
   return events;
@@ -460,7 +478,8 @@ void Axis::enforce_limits() {
   if (!moving_ || stopping_ || !(hard_stop || block_forward || block_reverse)) return;
   const ProfileSample end = profile_.final_state();
   double heading = raw_.velocity_counts_per_s;
-  if (heading == 0.0) heading = end.velocity_counts_per_s + (end.position_counts - raw_.position_counts);
+  if (heading == 0.0)
+    heading = end.velocity_counts_per_s + (end.position_counts - raw_.position_counts);
   if (hard_stop || (block_forward && heading > 0.0) || (block_reverse && heading < 0.0)) {
     stop_with(params_.stop_decel_counts_per_s2);
     stopped_by_limit_ = true;
@@ -520,16 +539,21 @@ void Axis::advance_profile() {
 double Axis::current_limit_a() {
   const double peak = params_.peak_current_a;
   const double continuous = std::min(static_cast<double>(params_.continuous_current_a), peak);
-  if (std::abs(current_command_a_) > continuous) above_continuous_s_ += dt_s();
-  else above_continuous_s_ = 0.0;
+  if (std::abs(current_command_a_) > continuous)
+    above_continuous_s_ += dt_s();
+  else
+    above_continuous_s_ = 0.0;
   return above_continuous_s_ > kPeakCurrentTime_s ? continuous : peak;
 }
 
 void Axis::close_loop() {
   const double dt = dt_s();
   const double limit_a = current_limit_a();
-  const LoopInputs in{ref_.position_counts, ref_.velocity_counts_per_s, ref_.accel_counts_per_s2,
-                      motor_state_.position_counts, motor_state_.velocity_counts_per_s,
+  const LoopInputs in{ref_.position_counts,
+                      ref_.velocity_counts_per_s,
+                      ref_.accel_counts_per_s2,
+                      motor_state_.position_counts,
+                      motor_state_.velocity_counts_per_s,
                       accel_per_amp_counts_per_s2_};
   switch (params_.unit_mode) {
     case 1:
@@ -537,11 +561,13 @@ void Axis::close_loop() {
       break;
     case 2:
       velocity_command_counts_per_s_ = ref_.velocity_counts_per_s;
-      current_command_a_ = velocity_loop(params_.gains, loop_, velocity_command_counts_per_s_, in, limit_a, dt);
+      current_command_a_ =
+          velocity_loop(params_.gains, loop_, velocity_command_counts_per_s_, in, limit_a, dt);
       break;
     default:
       velocity_command_counts_per_s_ = position_loop(params_.gains, loop_, in, dt);
-      current_command_a_ = velocity_loop(params_.gains, loop_, velocity_command_counts_per_s_, in, limit_a, dt);
+      current_command_a_ =
+          velocity_loop(params_.gains, loop_, velocity_command_counts_per_s_, in, limit_a, dt);
       break;
   }
   const double voltage = current_loop(params_.gains, loop_, current_command_a_,
@@ -556,7 +582,8 @@ inline void Axis::check_faults() {
   const double user_position = motor_state_.position_counts + offset_counts_;
   if (params_.unit_mode == 5 && std::abs(position_error) > params_.max_position_error_counts)
     latch_fault(kFaultFollowingError);
-  else if (params_.unit_mode != 1 && std::abs(velocity_error) > params_.max_velocity_error_counts_per_s)
+  else if (params_.unit_mode != 1 &&
+           std::abs(velocity_error) > params_.max_velocity_error_counts_per_s)
     latch_fault(kFaultVelocityError);
   else if (v > params_.speed_fault_high_counts_per_s || v < params_.speed_fault_low_counts_per_s)
     latch_fault(kFaultSpeedLimit);
@@ -575,15 +602,19 @@ inline void Axis::track_target_window() {
     return;
   }
   const double error = std::abs(ref_.position_counts - motor_state_.position_counts);
-  if (error > params_.target_radius_counts) in_window_us_ = -1;
-  else in_window_us_ = in_window_us_ < 0 ? 0 : in_window_us_ + period_us();
+  if (error > params_.target_radius_counts)
+    in_window_us_ = -1;
+  else
+    in_window_us_ = in_window_us_ < 0 ? 0 : in_window_us_ + period_us();
 }
 
 // ---------------------------------------------------------------- homing
 
 void Axis::arm_homing(bool arm) {
-  if (arm) homing_.arm();
-  else homing_.disarm();
+  if (arm)
+    homing_.arm();
+  else
+    homing_.disarm();
 }
 
 uint32_t Axis::step_homing(double position_before_counts) {
@@ -610,9 +641,12 @@ namespace {
 // The input function whose edge a homing switch waits for (kInput names an input instead).
 InputFunction switch_function(HomeSwitch s) {
   switch (s) {
-    case HomeSwitch::kForwardLimit: return InputFunction::kForwardLimit;
-    case HomeSwitch::kReverseLimit: return InputFunction::kReverseLimit;
-    default: return InputFunction::kHome;
+    case HomeSwitch::kForwardLimit:
+      return InputFunction::kForwardLimit;
+    case HomeSwitch::kReverseLimit:
+      return InputFunction::kReverseLimit;
+    default:
+      return InputFunction::kHome;
   }
 }
 }  // namespace
@@ -636,17 +670,25 @@ void Axis::home_event(double at_counts) {
   home_capture_ = internal_to_user(at_counts);
   const HomingSettings& h = homing_settings_;
   switch (h.setting) {
-    case HomePositionSetting::kAbsolute: set_position(h.home_value_counts); break;
+    case HomePositionSetting::kAbsolute:
+      set_position(h.home_value_counts);
+      break;
     case HomePositionSetting::kRelative:
       // The captured point becomes the home value; the distance travelled since it is kept.
       offset_counts_ += static_cast<double>(h.home_value_counts) - home_capture_;
       break;
-    case HomePositionSetting::kKeep: break;
+    case HomePositionSetting::kKeep:
+      break;
   }
   switch (h.action) {
-    case HomeAction::kStop: stop_with(params_.stop_decel_counts_per_s2); break;
-    case HomeAction::kSetOutput: set_output(h.output, true); break;
-    case HomeAction::kContinue: break;
+    case HomeAction::kStop:
+      stop_with(params_.stop_decel_counts_per_s2);
+      break;
+    case HomeAction::kSetOutput:
+      set_output(h.output, true);
+      break;
+    case HomeAction::kContinue:
+      break;
   }
 }
 

@@ -32,26 +32,26 @@ enum class Status : uint8_t {
   kBadStartData,      // BG of a PT motion whose start index or table set-up is unusable
 };
 
-constexpr uint32_t kEnableDelay_us = 20000;        // MO=1 to SO=1
-constexpr uint32_t kMinPeriod_us = 25;             // TS's range
+constexpr uint32_t kEnableDelay_us = 20000;  // MO=1 to SO=1
+constexpr uint32_t kMinPeriod_us = 25;       // TS's range
 constexpr uint32_t kMaxPeriod_us = 2000;
-constexpr double kPeakCurrentTime_s = 3.0;          // PL[1] allowed this long, then CL[1]
+constexpr double kPeakCurrentTime_s = 3.0;  // PL[1] allowed this long, then CL[1]
 
 // The status register (SR) as the Elmo reference lays it out (docs/dialects/gold.md, "SR").
 // Bits 12 (program running) and 29 (error in the user program) belong to the program's host.
 enum StatusRegisterBits : uint32_t {
-  kSrDriveProblem = 1u << 0,        // a power-stage problem; its code is bits 1..3
-  kSrPowerStageShift = 1,           // bits 1..3: the MF power-stage code
+  kSrDriveProblem = 1u << 0,  // a power-stage problem; its code is bits 1..3
+  kSrPowerStageShift = 1,     // bits 1..3: the MF power-stage code
   kSrMotorOn = 1u << 4,
-  kSrReferenceMode = 1u << 5,       // RM=1: an external reference selected
-  kSrMotorFailure = 1u << 6,        // MF != 0
-  kSrUnitModeShift = 8,             // bits 8..10 (Gold: bit 7 stays clear)
-  kSrHoming = 1u << 11,             // a homing process is armed
+  kSrReferenceMode = 1u << 5,  // RM=1: an external reference selected
+  kSrMotorFailure = 1u << 6,   // MF != 0
+  kSrUnitModeShift = 8,        // bits 8..10 (Gold: bit 7 stays clear)
+  kSrHoming = 1u << 11,        // a homing process is armed
   kSrProgramRunning = 1u << 12,
-  kSrCurrentLimited = 1u << 13,     // the current is limited to CL[1] after PL[1]'s time
-  kSrSafeTorqueOff1 = 1u << 14,     // Gold: STO input 1 permits enabling (no STO circuit:
-  kSrSafeTorqueOff2 = 1u << 15,     // both always permit)
-  kSrStoppedByLimit = 1u << 28,     // RLS, FLS, a stop input, or a VH[3]/VL[3] target limit
+  kSrCurrentLimited = 1u << 13,  // the current is limited to CL[1] after PL[1]'s time
+  kSrSafeTorqueOff1 = 1u << 14,  // Gold: STO input 1 permits enabling (no STO circuit:
+  kSrSafeTorqueOff2 = 1u << 15,  // both always permit)
+  kSrStoppedByLimit = 1u << 28,  // RLS, FLS, a stop input, or a VH[3]/VL[3] target limit
   kSrProgramError = 1u << 29,
 };
 
@@ -69,9 +69,9 @@ class Axis {
   const Parameters& parameters() const { return params_; }
   // LD: replaces every parameter; refused while the motor is on.
   Status load_parameters(const Parameters& params);
-  Status set_unit_mode(int32_t mode);           // UM: 1, 2 or 5, motor off only
-  Status set_input_logic(int n, int32_t logic); // IL[n]
-  Status set_period_us(int32_t period_us);      // TS, kMinPeriod_us..kMaxPeriod_us
+  Status set_unit_mode(int32_t mode);                // UM: 1, 2 or 5, motor off only
+  Status set_input_logic(int n, int32_t logic);      // IL[n]
+  Status set_period_us(int32_t period_us);           // TS, kMinPeriod_us..kMaxPeriod_us
   Status set_counts_per_revolution(int32_t counts);  // the encoder; spaces the index pulses
 
   // --- enable ---
@@ -84,13 +84,13 @@ class Axis {
   // A target between two counts, for a drive whose position units do not divide into counts
   // (its user units scaled by a gear ratio): the motor goes to the exact point (no modulo).
   void set_absolute_target_exact(double target_counts);
-  void set_relative_move(int32_t distance_counts);  // PR
+  void set_relative_move(int32_t distance_counts);       // PR
   void set_jog_velocity(int32_t velocity_counts_per_s);  // JV
   int32_t absolute_target() const { return pa_counts_; }
   int32_t relative_move() const { return pr_counts_; }
-  void set_pt_start(int32_t index);                 // PT: the next BG starts a PT motion there
-  int32_t pt_index() const;                         // the executing point, else the start
-  PtTable& pt_table() { return pt_; }               // QP, MP
+  void set_pt_start(int32_t index);    // PT: the next BG starts a PT motion there
+  int32_t pt_index() const;            // the executing point, else the start
+  PtTable& pt_table() { return pt_; }  // QP, MP
   const PtTable& pt_table() const { return pt_; }
   Status begin();  // BG (the recorder's begin-of-motion trigger sees it)
   // ST (and the motion side of KL): the profiler decelerates to a stop with SD; the motor stays
@@ -105,39 +105,46 @@ class Axis {
   // PX unrounded: a drive that scales counts into its own units rounds once, at the end.
   double position_exact() const { return motor_state_.position_counts + offset_counts_; }
   void set_position(int32_t position_counts);
-  int32_t velocity() const { return static_cast<int32_t>(round_half_away(motor_state_.velocity_counts_per_s)); }  // VX
+  int32_t velocity() const {
+    return static_cast<int32_t>(round_half_away(motor_state_.velocity_counts_per_s));
+  }                                 // VX
   int32_t position_error() const {  // PE
-    return static_cast<int32_t>(round_half_away(ref_.position_counts - motor_state_.position_counts));
+    return static_cast<int32_t>(
+        round_half_away(ref_.position_counts - motor_state_.position_counts));
   }
-  int32_t reference_velocity() const { return static_cast<int32_t>(round_half_away(ref_.velocity_counts_per_s)); }  // DV[2]
+  int32_t reference_velocity() const {
+    return static_cast<int32_t>(round_half_away(ref_.velocity_counts_per_s));
+  }                                                                                      // DV[2]
   int32_t reference_position() const { return internal_to_user(ref_.position_counts); }  // DV[3]
-  float current_command() const { return static_cast<float>(current_command_a_); }  // DV[1]
-  int32_t motion_status() const;            // MS: 0 settled, 1 stationary, 2 moving, 3 motor off
+  float current_command() const { return static_cast<float>(current_command_a_); }       // DV[1]
+  int32_t motion_status() const;  // MS: 0 settled, 1 stationary, 2 moving, 3 motor off
   // The kind of motion BG last began while the motor is on (Gold OV[2]).
   enum class MotionKind : uint8_t { kNone, kPointToPoint, kJog, kPt };
   MotionKind motion_kind() const { return motor_on_ ? motion_kind_ : MotionKind::kNone; }
-  uint32_t status_register() const;         // SR, without the program's bits 12 and 29
+  uint32_t status_register() const;  // SR, without the program's bits 12 and 29
   // Nothing more will happen by itself: the motor is off, or no profiler runs and a reached
   // target has settled (MS=0). What the old "MS is 0 or 3" meant (tools/uprog/cmd_run.cpp).
-  bool at_rest() const { return !servo_ready_ || (!moving_ && (!has_target_ || motion_status() == 0)); }
+  bool at_rest() const {
+    return !servo_ready_ || (!moving_ && (!has_target_ || motion_status() == 0));
+  }
   uint32_t motor_fault() const { return fault_bits_; }  // MF
   bool profiler_moving() const { return moving_; }
 
   // --- digital I/O ---
-  void set_input_level(int n, bool high);   // the electrical level of input n (1..6)
+  void set_input_level(int n, bool high);  // the electrical level of input n (1..6)
   bool input_level(int n) const;
   uint32_t input_level_bits() const { return input_levels_; }  // bit n-1 for input n
-  bool input_active(int n) const;           // the logical state of input n (its IL polarity)
-  uint32_t input_port() const;              // IP (inputs.h, InputPortBits)
+  bool input_active(int n) const;  // the logical state of input n (its IL polarity)
+  uint32_t input_port() const;     // IP (inputs.h, InputPortBits)
   void set_output_port(uint32_t bits) { outputs_ = bits & 0xFu; }  // OP
   uint32_t output_port() const { return outputs_; }
-  void set_output(int n, bool on);          // OB[n]
+  void set_output(int n, bool on);  // OB[n]
   bool output(int n) const { return ((outputs_ >> (n - 1)) & 1u) != 0; }
 
   // --- homing and capture (homing.h) ---
   HomingSettings& homing_settings() { return homing_settings_; }
   const HomingSettings& homing_settings() const { return homing_settings_; }
-  void arm_homing(bool arm);                      // HM[1]=1 arms, HM[1]=0 disarms
+  void arm_homing(bool arm);  // HM[1]=1 arms, HM[1]=0 disarms
   bool homing_armed() const { return homing_.armed(); }
   int32_t home_capture() const { return home_capture_; }  // PX at the last home event
   uint32_t home_event_count() const { return home_events_; }

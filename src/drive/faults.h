@@ -9,17 +9,17 @@
 namespace uprog::drive {
 
 enum FaultBits : uint32_t {
-  kFaultFeedback = 0x00000004u,         // feedback loss
-  kFaultOvercurrent = 0x00000008u,      // peak current exceeded
-  kFaultVelocityError = 0x00000080u,    // |velocity error| > ER[2]
-  kFaultFollowingError = 0x00000100u,   // |position error| > ER[3]
+  kFaultFeedback = 0x00000004u,        // feedback loss
+  kFaultOvercurrent = 0x00000008u,     // peak current exceeded
+  kFaultVelocityError = 0x00000080u,   // |velocity error| > ER[2]
+  kFaultFollowingError = 0x00000100u,  // |position error| > ER[3]
   kFaultPowerStage = 0x00001000u,      // bit 12: a power-stage fault; its code is bits 13..15
-  kFaultUndervoltage = 0x00003000u,     // code 001
-  kFaultOvervoltage = 0x00005000u,      // code 010
-  kFaultShort = 0x0000B000u,            // code 101
-  kFaultTemperature = 0x0000D000u,      // code 110
-  kFaultSpeedLimit = 0x00020000u,       // VX < LL[2] or VX > HL[2]
-  kFaultPositionLimit = 0x00400000u,    // PX < LL[3] or PX > HL[3] (UM=5)
+  kFaultUndervoltage = 0x00003000u,    // code 001
+  kFaultOvervoltage = 0x00005000u,     // code 010
+  kFaultShort = 0x0000B000u,           // code 101
+  kFaultTemperature = 0x0000D000u,     // code 110
+  kFaultSpeedLimit = 0x00020000u,      // VX < LL[2] or VX > HL[2]
+  kFaultPositionLimit = 0x00400000u,   // PX < LL[3] or PX > HL[3] (UM=5)
 };
 
 constexpr uint32_t kPowerStageCodeShift = 13;  // MF bits 13..15, SR bits 1..3

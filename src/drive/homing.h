@@ -55,14 +55,17 @@ struct HomingSettings {
 
 // What one servo cycle saw.
 struct HomingCycle {
-  bool switch_edge = false;                // the home switch's edge came this cycle
+  bool switch_edge = false;               // the home switch's edge came this cycle
   std::optional<double> index_at_counts;  // the index pulse crossed, where (motor counts)
   double position_counts = 0.0;           // the motor's position at the end of the cycle
 };
 
 class Homing {
  public:
-  void arm() { armed_ = true; home_input_seen_ = false; }
+  void arm() {
+    armed_ = true;
+    home_input_seen_ = false;
+  }
   void disarm() { armed_ = false; }
   bool armed() const { return armed_; }
 

@@ -27,10 +27,10 @@ constexpr bool valid_input_logic(int32_t il) { return il >= 0 && il <= kInputLog
 
 constexpr InputFunction input_function(int32_t il) {
   constexpr std::array<InputFunction, 12> kByPair{
-      InputFunction::kInhibit,      InputFunction::kHardStop,     InputFunction::kIgnore,
+      InputFunction::kInhibit,        InputFunction::kHardStop,     InputFunction::kIgnore,
       InputFunction::kGeneralPurpose, InputFunction::kReverseLimit, InputFunction::kForwardLimit,
-      InputFunction::kBegin,        InputFunction::kSoftStop,     InputFunction::kHome,
-      InputFunction::kAuxHome,      InputFunction::kHardStop,     InputFunction::kAbort};
+      InputFunction::kBegin,          InputFunction::kSoftStop,     InputFunction::kHome,
+      InputFunction::kAuxHome,        InputFunction::kHardStop,     InputFunction::kAbort};
   return valid_input_logic(il) ? kByPair[static_cast<size_t>(il / 2)] : InputFunction::kIgnore;
 }
 constexpr bool input_active_high(int32_t il) { return (il & 1) != 0; }
@@ -52,24 +52,34 @@ enum InputPortBits : uint32_t {
   kIpInhibit = 1u << 12,
   kIpBegin = 1u << 13,
   kIpAbort = 1u << 14,
-  kIpLevelShift = 16,            // input n's level: 1u << (kIpLevelShift + n - 1)
+  kIpLevelShift = 16,  // input n's level: 1u << (kIpLevelShift + n - 1)
 };
 
 // The IP bit an active input of this function sets (0 for general purpose and ignore, which
 // report through their own bits).
 constexpr uint32_t input_function_bit(InputFunction f) {
   switch (f) {
-    case InputFunction::kInhibit: return kIpInhibit;
-    case InputFunction::kHardStop: return kIpHardStop;
-    case InputFunction::kReverseLimit: return kIpReverseLimit;
-    case InputFunction::kForwardLimit: return kIpForwardLimit;
-    case InputFunction::kBegin: return kIpBegin;
-    case InputFunction::kSoftStop: return kIpSoftStop;
-    case InputFunction::kHome: return kIpMainHome;
-    case InputFunction::kAuxHome: return kIpAuxHome;
-    case InputFunction::kAbort: return kIpAbort;
+    case InputFunction::kInhibit:
+      return kIpInhibit;
+    case InputFunction::kHardStop:
+      return kIpHardStop;
+    case InputFunction::kReverseLimit:
+      return kIpReverseLimit;
+    case InputFunction::kForwardLimit:
+      return kIpForwardLimit;
+    case InputFunction::kBegin:
+      return kIpBegin;
+    case InputFunction::kSoftStop:
+      return kIpSoftStop;
+    case InputFunction::kHome:
+      return kIpMainHome;
+    case InputFunction::kAuxHome:
+      return kIpAuxHome;
+    case InputFunction::kAbort:
+      return kIpAbort;
     case InputFunction::kIgnore:
-    case InputFunction::kGeneralPurpose: return 0;
+    case InputFunction::kGeneralPurpose:
+      return 0;
   }
   return 0;
 }

@@ -22,7 +22,8 @@ MotorStep motor_step_constants(const MotorModel& model, double dt_s) {
   // 1 - decay without cancellation: -expm1(-dt R / L).
   const double rise = -std::expm1(-dt_s * model.resistance_ohm / model.inductance_h);
   step.amps_per_volt = rise / model.resistance_ohm;
-  step.amps_per_counts_per_s = model.torque_constant_nm_per_a * rise / model.resistance_ohm / step.counts_per_rad;
+  step.amps_per_counts_per_s =
+      model.torque_constant_nm_per_a * rise / model.resistance_ohm / step.counts_per_rad;
   step.velocity_step_per_nm = step.counts_per_rad / model.inertia_kg_m2 * dt_s;
   step.velocity_step_per_a = model.torque_constant_nm_per_a * step.velocity_step_per_nm;
   step.velocity_step_per_v = step.amps_per_volt * step.velocity_step_per_a;

@@ -40,12 +40,12 @@ struct MotorStep {
   double winding_decay = 1.0;  // exp(-dt R / L)
   double counts_per_rad = 1.0;
   double rad_per_count = 1.0;  // 1 / counts_per_rad: the speed in rad/s is a multiplication away
-  double amps_per_volt = 0.0;             // (1 - decay) / R: the current a held voltage adds
-  double amps_per_counts_per_s = 0.0;     // Ke (1 - decay) / (R counts_per_rad): back-EMF's share
-  double velocity_step_per_nm = 0.0;      // counts_per_rad / J * dt
-  double velocity_step_per_a = 0.0;       // Kt velocity_step_per_nm: what a cycle's current adds
-  double velocity_step_per_v = 0.0;       // amps_per_volt velocity_step_per_a
-  double position_step_per_v = 0.0;       // velocity_step_per_v dt
+  double amps_per_volt = 0.0;  // (1 - decay) / R: the current a held voltage adds
+  double amps_per_counts_per_s = 0.0;  // Ke (1 - decay) / (R counts_per_rad): back-EMF's share
+  double velocity_step_per_nm = 0.0;   // counts_per_rad / J * dt
+  double velocity_step_per_a = 0.0;    // Kt velocity_step_per_nm: what a cycle's current adds
+  double velocity_step_per_v = 0.0;    // amps_per_volt velocity_step_per_a
+  double position_step_per_v = 0.0;    // velocity_step_per_v dt
 };
 MotorStep motor_step_constants(const MotorModel& model, double dt_s);
 
@@ -69,7 +69,8 @@ void step_motor(const MotorModel& model, MotorState& state, double voltage_v, do
 
 // The same with the constants of motor_step_constants(model, dt_s). Inline: it ends every servo
 // cycle's chain of dependent operations (axis.cpp).
-inline void step_motor(const MotorModel& model, const MotorStep& step, MotorState& state, double voltage_v) {
+inline void step_motor(const MotorModel& model, const MotorStep& step, MotorState& state,
+                       double voltage_v) {
   const double u = std::clamp(voltage_v, -model.bus_voltage_v, model.bus_voltage_v);
   const double omega_rad_per_s = state.velocity_counts_per_s * step.rad_per_count;
   // di/dt = (u - R i - Ke w) / L, solved exactly for a held voltage u and speed w:
@@ -79,8 +80,9 @@ inline void step_motor(const MotorModel& model, const MotorStep& step, MotorStat
   state.current_a = u * step.amps_per_volt + held_a;
 
   constexpr double kPerSmoothing = 1.0 / kFrictionSmoothing_rad_per_s;  // a multiply, not a divide
-  const double friction_nm = model.viscous_friction_nm_s_per_rad * omega_rad_per_s +
-                             model.coulomb_friction_nm * smooth_sign(omega_rad_per_s * kPerSmoothing);
+  const double friction_nm =
+      model.viscous_friction_nm_s_per_rad * omega_rad_per_s +
+      model.coulomb_friction_nm * smooth_sign(omega_rad_per_s * kPerSmoothing);
   // v' = v + (Kt i' - friction) counts_per_rad / J dt and x' = x + v' dt, written out in u: the
   // voltage meets one multiply-add on its way to each, the rest is ready before it is.
   const double coasting = state.velocity_counts_per_s - friction_nm * step.velocity_step_per_nm;

@@ -57,18 +57,25 @@ std::vector<Field> fields_of(Parameters& p) {
   add_int("SF[2]", p.smoothing2_ms);
   add_int("FS", p.final_speed_counts_per_s);
   add_int("RM", p.reference_mode);
-  for (int n = 1; n <= 2; ++n) add_int(indexed("BP", n), p.brake_delay_ms[static_cast<size_t>(n - 1)]);
-  for (int n = 1; n <= 12; ++n) add_int(indexed("FC", n), p.feedback_config[static_cast<size_t>(n - 1)]);
-  for (int n = 1; n <= 16; ++n) add_int(indexed("SC", n), p.stop_config[static_cast<size_t>(n - 1)]);
+  for (int n = 1; n <= 2; ++n)
+    add_int(indexed("BP", n), p.brake_delay_ms[static_cast<size_t>(n - 1)]);
+  for (int n = 1; n <= 12; ++n)
+    add_int(indexed("FC", n), p.feedback_config[static_cast<size_t>(n - 1)]);
+  for (int n = 1; n <= 16; ++n)
+    add_int(indexed("SC", n), p.stop_config[static_cast<size_t>(n - 1)]);
   add_float("CL[1]", p.continuous_current_a);
   add_float("PL[1]", p.peak_current_a);
   for (int n = 1; n <= 3; ++n) add_float(indexed("KP", n), p.gains.kp[n]);
   for (int n = 1; n <= 3; ++n) add_float(indexed("KI", n), p.gains.ki[n]);
   for (int n = 1; n <= 2; ++n) add_float(indexed("KV", n), p.gains.kv[n]);
-  for (int n = 1; n <= kInputCount; ++n) add_int(indexed("IL", n), p.input_logic[static_cast<size_t>(n - 1)]);
-  for (int n = 1; n <= kCommutationCount; ++n) add_int(indexed("CA", n), p.commutation[static_cast<size_t>(n - 1)]);
-  for (int n = 1; n <= kUserVariableCount; ++n) add_int(indexed("UI", n), p.user_ints[static_cast<size_t>(n - 1)]);
-  for (int n = 1; n <= kUserVariableCount; ++n) add_float(indexed("UF", n), p.user_floats[static_cast<size_t>(n - 1)]);
+  for (int n = 1; n <= kInputCount; ++n)
+    add_int(indexed("IL", n), p.input_logic[static_cast<size_t>(n - 1)]);
+  for (int n = 1; n <= kCommutationCount; ++n)
+    add_int(indexed("CA", n), p.commutation[static_cast<size_t>(n - 1)]);
+  for (int n = 1; n <= kUserVariableCount; ++n)
+    add_int(indexed("UI", n), p.user_ints[static_cast<size_t>(n - 1)]);
+  for (int n = 1; n <= kUserVariableCount; ++n)
+    add_float(indexed("UF", n), p.user_floats[static_cast<size_t>(n - 1)]);
   return out;
 }
 
@@ -84,7 +91,8 @@ std::string serialize_parameters(const Parameters& params) {
   for (const Field& f : fields_of(copy)) {
     char buf[32];
     // to_chars gives the shortest text that reads back to the same float, bit for bit.
-    const auto r = f.i ? std::to_chars(buf, buf + sizeof buf, *f.i) : std::to_chars(buf, buf + sizeof buf, *f.f);
+    const auto r = f.i ? std::to_chars(buf, buf + sizeof buf, *f.i)
+                       : std::to_chars(buf, buf + sizeof buf, *f.f);
     text += f.key + "=" + std::string(buf, r.ptr) + "\n";
   }
   char crc[16];
@@ -127,7 +135,8 @@ std::optional<Parameters> parse_parameters(const std::string& text, std::string*
     if (!field) return fail("unknown parameter: " + std::string(key));
     const char* first = value.data();
     const char* last = value.data() + value.size();
-    const auto r = field->i ? std::from_chars(first, last, *field->i) : std::from_chars(first, last, *field->f);
+    const auto r = field->i ? std::from_chars(first, last, *field->i)
+                            : std::from_chars(first, last, *field->f);
     if (r.ec != std::errc{} || r.ptr != last) return fail("bad value: " + std::string(line));
   }
   return params;

@@ -13,7 +13,8 @@ std::string serialize_parameters(const Parameters& params);
 std::optional<Parameters> parse_parameters(const std::string& text, std::string* error = nullptr);
 
 // SV: false with `error` set when the file could not be written; the old one is then intact.
-bool save_parameters(const Parameters& params, const std::string& path, std::string* error = nullptr);
+bool save_parameters(const Parameters& params, const std::string& path,
+                     std::string* error = nullptr);
 // LD: nullopt when the file is missing or corrupt; the caller keeps its parameters.
 std::optional<Parameters> load_parameters(const std::string& path, std::string* error = nullptr);
 

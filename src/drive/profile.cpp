@@ -40,7 +40,8 @@ void append_forward_move(Profile& p, double dir, double u0, double distance,
     return;
   }
   // Peak speed of a triangle: distance = (vp^2 - u0^2)/(2 acc) + vp^2/(2 dec).
-  const double peak_sq = (distance + u0 * u0 / (2.0 * acc)) / (1.0 / (2.0 * acc) + 1.0 / (2.0 * dec));
+  const double peak_sq =
+      (distance + u0 * u0 / (2.0 * acc)) / (1.0 / (2.0 * acc) + 1.0 / (2.0 * dec));
   double peak = std::sqrt(std::max(peak_sq, 0.0));
   double cruise_s = 0.0;
   if (peak > vmax) {
@@ -64,7 +65,8 @@ double Profile::duration_s() const {
 
 ProfileSample Profile::final_state() const {
   if (has_target) return {target_counts, 0.0, 0.0};
-  return {segment_count > 0 ? end_position_counts : start_position_counts, end_velocity_counts_per_s, 0.0};
+  return {segment_count > 0 ? end_position_counts : start_position_counts,
+          end_velocity_counts_per_s, 0.0};
 }
 
 Profile plan_move(double start_position_counts, double start_velocity_counts_per_s,

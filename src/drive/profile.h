@@ -8,9 +8,9 @@
 namespace uprog::drive {
 
 struct MotionLimits {
-  double speed_counts_per_s;         // SP, > 0
-  double accel_counts_per_s2;        // AC, > 0 (used to speed up)
-  double decel_counts_per_s2;        // DC, > 0 (used to slow down)
+  double speed_counts_per_s;   // SP, > 0
+  double accel_counts_per_s2;  // AC, > 0 (used to speed up)
+  double decel_counts_per_s2;  // DC, > 0 (used to slow down)
 };
 
 struct Segment {
@@ -37,7 +37,7 @@ struct Profile {
   double start_velocity_counts_per_s = 0.0;
   std::array<Segment, kMaxSegments> segments{};
   int segment_count = 0;
-  double end_position_counts = 0.0;  // where the last segment ends (with segments only)
+  double end_position_counts = 0.0;        // where the last segment ends (with segments only)
   double end_velocity_counts_per_s = 0.0;  // exact, so a move ends at rest without rounding
   bool has_target = false;                 // a move: from its end on, the position is exactly
   double target_counts = 0.0;              // the target, free of the segments' rounding
@@ -70,14 +70,16 @@ inline ProfileSample sample(const Profile& profile, double t_s) {
     const Segment& seg = profile.segments[static_cast<size_t>(i)];
     if (remaining < seg.duration_s) {
       const double vel = seg.start_velocity_counts_per_s;
-      return {seg.start_position_counts + (vel * remaining + 0.5 * seg.accel_counts_per_s2 * remaining * remaining),
+      return {seg.start_position_counts +
+                  (vel * remaining + 0.5 * seg.accel_counts_per_s2 * remaining * remaining),
               vel + seg.accel_counts_per_s2 * remaining, seg.accel_counts_per_s2};
     }
     remaining -= seg.duration_s;
   }
   const ProfileSample end = profile.final_state();
   if (profile.has_target) return end;
-  return {end.position_counts + end.velocity_counts_per_s * remaining, end.velocity_counts_per_s, 0.0};
+  return {end.position_counts + end.velocity_counts_per_s * remaining, end.velocity_counts_per_s,
+          0.0};
 }
 
 }  // namespace uprog::drive

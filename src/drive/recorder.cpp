@@ -34,7 +34,8 @@ uint32_t int_bits(int32_t v) { return static_cast<uint32_t>(v); }
 uint32_t float_bits(float v) { return std::bit_cast<uint32_t>(v); }
 
 double value_of(uint32_t bits, bool is_float) {
-  return is_float ? static_cast<double>(std::bit_cast<float>(bits)) : static_cast<double>(static_cast<int32_t>(bits));
+  return is_float ? static_cast<double>(std::bit_cast<float>(bits))
+                  : static_cast<double>(static_cast<int32_t>(bits));
 }
 
 std::string number_text(double v) {
@@ -64,13 +65,15 @@ Channel signal_channel(Signal signal, std::string name) {
   return c;
 }
 
-std::optional<Channel> global_channel(const ProgramWords& words, std::string_view text, std::string* why) {
+std::optional<Channel> global_channel(const ProgramWords& words, std::string_view text,
+                                      std::string* why) {
   std::string_view name = text;
   uint32_t element = 0;
   if (const size_t open = text.find('['); open != std::string_view::npos) {
     const std::string_view digits = text.substr(open + 1, text.size() - open - 2);
     const auto [p, e] = std::from_chars(digits.data(), digits.data() + digits.size(), element);
-    if (text.back() != ']' || digits.empty() || e != std::errc() || p != digits.data() + digits.size()) {
+    if (text.back() != ']' || digits.empty() || e != std::errc() ||
+        p != digits.data() + digits.size()) {
       if (why) *why = "'" + std::string(text) + "': expected name[index] with a number";
       return std::nullopt;
     }
@@ -91,16 +94,21 @@ std::optional<Channel> global_channel(const ProgramWords& words, std::string_vie
 
 std::string Trigger::describe() const {
   switch (kind) {
-    case TriggerKind::kImmediate: return "immediate";
-    case TriggerKind::kBeginMotion: return "begin";
-    case TriggerKind::kRising: return "rising " + source.name + " " + number_text(level);
-    case TriggerKind::kFalling: return "falling " + source.name + " " + number_text(level);
+    case TriggerKind::kImmediate:
+      return "immediate";
+    case TriggerKind::kBeginMotion:
+      return "begin";
+    case TriggerKind::kRising:
+      return "rising " + source.name + " " + number_text(level);
+    case TriggerKind::kFalling:
+      return "falling " + source.name + " " + number_text(level);
     case TriggerKind::kWindowLeave:
       return "leave " + source.name + " " + number_text(low) + " " + number_text(level);
     case TriggerKind::kWindowEnter:
       return "enter " + source.name + " " + number_text(low) + " " + number_text(level);
     case TriggerKind::kInput:
-      return "input mask " + std::to_string(input_mask) + " polarity " + std::to_string(input_polarity);
+      return "input mask " + std::to_string(input_mask) + " polarity " +
+             std::to_string(input_polarity);
   }
   return "?";
 }
@@ -111,7 +119,8 @@ bool Recorder::arm(const RecorderSettings& settings, std::string* why) {
     return false;
   };
   if (settings.channels.empty()) return refuse("the recorder needs at least one channel");
-  if (settings.channels.size() > kMaxRecorderChannels) return refuse("the recorder takes at most 16 channels");
+  if (settings.channels.size() > kMaxRecorderChannels)
+    return refuse("the recorder takes at most 16 channels");
   if (settings.length < 1) return refuse("the recording length is at least one sample");
   if (settings.gap_cycles < 1) return refuse("the gap is at least one servo cycle");
   if (settings.pretrigger_percent > 100) return refuse("the pre-trigger share is 0..100 percent");
@@ -171,11 +180,14 @@ void Recorder::invalidate() {
 
 uint32_t Recorder::samples_recorded() const {
   switch (state_) {
-    case RecorderState::kIdle: return 0;
+    case RecorderState::kIdle:
+      return 0;
     case RecorderState::kArmed:
-    case RecorderState::kWaiting: return static_cast<uint32_t>(std::min<uint64_t>(pre_taken_, pre_));
+    case RecorderState::kWaiting:
+      return static_cast<uint32_t>(std::min<uint64_t>(pre_taken_, pre_));
     case RecorderState::kTriggered:
-    case RecorderState::kDone: return static_cast<uint32_t>(std::min<uint64_t>(pre_taken_, pre_)) + post_taken_;
+    case RecorderState::kDone:
+      return static_cast<uint32_t>(std::min<uint64_t>(pre_taken_, pre_)) + post_taken_;
   }
   return 0;
 }
@@ -190,7 +202,8 @@ uint32_t signal_bits(const Axis& axis) {
   if constexpr (S == Signal::kReferencePosition) return int_bits(axis.reference_position());
   if constexpr (S == Signal::kReferenceVelocity) return int_bits(axis.reference_velocity());
   if constexpr (S == Signal::kCurrentCommand) return float_bits(axis.current_command());
-  if constexpr (S == Signal::kActiveCurrent) return float_bits(static_cast<float>(axis.motor_state().current_a));
+  if constexpr (S == Signal::kActiveCurrent)
+    return float_bits(static_cast<float>(axis.motor_state().current_a));
   if constexpr (S == Signal::kInputPort) return axis.input_port();
   if constexpr (S == Signal::kOutputPort) return axis.output_port();
   if constexpr (S == Signal::kMotionStatus) return int_bits(axis.motion_status());
@@ -210,7 +223,9 @@ constexpr auto kSignalReaders = signal_readers(std::make_index_sequence<kSignalC
 template <size_t... I>
 void write_signals(uint32_t needed, const Axis& axis, const uint8_t* channel, uint32_t* row,
                    std::index_sequence<I...>) {
-  ((needed & (1u << I) ? void(row[channel[I]] = signal_bits<static_cast<Signal>(I)>(axis)) : void()), ...);
+  ((needed & (1u << I) ? void(row[channel[I]] = signal_bits<static_cast<Signal>(I)>(axis))
+                       : void()),
+   ...);
 }
 
 }  // namespace
@@ -238,8 +253,12 @@ bool Recorder::trigger_fired(const Axis& axis) {
   const Trigger& t = settings_.trigger;
   bool fired = false;
   switch (t.kind) {
-    case TriggerKind::kImmediate: fired = true; break;
-    case TriggerKind::kBeginMotion: fired = begun_; break;
+    case TriggerKind::kImmediate:
+      fired = true;
+      break;
+    case TriggerKind::kBeginMotion:
+      fired = begun_;
+      break;
     case TriggerKind::kRising:
     case TriggerKind::kFalling: {
       const double v = read_value(t.source, axis);
@@ -272,11 +291,13 @@ bool Recorder::trigger_fired(const Axis& axis) {
     }
   }
   begun_ = false;
-  return fired && (state_ == RecorderState::kWaiting || (state_ == RecorderState::kArmed && settings_.early_trigger));
+  return fired && (state_ == RecorderState::kWaiting ||
+                   (state_ == RecorderState::kArmed && settings_.early_trigger));
 }
 
 void Recorder::write_row(uint32_t* out, const Axis& axis) const {
-  write_signals(needed_signals_, axis, channel_of_signal_.data(), out, std::make_index_sequence<kSignalCount>{});
+  write_signals(needed_signals_, axis, channel_of_signal_.data(), out,
+                std::make_index_sequence<kSignalCount>{});
   if (!global_channels_.empty()) {
     const std::span<const Value> memory = program_memory();
     for (const auto& [c, address] : global_channels_) out[c] = word_bits(memory, address);
@@ -306,7 +327,8 @@ void Recorder::on_cycle_before_trigger(const Axis& axis) {
   }
   phase_ = settings_.gap_cycles - 1;
   if (fired_ && (state_ == RecorderState::kWaiting || state_ == RecorderState::kArmed)) {
-    if (state_ == RecorderState::kArmed) pre_ = static_cast<uint32_t>(pre_taken_);  // in order from slot 0
+    if (state_ == RecorderState::kArmed)
+      pre_ = static_cast<uint32_t>(pre_taken_);  // in order from slot 0
     post_length_ = settings_.length - pre_;
     state_ = RecorderState::kTriggered;
     trigger_time_us_ = axis.time_us();
@@ -338,7 +360,8 @@ std::optional<Recording> Recorder::recording(uint32_t servo_period_us) const {
       const size_t slot = static_cast<size_t>((pre_taken_ - before + i) % pre_);
       out.values.push_back(value_of(memory_[slot * n + c], ch.is_float));
     }
-    for (uint32_t i = 0; i < post_taken_; ++i) out.values.push_back(value_of(memory_[(pre_ + i) * n + c], ch.is_float));
+    for (uint32_t i = 0; i < post_taken_; ++i)
+      out.values.push_back(value_of(memory_[(pre_ + i) * n + c], ch.is_float));
   }
   return r;
 }

@@ -21,17 +21,17 @@ class Axis;
 
 // The axis signals a channel can record, named neutrally; a dialect maps its own names onto them.
 enum class Signal : uint8_t {
-  kPosition,            // PX, counts
-  kVelocity,            // VX, counts/s
-  kPositionError,       // PE, counts
-  kReferencePosition,   // DV[3], counts
-  kReferenceVelocity,   // DV[2], counts/s
-  kCurrentCommand,      // DV[1], A
-  kActiveCurrent,       // IQ, A
-  kInputPort,           // IP
-  kOutputPort,          // OP
-  kMotionStatus,        // MS
-  kAuxPosition,         // PY, counts
+  kPosition,           // PX, counts
+  kVelocity,           // VX, counts/s
+  kPositionError,      // PE, counts
+  kReferencePosition,  // DV[3], counts
+  kReferenceVelocity,  // DV[2], counts/s
+  kCurrentCommand,     // DV[1], A
+  kActiveCurrent,      // IQ, A
+  kInputPort,          // IP
+  kOutputPort,         // OP
+  kMotionStatus,       // MS
+  kAuxPosition,        // PY, counts
 };
 constexpr size_t kSignalCount = static_cast<size_t>(Signal::kAuxPosition) + 1;
 
@@ -73,7 +73,8 @@ struct Channel {
 
 Channel signal_channel(Signal signal, std::string name);
 // "name" or "name[i]" as a program global; nullopt with `why` when there is none.
-std::optional<Channel> global_channel(const ProgramWords& words, std::string_view text, std::string* why);
+std::optional<Channel> global_channel(const ProgramWords& words, std::string_view text,
+                                      std::string* why);
 
 enum class TriggerKind : uint8_t {
   kImmediate,    // as soon as the pre-trigger share is recorded
@@ -87,11 +88,11 @@ enum class TriggerKind : uint8_t {
 
 struct Trigger {
   TriggerKind kind = TriggerKind::kImmediate;
-  Channel source;     // the level and window triggers' signal; it need not be recorded
-  double level = 0.0; // rising, falling; the window's high side
-  double low = 0.0;   // the window's low side
-  uint32_t input_mask = 0;      // bit n-1 for input n
-  uint32_t input_polarity = 0;  // the logical state each masked input must reach
+  Channel source;                // the level and window triggers' signal; it need not be recorded
+  double level = 0.0;            // rising, falling; the window's high side
+  double low = 0.0;              // the window's low side
+  uint32_t input_mask = 0;       // bit n-1 for input n
+  uint32_t input_polarity = 0;   // the logical state each masked input must reach
   std::string describe() const;  // "rising PX 1000", the recording's header
 };
 
@@ -126,8 +127,10 @@ class Recorder {
   // Drops everything: kIdle.
   void invalidate();
   RecorderState state() const { return state_; }
-  bool active() const { return state_ == RecorderState::kArmed || state_ == RecorderState::kWaiting ||
-                               state_ == RecorderState::kTriggered; }
+  bool active() const {
+    return state_ == RecorderState::kArmed || state_ == RecorderState::kWaiting ||
+           state_ == RecorderState::kTriggered;
+  }
   const RecorderSettings& settings() const { return settings_; }
   // Samples per channel recorded so far (the pre-trigger ring counts what it holds).
   uint32_t samples_recorded() const;
@@ -180,12 +183,12 @@ class Recorder {
   std::array<uint8_t, kSignalCount> channel_of_signal_{};
   std::vector<std::pair<uint8_t, uint32_t>> global_channels_;
   std::vector<std::pair<uint8_t, uint8_t>> repeated_channels_;
-  uint32_t pre_ = 0;              // samples before the trigger sample
-  uint64_t pre_taken_ = 0;        // samples written into the pre-trigger ring
-  uint32_t ring_slot_ = 0;        // pre_taken_ % pre_: where the ring's next sample goes
-  uint32_t post_length_ = 0;      // length - pre_: the samples from the trigger sample on
-  uint32_t post_taken_ = 0;       // samples from the trigger sample on
-  uint32_t phase_ = 0;            // cycles until the next sample
+  uint32_t pre_ = 0;          // samples before the trigger sample
+  uint64_t pre_taken_ = 0;    // samples written into the pre-trigger ring
+  uint32_t ring_slot_ = 0;    // pre_taken_ % pre_: where the ring's next sample goes
+  uint32_t post_length_ = 0;  // length - pre_: the samples from the trigger sample on
+  uint32_t post_taken_ = 0;   // samples from the trigger sample on
+  uint32_t phase_ = 0;        // cycles until the next sample
   bool begun_ = false;
   bool fired_ = false;  // the trigger fired; the next sample is the trigger sample
   bool has_previous_ = false;

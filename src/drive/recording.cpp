@@ -21,14 +21,19 @@ std::string value_text(double v) { return fmt::format("{}", v); }
 
 std::optional<Difference> compare(const Recording& actual, const Recording& expected,
                                   const std::vector<Tolerance>& tolerances) {
-  auto differ = [](std::string text) { return std::optional<Difference>(Difference{std::move(text)}); };
+  auto differ = [](std::string text) {
+    return std::optional<Difference>(Difference{std::move(text)});
+  };
   for (const Tolerance& t : tolerances) {
     bool known = false;
     for (const RecordedChannel& c : expected.channels) known = known || c.name == t.channel;
-    if (!known) return differ(fmt::format("--tolerance {}: the reference has no channel '{}'", t.channel, t.channel));
+    if (!known)
+      return differ(
+          fmt::format("--tolerance {}: the reference has no channel '{}'", t.channel, t.channel));
   }
   if (actual.channels.size() != expected.channels.size())
-    return differ(fmt::format("{} channels, expected {}", actual.channels.size(), expected.channels.size()));
+    return differ(
+        fmt::format("{} channels, expected {}", actual.channels.size(), expected.channels.size()));
   for (size_t c = 0; c < actual.channels.size(); ++c) {
     if (actual.channels[c].name != expected.channels[c].name)
       return differ(fmt::format("channel {} is '{}', expected '{}'", c + 1, actual.channels[c].name,
@@ -48,13 +53,15 @@ std::optional<Difference> compare(const Recording& actual, const Recording& expe
       const double tol = tolerance_of(tolerances, expected.channels[c].name);
       if (std::fabs(a - e) <= tol) continue;
       return differ(fmt::format("{} at {:.3f} ms (sample {}): {}, expected {} (tolerance {})",
-                                expected.channels[c].name, static_cast<double>(expected.time_us(i)) / 1000.0, i,
-                                value_text(a), value_text(e), value_text(tol)));
+                                expected.channels[c].name,
+                                static_cast<double>(expected.time_us(i)) / 1000.0, i, value_text(a),
+                                value_text(e), value_text(tol)));
     }
   }
   if (actual.samples() != expected.samples())
-    return differ(fmt::format("{} samples, expected {} (they agree up to {:.3f} ms)", actual.samples(),
-                              expected.samples(), static_cast<double>(expected.time_us(n)) / 1000.0));
+    return differ(fmt::format("{} samples, expected {} (they agree up to {:.3f} ms)",
+                              actual.samples(), expected.samples(),
+                              static_cast<double>(expected.time_us(n)) / 1000.0));
   return std::nullopt;
 }
 

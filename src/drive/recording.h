@@ -18,10 +18,10 @@ struct RecordedChannel {
 
 struct Recording {
   uint32_t sample_period_us = 0;  // the servo period times the gap
-  std::string trigger;            // how it was triggered: "immediate", "begin", "rising PX 1000", ...
+  std::string trigger;  // how it was triggered: "immediate", "begin", "rising PX 1000", ...
   uint32_t pretrigger_percent = 0;
-  uint32_t trigger_index = 0;     // the sample taken at (or first after) the trigger
-  uint64_t trigger_time_us = 0;   // the drive's time of that sample
+  uint32_t trigger_index = 0;    // the sample taken at (or first after) the trigger
+  uint64_t trigger_time_us = 0;  // the drive's time of that sample
   std::vector<RecordedChannel> channels;
   size_t samples() const { return channels.empty() ? 0 : channels.front().values.size(); }
   // Time of sample i relative to the trigger, in microseconds (negative before it).

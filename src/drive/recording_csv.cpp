@@ -76,7 +76,8 @@ class Reader {
   bool header_number(std::string_view key, T& out) {
     std::string_view v;
     if (!header(key, v)) return false;
-    return parse_whole(v, out) || fail("'" + std::string(key) + "' needs a whole number, not '" + std::string(v) + "'");
+    return parse_whole(v, out) ||
+           fail("'" + std::string(key) + "' needs a whole number, not '" + std::string(v) + "'");
   }
   bool rows(Recording& r);
 
@@ -103,7 +104,8 @@ bool Reader::rows(Recording& r) {
     next(line);
     const std::vector<std::string_view> cells = split(line, ',');
     if (cells.size() != r.channels.size() + 1)
-      return fail("expected " + std::to_string(r.channels.size() + 1) + " cells, found " + std::to_string(cells.size()));
+      return fail("expected " + std::to_string(r.channels.size() + 1) + " cells, found " +
+                  std::to_string(cells.size()));
     int64_t t = 0;
     if (!parse_whole(cells[0], t) || t != r.time_us(i))
       return fail("time '" + std::string(cells[0]) + "', expected " + std::to_string(r.time_us(i)) +
@@ -111,8 +113,9 @@ bool Reader::rows(Recording& r) {
     for (size_t c = 0; c < r.channels.size(); ++c) {
       double v = 0;
       if (!parse_value(cells[c + 1], r.channels[c].is_float, v))
-        return fail("'" + std::string(cells[c + 1]) + "' is no " + (r.channels[c].is_float ? "float" : "int32") +
-                    " (channel " + r.channels[c].name + ")");
+        return fail("'" + std::string(cells[c + 1]) + "' is no " +
+                    (r.channels[c].is_float ? "float" : "int32") + " (channel " +
+                    r.channels[c].name + ")");
       r.channels[c].values.push_back(v);
     }
   }
@@ -129,19 +132,22 @@ std::optional<Recording> Reader::read(std::string* error) {
     if (line != kMagic) return fail("expected '" + std::string(kMagic) + "'");
     if (!header_number("sample_period_us", r.sample_period_us) || !header("trigger", trigger) ||
         !header_number("pretrigger_percent", r.pretrigger_percent) ||
-        !header_number("trigger_index", r.trigger_index) || !header_number("trigger_time_us", r.trigger_time_us) ||
-        !header("units", units) || !header("types", types) || !next(columns))
+        !header_number("trigger_index", r.trigger_index) ||
+        !header_number("trigger_time_us", r.trigger_time_us) || !header("units", units) ||
+        !header("types", types) || !next(columns))
       return false;
     r.trigger = std::string(trigger);
     const std::vector<std::string_view> names = split(columns, ',');
-    if (names.size() < 2 || names[0] != "time_us") return fail("expected 'time_us,' and the channels' names");
+    if (names.size() < 2 || names[0] != "time_us")
+      return fail("expected 'time_us,' and the channels' names");
     const std::vector<std::string_view> u = split(units, ','), ty = split(types, ',');
     if (u.size() != names.size() - 1 || ty.size() != names.size() - 1) {
       line_ -= 1;
       return fail("units and types need one entry per channel");
     }
     for (size_t c = 0; c + 1 < names.size(); ++c) {
-      if (ty[c] != "int" && ty[c] != "float") return --line_, fail("type '" + std::string(ty[c]) + "' is neither int nor float");
+      if (ty[c] != "int" && ty[c] != "float")
+        return --line_, fail("type '" + std::string(ty[c]) + "' is neither int nor float");
       if (names[c + 1].empty()) return fail("channel " + std::to_string(c + 1) + " has no name");
       r.channels.push_back({std::string(names[c + 1]), std::string(u[c]), ty[c] == "float", {}});
     }

@@ -40,9 +40,11 @@ struct LoopInputs {
 // products and the integral term ready before the error is.
 
 // The velocity command of the position loop (UM=5).
-inline double position_loop(const Gains& gains, LoopState& state, const LoopInputs& in, double dt_s) {
+inline double position_loop(const Gains& gains, LoopState& state, const LoopInputs& in,
+                            double dt_s) {
   const double kp = gains.kp[3], ki = gains.ki[3];
-  const double ready = gains.kv[1] * in.reference_velocity_counts_per_s + kp * ki * state.position_integral;
+  const double ready =
+      gains.kv[1] * in.reference_velocity_counts_per_s + kp * ki * state.position_integral;
   const double error = in.reference_position_counts - in.feedback_position_counts;
   state.position_integral += error * dt_s;
   return error * (kp * (1.0 + ki * dt_s)) + ready;
@@ -50,8 +52,9 @@ inline double position_loop(const Gains& gains, LoopState& state, const LoopInpu
 
 // The current command of the velocity loop, clamped to ±current_limit_a; the integrator stops
 // while the output is clamped.
-inline double velocity_loop(const Gains& gains, LoopState& state, double velocity_command_counts_per_s,
-                            const LoopInputs& in, double current_limit_a, double dt_s) {
+inline double velocity_loop(const Gains& gains, LoopState& state,
+                            double velocity_command_counts_per_s, const LoopInputs& in,
+                            double current_limit_a, double dt_s) {
   const double kp = gains.kp[2], ki = gains.ki[2];
   const double feedforward_a =
       gains.kv[2] * in.reference_accel_counts_per_s2 / in.accel_per_amp_counts_per_s2;

@@ -48,7 +48,8 @@ class Evaluator {
     TypedValue v = parse_binary(kLowestPrecedence);
     if (result_.status != EvalStatus::Ok) return result_;
     skip_blanks();
-    if (pos_ < text_.size()) return fail(EvalStatus::Syntax, "unexpected text after the expression");
+    if (pos_ < text_.size())
+      return fail(EvalStatus::Syntax, "unexpected text after the expression");
     result_.value = v;
     return result_;
   }
@@ -68,7 +69,8 @@ class Evaluator {
   bool failed() const { return result_.status != EvalStatus::Ok; }
 
   void skip_blanks() {
-    while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t' || text_[pos_] == '\r'))
+    while (pos_ < text_.size() &&
+           (text_[pos_] == ' ' || text_[pos_] == '\t' || text_[pos_] == '\r'))
       ++pos_;
   }
   char peek(size_t ahead = 0) const {
@@ -78,22 +80,34 @@ class Evaluator {
   std::optional<OpInfo> peek_binary() const {
     const char c = peek(), d = peek(1);
     switch (c) {
-      case '|': return d == '|' ? OpInfo{Op::Or, 7, 2} : OpInfo{Op::BitOr, 9, 1};
-      case '&': return d == '&' ? OpInfo{Op::And, 8, 2} : OpInfo{Op::BitAnd, 11, 1};
-      case '=': if (d == '=') return OpInfo{Op::Eq, 12, 2}; return std::nullopt;
-      case '!': if (d == '=') return OpInfo{Op::Ne, 12, 2}; return std::nullopt;
+      case '|':
+        return d == '|' ? OpInfo{Op::Or, 7, 2} : OpInfo{Op::BitOr, 9, 1};
+      case '&':
+        return d == '&' ? OpInfo{Op::And, 8, 2} : OpInfo{Op::BitAnd, 11, 1};
+      case '=':
+        if (d == '=') return OpInfo{Op::Eq, 12, 2};
+        return std::nullopt;
+      case '!':
+        if (d == '=') return OpInfo{Op::Ne, 12, 2};
+        return std::nullopt;
       case '<':
         if (d == '<') return OpInfo{Op::Shl, 14, 2};
         return d == '=' ? OpInfo{Op::Le, 13, 2} : OpInfo{Op::Lt, 13, 1};
       case '>':
         if (d == '>') return OpInfo{Op::Shr, 14, 2};
         return d == '=' ? OpInfo{Op::Ge, 13, 2} : OpInfo{Op::Gt, 13, 1};
-      case '+': return OpInfo{Op::Add, 15, 1};
-      case '-': return OpInfo{Op::Sub, 15, 1};
-      case '*': return OpInfo{Op::Mul, 16, 1};
-      case '/': return OpInfo{Op::Div, 16, 1};
-      case '%': return OpInfo{Op::Rem, 16, 1};
-      default: return std::nullopt;
+      case '+':
+        return OpInfo{Op::Add, 15, 1};
+      case '-':
+        return OpInfo{Op::Sub, 15, 1};
+      case '*':
+        return OpInfo{Op::Mul, 16, 1};
+      case '/':
+        return OpInfo{Op::Div, 16, 1};
+      case '%':
+        return OpInfo{Op::Rem, 16, 1};
+      default:
+        return std::nullopt;
     }
   }
 
@@ -228,7 +242,8 @@ class Evaluator {
   TypedValue float_value(std::string_view token, size_t at) {
     double d = 0;
     const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), d);
-    if (ec == std::errc::result_out_of_range || (ec == std::errc() && std::fabs(d) >= kFloatLimit)) {
+    if (ec == std::errc::result_out_of_range ||
+        (ec == std::errc() && std::fabs(d) >= kFloatLimit)) {
       fail_at(EvalStatus::OutOfRange, at, "'" + std::string(token) + "' is beyond the float range");
       return TypedValue::of_int(0);
     }
@@ -265,18 +280,30 @@ class Evaluator {
     const float fa = a.as_float(), fb = b.as_float();
     switch (op) {
       // Manual 1.6's examples test && and || for non-zero (0.21&&2 yields 1), not truncated.
-      case Op::Or: return of_bool(nonzero(a) || nonzero(b));
-      case Op::And: return of_bool(nonzero(a) && nonzero(b));
-      case Op::BitOr: return TypedValue::of_int(to_int(a) | to_int(b));
-      case Op::BitAnd: return TypedValue::of_int(to_int(a) & to_int(b));
-      case Op::Eq: return of_bool(ints ? a.value.i == b.value.i : fa == fb);
-      case Op::Ne: return of_bool(ints ? a.value.i != b.value.i : fa != fb);
-      case Op::Lt: return of_bool(ints ? a.value.i < b.value.i : fa < fb);
-      case Op::Le: return of_bool(ints ? a.value.i <= b.value.i : fa <= fb);
-      case Op::Gt: return of_bool(ints ? a.value.i > b.value.i : fa > fb);
-      case Op::Ge: return of_bool(ints ? a.value.i >= b.value.i : fa >= fb);
-      case Op::Shl: return TypedValue::of_int(arith::shift_left(to_int(a), to_int(b)));
-      case Op::Shr: return TypedValue::of_int(arith::shift_right(to_int(a), to_int(b)));
+      case Op::Or:
+        return of_bool(nonzero(a) || nonzero(b));
+      case Op::And:
+        return of_bool(nonzero(a) && nonzero(b));
+      case Op::BitOr:
+        return TypedValue::of_int(to_int(a) | to_int(b));
+      case Op::BitAnd:
+        return TypedValue::of_int(to_int(a) & to_int(b));
+      case Op::Eq:
+        return of_bool(ints ? a.value.i == b.value.i : fa == fb);
+      case Op::Ne:
+        return of_bool(ints ? a.value.i != b.value.i : fa != fb);
+      case Op::Lt:
+        return of_bool(ints ? a.value.i < b.value.i : fa < fb);
+      case Op::Le:
+        return of_bool(ints ? a.value.i <= b.value.i : fa <= fb);
+      case Op::Gt:
+        return of_bool(ints ? a.value.i > b.value.i : fa > fb);
+      case Op::Ge:
+        return of_bool(ints ? a.value.i >= b.value.i : fa >= fb);
+      case Op::Shl:
+        return TypedValue::of_int(arith::shift_left(to_int(a), to_int(b)));
+      case Op::Shr:
+        return TypedValue::of_int(arith::shift_right(to_int(a), to_int(b)));
       case Op::Add:
         return ints ? TypedValue::of_int(arith::wrap_add(a.value.i, b.value.i))
                     : checked_float(fa + fb, at);
@@ -332,15 +359,16 @@ std::string format_constant(TypedValue v) {
   const float magnitude = std::fabs(v.value.f);
   const bool exponent = magnitude >= 1e9f || (magnitude != 0.0f && magnitude < 1e-4f);
   char buf[64];
-  const auto [end, ec] = exponent
-      ? std::to_chars(buf, buf + sizeof buf, v.value.f, std::chars_format::scientific)
-      : std::to_chars(buf, buf + sizeof buf, v.value.f);
+  const auto [end, ec] =
+      exponent ? std::to_chars(buf, buf + sizeof buf, v.value.f, std::chars_format::scientific)
+               : std::to_chars(buf, buf + sizeof buf, v.value.f);
   std::string s = ec == std::errc() ? std::string(buf, end) : std::string("0");
   // The shortest form may look like an int ("25000", "1e+10"): give the mantissa a point, so
   // the lexer reads a float, and drop the exponent's '+'.
   const size_t e = s.find('e');
   const std::string_view mantissa = std::string_view(s).substr(0, e);
-  if (mantissa.find('.') == std::string_view::npos) s.insert(e == std::string::npos ? s.size() : e, ".0");
+  if (mantissa.find('.') == std::string_view::npos)
+    s.insert(e == std::string::npos ? s.size() : e, ".0");
   const size_t plus = s.find("e+");
   if (plus != std::string::npos) s.erase(plus + 1, 1);
   return s[0] == '-' ? "(" + s + ")" : s;

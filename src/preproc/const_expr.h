@@ -17,8 +17,8 @@ enum class EvalStatus {
   Syntax,             // not an expression
   UnknownIdentifier,  // an identifier the lookup did not know
   DivisionByZero,
-  OutOfRange,         // a float at or beyond 1e37 (manual 1.3), or an over-long hex number
-  TooDeep,            // parentheses or unary operators nested beyond kMaxEvalDepth
+  OutOfRange,  // a float at or beyond 1e37 (manual 1.3), or an over-long hex number
+  TooDeep,     // parentheses or unary operators nested beyond kMaxEvalDepth
 };
 
 inline constexpr int kMaxEvalDepth = 256;

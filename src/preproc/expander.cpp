@@ -16,7 +16,8 @@ constexpr size_t kMaxTotalExpansionChars = size_t{1} << 24;
 
 }  // namespace
 
-bool read_arguments(std::string_view text, size_t pos, std::vector<std::string>& args, size_t& end) {
+bool read_arguments(std::string_view text, size_t pos, std::vector<std::string>& args,
+                    size_t& end) {
   while (pos < text.size() && is_blank(text[pos])) ++pos;
   if (pos >= text.size() || text[pos] != '(') return false;
   args.clear();
@@ -51,7 +52,8 @@ bool read_arguments(std::string_view text, size_t pos, std::vector<std::string>&
   return false;
 }
 
-std::string substitute(const Macro& m, const std::vector<std::string>& args, const PreprocOptions& options) {
+std::string substitute(const Macro& m, const std::vector<std::string>& args,
+                       const PreprocOptions& options) {
   bool in_comment = false;
   std::vector<Span> spans;
   scan_line(m.body, options, in_comment, spans);
@@ -59,7 +61,8 @@ std::string substitute(const Macro& m, const std::vector<std::string>& args, con
   for (const Span& s : spans) {
     const std::string_view piece = std::string_view(m.body).substr(s.begin, s.end - s.begin);
     const auto& params = *m.params;
-    const auto it = s.kind == SpanKind::Identifier ? std::find(params.begin(), params.end(), piece) : params.end();
+    const auto it = s.kind == SpanKind::Identifier ? std::find(params.begin(), params.end(), piece)
+                                                   : params.end();
     if (it != params.end() && static_cast<size_t>(it - params.begin()) < args.size()) {
       out += args[static_cast<size_t>(it - params.begin())];
     } else {
@@ -69,8 +72,10 @@ std::string substitute(const Macro& m, const std::vector<std::string>& args, con
   return out;
 }
 
-std::optional<std::string> Expander::expand(std::string_view name, const Macro& m, const std::vector<std::string>* args) {
-  const bool known_failure = std::find(too_complex_.begin(), too_complex_.end(), name) != too_complex_.end();
+std::optional<std::string> Expander::expand(std::string_view name, const Macro& m,
+                                            const std::vector<std::string>* args) {
+  const bool known_failure =
+      std::find(too_complex_.begin(), too_complex_.end(), name) != too_complex_.end();
   bool ok = !known_failure && total_expanded_ < kMaxTotalExpansionChars;
   std::string text;
   if (ok && m.params) {

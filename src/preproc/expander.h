@@ -13,14 +13,16 @@ namespace uprog::preproc {
 
 class Expander {
  public:
-  Expander(const MacroTable& macros, const PreprocOptions& options) : macros_(macros), options_(options) {}
+  Expander(const MacroTable& macros, const PreprocOptions& options)
+      : macros_(macros), options_(options) {}
 
   // Whether a use of `m` is replaced at all: a #define without a string is not (manual 2.9.1).
   static bool expands(const Macro* m) { return m && (m->value || !m->body.empty() || m->params); }
 
   // The replacement of a use of `name` (with its arguments when it is function-like), or
   // nullopt when it is too deep or too long.
-  std::optional<std::string> expand(std::string_view name, const Macro& m, const std::vector<std::string>* args = nullptr);
+  std::optional<std::string> expand(std::string_view name, const Macro& m,
+                                    const std::vector<std::string>* args = nullptr);
 
   // The table changed: a name that was too complex may not be any more.
   void forget_failures() { too_complex_.clear(); }
@@ -41,6 +43,7 @@ class Expander {
 bool read_arguments(std::string_view text, size_t pos, std::vector<std::string>& args, size_t& end);
 
 // The body with each parameter replaced by its argument (identifiers only, not in strings).
-std::string substitute(const Macro& m, const std::vector<std::string>& args, const PreprocOptions& options);
+std::string substitute(const Macro& m, const std::vector<std::string>& args,
+                       const PreprocOptions& options);
 
 }  // namespace uprog::preproc

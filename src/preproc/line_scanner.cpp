@@ -8,7 +8,8 @@ bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
 void push(std::vector<Span>& out, SpanKind kind, size_t begin, size_t end) {
   if (begin == end) return;
-  if (!out.empty() && out.back().kind == kind && kind == SpanKind::Code && out.back().end == begin) {
+  if (!out.empty() && out.back().kind == kind && kind == SpanKind::Code &&
+      out.back().end == begin) {
     out.back().end = end;  // adjacent code merges, so callers copy longer runs
     return;
   }
@@ -51,7 +52,8 @@ void scan_line(std::string_view line, const PreprocOptions& options, bool& in_bl
     }
     if (options.string_quote != 0 && c == options.string_quote) {
       const size_t close = line.find(options.string_quote, i + 1);
-      const size_t end = close == std::string_view::npos ? n : close + 1;  // strings end with the line
+      const size_t end =
+          close == std::string_view::npos ? n : close + 1;  // strings end with the line
       push(out, SpanKind::String, i, end);
       i = end;
       continue;

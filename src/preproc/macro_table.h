@@ -26,7 +26,9 @@ class MacroTable {
     return it == macros_.end() ? nullptr : &it->second;
   }
   bool empty() const { return macros_.empty(); }
-  void define(std::string name, Macro m) { macros_.insert_or_assign(std::move(name), std::move(m)); }
+  void define(std::string name, Macro m) {
+    macros_.insert_or_assign(std::move(name), std::move(m));
+  }
   bool undefine(std::string_view name) {
     const auto it = macros_.find(name);
     if (it == macros_.end()) return false;

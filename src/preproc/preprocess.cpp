@@ -19,9 +19,20 @@ namespace uprog::preproc {
 namespace {
 
 enum class Directive {
-  Define, Undef, If, Ifdef, Ifndef, Elseif, Else, Endif,
+  Define,
+  Undef,
+  If,
+  Ifdef,
+  Ifndef,
+  Elseif,
+  Else,
+  Endif,
   // Extension points: recognised so they can be rejected (or, later, handled) by name.
-  Include, Elifdef, Elifndef, Definevar, Information,
+  Include,
+  Elifdef,
+  Elifndef,
+  Definevar,
+  Information,
 };
 
 struct DirectiveName {
@@ -30,12 +41,18 @@ struct DirectiveName {
 };
 
 constexpr DirectiveName kDirectives[] = {
-    {"define", Directive::Define},       {"undef", Directive::Undef},
-    {"if", Directive::If},               {"ifdef", Directive::Ifdef},
-    {"ifndef", Directive::Ifndef},       {"elseif", Directive::Elseif},
-    {"else", Directive::Else},           {"endif", Directive::Endif},
-    {"include", Directive::Include},     {"elifdef", Directive::Elifdef},
-    {"elifndef", Directive::Elifndef},   {"definevar", Directive::Definevar},
+    {"define", Directive::Define},
+    {"undef", Directive::Undef},
+    {"if", Directive::If},
+    {"ifdef", Directive::Ifdef},
+    {"ifndef", Directive::Ifndef},
+    {"elseif", Directive::Elseif},
+    {"else", Directive::Else},
+    {"endif", Directive::Endif},
+    {"include", Directive::Include},
+    {"elifdef", Directive::Elifdef},
+    {"elifndef", Directive::Elifndef},
+    {"definevar", Directive::Definevar},
     {"information", Directive::Information},
 };
 
@@ -76,7 +93,10 @@ bool same_but_whitespace(std::string_view a, std::string_view b) {
 class Preprocessor {
  public:
   Preprocessor(const SourceFile& source, const PreprocOptions& options, DiagnosticList& diagnostics)
-      : source_(&source), options_(options), diagnostics_(diagnostics), out_(source.name, source.text.size()) {}
+      : source_(&source),
+        options_(options),
+        diagnostics_(diagnostics),
+        out_(source.name, source.text.size()) {}
 
   Preprocessed run() {
     run_text();
@@ -100,7 +120,8 @@ class Preprocessor {
       if (options_.allow_function_macros) {
         std::string_view body = line;
         while (!body.empty() && is_blank(body.back())) body.remove_suffix(1);
-        const bool more = !body.empty() && body.back() == '\\' && newline != std::string_view::npos &&
+        const bool more = !body.empty() && body.back() == '\\' &&
+                          newline != std::string_view::npos &&
                           (!continued.empty() || trim(line).starts_with("#define"));
         if (more) {
           if (continued.empty()) continued_from = line_;
@@ -183,34 +204,60 @@ class Preprocessor {
     spans_.clear();
     scan_line(line, options_, in_block_comment_, spans_);
     for (const Span& s : spans_) {
-      if (s.kind == SpanKind::Comment) std::fill(clean.begin() + s.begin, clean.begin() + s.end, ' ');
+      if (s.kind == SpanKind::Comment)
+        std::fill(clean.begin() + s.begin, clean.begin() + s.end, ' ');
     }
     const std::string_view args(clean);
     const Location at = here(hash);
     switch (d) {
-      case Directive::Define: if (active()) run_define(args, args_at, at); break;
-      case Directive::Undef: if (active()) run_undef(args, args_at, at); break;
-      case Directive::If: open_block(at, [&] { return condition(args, args_at, at); }); break;
-      case Directive::Ifdef: open_block(at, [&] { return is_defined(args, args_at, at, true); }); break;
-      case Directive::Ifndef: open_block(at, [&] { return is_defined(args, args_at, at, false); }); break;
-      case Directive::Elseif: run_elseif(args, args_at, at); break;
-      case Directive::Else: run_else(at); break;
-      case Directive::Endif: run_endif(at); break;
+      case Directive::Define:
+        if (active()) run_define(args, args_at, at);
+        break;
+      case Directive::Undef:
+        if (active()) run_undef(args, args_at, at);
+        break;
+      case Directive::If:
+        open_block(at, [&] { return condition(args, args_at, at); });
+        break;
+      case Directive::Ifdef:
+        open_block(at, [&] { return is_defined(args, args_at, at, true); });
+        break;
+      case Directive::Ifndef:
+        open_block(at, [&] { return is_defined(args, args_at, at, false); });
+        break;
+      case Directive::Elseif:
+        run_elseif(args, args_at, at);
+        break;
+      case Directive::Else:
+        run_else(at);
+        break;
+      case Directive::Endif:
+        run_endif(at);
+        break;
       case Directive::Include:
-        if (!options_.allow_include) extension(false, at);
-        else if (active()) run_include(args, args_at, at);
+        if (!options_.allow_include)
+          extension(false, at);
+        else if (active())
+          run_include(args, args_at, at);
         break;
       case Directive::Elifdef:
       case Directive::Elifndef:
-        if (!options_.allow_elifdef) extension(false, at);
-        else run_branch(at, [&] { return is_defined(args, args_at, at, d == Directive::Elifdef); });
+        if (!options_.allow_elifdef)
+          extension(false, at);
+        else
+          run_branch(at, [&] { return is_defined(args, args_at, at, d == Directive::Elifdef); });
         break;
-      case Directive::Definevar: extension(options_.allow_definevar, at); break;
-      case Directive::Information: extension(options_.allow_information, at); break;
+      case Directive::Definevar:
+        extension(options_.allow_definevar, at);
+        break;
+      case Directive::Information:
+        extension(options_.allow_information, at);
+        break;
     }
     // A /* comment opened on the directive line goes on below it: keep its opening, or the
     // dialect's lexer would meet its body and its */ without the start.
-    if (in_block_comment_ && active() && !spans_.empty() && spans_.back().kind == SpanKind::Comment) {
+    if (in_block_comment_ && active() && !spans_.empty() &&
+        spans_.back().kind == SpanKind::Comment) {
       out_.mark(line_, static_cast<int>(spans_.back().begin) + 1);
       out_.append(line.substr(spans_.back().begin));
     }
@@ -225,19 +272,23 @@ class Preprocessor {
       if (e != std::string_view::npos) name = std::string(args.substr(b + 1, e - b - 1));
     }
     if (name.empty())
-      return report(PreprocError::IncludeNotFound, here(b), {{at, "#include needs \"file\" or <file>"}});
+      return report(PreprocError::IncludeNotFound, here(b),
+                    {{at, "#include needs \"file\" or <file>"}});
     if (depth_ >= options_.max_include_depth) {
       return report(PreprocError::IncludeTooDeep, here(b),
-                    {{at, "'" + name + "' would be " + std::to_string(depth_ + 1) + " files deep; at most " +
-                              std::to_string(options_.max_include_depth) + " (does a file include itself?)"}});
+                    {{at, "'" + name + "' would be " + std::to_string(depth_ + 1) +
+                              " files deep; at most " + std::to_string(options_.max_include_depth) +
+                              " (does a file include itself?)"}});
     }
     if (options_.backslash_separates) std::replace(name.begin(), name.end(), '\\', '/');
     const std::filesystem::path given(name);
     const std::filesystem::path dir = std::filesystem::path(source_->name).parent_path();
     const std::string path = given.is_absolute() || dir.empty() ? name : (dir / given).string();
     std::string why;
-    std::optional<std::string> text = options_.read_file ? options_.read_file(path, &why) : read_text_file(path, &why);
-    if (!text) return report(PreprocError::IncludeNotFound, here(b), {{here(b), "'" + path + "': " + why}});
+    std::optional<std::string> text =
+        options_.read_file ? options_.read_file(path, &why) : read_text_file(path, &why);
+    if (!text)
+      return report(PreprocError::IncludeNotFound, here(b), {{here(b), "'" + path + "': " + why}});
     const SourceFile inner{path, std::move(*text)};
     const SourceFile* outer = source_;
     const int outer_line = line_;
@@ -251,7 +302,8 @@ class Preprocessor {
     // An #if opened in the file closes in it.
     while (stack_.size() > open_blocks) {
       const Location opened = stack_.back().at;
-      report(PreprocError::UnterminatedIf, opened, {{opened, "this #if has no #endif before the end of its file"}});
+      report(PreprocError::UnterminatedIf, opened,
+             {{opened, "this #if has no #endif before the end of its file"}});
       stack_.pop_back();
     }
     --depth_;
@@ -282,7 +334,8 @@ class Preprocessor {
   }
   bool valid_name(std::string_view name) const {
     if (name.empty() || name.size() > options_.max_name_length) return false;
-    if (!is_ident_start(name[0]) || name[0] == '_') return false;  // "a name must start with a letter"
+    if (!is_ident_start(name[0]) || name[0] == '_')
+      return false;  // "a name must start with a letter"
     return std::all_of(name.begin(), name.end(), is_ident_char);
   }
   // Reports a missing or invalid name; returns whether the name can be used.
@@ -292,8 +345,10 @@ class Preprocessor {
       return false;
     }
     if (!valid_name(w.text)) {
-      report(PreprocError::InvalidIdentifier, here(w.at),
-             {{here(w.at), "'" + std::string(w.text) + "': a name starts with a letter and holds letters, digits and '_'"}});
+      report(
+          PreprocError::InvalidIdentifier, here(w.at),
+          {{here(w.at), "'" + std::string(w.text) +
+                            "': a name starts with a letter and holds letters, digits and '_'"}});
       return false;
     }
     return true;
@@ -310,7 +365,8 @@ class Preprocessor {
       if (e < args.size() && args[e] == '(') {
         std::vector<std::string> list;
         size_t close = 0;
-        if (!read_arguments(args, e, list, close)) return report(PreprocError::InvalidIdentifier, here(e));
+        if (!read_arguments(args, e, list, close))
+          return report(PreprocError::InvalidIdentifier, here(e));
         for (const std::string& p : list) {
           if (!valid_name(p)) return report(PreprocError::InvalidIdentifier, here(e));
         }
@@ -340,7 +396,8 @@ class Preprocessor {
     m.params = std::move(params);
     if (!m.body.empty() && !m.params) {
       // Manual 2.9.1: a string that evaluates is replaced by its value, any other by itself.
-      const EvalResult r = evaluate_constant(m.body, [this](std::string_view n) { return value_of(n); });
+      const EvalResult r =
+          evaluate_constant(m.body, [this](std::string_view n) { return value_of(n); });
       if (r.status == EvalStatus::Ok) m.value = r.value;
     }
     macros_.define(std::string(name.text), std::move(m));
@@ -352,7 +409,8 @@ class Preprocessor {
     if (!check_name(name, at)) return;
     if (!macros_.undefine(name.text)) {
       if (options_.undef_of_undefined_ignored) return;
-      return report(PreprocError::NotDefined, here(name.at), {{here(name.at), "'" + std::string(name.text) + "' is not defined"}});
+      return report(PreprocError::NotDefined, here(name.at),
+                    {{here(name.at), "'" + std::string(name.text) + "' is not defined"}});
     }
     expander_.forget_failures();
   }
@@ -366,20 +424,29 @@ class Preprocessor {
   // #if's and #elseif's condition; false after an error, so the branch is skipped.
   bool condition(std::string_view args, size_t from, const Location& at) {
     const std::string_view expr = args.substr(std::min(from, args.size()));
-    const EvalResult r = evaluate_constant(expr, [this](std::string_view n) -> std::optional<TypedValue> {
-      if (const Macro* m = macros_.find(n); m && m->value) return m->value;
-      if (std::optional<int32_t> v;
-          !macros_.find(n) && options_.predefined && options_.predefined(n, v, line_) && v)
-        return TypedValue::of_int(*v);
-      if (options_.undefined_identifier_is_zero && !macros_.find(n)) return TypedValue::of_int(0);
-      return std::nullopt;
-    });
+    const EvalResult r =
+        evaluate_constant(expr, [this](std::string_view n) -> std::optional<TypedValue> {
+          if (const Macro* m = macros_.find(n); m && m->value) return m->value;
+          if (std::optional<int32_t> v;
+              !macros_.find(n) && options_.predefined && options_.predefined(n, v, line_) && v)
+            return TypedValue::of_int(*v);
+          if (options_.undefined_identifier_is_zero && !macros_.find(n))
+            return TypedValue::of_int(0);
+          return std::nullopt;
+        });
     const Location where = here(from + r.error_at);
     switch (r.status) {
-      case EvalStatus::Ok: return is_true(r.value);
-      case EvalStatus::Empty: report(PreprocError::ConditionMissing, at); break;
-      case EvalStatus::DivisionByZero: report(PreprocError::DivisionByZero, where); break;
-      default: report(PreprocError::MismatchedType, where, {{where, r.detail}}); break;
+      case EvalStatus::Ok:
+        return is_true(r.value);
+      case EvalStatus::Empty:
+        report(PreprocError::ConditionMissing, at);
+        break;
+      case EvalStatus::DivisionByZero:
+        report(PreprocError::DivisionByZero, where);
+        break;
+      default:
+        report(PreprocError::MismatchedType, where, {{where, r.detail}});
+        break;
     }
     return false;
   }

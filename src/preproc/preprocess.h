@@ -18,23 +18,23 @@ namespace uprog::preproc {
 
 // What went wrong, independent of any dialect; PreprocOptions maps each to the dialect's code.
 enum class PreprocError {
-  IdentifierMissing,     // #define without a name (Gold 87)
-  InvalidIdentifier,     // #define 2PI (Gold 88)
-  AlreadyDefined,        // #define NUM twice (Gold 89)
-  ConditionMissing,      // #if without a condition (Gold 90)
-  MisplacedElse,         // #else/#elseif outside #if, twice, or not last (Gold 92)
-  NotDefined,            // #undef of an unknown name (Gold 93)
-  MismatchedType,        // a condition that is neither int nor float (Gold 94)
-  TooManyDefines,        // more than max_defines (Gold 95)
-  MisplacedEndif,        // #endif without #if (Gold 96)
-  UnterminatedIf,        // end of file inside #if
-  TooManyElseifs,        // more than max_elseifs in one #if block
-  UnknownDirective,      // a directive this dialect does not have (or that is switched off)
-  DivisionByZero,        // #if 1/0 (Gold 86)
-  ExpansionTooComplex,   // macro expansion deeper than max_expansion_depth or longer than
-                         // max_expansion_chars (Gold 39, "Code is too complex")
-  IncludeNotFound,       // #include of a file that cannot be read, or without a "name" / <name>
-  IncludeTooDeep,        // #include nested deeper than max_include_depth (a file including itself)
+  IdentifierMissing,    // #define without a name (Gold 87)
+  InvalidIdentifier,    // #define 2PI (Gold 88)
+  AlreadyDefined,       // #define NUM twice (Gold 89)
+  ConditionMissing,     // #if without a condition (Gold 90)
+  MisplacedElse,        // #else/#elseif outside #if, twice, or not last (Gold 92)
+  NotDefined,           // #undef of an unknown name (Gold 93)
+  MismatchedType,       // a condition that is neither int nor float (Gold 94)
+  TooManyDefines,       // more than max_defines (Gold 95)
+  MisplacedEndif,       // #endif without #if (Gold 96)
+  UnterminatedIf,       // end of file inside #if
+  TooManyElseifs,       // more than max_elseifs in one #if block
+  UnknownDirective,     // a directive this dialect does not have (or that is switched off)
+  DivisionByZero,       // #if 1/0 (Gold 86)
+  ExpansionTooComplex,  // macro expansion deeper than max_expansion_depth or longer than
+                        // max_expansion_chars (Gold 39, "Code is too complex")
+  IncludeNotFound,      // #include of a file that cannot be read, or without a "name" / <name>
+  IncludeTooDeep,       // #include nested deeper than max_include_depth (a file including itself)
 };
 
 // Gold's code and text for each PreprocError: the defaults when PreprocOptions leaves them null.
@@ -82,7 +82,7 @@ struct PreprocOptions {
   // Extension points for later dialects. Each switch names a directive; while it is off the
   // directive is UnknownDirective. Switching one on whose handler is not written yet in
   // preprocess.cpp's directive table still gives UnknownDirective ("not implemented").
-  bool allow_include = false;          // #include "file" / <file> (HIWIN PDL): implemented
+  bool allow_include = false;  // #include "file" / <file> (HIWIN PDL): implemented
   // #include: files nested at most this deep (the source itself is depth 0), found beside the
   // file that includes them (or as given, when absolute); read_file reads one (null: from disk).
   int max_include_depth = 20;
@@ -121,7 +121,9 @@ class SourceMap {
   std::string file;
   std::vector<std::string> included;  // the #include'd files, as their diagnostics name them
   std::vector<Segment> segments;      // sorted by out_begin
-  const std::string& file_name(uint32_t index) const { return index == 0 ? file : included[index - 1]; }
+  const std::string& file_name(uint32_t index) const {
+    return index == 0 ? file : included[index - 1];
+  }
   std::vector<Expansion> expansions;
 };
 

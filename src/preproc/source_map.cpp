@@ -19,9 +19,12 @@ Location SourceMap::locate(size_t offset) const {
   const auto it = std::upper_bound(segments.begin(), segments.end(), offset,
                                    [](size_t o, const Segment& s) { return o < s.out_begin; });
   if (segments.empty()) return Location{};
-  if (it == segments.begin()) return Location{file_name(segments.front().file), segments.front().line, segments.front().column};
+  if (it == segments.begin())
+    return Location{file_name(segments.front().file), segments.front().line,
+                    segments.front().column};
   const Segment& s = *(it - 1);
-  return Location{file_name(s.file), s.line, s.column + static_cast<int>(std::min<size_t>(offset - s.out_begin, 1u << 30))};
+  return Location{file_name(s.file), s.line,
+                  s.column + static_cast<int>(std::min<size_t>(offset - s.out_begin, 1u << 30))};
 }
 
 }  // namespace uprog::preproc

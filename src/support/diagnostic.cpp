@@ -4,8 +4,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <iterator>
 #include <cstring>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 namespace uprog {
@@ -18,15 +18,19 @@ constexpr size_t kExcerptColumns = 160;
 
 const char* severity_name(Severity s) {
   switch (s) {
-    case Severity::Error: return "error";
-    case Severity::Warning: return "warning";
-    case Severity::Note: return "note";
+    case Severity::Error:
+      return "error";
+    case Severity::Warning:
+      return "warning";
+    case Severity::Note:
+      return "note";
   }
   return "error";
 }
 
 std::string place(const Location& w) {
-  const std::string file = escape_unprintable(w.file);  // a path is the user's, but may hold anything
+  const std::string file =
+      escape_unprintable(w.file);  // a path is the user's, but may hold anything
   if (w.line <= 0) return file;
   if (w.column <= 0) return fmt::format("{}:{}", file, w.line);
   return fmt::format("{}:{}:{}", file, w.line, w.column);
@@ -40,10 +44,14 @@ size_t printable_utf8_length(std::string_view s, size_t i) {
   const auto b0 = static_cast<unsigned char>(s[i]);
   size_t n = 0;
   uint32_t cp = 0;
-  if (b0 >= 0xC2 && b0 <= 0xDF) n = 2, cp = b0 & 0x1Fu;
-  else if (b0 >= 0xE0 && b0 <= 0xEF) n = 3, cp = b0 & 0x0Fu;
-  else if (b0 >= 0xF0 && b0 <= 0xF4) n = 4, cp = b0 & 0x07u;
-  else return 0;
+  if (b0 >= 0xC2 && b0 <= 0xDF)
+    n = 2, cp = b0 & 0x1Fu;
+  else if (b0 >= 0xE0 && b0 <= 0xEF)
+    n = 3, cp = b0 & 0x0Fu;
+  else if (b0 >= 0xF0 && b0 <= 0xF4)
+    n = 4, cp = b0 & 0x07u;
+  else
+    return 0;
   if (i + n > s.size()) return 0;
   for (size_t k = 1; k < n; ++k) {
     if (!is_continuation(s[i + k])) return 0;
@@ -51,8 +59,8 @@ size_t printable_utf8_length(std::string_view s, size_t i) {
   }
   const bool overlong = (n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000);
   const bool surrogate = cp >= 0xD800 && cp <= 0xDFFF;
-  const bool bidi = cp == 0x061C || cp == 0x200E || cp == 0x200F || (cp >= 0x202A && cp <= 0x202E) ||
-                    (cp >= 0x2066 && cp <= 0x2069);
+  const bool bidi = cp == 0x061C || cp == 0x200E || cp == 0x200F ||
+                    (cp >= 0x202A && cp <= 0x202E) || (cp >= 0x2066 && cp <= 0x2069);
   if (overlong || surrogate || cp > 0x10FFFF || cp < 0xA0 || bidi) return 0;
   return n;
 }
@@ -74,8 +82,10 @@ Shown show(std::string_view s, size_t i) {
 }
 
 void append_shown(std::string& out, std::string_view s, size_t i, const Shown& u) {
-  if (u.escaped) fmt::format_to(std::back_inserter(out), "\\x{:02X}", static_cast<unsigned char>(s[i]));
-  else out.append(s.substr(i, u.bytes));
+  if (u.escaped)
+    fmt::format_to(std::back_inserter(out), "\\x{:02X}", static_cast<unsigned char>(s[i]));
+  else
+    out.append(s.substr(i, u.bytes));
 }
 
 // The line and a caret under `column`, as gcc prints them.
@@ -138,7 +148,8 @@ SourceLine window(std::string_view line, int column) {
   }
   int width = 0;
   size_t from = at;
-  for (size_t k = left.size(); k-- > 0 && width + left[k].second <= static_cast<int>(kExcerptColumns / 2);) {
+  for (size_t k = left.size();
+       k-- > 0 && width + left[k].second <= static_cast<int>(kExcerptColumns / 2);) {
     width += left[k].second;
     from = left[k].first;
   }
@@ -180,11 +191,13 @@ void attach_source_lines(std::vector<Diagnostic>& ds, const SourceFile& source) 
     if (names(d.where) && !d.line) wanted.push_back({d.where.line, d.where.column, &d.line});
     for (DiagnosticNote& n : d.notes) {
       const bool own_line = n.where.line != d.where.line || n.where.file != d.where.file;
-      if (names(n.where) && !n.line && own_line) wanted.push_back({n.where.line, n.where.column, &n.line});
+      if (names(n.where) && !n.line && own_line)
+        wanted.push_back({n.where.line, n.where.column, &n.line});
     }
   }
   if (wanted.empty()) return;
-  std::stable_sort(wanted.begin(), wanted.end(), [](const Wanted& a, const Wanted& b) { return a.line < b.line; });
+  std::stable_sort(wanted.begin(), wanted.end(),
+                   [](const Wanted& a, const Wanted& b) { return a.line < b.line; });
   const std::string_view t = source.text;
   int line = 1;
   size_t start = 0;  // of `line`
@@ -196,7 +209,8 @@ void attach_source_lines(std::vector<Diagnostic>& ds, const SourceFile& source) 
       ++line;
     }
     const void* nl = std::memchr(t.data() + start, '\n', t.size() - start);
-    size_t end = nl == nullptr ? t.size() : static_cast<size_t>(static_cast<const char*>(nl) - t.data());
+    size_t end =
+        nl == nullptr ? t.size() : static_cast<size_t>(static_cast<const char*>(nl) - t.data());
     if (end > start && t[end - 1] == '\r') --end;
     *w.slot = window(t.substr(start, end - start), w.column);
   }
@@ -206,8 +220,10 @@ void limit_errors(std::vector<Diagnostic>& ds, size_t max_errors) {
   size_t kept = 0, cut = ds.size();
   for (size_t i = 0; i < ds.size() && cut == ds.size(); ++i) {
     if (ds[i].severity != Severity::Error) continue;
-    if (kept == max_errors) cut = i;
-    else ++kept;
+    if (kept == max_errors)
+      cut = i;
+    else
+      ++kept;
   }
   if (cut == ds.size()) return;
   size_t rest = 0;
@@ -240,7 +256,8 @@ std::string format_text(const Diagnostic& d) {
   out += '\n';
   if (d.line && d.where.line > 0) append_excerpt(out, *d.line, d.where.line, d.where.column);
   for (const auto& n : d.notes) {
-    out += fmt::format("{}: note: {}\n", place(n.where), escape_unprintable(n.message, kMaxMessageColumns));
+    out += fmt::format("{}: note: {}\n", place(n.where),
+                       escape_unprintable(n.message, kMaxMessageColumns));
     if (n.line && n.where.line > 0) append_excerpt(out, *n.line, n.where.line, n.where.column);
   }
   return out;
@@ -256,7 +273,8 @@ namespace {
 
 // The excerpt's text as JSON holds it: escaped, with the marks of a cut window.
 std::string shown_line(const SourceLine& l) {
-  return (l.first_column > 1 ? "..." : "") + escape_unprintable(l.text) + (l.cut_after ? "..." : "");
+  return (l.first_column > 1 ? "..." : "") + escape_unprintable(l.text) +
+         (l.cut_after ? "..." : "");
 }
 
 }  // namespace
@@ -266,14 +284,20 @@ std::string format_json(const std::vector<Diagnostic>& ds) {
   for (const auto& d : ds) {
     nlohmann::json notes = nlohmann::json::array();
     for (const auto& n : d.notes) {
-      notes.push_back({{"file", escape_unprintable(n.where.file)}, {"line", n.where.line},
-                       {"column", n.where.column}, {"message", escape_unprintable(n.message, kMaxMessageColumns)}});
+      notes.push_back({{"file", escape_unprintable(n.where.file)},
+                       {"line", n.where.line},
+                       {"column", n.where.column},
+                       {"message", escape_unprintable(n.message, kMaxMessageColumns)}});
       if (n.line) notes.back()["source_line"] = shown_line(*n.line);
     }
-    array.push_back({{"file", escape_unprintable(d.where.file)}, {"line", d.where.line},
-                     {"column", d.where.column}, {"severity", severity_name(d.severity)},
-                     {"code", d.code}, {"scheme", d.scheme},
-                     {"message", escape_unprintable(d.message, kMaxMessageColumns)}, {"notes", notes}});
+    array.push_back({{"file", escape_unprintable(d.where.file)},
+                     {"line", d.where.line},
+                     {"column", d.where.column},
+                     {"severity", severity_name(d.severity)},
+                     {"code", d.code},
+                     {"scheme", d.scheme},
+                     {"message", escape_unprintable(d.message, kMaxMessageColumns)},
+                     {"notes", notes}});
     if (d.line) array.back()["source_line"] = shown_line(*d.line);
   }
   return array.dump(2) + "\n";

@@ -21,8 +21,19 @@ bool is_flag(char c) { return c == '-' || c == '+' || c == ' ' || c == '#' || c 
 bool takes_word(char letter) { return letter != '%'; }
 bool is_letter(char c) {
   switch (c) {
-    case 'd': case 'i': case 'u': case 'x': case 'X': case 'c': case 's':
-    case 'f': case 'e': case 'E': case 'g': case 'G': case '%':
+    case 'd':
+    case 'i':
+    case 'u':
+    case 'x':
+    case 'X':
+    case 'c':
+    case 's':
+    case 'f':
+    case 'e':
+    case 'E':
+    case 'g':
+    case 'G':
+    case '%':
       return true;
     default:
       return false;
@@ -67,11 +78,24 @@ bool parse(std::string_view f, size_t at, Conversion& c) {
 std::string defined_flags(const Conversion& c) {
   std::string allowed;
   switch (c.letter) {
-    case 'd': case 'i': allowed = "-+ 0"; break;
-    case 'u': allowed = "-0"; break;
-    case 'x': case 'X': allowed = "-#0"; break;
-    case 'c': case 's': allowed = "-"; break;
-    default: allowed = "-+ #0"; break;  // the floats
+    case 'd':
+    case 'i':
+      allowed = "-+ 0";
+      break;
+    case 'u':
+      allowed = "-0";
+      break;
+    case 'x':
+    case 'X':
+      allowed = "-#0";
+      break;
+    case 'c':
+    case 's':
+      allowed = "-";
+      break;
+    default:
+      allowed = "-+ #0";
+      break;  // the floats
   }
   std::string out;
   for (char f : c.flags)
@@ -110,11 +134,19 @@ std::string bytes_of(const Value* words, size_t count) {
 std::string convert(const Conversion& c, const Value* words, size_t count) {
   const Value word = count > 0 ? words[0] : Value::of_bits(0);
   switch (c.letter) {
-    case 'd': case 'i': return print(c_format(c, 'd'), static_cast<int>(word.i));
-    case 'u': case 'x': case 'X': return print(c_format(c, c.letter), static_cast<unsigned>(word.bits));
-    case 'c': return print(c_format(c, 'c'), static_cast<int>(word.bits & 0xFFu));
-    case 's': return print(c_format(c, 's'), bytes_of(words, count).c_str());
-    default: return print(c_format(c, c.letter), static_cast<double>(word.f));
+    case 'd':
+    case 'i':
+      return print(c_format(c, 'd'), static_cast<int>(word.i));
+    case 'u':
+    case 'x':
+    case 'X':
+      return print(c_format(c, c.letter), static_cast<unsigned>(word.bits));
+    case 'c':
+      return print(c_format(c, 'c'), static_cast<int>(word.bits & 0xFFu));
+    case 's':
+      return print(c_format(c, 's'), bytes_of(words, count).c_str());
+    default:
+      return print(c_format(c, c.letter), static_cast<double>(word.f));
   }
 }
 
@@ -145,7 +177,8 @@ std::string format_message(std::string_view format, const Value* args, size_t co
     size_t taken = 1;
     if (c.letter == 's') {
       size_t later = 0;
-      for (size_t k = i + 1; k < conversions.size(); ++k) later += takes_word(conversions[k].letter) ? 1 : 0;
+      for (size_t k = i + 1; k < conversions.size(); ++k)
+        later += takes_word(conversions[k].letter) ? 1 : 0;
       const size_t left = next < count ? count - next : 0;
       taken = left > later ? left - later : 0;
     }

@@ -1,5 +1,6 @@
 // The C-style formatter of what programs print (PDL's printl, ST's PRINTF): a format and the
-// raw 32-bit words a MSG instruction sent. Hosted: the VM passes the words, the firmware calls this.
+// raw 32-bit words a MSG instruction sent. Hosted: the VM passes the words, the firmware calls
+// this.
 #pragma once
 #include <cstddef>
 #include <string>

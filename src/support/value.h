@@ -13,9 +13,21 @@ union Value {
   float f;
   uint32_t bits;
 
-  static constexpr Value of_int(int32_t v) { Value x{}; x.i = v; return x; }
-  static Value of_float(float v) { Value x{}; x.f = v; return x; }
-  static constexpr Value of_bits(uint32_t v) { Value x{}; x.bits = v; return x; }
+  static constexpr Value of_int(int32_t v) {
+    Value x{};
+    x.i = v;
+    return x;
+  }
+  static Value of_float(float v) {
+    Value x{};
+    x.f = v;
+    return x;
+  }
+  static constexpr Value of_bits(uint32_t v) {
+    Value x{};
+    x.bits = v;
+    return x;
+  }
 };
 static_assert(sizeof(Value) == 4, "a Value is one 32-bit word");
 

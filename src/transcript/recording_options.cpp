@@ -41,7 +41,8 @@ std::string channel(controller::Controller& drive, const std::string& name, driv
 std::string trigger(controller::Controller& drive, const std::string& spec, drive::Trigger& out) {
   const std::vector<std::string> p = split(spec, ':');
   const std::string& kind = p[0];
-  const std::string bad = "trigger '" + spec + "': expected immediate, begin, rising:CH:LEVEL, falling:CH:LEVEL, "
+  const std::string bad = "trigger '" + spec +
+                          "': expected immediate, begin, rising:CH:LEVEL, falling:CH:LEVEL, "
                           "leave:CH:LOW:HIGH, enter:CH:LOW:HIGH or input:N:rise|fall";
   if ((kind == "immediate" || kind == "begin") && p.size() == 1) {
     out.kind = kind == "begin" ? drive::TriggerKind::kBeginMotion : drive::TriggerKind::kImmediate;
@@ -53,8 +54,10 @@ std::string trigger(controller::Controller& drive, const std::string& spec, driv
     return channel(drive, p[1], out.source);
   }
   if ((kind == "leave" || kind == "enter") && p.size() == 4) {
-    out.kind = kind == "leave" ? drive::TriggerKind::kWindowLeave : drive::TriggerKind::kWindowEnter;
-    if (!parse_double(p[2], out.low) || !parse_double(p[3], out.level) || out.low > out.level) return bad;
+    out.kind =
+        kind == "leave" ? drive::TriggerKind::kWindowLeave : drive::TriggerKind::kWindowEnter;
+    if (!parse_double(p[2], out.low) || !parse_double(p[3], out.level) || out.low > out.level)
+      return bad;
     return channel(drive, p[1], out.source);
   }
   if (kind == "input" && p.size() == 3 && p[1].size() == 1 && p[1][0] >= '1' && p[1][0] <= '6' &&
@@ -102,16 +105,23 @@ std::string record_directive(controller::Controller& drive, const std::string& a
   std::istringstream words(arg);
   RecordRequest request;
   request.early_trigger = true;
-  if (!(words >> request.channels)) return "expected 'record CHANNELS [trigger=SPEC] [pretrigger=P] [length=N] [gap=N]'";
+  if (!(words >> request.channels))
+    return "expected 'record CHANNELS [trigger=SPEC] [pretrigger=P] [length=N] [gap=N]'";
   for (std::string w; words >> w;) {
     const size_t eq = w.find('=');
-    const std::string key = w.substr(0, eq), value = eq == std::string::npos ? std::string() : w.substr(eq + 1);
+    const std::string key = w.substr(0, eq),
+                      value = eq == std::string::npos ? std::string() : w.substr(eq + 1);
     bool ok = true;
-    if (key == "trigger") request.trigger = value;
-    else if (key == "pretrigger") ok = parse_count(value, 100, request.pretrigger_percent);
-    else if (key == "length") ok = parse_count(value, UINT32_MAX, request.length) && request.length > 0;
-    else if (key == "gap") ok = parse_count(value, 1u << 20, request.gap_cycles) && request.gap_cycles > 0;
-    else return "unknown setting '" + w + "' (trigger=, pretrigger=, length=, gap=)";
+    if (key == "trigger")
+      request.trigger = value;
+    else if (key == "pretrigger")
+      ok = parse_count(value, 100, request.pretrigger_percent);
+    else if (key == "length")
+      ok = parse_count(value, UINT32_MAX, request.length) && request.length > 0;
+    else if (key == "gap")
+      ok = parse_count(value, 1u << 20, request.gap_cycles) && request.gap_cycles > 0;
+    else
+      return "unknown setting '" + w + "' (trigger=, pretrigger=, length=, gap=)";
     if (!ok || value.empty()) return "'" + w + "' needs a whole number in range";
   }
   drive::RecorderSettings settings;
@@ -120,7 +130,8 @@ std::string record_directive(controller::Controller& drive, const std::string& a
   return drive.recorder().arm(settings, &why) ? std::string() : why;
 }
 
-std::string expect_directive(controller::Controller& drive, const std::string& arg, const std::string& base_dir) {
+std::string expect_directive(controller::Controller& drive, const std::string& arg,
+                             const std::string& base_dir) {
   std::istringstream words(arg);
   std::string file;
   if (!(words >> file)) return "needs a recording's CSV file: 'expect FILE.csv [CH=TOLERANCE ...]'";
@@ -130,14 +141,18 @@ std::string expect_directive(controller::Controller& drive, const std::string& a
     if (!parse_tolerance(w, t)) return file + ": '" + w + "' is no CHANNEL=TOLERANCE";
     tolerances.push_back(t);
   }
-  const std::filesystem::path path =
-      std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : std::filesystem::path(base_dir) / file;
+  const std::filesystem::path path = std::filesystem::path(file).is_absolute()
+                                         ? std::filesystem::path(file)
+                                         : std::filesystem::path(base_dir) / file;
   std::string error;
   const std::optional<std::string> text = read_text_file(path.string(), &error);
-  const std::optional<drive::Recording> expected = text ? drive::read_recording_csv(*text, &error) : std::nullopt;
+  const std::optional<drive::Recording> expected =
+      text ? drive::read_recording_csv(*text, &error) : std::nullopt;
   if (!expected) return file + ": " + error;
-  const std::optional<drive::Recording> actual = drive.recorder().recording(drive.axis().period_us());
-  if (!actual) return file + ": the recorder has not been triggered (is a 'record' line before it?)";
+  const std::optional<drive::Recording> actual =
+      drive.recorder().recording(drive.axis().period_us());
+  if (!actual)
+    return file + ": the recorder has not been triggered (is a 'record' line before it?)";
   const std::optional<drive::Difference> d = drive::compare(*actual, *expected, tolerances);
   return d ? file + ": " + d->text : std::string();
 }

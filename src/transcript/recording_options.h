@@ -11,9 +11,9 @@
 namespace uprog::transcript {
 
 struct RecordRequest {
-  std::string channels;              // "PX,VX,cnt"
-  std::string trigger = "immediate"; // immediate, begin, rising:CH:LEVEL, falling:CH:LEVEL,
-                                     // leave:CH:LOW:HIGH, enter:CH:LOW:HIGH, input:N:rise|fall
+  std::string channels;               // "PX,VX,cnt"
+  std::string trigger = "immediate";  // immediate, begin, rising:CH:LEVEL, falling:CH:LEVEL,
+                                      // leave:CH:LOW:HIGH, enter:CH:LOW:HIGH, input:N:rise|fall
   uint32_t pretrigger_percent = 0;
   uint32_t gap_cycles = 1;
   uint32_t length = 1000;
@@ -28,7 +28,8 @@ std::string recorder_settings(controller::Controller& drive, const RecordRequest
 std::string record_directive(controller::Controller& drive, const std::string& arg);
 // A transcript's `expect FILE.csv [CH=TOLERANCE ...]`: the recorder's recording against the file
 // (relative to `base_dir`); "" when they agree, else "FILE: the first difference".
-std::string expect_directive(controller::Controller& drive, const std::string& arg, const std::string& base_dir);
+std::string expect_directive(controller::Controller& drive, const std::string& arg,
+                             const std::string& base_dir);
 
 // "CH=VALUE"; false when it is not.
 bool parse_tolerance(const std::string& text, drive::Tolerance& out);

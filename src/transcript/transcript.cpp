@@ -2,12 +2,13 @@
 // docs/transcripts.md (output, quiet, program-error, record, expect).
 #include "transcript/transcript.h"
 
+#include <fmt/core.h>
+
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fmt/core.h>
 #include <sstream>
 
 #include "controller/controller.h"
@@ -50,17 +51,21 @@ struct Pending {
 
 class Runner {
  public:
-  Runner(std::string name, std::string base_dir, const controller::Timing& timing, const dialect::Dialect* d,
-         Extension* extension)
-      : name_(std::move(name)), base_dir_(std::move(base_dir)), timing_(timing),
-        dialect_(d != nullptr ? d : &dialects::default_dialect()), extension_(extension) {}
+  Runner(std::string name, std::string base_dir, const controller::Timing& timing,
+         const dialect::Dialect* d, Extension* extension)
+      : name_(std::move(name)),
+        base_dir_(std::move(base_dir)),
+        timing_(timing),
+        dialect_(d != nullptr ? d : &dialects::default_dialect()),
+        extension_(extension) {}
 
   TranscriptResult run(const std::string& text) {
     size_t start = 0;
     int number = 0;
     while (start <= text.size()) {
       const size_t end = text.find('\n', start);
-      const std::string raw = text.substr(start, end == std::string::npos ? std::string::npos : end - start);
+      const std::string raw =
+          text.substr(start, end == std::string::npos ? std::string::npos : end - start);
       ++number;
       line(number, raw);
       if (end == std::string::npos) break;
@@ -94,8 +99,9 @@ class Runner {
     Pending& p = *pending_;
     if (!p.expected_any) {
       for (const Answer& a : p.answers) {
-        if (a.is_error()) fail(p.line, "expected no error from '" + p.sent + "', got ! " +
-                                          std::to_string(a.error) + " (" + a.text + ")");
+        if (a.is_error())
+          fail(p.line, "expected no error from '" + p.sent + "', got ! " + std::to_string(a.error) +
+                           " (" + a.text + ")");
       }
     } else {
       for (size_t i = p.next; i < p.answers.size(); ++i) {
@@ -131,7 +137,8 @@ class Runner {
       fail(number, "expected ! " + what + ", got " + shown(a));
       return;
     }
-    if (!what.empty() && what != std::to_string(a.error)) fail(number, "expected ! " + what + ", got " + shown(a));
+    if (!what.empty() && what != std::to_string(a.error))
+      fail(number, "expected ! " + what + ", got " + shown(a));
   }
 
   void line(int number, const std::string& raw) {
@@ -144,7 +151,8 @@ class Runner {
     if (text[0] == '!') {
       std::string code = without_comment(text.substr(1));
       const size_t space = code.find_first_of(" \t");
-      if (space != std::string::npos) code = code.substr(0, space);  // text after the code is ignored
+      if (space != std::string::npos)
+        code = code.substr(0, space);  // text after the code is ignored
       expect(number, true, code);
       return;
     }
@@ -156,7 +164,8 @@ class Runner {
       p.sent = sent;
       drive();
       // As a host sends it (DL lines too), or taking no time while an extension holds it.
-      p.answers = extension_ != nullptr && extension_->holds_time() ? drive_->query(sent) : host_->send(sent);
+      p.answers = extension_ != nullptr && extension_->holds_time() ? drive_->query(sent)
+                                                                    : host_->send(sent);
       collect_output();
       pending_ = std::move(p);
       return;
@@ -184,10 +193,14 @@ class Runner {
     } else if (directive == "wait") {
       uint64_t us = 0;
       uint64_t cycles = 0;
-      if (parse_cycles(arg, cycles)) drive().advance_ns(cycles * drive().firmware().cycle_ns());
-      else if (!parse_duration_us(arg, us)) fail(number, "wait needs a duration such as 500ms, 2s, 10us or 40ph");
-      else if (extension_ != nullptr) extension_->wait(drive(), us);
-      else drive().advance(us);
+      if (parse_cycles(arg, cycles))
+        drive().advance_ns(cycles * drive().firmware().cycle_ns());
+      else if (!parse_duration_us(arg, us))
+        fail(number, "wait needs a duration such as 500ms, 2s, 10us or 40ph");
+      else if (extension_ != nullptr)
+        extension_->wait(drive(), us);
+      else
+        drive().advance(us);
       collect_output();
     } else if (directive == "input") {
       input(number, arg);
@@ -196,13 +209,17 @@ class Runner {
     } else if (directive == "index") {
       // An extension: the encoder's index pulse at OFFSET + k * CA[18] motor counts.
       double offset = 0;
-      if (!parse_number(arg, offset)) fail(number, "index needs 'index OFFSET' in motor counts");
-      else drive().axis().place_index_pulse(offset);
+      if (!parse_number(arg, offset))
+        fail(number, "index needs 'index OFFSET' in motor counts");
+      else
+        drive().axis().place_index_pulse(offset);
     } else if (directive == "record") {
-      if (const std::string why = record_directive(drive(), arg); !why.empty()) fail(number, "record: " + why);
+      if (const std::string why = record_directive(drive(), arg); !why.empty())
+        fail(number, "record: " + why);
     } else if (directive == "expect") {
       ++result_.checks;
-      if (const std::string why = expect_directive(drive(), arg, base_dir_); !why.empty()) fail(number, "expect " + why);
+      if (const std::string why = expect_directive(drive(), arg, base_dir_); !why.empty())
+        fail(number, "expect " + why);
     } else if (directive == "fault") {
       if (!drive().inject_fault(arg)) fail(number, "no fault named '" + arg + "'");
     } else if (directive == "program-error") {
@@ -210,15 +227,18 @@ class Runner {
       int32_t code = 0;
       const auto [p, e] = std::from_chars(arg.data(), arg.data() + arg.size(), code);
       ++result_.checks;
-      if (e != std::errc() || p != arg.data() + arg.size()) fail(number, "program-error needs a number");
+      if (e != std::errc() || p != arg.data() + arg.size())
+        fail(number, "program-error needs a number");
       else if (drive().program_error() != code) {
-        fail(number, "expected program error " + arg + ", got " + std::to_string(drive().program_error()));
+        fail(number,
+             "expected program error " + arg + ", got " + std::to_string(drive().program_error()));
       }
     } else if (std::string failure; drive().firmware().world_directive(directive, arg, failure)) {
       // A directive of the dialect's drive (docs/transcripts.md: PUP's analog, comm-error).
       if (!failure.empty()) fail(number, directive + ": " + failure);
       collect_output();
-    } else if (std::string why; extension_ != nullptr && extension_->directive(drive(), directive, arg, why)) {
+    } else if (std::string why;
+               extension_ != nullptr && extension_->directive(drive(), directive, arg, why)) {
       ++result_.checks;
       if (!why.empty()) fail(number, why);
       collect_output();
@@ -252,19 +272,24 @@ class Runner {
     bool source_is_stored = false;
     for (std::string_view e : d.source_extensions()) source_is_stored |= e == d.stored_extension();
     std::string error;
-    const std::optional<std::string> text = source_is_stored ? read_text_file(resolve(arg), &error) : std::nullopt;
+    const std::optional<std::string> text =
+        source_is_stored ? read_text_file(resolve(arg), &error) : std::nullopt;
     if (!source_is_stored) {
       download(number, "store", arg);
     } else if (!text) {
       fail(number, "store " + arg + ": " + error);
-    } else if (const DownloadResult r = drive().download(std::vector<uint8_t>(text->begin(), text->end())); !r.ok) {
+    } else if (const DownloadResult r =
+                   drive().download(std::vector<uint8_t>(text->begin(), text->end()));
+               !r.ok) {
       fail(number, "store " + arg + ": " + r.error);
     }
     collect_output();
   }
 
   std::string resolve(const std::string& arg) const {
-    return std::filesystem::path(arg).is_absolute() ? arg : (std::filesystem::path(base_dir_) / arg).string();
+    return std::filesystem::path(arg).is_absolute()
+               ? arg
+               : (std::filesystem::path(base_dir_) / arg).string();
   }
 
   void load(int number, const std::string& arg) {
@@ -285,13 +310,16 @@ class Runner {
     ++result_.checks;
     const size_t space = arg.find_first_of(" \t");
     if (space == std::string::npos) return fail(number, "compile needs 'compile SOURCE EXPECTED'");
-    const std::string source = resolve(arg.substr(0, space)), expected_path = resolve(trim(arg.substr(space)));
+    const std::string source = resolve(arg.substr(0, space)),
+                      expected_path = resolve(trim(arg.substr(space)));
     const dialect::CompileOutput out = dialect_->compile_file(source, {});
-    if (!out.ok()) return fail(number, "compile " + source + " failed:\n" + format_text(out.diagnostics));
+    if (!out.ok())
+      return fail(number, "compile " + source + " failed:\n" + format_text(out.diagnostics));
     std::string error;
     const auto expected = read_binary_file(expected_path, &error);
     if (!expected) return fail(number, "compile: " + error);
-    if (out.stored_form != *expected) return fail(number, "compile " + source + ": the stored form differs from " + expected_path);
+    if (out.stored_form != *expected)
+      return fail(number, "compile " + source + ": the stored form differs from " + expected_path);
   }
 
   // `drive axes=N phase_us=N`, either or both: the drive's axes and their servo period, before
@@ -362,7 +390,8 @@ class Runner {
     }
     const std::string got = without_trailing_blanks(output_.front());
     output_.erase(output_.begin());
-    if (got != without_trailing_blanks(arg)) fail(number, "expected output '" + arg + "', got '" + got + "'");
+    if (got != without_trailing_blanks(arg))
+      fail(number, "expected output '" + arg + "', got '" + got + "'");
   }
 
   static bool parse_number(const std::string& text, double& out) {
@@ -376,15 +405,17 @@ class Runner {
   // in [FROM, TO]; a later "input N = ..." takes the input back.
   void position_switch(int number, const std::string& arg) {
     const size_t a = arg.find_first_of(" \t");
-    const size_t b = a == std::string::npos ? a : arg.find_first_of(" \t", arg.find_first_not_of(" \t", a));
+    const size_t b =
+        a == std::string::npos ? a : arg.find_first_of(" \t", arg.find_first_not_of(" \t", a));
     int n = 0;
     double from = 0, to = 0;
     const std::string first = arg.substr(0, a);
     const auto [p, e] = std::from_chars(first.data(), first.data() + first.size(), n);
     if (a == std::string::npos || b == std::string::npos || e != std::errc() ||
-        p != first.data() + first.size() || n < 1 || n > 6 || !parse_number(arg.substr(a, b - a), from) ||
-        !parse_number(arg.substr(b), to)) {
-      fail(number, "switch needs 'switch N FROM TO' with N from 1 to 6 and positions in motor counts");
+        p != first.data() + first.size() || n < 1 || n > 6 ||
+        !parse_number(arg.substr(a, b - a), from) || !parse_number(arg.substr(b), to)) {
+      fail(number,
+           "switch needs 'switch N FROM TO' with N from 1 to 6 and positions in motor counts");
       return;
     }
     drive().axis().place_position_switch(n, from, to);
@@ -398,8 +429,9 @@ class Runner {
     const std::string right = eq == std::string::npos ? std::string() : trim(arg.substr(eq + 1));
     const auto [p, e] = std::from_chars(left.data(), left.data() + left.size(), n);
     const auto [q, f] = std::from_chars(right.data(), right.data() + right.size(), level);
-    if (eq == std::string::npos || e != std::errc() || f != std::errc() || p != left.data() + left.size() ||
-        q != right.data() + right.size() || n < 1 || n > 6 || (level != 0 && level != 1)) {
+    if (eq == std::string::npos || e != std::errc() || f != std::errc() ||
+        p != left.data() + left.size() || q != right.data() + right.size() || n < 1 || n > 6 ||
+        (level != 0 && level != 1)) {
       fail(number, "input needs 'input N = 0|1' with N from 1 to 6");
       return;
     }
@@ -432,17 +464,22 @@ bool parse_cycles(const std::string& text, uint64_t& out) {
 bool parse_duration_us(const std::string& text, uint64_t& out_us) {
   const std::string t = trim(text);
   size_t unit = 0;
-  while (unit < t.size() && (std::isdigit(static_cast<unsigned char>(t[unit])) || t[unit] == '.')) ++unit;
+  while (unit < t.size() && (std::isdigit(static_cast<unsigned char>(t[unit])) || t[unit] == '.'))
+    ++unit;
   if (unit == 0) return false;
   const std::string number = t.substr(0, unit), suffix = trim(t.substr(unit));
   char* end = nullptr;
   const double v = std::strtod(number.c_str(), &end);
   if (end != number.c_str() + number.size()) return false;
   double scale = 0;
-  if (suffix == "us") scale = 1;
-  else if (suffix == "ms") scale = 1e3;
-  else if (suffix == "s") scale = 1e6;
-  else return false;
+  if (suffix == "us")
+    scale = 1;
+  else if (suffix == "ms")
+    scale = 1e3;
+  else if (suffix == "s")
+    scale = 1e6;
+  else
+    return false;
   const double us = std::round(v * scale);
   if (!(us >= 0) || us > 1e13) return false;  // beyond ~4 months of virtual time is a typo
   out_us = static_cast<uint64_t>(us);
@@ -464,8 +501,8 @@ TranscriptResult run_transcript_file(const std::string& path, const controller::
     r.failures.push_back(path + ": cannot read: " + error);
     return r;
   }
-  return run_transcript_text(*text, path, std::filesystem::path(path).parent_path().string(), timing, dialect,
-                             extension);
+  return run_transcript_text(*text, path, std::filesystem::path(path).parent_path().string(),
+                             timing, dialect, extension);
 }
 
 }  // namespace uprog::transcript

@@ -22,8 +22,8 @@ class Extension {
   virtual ~Extension() = default;
   // `name arg` that the runner does not know: false when the extension does not know it either;
   // a check that fails says why in `failure`.
-  virtual bool directive(controller::Controller& drive, const std::string& name, const std::string& arg,
-                         std::string& failure) = 0;
+  virtual bool directive(controller::Controller& drive, const std::string& name,
+                         const std::string& arg, std::string& failure) = 0;
   // `wait`: the extension lets the time pass as it decides (a stopped program's drive: none).
   virtual void wait(controller::Controller& drive, uint64_t us) = 0;
   // True while `>` lines must take no virtual time (they go to the drive as queries).
@@ -33,10 +33,13 @@ class Extension {
 // `name` is used in messages; `base_dir` resolves `load` paths.
 // `dialect` is the drive's until the transcript names one (nullptr: the registry's default).
 TranscriptResult run_transcript_text(const std::string& text, const std::string& name,
-                                     const std::string& base_dir, const controller::Timing& timing = {},
-                                     const dialect::Dialect* dialect = nullptr, Extension* extension = nullptr);
+                                     const std::string& base_dir,
+                                     const controller::Timing& timing = {},
+                                     const dialect::Dialect* dialect = nullptr,
+                                     Extension* extension = nullptr);
 TranscriptResult run_transcript_file(const std::string& path, const controller::Timing& timing = {},
-                                     const dialect::Dialect* dialect = nullptr, Extension* extension = nullptr);
+                                     const dialect::Dialect* dialect = nullptr,
+                                     Extension* extension = nullptr);
 
 // "500ms", "2s", "10us", "1.5s" -> microseconds; false when it is not a duration.
 bool parse_duration_us(const std::string& text, uint64_t& out_us);

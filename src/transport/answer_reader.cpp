@@ -68,8 +68,10 @@ void AnswerReader::feed(std::string_view bytes, std::vector<AnswerEvent>& out) {
     } else if (c == '\r' || c == '\n') {
       if (c == '\n' && was_after_cr) continue;  // the LF of CR LF
       // Text ended by a line break rather than `;` is the drive's own output, not an answer.
-      if (partial_.empty()) out.push_back({true, {}, false});
-      else out.push_back({false, {partial_, 0}, true});
+      if (partial_.empty())
+        out.push_back({true, {}, false});
+      else
+        out.push_back({false, {partial_, 0}, true});
       partial_.clear();
     } else {
       partial_.push_back(c);

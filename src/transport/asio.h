@@ -1,8 +1,6 @@
 // The parts of Boost.Asio the transports use. (Boost 1.74's <boost/asio.hpp> pulls in
 // awaitable.hpp, which misses <utility> under g++ 12; naming the parts avoids that.)
 #pragma once
-#include <utility>
-
 #include <boost/asio/buffer.hpp>
 #include <boost/asio/connect.hpp>
 #include <boost/asio/io_context.hpp>
@@ -11,3 +9,4 @@
 #include <boost/asio/signal_set.hpp>
 #include <boost/asio/steady_timer.hpp>
 #include <boost/asio/write.hpp>
+#include <utility>

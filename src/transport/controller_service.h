@@ -13,7 +13,8 @@ class ControllerService final : public LineService {
  public:
   // `after_each` (optional) runs after every line and every advance: `uprog sim --log` prints
   // the firmware's log there.
-  explicit ControllerService(controller::Controller& controller, std::function<void()> after_each = {})
+  explicit ControllerService(controller::Controller& controller,
+                             std::function<void()> after_each = {})
       : controller_(controller), after_each_(std::move(after_each)) {}
 
   std::vector<Reply> handle_line(std::string_view line) override;
@@ -25,7 +26,8 @@ class ControllerService final : public LineService {
   // A debugger attached to the drive lets time pass itself (it stops at a breakpoint and then
   // lets none pass): `keeper` gets each advance's nanoseconds and returns true when it took them;
   // false, or no keeper, and the drive advances as usual. `after_line` runs after each host line.
-  void set_time_keeper(std::function<bool(std::uint64_t ns)> keeper, std::function<void()> after_line) {
+  void set_time_keeper(std::function<bool(std::uint64_t ns)> keeper,
+                       std::function<void()> after_line) {
     keeper_ = std::move(keeper);
     after_line_ = std::move(after_line);
   }

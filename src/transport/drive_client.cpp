@@ -79,9 +79,10 @@ bool DriveClient::send_line(std::string_view line) {
   return true;
 }
 
-DriveClient::Wait DriveClient::read_answers(std::chrono::milliseconds timeout, bool until_line_end,
-                                            const std::function<void(const Reply&)>& on_answer,
-                                            const std::function<void(const std::string&)>& on_output) {
+DriveClient::Wait DriveClient::read_answers(
+    std::chrono::milliseconds timeout, bool until_line_end,
+    const std::function<void(const Reply&)>& on_answer,
+    const std::function<void(const std::string&)>& on_output) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   // Counting, a line without expressions (a comment) has nothing to wait for.
   if (until_line_end && framing_ && expected_ == 0) return Wait::kLineDone;
@@ -108,10 +109,11 @@ DriveClient::Wait DriveClient::read_answers(std::chrono::milliseconds timeout, b
     }
     events_.clear();
     next_ = 0;
-    const auto left =
-        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
     pollfd p{fd(), POLLIN, 0};
-    if (::poll(&p, 1, static_cast<int>(std::max<long long>(0, left.count()))) <= 0) return Wait::kTimeout;
+    if (::poll(&p, 1, static_cast<int>(std::max<long long>(0, left.count()))) <= 0)
+      return Wait::kTimeout;
     char buffer[65536];  // a whole reply datagram over UDP
     const ssize_t n = ::read(fd(), buffer, sizeof buffer);
     if (n <= 0) return Wait::kClosed;
@@ -121,7 +123,8 @@ DriveClient::Wait DriveClient::read_answers(std::chrono::milliseconds timeout, b
   }
 }
 
-std::optional<std::vector<Reply>> DriveClient::exchange(std::string_view line, std::chrono::milliseconds timeout,
+std::optional<std::vector<Reply>> DriveClient::exchange(std::string_view line,
+                                                        std::chrono::milliseconds timeout,
                                                         std::string& error) {
   if (!send_line(line)) {
     error = "the drive closed the connection";
@@ -129,9 +132,14 @@ std::optional<std::vector<Reply>> DriveClient::exchange(std::string_view line, s
   }
   std::vector<Reply> replies;
   switch (read_answers(timeout, true, [&](const Reply& r) { replies.push_back(r); })) {
-    case Wait::kLineDone: return replies;
-    case Wait::kTimeout: error = "no answer within the timeout"; return std::nullopt;
-    case Wait::kClosed: error = "the drive closed the connection"; return std::nullopt;
+    case Wait::kLineDone:
+      return replies;
+    case Wait::kTimeout:
+      error = "no answer within the timeout";
+      return std::nullopt;
+    case Wait::kClosed:
+      error = "the drive closed the connection";
+      return std::nullopt;
   }
   return std::nullopt;
 }

@@ -2,6 +2,7 @@
 // speaking the semicolon wire of docs/protocol.md): send a line, read its answers up to the
 // line's end mark. The one client `uprog term`, `uprog download` and the tests' host scripts share.
 #pragma once
+#include <boost/asio/ip/udp.hpp>
 #include <chrono>
 #include <functional>
 #include <memory>
@@ -13,7 +14,6 @@
 #include "dialect/line_framer.h"
 #include "transport/answer_reader.h"
 #include "transport/asio.h"
-#include <boost/asio/ip/udp.hpp>
 #include "transport/echo_filter.h"
 
 namespace uprog::transport {
@@ -42,8 +42,8 @@ class DriveClient {
                     const std::function<void(const Reply&)>& on_answer,
                     const std::function<void(const std::string&)>& on_output = {});
   // One line and all its answers; nullopt with `error` set when the drive is gone or silent.
-  std::optional<std::vector<Reply>> exchange(std::string_view line, std::chrono::milliseconds timeout,
-                                             std::string& error);
+  std::optional<std::vector<Reply>> exchange(std::string_view line,
+                                             std::chrono::milliseconds timeout, std::string& error);
 
  private:
   DriveClient() : socket_(io_), udp_(io_) {}

@@ -37,7 +37,8 @@ void HostSession::take(std::string_view bytes, std::string& out) {
   for (const Frame& frame : frames_) {
     switch (frame.kind) {
       case Frame::Kind::kLine: {
-        const auto replies = channel_ ? channel_->handle_line(frame.text) : service_.handle_line(frame.text);
+        const auto replies =
+            channel_ ? channel_->handle_line(frame.text) : service_.handle_line(frame.text);
         if (replies.empty()) wire.write_silent_line(out);
         for (const Reply& reply : replies) wire.write_answer(reply, out);
         break;

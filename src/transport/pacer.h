@@ -1,10 +1,10 @@
 // Paces virtual time to the wall clock: every period, advances the LineService by the wall time
 // that has passed. The only place in uprog where real time matters; the core never sees it.
 #pragma once
-#include "transport/asio.h"
 #include <chrono>
 #include <cstdint>
 
+#include "transport/asio.h"
 #include "transport/line_service.h"
 
 namespace uprog::transport {

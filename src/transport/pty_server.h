@@ -1,10 +1,10 @@
 // The drive's serial port, simulated: a pseudo-terminal in raw mode whose slave path (/dev/pts/N)
 // picocom, screen or socat open as they would a real RS-232 port. Same framing and answers as TCP.
 #pragma once
-#include "transport/asio.h"
 #include <memory>
 #include <string>
 
+#include "transport/asio.h"
 #include "transport/line_service.h"
 #include "transport/stream_session.h"
 

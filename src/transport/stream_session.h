@@ -4,11 +4,11 @@
 #pragma once
 #include <array>
 #include <cstdint>
-#include "transport/asio.h"
 #include <functional>
 #include <memory>
 #include <string>
 
+#include "transport/asio.h"
 #include "transport/host_session.h"
 
 namespace uprog::transport {

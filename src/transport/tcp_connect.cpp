@@ -11,7 +11,8 @@ bool connect_tcp(asio::io_context& io, const std::string& address, asio::ip::tcp
     return false;
   }
   std::string host = address.substr(0, colon);
-  if (host.size() >= 2 && host.front() == '[' && host.back() == ']') host = host.substr(1, host.size() - 2);
+  if (host.size() >= 2 && host.front() == '[' && host.back() == ']')
+    host = host.substr(1, host.size() - 2);
   boost::system::error_code ec;
   asio::ip::tcp::resolver resolver(io);
   const auto endpoints = resolver.resolve(host, address.substr(colon + 1), ec);

@@ -39,9 +39,7 @@ void TcpServer::accept() {
   });
 }
 
-TcpServer::~TcpServer() {
-  service_.remove_output_listener(output_listener_);
-}
+TcpServer::~TcpServer() { service_.remove_output_listener(output_listener_); }
 
 void TcpServer::stop() {
   boost::system::error_code ignored;

@@ -1,12 +1,12 @@
 // The drive's TCP port: accepts any number of hosts, each with its own line buffer, all served
 // on the io_context's one thread by one LineService, so answers keep each host's order.
 #pragma once
-#include "transport/asio.h"
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
 
+#include "transport/asio.h"
 #include "transport/line_service.h"
 #include "transport/stream_session.h"
 

@@ -3,15 +3,15 @@
 // it. Bad datagrams do no harm: an empty one gets no reply, an oversized or binary one the
 // wire's framing error. What the drive sends on its own goes to every recent peer.
 #pragma once
-#include "transport/asio.h"
-#include <boost/asio/ip/udp.hpp>
 #include <array>
+#include <boost/asio/ip/udp.hpp>
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
 #include <string_view>
 
+#include "transport/asio.h"
 #include "transport/host_session.h"
 #include "transport/line_service.h"
 

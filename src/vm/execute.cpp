@@ -36,12 +36,18 @@ void write_pair(Value* at, TypedValue v) {
 }
 bool compare(int32_t how, float a, float b) {
   switch (how) {
-    case 0: return a == b;
-    case 1: return a != b;
-    case 2: return a < b;
-    case 3: return a <= b;
-    case 4: return a > b;
-    default: return a >= b;
+    case 0:
+      return a == b;
+    case 1:
+      return a != b;
+    case 2:
+      return a < b;
+    case 3:
+      return a <= b;
+    case 4:
+      return a > b;
+    default:
+      return a >= b;
   }
 }
 // A call's words copied or set to 0: frames mostly have a few, which a call of memcpy or memset
@@ -81,19 +87,25 @@ void write_wide(Value* at, uint64_t v) {
 }
 bool compare(int32_t how, int32_t a, int32_t b) {
   switch (how) {
-    case 0: return a == b;
-    case 1: return a != b;
-    case 2: return a < b;
-    case 3: return a <= b;
-    case 4: return a > b;
-    default: return a >= b;
+    case 0:
+      return a == b;
+    case 1:
+      return a != b;
+    case 2:
+      return a < b;
+    case 3:
+      return a <= b;
+    case 4:
+      return a > b;
+    default:
+      return a >= b;
   }
 }
 
 // For each comparison (== != < <= > >=, four bits each), the outcomes for which it holds:
 // bit 0 a < b, bit 1 a == b, bit 2 a > b, bit 3 unordered (a NaN; only != holds).
-constexpr uint32_t kCompareMasks = 0x2u | (0xDu << 4) | (0x1u << 8) | (0x3u << 12) |
-                                   (0x4u << 16) | (0x6u << 20);
+constexpr uint32_t kCompareMasks =
+    0x2u | (0xDu << 4) | (0x1u << 8) | (0x3u << 12) | (0x4u << 16) | (0x6u << 20);
 // Whether comparison `how` (0..5: == != < <= > >=) holds for an outcome: 0 a < b, 1 a == b,
 // 2 a > b, 3 unordered.
 constexpr bool holds(uint32_t how, uint32_t outcome) {
@@ -130,15 +142,20 @@ SliceResult Machine::run_other_slice(uint32_t thread, const Budget& budget) {
   if (!loaded_ || thread >= thread_count_) return {SliceEnd::NotRunning, 0};
   Thread& t = threads_[thread];
   switch (t.status) {
-    case ThreadStatus::Idle: return {SliceEnd::NotRunning, 0};
-    case ThreadStatus::Error: return {SliceEnd::Error, 0};
-    case ThreadStatus::Halted: return {SliceEnd::Halted, 0};
-    case ThreadStatus::AtBreakpoint: return {SliceEnd::Breakpoint, 0};
+    case ThreadStatus::Idle:
+      return {SliceEnd::NotRunning, 0};
+    case ThreadStatus::Error:
+      return {SliceEnd::Error, 0};
+    case ThreadStatus::Halted:
+      return {SliceEnd::Halted, 0};
+    case ThreadStatus::AtBreakpoint:
+      return {SliceEnd::Breakpoint, 0};
     case ThreadStatus::Waiting:
       if (sleeping(thread)) return {SliceEnd::Waiting, 0};
       set_status(t, ThreadStatus::Running);
       break;
-    case ThreadStatus::Running: break;
+    case ThreadStatus::Running:
+      break;
   }
   if (t.step_over) return step_over_breakpoint(t, budget);
   if (bytecode::word_op(code_[t.pc]) == Op::UNTILCK) return test_then_execute(t, budget);
@@ -232,10 +249,10 @@ SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) 
 #define LOAD() (ip = code + tp->pc, sp = tp->sp, locals = tp->frames[tp->frame_count - 1].locals)
 // The next instruction, once the one in `word` has run: the line it ends is counted first.
 // `word` is 0 before the first instruction and after an error, which end no line.
-#define DISPATCH_COUNTING_MARK()                                              \
-  do {                                                                        \
+#define DISPATCH_COUNTING_MARK()                                               \
+  do {                                                                         \
     if (bytecode::word_ends_line(word) && --lines.now == 0) goto out_of_lines; \
-    DISPATCH_NEXT();                                                          \
+    DISPATCH_NEXT();                                                           \
   } while (0)
 #define DISPATCH() DISPATCH_COUNTING_MARK()
 #define DISPATCH_NEXT()           \
@@ -245,14 +262,14 @@ SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) 
   } while (0)
 // Every jump goes through here: one going back counts against the slice's back_jumps. When
 // they run out it goes to `spent`, which continues as the jump's instruction would.
-#define JUMP_OR(target, spent)                             \
-  do {                                                     \
-    const uint32_t* const to = (target);                   \
-    if (to <= ip && --back_jumps.now == 0) {               \
-      ip = to;                                             \
-      goto spent;                                          \
-    }                                                      \
-    ip = to;                                               \
+#define JUMP_OR(target, spent)               \
+  do {                                       \
+    const uint32_t* const to = (target);     \
+    if (to <= ip && --back_jumps.now == 0) { \
+      ip = to;                               \
+      goto spent;                            \
+    }                                        \
+    ip = to;                                 \
   } while (0)
 #define JUMP_TO(target) JUMP_OR(target, out_of_back_jumps)
 // What counts as a jump back without being one: a call, a restart, a catch (each may enter code
@@ -262,50 +279,50 @@ SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) 
 #define A() bytecode::word_a(word)
 #define IMM() bytecode::word_imm(word)
 #define B() (ip[1])
-#define FAIL(e) \
-  do {          \
-    error = (e); \
+#define FAIL(e)       \
+  do {                \
+    error = (e);      \
     goto raise_error; \
   } while (0)
 // `word`, the word of a frame in the data memory at a local's address plus an offset, wrapping
 // as ADDLK does; outside the memory it is BadAddress.
-#define FRAME_WORD(word, local, offset)                                                  \
+#define FRAME_WORD(word, local, offset)                                              \
   const uint32_t word##_address = static_cast<uint32_t>(locals[local].i) + (offset); \
-  if (word##_address >= memory_words_) FAIL(RunError::BadAddress);                 \
+  if (word##_address >= memory_words_) FAIL(RunError::BadAddress);                   \
   Value& word = memory_[word##_address]
-#define INT_BINARY(expr)           \
-  {                                \
-    const int32_t a = sp[-2].i;    \
-    const int32_t b = sp[-1].i;    \
-    sp[-2].i = (expr);             \
-    --sp;                          \
-    ++ip;                          \
-    DISPATCH();                    \
+#define INT_BINARY(expr)        \
+  {                             \
+    const int32_t a = sp[-2].i; \
+    const int32_t b = sp[-1].i; \
+    sp[-2].i = (expr);          \
+    --sp;                       \
+    ++ip;                       \
+    DISPATCH();                 \
   }
-#define FLOAT_BINARY(expr)         \
-  {                                \
-    const float a = sp[-2].f;      \
-    const float b = sp[-1].f;      \
-    sp[-2].f = (expr);             \
-    --sp;                          \
-    ++ip;                          \
-    DISPATCH();                    \
+#define FLOAT_BINARY(expr)    \
+  {                           \
+    const float a = sp[-2].f; \
+    const float b = sp[-1].f; \
+    sp[-2].f = (expr);        \
+    --sp;                     \
+    ++ip;                     \
+    DISPATCH();               \
   }
-#define COMPARE(type, field, op)   \
-  {                                \
-    const type a = sp[-2].field;   \
-    const type b = sp[-1].field;   \
-    sp[-2].i = a op b ? 1 : 0;     \
-    --sp;                          \
-    ++ip;                          \
-    DISPATCH();                    \
+#define COMPARE(type, field, op) \
+  {                              \
+    const type a = sp[-2].field; \
+    const type b = sp[-1].field; \
+    sp[-2].i = a op b ? 1 : 0;   \
+    --sp;                        \
+    ++ip;                        \
+    DISPATCH();                  \
   }
-#define UNARY(expr)                \
-  {                                \
-    const Value a = sp[-1];        \
-    sp[-1] = (expr);               \
-    ++ip;                          \
-    DISPATCH();                    \
+#define UNARY(expr)         \
+  {                         \
+    const Value a = sp[-1]; \
+    sp[-1] = (expr);        \
+    ++ip;                   \
+    DISPATCH();             \
   }
 // A call to the host. Refused, it raises CommandRefused before the instruction has any
 // effect. Done with kCommandEndSlice, the instruction completes and the slice ends as at YIELD.
@@ -348,7 +365,7 @@ op_DUP:
   ++sp;
   ++ip;
   DISPATCH();
-op_SWAP: {
+op_SWAP : {
   const Value top = sp[-1];
   sp[-1] = sp[-2];
   sp[-2] = top;
@@ -396,7 +413,7 @@ op_JLINES:
   DISPATCH_NEXT();
 // The way out of such fused code, counting the lines its path ran; INCGJMPLN is a loop's step
 // on the way (INCGEOL's add, its line end counted with the rest).
-op_INCGJMPLN: {
+op_INCGJMPLN : {
   const uint32_t step = B();
   int32_t& counter = global_data_[bytecode::loop_step_global(step)][0].i;
   counter = arith::wrap_add(counter, bytecode::loop_step_step(step));
@@ -421,14 +438,14 @@ count_lines_then_jump:
     word = *ip;
   }
   goto* dispatch[word & 0xFFu];
-op_LDGX: {
+op_LDGX : {
   const auto index = static_cast<uint32_t>(sp[-1].i);
   if (index >= global_length_[A()]) FAIL(RunError::IndexOutOfRange);
   sp[-1] = global_data_[A()][index];
   ++ip;
   DISPATCH();
 }
-op_STGX: {
+op_STGX : {
   const auto index = static_cast<uint32_t>(sp[-2].i);
   if (index >= global_length_[A()]) FAIL(RunError::IndexOutOfRange);
   global_data_[A()][index] = sp[-1];
@@ -436,7 +453,7 @@ op_STGX: {
   ++ip;
   DISPATCH();
 }
-op_LDGW: {
+op_LDGW : {
   const uint32_t b = B();
   const uint32_t i = static_cast<uint32_t>(sp[-1].i) - 1u;  // 1..size: 0..size - 1
   if (i >= bytecode::window_size(b)) FAIL(RunError::IndexOutOfRange);
@@ -444,7 +461,7 @@ op_LDGW: {
   ip += 2;
   DISPATCH();
 }
-op_STGW: {
+op_STGW : {
   const uint32_t b = B();
   const uint32_t i = static_cast<uint32_t>(sp[-1].i) - 1u;
   if (i >= bytecode::window_size(b)) FAIL(RunError::IndexOutOfRange);
@@ -453,17 +470,19 @@ op_STGW: {
   ip += 2;
   DISPATCH();
 }
-op_LDGWG: {
+op_LDGWG : {
   const uint32_t b = B();
-  const uint32_t i = static_cast<uint32_t>(global_data_[bytecode::global_window_index(b)][0].i) - 1u;
+  const uint32_t i =
+      static_cast<uint32_t>(global_data_[bytecode::global_window_index(b)][0].i) - 1u;
   if (i >= bytecode::global_window_size(b)) FAIL(RunError::IndexOutOfRange);
   *sp++ = global_data_[A()][bytecode::global_window_first(b) + i];
   ip += 2;
   DISPATCH();
 }
-op_STGWG: {
+op_STGWG : {
   const uint32_t b = B();
-  const uint32_t i = static_cast<uint32_t>(global_data_[bytecode::global_window_index(b)][0].i) - 1u;
+  const uint32_t i =
+      static_cast<uint32_t>(global_data_[bytecode::global_window_index(b)][0].i) - 1u;
   if (i >= bytecode::global_window_size(b)) FAIL(RunError::IndexOutOfRange);
   global_data_[A()][bytecode::global_window_first(b) + i] = *--sp;
   ip += 2;
@@ -474,62 +493,100 @@ op_INCL:
   ip += 2;
   DISPATCH();
 
-op_ADDI: INT_BINARY(arith::wrap_add(a, b))
-op_SUBI: INT_BINARY(arith::wrap_sub(a, b))
-op_MULI: INT_BINARY(arith::wrap_mul(a, b))
+op_ADDI:
+  INT_BINARY(arith::wrap_add(a, b))
+op_SUBI:
+  INT_BINARY(arith::wrap_sub(a, b))
+op_MULI:
+  INT_BINARY(arith::wrap_mul(a, b))
 op_DIVI:
   if (sp[-1].i == 0) FAIL(RunError::DivisionByZero);
   INT_BINARY(arith::int_div(a, b))
 op_REMI:
   if (sp[-1].i == 0) FAIL(RunError::DivisionByZero);
   INT_BINARY(arith::int_rem(a, b))
-op_NEGI: UNARY(Value::of_int(arith::saturating_neg(a.i)))
-op_ANDI: INT_BINARY(a & b)
-op_ORI: INT_BINARY(a | b)
-op_XORI: INT_BINARY(a ^ b)
-op_NOTI: UNARY(Value::of_int(~a.i))
-op_SHLI: INT_BINARY(arith::shift_left(a, b))
-op_SHRI: INT_BINARY(arith::shift_right(a, b))
-op_ABSI: UNARY(Value::of_int(arith::saturating_abs(a.i)))
-op_SIGNI: UNARY(Value::of_int(arith::sign_of(a.i)))
+op_NEGI:
+  UNARY(Value::of_int(arith::saturating_neg(a.i)))
+op_ANDI:
+  INT_BINARY(a & b)
+op_ORI:
+  INT_BINARY(a | b)
+op_XORI:
+  INT_BINARY(a ^ b)
+op_NOTI:
+  UNARY(Value::of_int(~a.i))
+op_SHLI:
+  INT_BINARY(arith::shift_left(a, b))
+op_SHRI:
+  INT_BINARY(arith::shift_right(a, b))
+op_ABSI:
+  UNARY(Value::of_int(arith::saturating_abs(a.i)))
+op_SIGNI:
+  UNARY(Value::of_int(arith::sign_of(a.i)))
 
-op_ADDF: FLOAT_BINARY(a + b)
-op_SUBF: FLOAT_BINARY(a - b)
-op_MULF: FLOAT_BINARY(a * b)
+op_ADDF:
+  FLOAT_BINARY(a + b)
+op_SUBF:
+  FLOAT_BINARY(a - b)
+op_MULF:
+  FLOAT_BINARY(a * b)
 op_DIVF:
   if (sp[-1].f == 0.0f) FAIL(RunError::DivisionByZero);
   FLOAT_BINARY(a / b)
-op_NEGF: UNARY(Value::of_float(-a.f))
-op_ABSF: UNARY(Value::of_float(std::fabs(a.f)))
-op_SIGNF: UNARY(Value::of_int(arith::sign_of(a.f)))
-op_SINF: UNARY(Value::of_float(std::sin(a.f)))
-op_COSF: UNARY(Value::of_float(std::cos(a.f)))
-op_SQRTF: UNARY(Value::of_float(a.f > 0.0f ? std::sqrt(a.f) : 0.0f))
+op_NEGF:
+  UNARY(Value::of_float(-a.f))
+op_ABSF:
+  UNARY(Value::of_float(std::fabs(a.f)))
+op_SIGNF:
+  UNARY(Value::of_int(arith::sign_of(a.f)))
+op_SINF:
+  UNARY(Value::of_float(std::sin(a.f)))
+op_COSF:
+  UNARY(Value::of_float(std::cos(a.f)))
+op_SQRTF:
+  UNARY(Value::of_float(a.f > 0.0f ? std::sqrt(a.f) : 0.0f))
 
-op_EQI: COMPARE(int32_t, i, ==)
-op_NEI: COMPARE(int32_t, i, !=)
-op_LTI: COMPARE(int32_t, i, <)
-op_LEI: COMPARE(int32_t, i, <=)
-op_GTI: COMPARE(int32_t, i, >)
-op_GEI: COMPARE(int32_t, i, >=)
-op_EQF: COMPARE(float, f, ==)
-op_NEF: COMPARE(float, f, !=)
-op_LTF: COMPARE(float, f, <)
-op_LEF: COMPARE(float, f, <=)
-op_GTF: COMPARE(float, f, >)
-op_GEF: COMPARE(float, f, >=)
-op_LNOT: UNARY(Value::of_int(a.i == 0 ? 1 : 0))
-op_TRUTHF: UNARY(Value::of_int(a.f != 0.0f ? 1 : 0))
+op_EQI:
+  COMPARE(int32_t, i, ==)
+op_NEI:
+  COMPARE(int32_t, i, !=)
+op_LTI:
+  COMPARE(int32_t, i, <)
+op_LEI:
+  COMPARE(int32_t, i, <=)
+op_GTI:
+  COMPARE(int32_t, i, >)
+op_GEI:
+  COMPARE(int32_t, i, >=)
+op_EQF:
+  COMPARE(float, f, ==)
+op_NEF:
+  COMPARE(float, f, !=)
+op_LTF:
+  COMPARE(float, f, <)
+op_LEF:
+  COMPARE(float, f, <=)
+op_GTF:
+  COMPARE(float, f, >)
+op_GEF:
+  COMPARE(float, f, >=)
+op_LNOT:
+  UNARY(Value::of_int(a.i == 0 ? 1 : 0))
+op_TRUTHF:
+  UNARY(Value::of_int(a.f != 0.0f ? 1 : 0))
 
-op_I2F: UNARY(Value::of_float(static_cast<float>(a.i)))
+op_I2F:
+  UNARY(Value::of_float(static_cast<float>(a.i)))
 op_I2F2:
   sp[-2] = Value::of_float(static_cast<float>(sp[-2].i));
   ++ip;
   DISPATCH();
-op_F2IR: UNARY(Value::of_int(arith::round_to_int(a.f)))
-op_F2IT: UNARY(Value::of_int(arith::trunc_to_int(a.f)))
+op_F2IR:
+  UNARY(Value::of_int(arith::round_to_int(a.f)))
+op_F2IT:
+  UNARY(Value::of_int(arith::trunc_to_int(a.f)))
 
-op_MULID: {
+op_MULID : {
   const arith::PromotedProduct p = arith::promoting_mul(sp[-2].i, sp[-1].i);
   write_pair(sp - 2, p.is_float ? TypedValue::of_float(p.f) : TypedValue::of_int(p.i));
   goto next_1;
@@ -555,7 +612,7 @@ op_D2IT:
 op_ADDD:
 op_SUBD:
 op_MULD:
-op_DIVD: {
+op_DIVD : {
   const TypedValue a = read_pair(sp - 4);
   const TypedValue b = read_pair(sp - 2);
   const Op op = bytecode::word_op(word);
@@ -590,19 +647,19 @@ op_DIVD: {
   write_pair(sp - 2, r);
   goto next_1;
 }
-op_NEGD: {
+op_NEGD : {
   const TypedValue a = read_pair(sp - 2);
   write_pair(sp - 2, a.is_float() ? TypedValue::of_float(-a.value.f)
                                   : TypedValue::of_int(arith::saturating_neg(a.value.i)));
   goto next_1;
 }
-op_ABSD: {
+op_ABSD : {
   const TypedValue a = read_pair(sp - 2);
   write_pair(sp - 2, a.is_float() ? TypedValue::of_float(std::fabs(a.value.f))
                                   : TypedValue::of_int(arith::saturating_abs(a.value.i)));
   goto next_1;
 }
-op_CMPD: {
+op_CMPD : {
   const TypedValue a = read_pair(sp - 4);
   const TypedValue b = read_pair(sp - 2);
   const auto how = static_cast<int32_t>(A());
@@ -617,22 +674,27 @@ op_JMP:
   JUMP_TO(code + A());
   DISPATCH();
 op_JZ:
-  if ((--sp)->i == 0) JUMP_TO(code + A()); else ++ip;
+  if ((--sp)->i == 0)
+    JUMP_TO(code + A());
+  else
+    ++ip;
   DISPATCH();
 op_JNZ:
-  if ((--sp)->i != 0) JUMP_TO(code + A()); else ++ip;
+  if ((--sp)->i != 0)
+    JUMP_TO(code + A());
+  else
+    ++ip;
   DISPATCH();
 // A call counts as a jump back: a call tree of forward calls (each routine calling the next
 // twice) runs exponentially long without jumping back, and never past a frame's depth without
 // a call. The slice may end at the callee's entry, as a jump's ends at its target.
-op_CALL: {
+op_CALL : {
   // The common case inline; enter() handles the rest and reports which limit was hit.
   const RoutineInfo& r = routines_[A()];
   Value* base = sp - r.inputs;
   Value* callee = tp->locals_top;
   if (tp->frame_count < config_.frames &&
-      r.locals <= static_cast<size_t>(tp->locals_end - callee) &&
-      base <= call_limit) {
+      r.locals <= static_cast<size_t>(tp->locals_end - callee) && base <= call_limit) {
     Frame& f = tp->frames[tp->frame_count++];
     f.return_pc = static_cast<uint32_t>(ip - code) + 2;
     f.routine = A();
@@ -644,10 +706,16 @@ op_CALL: {
     // Most routines have a local or two beyond their inputs: a memset call would cost more.
     Value* rest = callee + r.inputs;
     switch (r.locals - r.inputs) {
-      case 2: rest[1].bits = 0; [[fallthrough]];
-      case 1: rest[0].bits = 0; [[fallthrough]];
-      case 0: break;
-      default: std::memset(static_cast<void*>(rest), 0, (r.locals - r.inputs) * sizeof(Value));
+      case 2:
+        rest[1].bits = 0;
+        [[fallthrough]];
+      case 1:
+        rest[0].bits = 0;
+        [[fallthrough]];
+      case 0:
+        break;
+      default:
+        std::memset(static_cast<void*>(rest), 0, (r.locals - r.inputs) * sizeof(Value));
     }
     tp->locals_top = callee + r.locals;
     sp = base;
@@ -663,7 +731,7 @@ op_CALL: {
   COUNT_JUMP_BACK();
   DISPATCH();
 }
-op_CALLFEOL: {
+op_CALLFEOL : {
   // A frame in the data memory at the memory stack's pointer (local 0), below its limit (local
   // 1): the arguments into it, its other words after them to 0, the line's end, then the call.
   const RoutineInfo& r = routines_[A()];
@@ -701,7 +769,7 @@ op_CALLFEOL: {
   if (--lines.now == 0) goto out_of_lines;
   DISPATCH_NEXT();
 }
-op_RET: {
+op_RET : {
   const Frame& f = tp->frames[tp->frame_count - 1];
   tp->frame_count--;
   tp->locals_top = f.locals;
@@ -768,7 +836,7 @@ op_YIELD:
   ++ip;
   end = SliceEnd::Yielded;
   goto stop;
-op_WAIT: {
+op_WAIT : {
   int64_t duration_us = static_cast<int64_t>((--sp)->i) * static_cast<int64_t>(A());
   if (duration_us < 0) duration_us = 0;
   if (duration_us > INT32_MAX) duration_us = INT32_MAX;  // the clock's signed horizon
@@ -779,10 +847,10 @@ op_WAIT: {
   goto stop;
 }
 op_TRY:
-op_TRYALL: {
+op_TRYALL : {
   if (tp->handler_count >= config_.handlers) FAIL(RunError::TryDepth);
   tp->handlers[tp->handler_count++] = {A(), tp->frame_count, sp, tp->locals_top,
-                                   bytecode::word_op(word) == Op::TRYALL};
+                                       bytecode::word_op(word) == Op::TRYALL};
   goto next_1;
 }
 op_ENDTRY:
@@ -809,85 +877,133 @@ op_REMLK:
   ip += 2;
   DISPATCH();
 
-#define JUMP_LOCALS(op)                                                        \
-  {                                                                            \
-    const uint32_t pair = B();                                                 \
-    const int32_t a = locals[bytecode::packed_first(pair)].i;                  \
-    const int32_t b = locals[bytecode::packed_second(pair)].i;                 \
-    if (a op b) JUMP_TO(code + A()); else ip += 2;                             \
-    DISPATCH();                                                                \
+#define JUMP_LOCALS(op)                                        \
+  {                                                            \
+    const uint32_t pair = B();                                 \
+    const int32_t a = locals[bytecode::packed_first(pair)].i;  \
+    const int32_t b = locals[bytecode::packed_second(pair)].i; \
+    if (a op b)                                                \
+      JUMP_TO(code + A());                                     \
+    else                                                       \
+      ip += 2;                                                 \
+    DISPATCH();                                                \
   }
-#define JUMP_LOCAL_IMM(op)                                                     \
-  {                                                                            \
-    const uint32_t pair = B();                                                 \
-    const int32_t a = locals[bytecode::packed_first(pair)].i;                  \
-    if (a op bytecode::packed_imm(pair)) JUMP_TO(code + A()); else ip += 2;    \
-    DISPATCH();                                                                \
+#define JUMP_LOCAL_IMM(op)                                    \
+  {                                                           \
+    const uint32_t pair = B();                                \
+    const int32_t a = locals[bytecode::packed_first(pair)].i; \
+    if (a op bytecode::packed_imm(pair))                      \
+      JUMP_TO(code + A());                                    \
+    else                                                      \
+      ip += 2;                                                \
+    DISPATCH();                                               \
   }
 // Float comparisons jump "unless" (see peephole.cpp): NaN compares false and falls through.
-#define JUMP_UNLESS_FLOATS(a_expr, b_expr, op)                                 \
-  {                                                                            \
-    const uint32_t pair = B();                                                 \
-    const float a = a_expr;                                                    \
-    const float b = b_expr;                                                    \
-    if (!(a op b)) JUMP_TO(code + A()); else ip += 2;                          \
-    DISPATCH();                                                                \
+#define JUMP_UNLESS_FLOATS(a_expr, b_expr, op) \
+  {                                            \
+    const uint32_t pair = B();                 \
+    const float a = a_expr;                    \
+    const float b = b_expr;                    \
+    if (!(a op b))                             \
+      JUMP_TO(code + A());                     \
+    else                                       \
+      ip += 2;                                 \
+    DISPATCH();                                \
   }
-#define JUMP_UNLESS_LOCALS(op)                                                 \
-  JUMP_UNLESS_FLOATS(locals[bytecode::packed_first(pair)].f,                   \
+#define JUMP_UNLESS_LOCALS(op)                               \
+  JUMP_UNLESS_FLOATS(locals[bytecode::packed_first(pair)].f, \
                      locals[bytecode::packed_second(pair)].f, op)
-#define JUMP_UNLESS_LOCAL_CONST(op)                                            \
-  JUMP_UNLESS_FLOATS(locals[bytecode::packed_first(pair)].f,                   \
+#define JUMP_UNLESS_LOCAL_CONST(op)                          \
+  JUMP_UNLESS_FLOATS(locals[bytecode::packed_first(pair)].f, \
                      constants_[bytecode::packed_second(pair)].f, op)
-#define JUMP_COMPARE(type, field, cond)                                        \
-  {                                                                            \
-    const type a = sp[-2].field;                                               \
-    const type b = sp[-1].field;                                               \
-    sp -= 2;                                                                   \
-    if (cond) JUMP_TO(code + A()); else ++ip;                                  \
-    DISPATCH();                                                                \
+#define JUMP_COMPARE(type, field, cond) \
+  {                                     \
+    const type a = sp[-2].field;        \
+    const type b = sp[-1].field;        \
+    sp -= 2;                            \
+    if (cond)                           \
+      JUMP_TO(code + A());              \
+    else                                \
+      ++ip;                             \
+    DISPATCH();                         \
   }
-op_JEQLL: JUMP_LOCALS(==)
-op_JNELL: JUMP_LOCALS(!=)
-op_JLTLL: JUMP_LOCALS(<)
-op_JLELL: JUMP_LOCALS(<=)
-op_JGTLL: JUMP_LOCALS(>)
-op_JGELL: JUMP_LOCALS(>=)
-op_JEQLK: JUMP_LOCAL_IMM(==)
-op_JNELK: JUMP_LOCAL_IMM(!=)
-op_JLTLK: JUMP_LOCAL_IMM(<)
-op_JLELK: JUMP_LOCAL_IMM(<=)
-op_JGTLK: JUMP_LOCAL_IMM(>)
-op_JGELK: JUMP_LOCAL_IMM(>=)
+op_JEQLL:
+  JUMP_LOCALS(==)
+op_JNELL:
+  JUMP_LOCALS(!=)
+op_JLTLL:
+  JUMP_LOCALS(<)
+op_JLELL:
+  JUMP_LOCALS(<=)
+op_JGTLL:
+  JUMP_LOCALS(>)
+op_JGELL:
+  JUMP_LOCALS(>=)
+op_JEQLK:
+  JUMP_LOCAL_IMM(==)
+op_JNELK:
+  JUMP_LOCAL_IMM(!=)
+op_JLTLK:
+  JUMP_LOCAL_IMM(<)
+op_JLELK:
+  JUMP_LOCAL_IMM(<=)
+op_JGTLK:
+  JUMP_LOCAL_IMM(>)
+op_JGELK:
+  JUMP_LOCAL_IMM(>=)
 #undef DISPATCH
 #define DISPATCH() DISPATCH_COUNTING_MARK()
-op_JEQI: JUMP_COMPARE(int32_t, i, a == b)
-op_JNEI: JUMP_COMPARE(int32_t, i, a != b)
-op_JLTI: JUMP_COMPARE(int32_t, i, a < b)
-op_JLEI: JUMP_COMPARE(int32_t, i, a <= b)
-op_JGTI: JUMP_COMPARE(int32_t, i, a > b)
-op_JGEI: JUMP_COMPARE(int32_t, i, a >= b)
+op_JEQI:
+  JUMP_COMPARE(int32_t, i, a == b)
+op_JNEI:
+  JUMP_COMPARE(int32_t, i, a != b)
+op_JLTI:
+  JUMP_COMPARE(int32_t, i, a < b)
+op_JLEI:
+  JUMP_COMPARE(int32_t, i, a <= b)
+op_JGTI:
+  JUMP_COMPARE(int32_t, i, a > b)
+op_JGEI:
+  JUMP_COMPARE(int32_t, i, a >= b)
 // Superinstructions again: no mark to look for.
 #undef DISPATCH
 #define DISPATCH() DISPATCH_NEXT()
-op_JNEQF: JUMP_COMPARE(float, f, !(a == b))
-op_JNNEF: JUMP_COMPARE(float, f, !(a != b))
-op_JNLTF: JUMP_COMPARE(float, f, !(a < b))
-op_JNLEF: JUMP_COMPARE(float, f, !(a <= b))
-op_JNGTF: JUMP_COMPARE(float, f, !(a > b))
-op_JNGEF: JUMP_COMPARE(float, f, !(a >= b))
-op_JNEQFLL: JUMP_UNLESS_LOCALS(==)
-op_JNNEFLL: JUMP_UNLESS_LOCALS(!=)
-op_JNLTFLL: JUMP_UNLESS_LOCALS(<)
-op_JNLEFLL: JUMP_UNLESS_LOCALS(<=)
-op_JNGTFLL: JUMP_UNLESS_LOCALS(>)
-op_JNGEFLL: JUMP_UNLESS_LOCALS(>=)
-op_JNEQFLK: JUMP_UNLESS_LOCAL_CONST(==)
-op_JNNEFLK: JUMP_UNLESS_LOCAL_CONST(!=)
-op_JNLTFLK: JUMP_UNLESS_LOCAL_CONST(<)
-op_JNLEFLK: JUMP_UNLESS_LOCAL_CONST(<=)
-op_JNGTFLK: JUMP_UNLESS_LOCAL_CONST(>)
-op_JNGEFLK: JUMP_UNLESS_LOCAL_CONST(>=)
+op_JNEQF:
+  JUMP_COMPARE(float, f, !(a == b))
+op_JNNEF:
+  JUMP_COMPARE(float, f, !(a != b))
+op_JNLTF:
+  JUMP_COMPARE(float, f, !(a < b))
+op_JNLEF:
+  JUMP_COMPARE(float, f, !(a <= b))
+op_JNGTF:
+  JUMP_COMPARE(float, f, !(a > b))
+op_JNGEF:
+  JUMP_COMPARE(float, f, !(a >= b))
+op_JNEQFLL:
+  JUMP_UNLESS_LOCALS(==)
+op_JNNEFLL:
+  JUMP_UNLESS_LOCALS(!=)
+op_JNLTFLL:
+  JUMP_UNLESS_LOCALS(<)
+op_JNLEFLL:
+  JUMP_UNLESS_LOCALS(<=)
+op_JNGTFLL:
+  JUMP_UNLESS_LOCALS(>)
+op_JNGEFLL:
+  JUMP_UNLESS_LOCALS(>=)
+op_JNEQFLK:
+  JUMP_UNLESS_LOCAL_CONST(==)
+op_JNNEFLK:
+  JUMP_UNLESS_LOCAL_CONST(!=)
+op_JNLTFLK:
+  JUMP_UNLESS_LOCAL_CONST(<)
+op_JNLEFLK:
+  JUMP_UNLESS_LOCAL_CONST(<=)
+op_JNGTFLK:
+  JUMP_UNLESS_LOCAL_CONST(>)
+op_JNGEFLK:
+  JUMP_UNLESS_LOCAL_CONST(>=)
 #undef JUMP_LOCALS
 #undef JUMP_LOCAL_IMM
 #undef JUMP_COMPARE
@@ -896,14 +1012,15 @@ op_JNGEFLK: JUMP_UNLESS_LOCAL_CONST(>=)
 #undef JUMP_UNLESS_LOCAL_CONST
 // A line that ends by jumping (a loop's step, an if arm's last assignment) stops the slice
 // at the jump's target, as EOL; JMP would.
-#define END_LINE_AND_JUMP()                                \
-  {                                                        \
-    JUMP_OR(code + A(), out_of_back_jumps_at_line_end);    \
-    if (--lines.now == 0) goto out_of_lines;               \
-    DISPATCH();                                            \
+#define END_LINE_AND_JUMP()                             \
+  {                                                     \
+    JUMP_OR(code + A(), out_of_back_jumps_at_line_end); \
+    if (--lines.now == 0) goto out_of_lines;            \
+    DISPATCH();                                         \
   }
-op_JMPEOL: END_LINE_AND_JUMP()
-op_INCLJEOL: {
+op_JMPEOL:
+  END_LINE_AND_JUMP()
+op_INCLJEOL : {
   const uint32_t pair = B();
   int32_t& counter = locals[bytecode::packed_first(pair)].i;
   counter = arith::wrap_add(counter, bytecode::packed_imm(pair));
@@ -948,25 +1065,35 @@ op_MOVL:
   ip += 2;
   DISPATCH();
 
-#define LOCALS_ARITH(type, field, expr, store)                             \
-  {                                                                        \
-    const uint32_t pair = B();                                             \
-    const type a = locals[bytecode::packed_first(pair)].field;             \
-    const type b = locals[bytecode::packed_second(pair)].field;            \
-    store = (expr);                                                        \
-    ip += 2;                                                               \
-    DISPATCH();                                                            \
+#define LOCALS_ARITH(type, field, expr, store)                  \
+  {                                                             \
+    const uint32_t pair = B();                                  \
+    const type a = locals[bytecode::packed_first(pair)].field;  \
+    const type b = locals[bytecode::packed_second(pair)].field; \
+    store = (expr);                                             \
+    ip += 2;                                                    \
+    DISPATCH();                                                 \
   }
-op_ADDILL: LOCALS_ARITH(int32_t, i, arith::wrap_add(a, b), (sp++)->i)
-op_SUBILL: LOCALS_ARITH(int32_t, i, arith::wrap_sub(a, b), (sp++)->i)
-op_ADDFLL: LOCALS_ARITH(float, f, a + b, (sp++)->f)
-op_SUBFLL: LOCALS_ARITH(float, f, a - b, (sp++)->f)
-op_MULFLL: LOCALS_ARITH(float, f, a * b, (sp++)->f)
-op_ADDILLS: LOCALS_ARITH(int32_t, i, arith::wrap_add(a, b), locals[A()].i)
-op_SUBILLS: LOCALS_ARITH(int32_t, i, arith::wrap_sub(a, b), locals[A()].i)
-op_ADDFLLS: LOCALS_ARITH(float, f, a + b, locals[A()].f)
-op_SUBFLLS: LOCALS_ARITH(float, f, a - b, locals[A()].f)
-op_MULFLLS: LOCALS_ARITH(float, f, a * b, locals[A()].f)
+op_ADDILL:
+  LOCALS_ARITH(int32_t, i, arith::wrap_add(a, b), (sp++)->i)
+op_SUBILL:
+  LOCALS_ARITH(int32_t, i, arith::wrap_sub(a, b), (sp++)->i)
+op_ADDFLL:
+  LOCALS_ARITH(float, f, a + b, (sp++)->f)
+op_SUBFLL:
+  LOCALS_ARITH(float, f, a - b, (sp++)->f)
+op_MULFLL:
+  LOCALS_ARITH(float, f, a* b, (sp++)->f)
+op_ADDILLS:
+  LOCALS_ARITH(int32_t, i, arith::wrap_add(a, b), locals[A()].i)
+op_SUBILLS:
+  LOCALS_ARITH(int32_t, i, arith::wrap_sub(a, b), locals[A()].i)
+op_ADDFLLS:
+  LOCALS_ARITH(float, f, a + b, locals[A()].f)
+op_SUBFLLS:
+  LOCALS_ARITH(float, f, a - b, locals[A()].f)
+op_MULFLLS:
+  LOCALS_ARITH(float, f, a* b, locals[A()].f)
 #undef LOCALS_ARITH
 
 // The global forms: element 0 of scalar globals, as LDG and STG read and write it.
@@ -991,13 +1118,13 @@ op_REMGK:
   (sp++)->i = arith::int_rem(GLOBAL(A()).i, static_cast<int32_t>(B()));
   ip += 2;
   DISPATCH();
-op_INCG: {
+op_INCG : {
   int32_t& counter = GLOBAL(A()).i;
   counter = arith::wrap_add(counter, static_cast<int32_t>(B()));
   ip += 2;
   DISPATCH();
 }
-op_INCGEOL: {
+op_INCGEOL : {
   int32_t& counter = GLOBAL(A()).i;
   counter = arith::wrap_add(counter, static_cast<int32_t>(B()));
   ip += 2;
@@ -1023,19 +1150,23 @@ op_JEQGK:
 op_JNEGK:
 op_JLTGK:
 op_JLEGK:
-op_JGEGK: {
+op_JGEGK : {
   const uint32_t pair = B();
-  const uint32_t outcome =
-      int_outcome(GLOBAL(bytecode::packed_first(pair)).i, constants_[bytecode::packed_second(pair)].i);
+  const uint32_t outcome = int_outcome(GLOBAL(bytecode::packed_first(pair)).i,
+                                       constants_[bytecode::packed_second(pair)].i);
   const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JEQGK);
-  if (holds(how, outcome)) JUMP_TO(code + A()); else ip += 2;
+  if (holds(how, outcome))
+    JUMP_TO(code + A());
+  else
+    ip += 2;
   DISPATCH();
 }
 // A counting loop's exit test (`for (K = 1, K <= N, ...)`), taken every turn: its own handler,
 // without the family's outcome and table.
-op_JGTGK: {
+op_JGTGK : {
   const uint32_t pair = B();
-  if (GLOBAL(bytecode::packed_first(pair)).i > constants_[bytecode::packed_second(pair)].i) [[unlikely]] {
+  if (GLOBAL(bytecode::packed_first(pair)).i > constants_[bytecode::packed_second(pair)].i)
+      [[unlikely]] {
     JUMP_TO(code + A());
     DISPATCH();
   }
@@ -1048,7 +1179,7 @@ op_JNNEFGK:
 op_JNLTFGK:
 op_JNLEFGK:
 op_JNGTFGK:
-op_JNGEFGK: {
+op_JNGEFGK : {
   const uint32_t pair = B();
   const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFGK);
   if (!holds(how, float_outcome(GLOBAL(bytecode::packed_first(pair)).f,
@@ -1061,25 +1192,25 @@ op_JNGEFGK: {
 // The branches that end their line on both paths: a handler a family (the embeddable core's
 // 32 KiB), the taken path as JMPEOL, the other as the instruction and its EOL. `width` is the
 // instruction's length in words.
-#define BRANCH_ENDING_LINE(taken, width)                     \
-  {                                                          \
-    if (taken) {                                             \
-      JUMP_OR(code + A(), out_of_back_jumps_at_line_end);    \
-    } else {                                                 \
-      ip += (width);                                         \
-    }                                                        \
-    if (--lines.now == 0) goto out_of_lines;                 \
-    DISPATCH();                                              \
+#define BRANCH_ENDING_LINE(taken, width)                  \
+  {                                                       \
+    if (taken) {                                          \
+      JUMP_OR(code + A(), out_of_back_jumps_at_line_end); \
+    } else {                                              \
+      ip += (width);                                      \
+    }                                                     \
+    if (--lines.now == 0) goto out_of_lines;              \
+    DISPATCH();                                           \
   }
 op_JEQGKEOL:
 op_JNEGKEOL:
 op_JLTGKEOL:
 op_JLEGKEOL:
 op_JGTGKEOL:
-op_JGEGKEOL: {
+op_JGEGKEOL : {
   const uint32_t pair = B();
-  const uint32_t outcome =
-      int_outcome(GLOBAL(bytecode::packed_first(pair)).i, constants_[bytecode::packed_second(pair)].i);
+  const uint32_t outcome = int_outcome(GLOBAL(bytecode::packed_first(pair)).i,
+                                       constants_[bytecode::packed_second(pair)].i);
   const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JEQGKEOL);
   BRANCH_ENDING_LINE(holds(how, outcome), 2)
 }
@@ -1088,55 +1219,66 @@ op_JNNEFGKEOL:
 op_JNLTFGKEOL:
 op_JNLEFGKEOL:
 op_JNGTFGKEOL:
-op_JNGEFGKEOL: {
+op_JNGEFGKEOL : {
   const uint32_t pair = B();
   const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFGKEOL);
   BRANCH_ENDING_LINE(!holds(how, float_outcome(GLOBAL(bytecode::packed_first(pair)).f,
                                                constants_[bytecode::packed_second(pair)].f)),
                      2)
 }
-op_JNCMPFEOL: {
+op_JNCMPFEOL : {
   const uint32_t outcome = float_outcome(sp[-2].f, sp[-1].f);
   sp -= 2;
   BRANCH_ENDING_LINE(!holds(B(), outcome), 2)
 }
 op_JZGEOL:
 op_JNZGEOL:
-  BRANCH_ENDING_LINE((GLOBAL(B()).i == 0) != ((word & 0xFFu) == static_cast<uint32_t>(Op::JNZGEOL)), 2)
+  BRANCH_ENDING_LINE((GLOBAL(B()).i == 0) != ((word & 0xFFu) == static_cast<uint32_t>(Op::JNZGEOL)),
+                     2)
 // Two globals' arithmetic, a handler each (one shared through a switch slowed Gold's loop
 // by some 10 %, though it never runs there); they end in the shared dispatch.
-#define GLOBALS_ARITH(type, field, expr)                                   \
-  {                                                                        \
-    const uint32_t pair = B();                                             \
-    const type a = GLOBAL(bytecode::packed_first(pair)).field;             \
-    const type b = GLOBAL(bytecode::packed_second(pair)).field;            \
-    (sp++)->field = (expr);                                                \
-    goto next_2;                                                           \
+#define GLOBALS_ARITH(type, field, expr)                        \
+  {                                                             \
+    const uint32_t pair = B();                                  \
+    const type a = GLOBAL(bytecode::packed_first(pair)).field;  \
+    const type b = GLOBAL(bytecode::packed_second(pair)).field; \
+    (sp++)->field = (expr);                                     \
+    goto next_2;                                                \
   }
-op_ADDIGG: GLOBALS_ARITH(int32_t, i, arith::wrap_add(a, b))
-op_SUBIGG: GLOBALS_ARITH(int32_t, i, arith::wrap_sub(a, b))
-op_ADDFGG: GLOBALS_ARITH(float, f, a + b)
-op_SUBFGG: GLOBALS_ARITH(float, f, a - b)
-op_MULFGG: GLOBALS_ARITH(float, f, a * b)
+op_ADDIGG:
+  GLOBALS_ARITH(int32_t, i, arith::wrap_add(a, b))
+op_SUBIGG:
+  GLOBALS_ARITH(int32_t, i, arith::wrap_sub(a, b))
+op_ADDFGG:
+  GLOBALS_ARITH(float, f, a + b)
+op_SUBFGG:
+  GLOBALS_ARITH(float, f, a - b)
+op_MULFGG:
+  GLOBALS_ARITH(float, f, a* b)
 #undef GLOBALS_ARITH
 // The three-address forms: two globals' arithmetic into global A, ending the line.
-#define GLOBALS_ARITH_EOL(type, field, expr)                               \
-  {                                                                        \
-    const uint32_t pair = B();                                             \
-    const type a = GLOBAL(bytecode::packed_first(pair)).field;             \
-    const type b = GLOBAL(bytecode::packed_second(pair)).field;            \
-    GLOBAL(A()).field = (expr);                                            \
-    ip += 2;                                                               \
-    if (--lines.now == 0) goto out_of_lines;                               \
-    DISPATCH();                                                            \
+#define GLOBALS_ARITH_EOL(type, field, expr)                    \
+  {                                                             \
+    const uint32_t pair = B();                                  \
+    const type a = GLOBAL(bytecode::packed_first(pair)).field;  \
+    const type b = GLOBAL(bytecode::packed_second(pair)).field; \
+    GLOBAL(A()).field = (expr);                                 \
+    ip += 2;                                                    \
+    if (--lines.now == 0) goto out_of_lines;                    \
+    DISPATCH();                                                 \
   }
-op_ADDIGGEOL: GLOBALS_ARITH_EOL(int32_t, i, arith::wrap_add(a, b))
-op_SUBIGGEOL: GLOBALS_ARITH_EOL(int32_t, i, arith::wrap_sub(a, b))
-op_ADDFGGEOL: GLOBALS_ARITH_EOL(float, f, a + b)
-op_SUBFGGEOL: GLOBALS_ARITH_EOL(float, f, a - b)
-op_MULFGGEOL: GLOBALS_ARITH_EOL(float, f, a * b)
+op_ADDIGGEOL:
+  GLOBALS_ARITH_EOL(int32_t, i, arith::wrap_add(a, b))
+op_SUBIGGEOL:
+  GLOBALS_ARITH_EOL(int32_t, i, arith::wrap_sub(a, b))
+op_ADDFGGEOL:
+  GLOBALS_ARITH_EOL(float, f, a + b)
+op_SUBFGGEOL:
+  GLOBALS_ARITH_EOL(float, f, a - b)
+op_MULFGGEOL:
+  GLOBALS_ARITH_EOL(float, f, a* b)
 #undef GLOBALS_ARITH_EOL
-op_REMGKEOL: {
+op_REMGKEOL : {
   const uint32_t pair = B();
   const int32_t dividend = GLOBAL(bytecode::packed_first(pair)).i;
   GLOBAL(A()).i = arith::int_rem(dividend, bytecode::packed_imm(pair));
@@ -1154,9 +1296,12 @@ op_REMGKEOL: {
     if (--lines.now == 0) goto out_of_lines; \
     DISPATCH();                              \
   }
-op_ADDIGEOL: ACCUMULATE_EOL(i, arith::wrap_add(a, b))
-op_ADDFGEOL: ACCUMULATE_EOL(f, a + b)
-op_SUBFGEOL: ACCUMULATE_EOL(f, a - b)
+op_ADDIGEOL:
+  ACCUMULATE_EOL(i, arith::wrap_add(a, b))
+op_ADDFGEOL:
+  ACCUMULATE_EOL(f, a + b)
+op_SUBFGEOL:
+  ACCUMULATE_EOL(f, a - b)
 #undef ACCUMULATE_EOL
 // A float global with a constant (GlobalConst: the global first, the constant second).
 #define GLOBAL_CONSTANT_ARITH(expr)                              \
@@ -1167,17 +1312,21 @@ op_SUBFGEOL: ACCUMULATE_EOL(f, a - b)
     (sp++)->f = (expr);                                          \
     goto next_2;                                                 \
   }
-op_ADDFGK: GLOBAL_CONSTANT_ARITH(g + k)
-op_SUBFGK: GLOBAL_CONSTANT_ARITH(g - k)
-op_MULFGK: GLOBAL_CONSTANT_ARITH(g * k)
-op_MULFKG: GLOBAL_CONSTANT_ARITH(k * g)
+op_ADDFGK:
+  GLOBAL_CONSTANT_ARITH(g + k)
+op_SUBFGK:
+  GLOBAL_CONSTANT_ARITH(g - k)
+op_MULFGK:
+  GLOBAL_CONSTANT_ARITH(g * k)
+op_MULFKG:
+  GLOBAL_CONSTANT_ARITH(k * g)
 #undef GLOBAL_CONSTANT_ARITH
 op_JNEQFGG:
 op_JNNEFGG:
 op_JNLTFGG:
 op_JNLEFGG:
 op_JNGTFGG:
-op_JNGEFGG: {
+op_JNGEFGG : {
   const uint32_t pair = B();
   const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFGG);
   if (!holds(how, float_outcome(GLOBAL(bytecode::packed_first(pair)).f,
@@ -1192,14 +1341,14 @@ op_JNNEFGGEOL:
 op_JNLTFGGEOL:
 op_JNLEFGGEOL:
 op_JNGTFGGEOL:
-op_JNGEFGGEOL: {
+op_JNGEFGGEOL : {
   const uint32_t pair = B();
   const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFGGEOL);
   BRANCH_ENDING_LINE(!holds(how, float_outcome(GLOBAL(bytecode::packed_first(pair)).f,
                                                GLOBAL(bytecode::packed_second(pair)).f)),
                      2)
 }
-op_JCMPGG: {
+op_JCMPGG : {
   const uint32_t b = B();
   if (holds(bytecode::globals_test_how(b), int_outcome(GLOBAL(bytecode::globals_test_first(b)).i,
                                                        GLOBAL(bytecode::globals_test_second(b)).i)))
@@ -1208,29 +1357,30 @@ op_JCMPGG: {
     ip += 2;
   DISPATCH();
 }
-op_JCMPGGEOL: {
+op_JCMPGGEOL : {
   const uint32_t b = B();
-  BRANCH_ENDING_LINE(holds(bytecode::globals_test_how(b),
-                           int_outcome(GLOBAL(bytecode::globals_test_first(b)).i,
-                                       GLOBAL(bytecode::globals_test_second(b)).i)),
-                     2)
+  BRANCH_ENDING_LINE(
+      holds(bytecode::globals_test_how(b), int_outcome(GLOBAL(bytecode::globals_test_first(b)).i,
+                                                       GLOBAL(bytecode::globals_test_second(b)).i)),
+      2)
 }
 // A frame's word compared with a constant: `if (n < 2)` of a parameter.
-op_JCMPMKEOL: {
+op_JCMPMKEOL : {
   const uint32_t test = B();
   FRAME_WORD(at, bytecode::frame_test_local(test), bytecode::frame_test_offset(test));
-  BRANCH_ENDING_LINE(holds(bytecode::frame_test_how(test), int_outcome(at.i, bytecode::frame_test_imm(test))), 2)
+  BRANCH_ENDING_LINE(
+      holds(bytecode::frame_test_how(test), int_outcome(at.i, bytecode::frame_test_imm(test))), 2)
 }
 #undef BRANCH_ENDING_LINE
 #undef GLOBAL
 #undef DISPATCH
 #define DISPATCH() DISPATCH_COUNTING_MARK()
 
-op_CMDGET: {
+op_CMDGET : {
   Value v;
   HOST_CALL(host_->read(A(), static_cast<int32_t>(B()), v), (*sp++ = v, ip += 2))
 }
-op_UNTILCK: {
+op_UNTILCK : {
   bool met = false;
   round_ends = true;
   detail = test_command(*host_, A(), B(), met);
@@ -1241,7 +1391,7 @@ op_UNTILCK: {
   end = SliceEnd::Yielded;  // not yet: here again in the next slice
   goto stop;
 }
-op_CMDGETX: {
+op_CMDGETX : {
   Value v;
   HOST_CALL(host_->read(A(), sp[-1].i, v), (sp[-1] = v, ++ip))
 }
@@ -1250,7 +1400,7 @@ op_CMDSET:
 op_CMDSETX:
   HOST_CALL(host_->write(A(), sp[-2].i, sp[-1]), (sp -= 2, ++ip))
 op_CMDRUN:
-op_CMDRUNX: {
+op_CMDRUNX : {
   // CMDRUN is CMDRUNX at index 0, with no index on the stack.
   const uint32_t count = B();
   const bool indexed = bytecode::word_op(word) == Op::CMDRUNX;
@@ -1258,20 +1408,20 @@ op_CMDRUNX: {
   HOST_CALL(host_->execute(A(), indexed ? args[-1].i : 0, args, count),
             (sp = args - (indexed ? 1 : 0), ip += 2))
 }
-op_MSG: {
+op_MSG : {
   const uint32_t count = B();
   const auto thread = static_cast<uint32_t>(tp - threads_);
   HOST_CALL(host_->message(thread, A(), sp - count, count), (sp -= count, ip += 2))
 }
 
-op_LDM: {
+op_LDM : {
   const auto address = static_cast<uint32_t>(sp[-1].i);
   if (address >= memory_words_) FAIL(RunError::BadAddress);
   sp[-1] = memory_[address];
   ++ip;
   DISPATCH();
 }
-op_STM: {
+op_STM : {
   const auto address = static_cast<uint32_t>(sp[-2].i);
   if (address >= memory_words_) FAIL(RunError::BadAddress);
   memory_[address] = sp[-1];
@@ -1283,13 +1433,13 @@ op_STM: {
 // Superinstructions again: no mark to look for.
 #undef DISPATCH
 #define DISPATCH() DISPATCH_NEXT()
-op_LDMLK: {
+op_LDMLK : {
   FRAME_WORD(at, A(), B());
   *sp++ = at;
   ip += 2;
   DISPATCH();
 }
-op_STMLK: {
+op_STMLK : {
   FRAME_WORD(at, A(), B());
   at = *--sp;
   ip += 2;
@@ -1297,29 +1447,36 @@ op_STMLK: {
 }
 // An address's range tests: the operand stays for the code after either path.
 op_JULTK:
-  if (static_cast<uint32_t>(sp[-1].i) < B()) JUMP_TO(code + A()); else ip += 2;
+  if (static_cast<uint32_t>(sp[-1].i) < B())
+    JUMP_TO(code + A());
+  else
+    ip += 2;
   DISPATCH();
-op_LDPMLK: {
+op_LDPMLK : {
   const uint32_t test = B();
   FRAME_WORD(at, bytecode::pointer_test_local(test), bytecode::pointer_test_offset(test));
   const uint32_t pointer = at.bits;
   (sp++)->bits = pointer;
   if (pointer < bytecode::pointer_test_bound(test) ||
-      pointer - locals[bytecode::pointer_test_window_local(test)].bits < bytecode::pointer_test_window(test))
+      pointer - locals[bytecode::pointer_test_window_local(test)].bits <
+          bytecode::pointer_test_window(test))
     JUMP_TO(code + A());
   else
     ip += 2;
   DISPATCH();
 }
-op_JULTLK: {
+op_JULTLK : {
   const uint32_t pair = B();
-  const uint32_t offset =
-      static_cast<uint32_t>(sp[-1].i) - static_cast<uint32_t>(locals[bytecode::packed_first(pair)].i);
-  if (offset < static_cast<uint32_t>(bytecode::packed_imm(pair))) JUMP_TO(code + A()); else ip += 2;
+  const uint32_t offset = static_cast<uint32_t>(sp[-1].i) -
+                          static_cast<uint32_t>(locals[bytecode::packed_first(pair)].i);
+  if (offset < static_cast<uint32_t>(bytecode::packed_imm(pair)))
+    JUMP_TO(code + A());
+  else
+    ip += 2;
   DISPATCH();
 }
 // A frame's word plus a constant: `n - 1` of a parameter.
-op_ADDMLK: {
+op_ADDMLK : {
   const uint32_t pair = B();
   FRAME_WORD(at, A(), bytecode::packed_first(pair));
   (sp++)->i = arith::wrap_add(at.i, bytecode::packed_imm(pair));
@@ -1341,10 +1498,13 @@ op_ADDIG:
 #undef DISPATCH
 #define DISPATCH() DISPATCH_COUNTING_MARK()
 
-op_SEXT: UNARY(Value::of_int(arith::sign_extend(a.i, A())))
-op_ZEXT: UNARY(Value::of_int(arith::zero_extend(a.i, A())))
-op_SHRU: INT_BINARY(arith::shift_right_logical(a, b))
-op_CMPU: {
+op_SEXT:
+  UNARY(Value::of_int(arith::sign_extend(a.i, A())))
+op_ZEXT:
+  UNARY(Value::of_int(arith::zero_extend(a.i, A())))
+op_SHRU:
+  INT_BINARY(arith::shift_right_logical(a, b))
+op_CMPU : {
   // Unsigned order is signed order with the sign bits flipped.
   const bool r = compare(static_cast<int32_t>(A()), sp[-2].i ^ INT32_MIN, sp[-1].i ^ INT32_MIN);
   --sp;
@@ -1364,7 +1524,7 @@ op_SUBW:
   write_wide(sp - 4, read_wide(sp - 4) - read_wide(sp - 2));
   sp -= 2;
   goto next_1;
-op_MULDIV: {
+op_MULDIV : {
   if (sp[-1].i == 0) FAIL(RunError::DivisionByZero);
   int32_t q;
   if (!arith::mul_div(sp[-3].i, sp[-2].i, sp[-1].i, q)) FAIL(RunError::Overflow);
@@ -1471,6 +1631,5 @@ stop:
 #undef UNARY
 #undef HOST_CALL
 }
-
 
 }  // namespace uprog::vm

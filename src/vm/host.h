@@ -30,8 +30,7 @@ class Host {
   // Sends text `text` of the image (ImageView::text) with `count` raw argument words, from
   // `thread`: what a program prints (PDL's printl, ST's PRINTF). The host formats it
   // (support/format_message.h); the VM does not.
-  virtual CommandStatus message(uint32_t thread, uint32_t text, const Value* args,
-                                uint32_t count) {
+  virtual CommandStatus message(uint32_t thread, uint32_t text, const Value* args, uint32_t count) {
     (void)thread, (void)text, (void)args, (void)count;
     return kCommandUnsupported;
   }

@@ -56,12 +56,18 @@ bytecode::VerifyLimits limits_for(const MachineConfig& config) {
 
 const char* thread_status_name(ThreadStatus s) {
   switch (s) {
-    case ThreadStatus::Idle: return "idle";
-    case ThreadStatus::Running: return "running";
-    case ThreadStatus::Waiting: return "waiting";
-    case ThreadStatus::Halted: return "halted";
-    case ThreadStatus::AtBreakpoint: return "at breakpoint";
-    case ThreadStatus::Error: return "stopped by error";
+    case ThreadStatus::Idle:
+      return "idle";
+    case ThreadStatus::Running:
+      return "running";
+    case ThreadStatus::Waiting:
+      return "waiting";
+    case ThreadStatus::Halted:
+      return "halted";
+    case ThreadStatus::AtBreakpoint:
+      return "at breakpoint";
+    case ThreadStatus::Error:
+      return "stopped by error";
   }
   return "unknown";
 }
@@ -100,7 +106,8 @@ LoadStatus Machine::load(const uint8_t* bytes, size_t size, const MachineConfig&
     status.no_memory = true;
     return status;
   }
-  const bytecode::VerifyResult verified = bytecode::verify(view, limits_for(config), memory, memory_size);
+  const bytecode::VerifyResult verified =
+      bytecode::verify(view, limits_for(config), memory, memory_size);
   status.verify = verified.error;
   status.pc = verified.pc;
   if (!verified.ok()) return status;
@@ -347,7 +354,8 @@ bool Machine::move_pc(uint32_t thread, uint32_t pc, void* scratch, size_t scratc
   if (t.status != ThreadStatus::Halted || t.frame_count == 0) return false;
   const Frame& f = t.frames[t.frame_count - 1];
   uint32_t depth = 0;
-  if (!bytecode::stack_depth_at(image_, limits_for(config_), f.routine, pc, scratch, scratch_size, depth))
+  if (!bytecode::stack_depth_at(image_, limits_for(config_), f.routine, pc, scratch, scratch_size,
+                                depth))
     return false;
   if (static_cast<uint32_t>(t.sp - f.stack_base) != depth) return false;
   t.pc = pc;

@@ -21,10 +21,10 @@ const char* thread_status_name(ThreadStatus s);
 
 struct MachineConfig {
   uint32_t threads = 4;
-  uint32_t stack = 50;        // expression stack entries per thread
-  uint32_t frames = 30;       // call stack frames per thread (event entries count too)
-  uint32_t locals = 1024;     // local variable slots per thread, all frames together
-  uint32_t handlers = 8;      // nested try blocks per thread
+  uint32_t stack = 50;     // expression stack entries per thread
+  uint32_t frames = 30;    // call stack frames per thread (event entries count too)
+  uint32_t locals = 1024;  // local variable slots per thread, all frames together
+  uint32_t handlers = 8;   // nested try blocks per thread
   uint32_t breakpoints = 16;
 };
 
@@ -63,7 +63,7 @@ struct Round {
 
 struct SliceResult {
   SliceEnd end;
-  uint64_t executed;  // instructions run in this slice; counted only under an instruction budget
+  uint64_t executed;   // instructions run in this slice; counted only under an instruction budget
   uint64_t lines = 0;  // line ends passed in this slice; counted only under a line budget
 };
 
@@ -79,8 +79,8 @@ struct LoadStatus {
 
 struct FrameInfo {
   uint32_t routine;
-  uint32_t pc;      // where this frame is now (the innermost) or will resume (callers)
-  bool is_event;    // entered by interrupt(), not by a call
+  uint32_t pc;    // where this frame is now (the innermost) or will resume (callers)
+  bool is_event;  // entered by interrupt(), not by a call
 };
 
 class Machine {
@@ -134,9 +134,9 @@ class Machine {
   // In a timed wait whose time has not come: a slice would run nothing (inline below).
   bool sleeping(uint32_t thread);
   RunError last_error(uint32_t thread) const;
-  int32_t error_detail(uint32_t thread) const;  // the drive's code for CommandRefused
-  uint32_t pc(uint32_t thread) const;           // inline below, as status()
-  uint32_t frame_count(uint32_t thread) const;  // inline below
+  int32_t error_detail(uint32_t thread) const;             // the drive's code for CommandRefused
+  uint32_t pc(uint32_t thread) const;                      // inline below, as status()
+  uint32_t frame_count(uint32_t thread) const;             // inline below
   FrameInfo frame(uint32_t thread, uint32_t depth) const;  // depth 0 is the innermost
   // The outputs of the routine started by start(), readable after it finished.
   uint32_t thread_count() const { return thread_count_; }

@@ -6,7 +6,8 @@ namespace uprog::vm {
 const char* run_error_text(RunError e) {
   switch (e) {
 #define RUN_ERROR(name, code, text) \
-  case RunError::name: return text;
+  case RunError::name:              \
+    return text;
 #include "vm/run_errors.def"
 #undef RUN_ERROR
   }
@@ -16,7 +17,8 @@ const char* run_error_text(RunError e) {
 const char* run_error_name(RunError e) {
   switch (e) {
 #define RUN_ERROR(name, code, text) \
-  case RunError::name: return #name;
+  case RunError::name:              \
+    return #name;
 #include "vm/run_errors.def"
 #undef RUN_ERROR
   }
@@ -26,7 +28,9 @@ const char* run_error_name(RunError e) {
 bool run_error_from_code(uint32_t code, RunError& out) {
   switch (code) {
 #define RUN_ERROR(name, code, text) \
-  case code: out = RunError::name; return true;
+  case code:                        \
+    out = RunError::name;           \
+    return true;
 #include "vm/run_errors.def"
 #undef RUN_ERROR
   }

@@ -30,7 +30,8 @@ class RoundTrip : public ::testing::TestWithParam<fs::path> {};
 TEST_P(RoundTrip, AssemblyBinaryAssembly) {
   Image first;
   std::vector<Diagnostic> errors;
-  ASSERT_TRUE(assemble(read(GetParam()), GetParam().string(), first, errors)) << format_text(errors);
+  ASSERT_TRUE(assemble(read(GetParam()), GetParam().string(), first, errors))
+      << format_text(errors);
   const std::vector<uint8_t> bytes = encode(first);
   Image decoded;
   std::string error;
@@ -52,14 +53,17 @@ TEST(RoundTrip, EveryPartOfAnImage) {
   image.created_unix_s = 0x123456789ull;
   image.source_name = "odd \"name\"\n\x01.ehl";
   image.info = {"dialect=gold", "entry=main"};
-  image.constants = {{ValueType::Int, 0xFFFFFFFFu}, {ValueType::Float, 0x7FC00000u},
-                     {ValueType::Float, 0x3DCCCCCDu}, {ValueType::Float, 0x80000000u}};
+  image.constants = {{ValueType::Int, 0xFFFFFFFFu},
+                     {ValueType::Float, 0x7FC00000u},
+                     {ValueType::Float, 0x3DCCCCCDu},
+                     {ValueType::Float, 0x80000000u}};
   image.globals = {{"a", ValueType::Int, 1}, {"b", ValueType::Float, 2040}};
   image.code = {0x00000001u, 0x0000FF00u, 0xFFFFFFFFu, 0x00000000u};  // includes raw words
-  image.routines = {{"main", RoutineKind::Function, 1, 1, {{"x", ValueType::Int}, {"y", ValueType::Float}}, 0},
-                    {"AUTO_ER", RoutineKind::AutoRoutine, 0, 0, {}, 3},
-                    {"task", RoutineKind::Task, 0, 0, {}, 1},
-                    {"lbl", RoutineKind::Label, 0, 0, {}, 2}};
+  image.routines = {
+      {"main", RoutineKind::Function, 1, 1, {{"x", ValueType::Int}, {"y", ValueType::Float}}, 0},
+      {"AUTO_ER", RoutineKind::AutoRoutine, 0, 0, {}, 3},
+      {"task", RoutineKind::Task, 0, 0, {}, 1},
+      {"lbl", RoutineKind::Label, 0, 0, {}, 2}};
   image.events = {{7, 1}};
   image.lines = {{0, "a.ehl", 3}, {2, "b.ehl", 4}, {4, "a.ehl", 9}};
   const auto bytes = encode(image);
@@ -91,7 +95,8 @@ TEST(RoundTrip, DialectTextsAndTasks) {
   const std::string text = disassemble(decoded);
   EXPECT_NE(text.find(".dialect \"st\""), std::string::npos) << text;
   EXPECT_NE(text.find(".task 1 number=62 period_ns=62500 priority=256 start_at_reset=0"),
-            std::string::npos) << text;
+            std::string::npos)
+      << text;
   Image again;
   std::vector<Diagnostic> errors;
   ASSERT_TRUE(assemble(text, "t", again, errors)) << format_text(errors) << text;
@@ -101,18 +106,20 @@ TEST(RoundTrip, DialectTextsAndTasks) {
 TEST(Assembler, TasksNameTheirRoutine) {
   Image image;
   std::vector<Diagnostic> errors;
-  ASSERT_TRUE(assemble(".task \"b\" number=2 period_ns=1000000 priority=4 start_at_reset=1\n"
-                       ".routine task \"a\" in=0 out=0 entry=m\n"
-                       ".routine task \"b\" in=0 out=0 entry=m\nm:\n  RET\n",
-                       "t", image, errors))
+  ASSERT_TRUE(
+      assemble(".task \"b\" number=2 period_ns=1000000 priority=4 start_at_reset=1\n"
+               ".routine task \"a\" in=0 out=0 entry=m\n"
+               ".routine task \"b\" in=0 out=0 entry=m\nm:\n  RET\n",
+               "t", image, errors))
       << format_text(errors);
   ASSERT_EQ(image.tasks.size(), 1u);
   EXPECT_EQ(image.tasks[0], (Task{1, 2, 1000000, 4, true}));
-  EXPECT_FALSE(assemble(".task nope number=0 period_ns=0 priority=0 start_at_reset=0\n"
-                        ".task 0 number=0 period_ns=0 priority=0 start_at_reset=2\n"
-                        ".task 0 number=0 period=0 priority=0 start_at_reset=0\n"
-                        ".routine task \"a\" in=0 out=0 entry=m\nm:\n  RET\n",
-                        "bad.s", image, errors));
+  EXPECT_FALSE(
+      assemble(".task nope number=0 period_ns=0 priority=0 start_at_reset=0\n"
+               ".task 0 number=0 period_ns=0 priority=0 start_at_reset=2\n"
+               ".task 0 number=0 period=0 priority=0 start_at_reset=0\n"
+               ".routine task \"a\" in=0 out=0 entry=m\nm:\n  RET\n",
+               "bad.s", image, errors));
   ASSERT_EQ(errors.size(), 3u) << format_text(errors);
   EXPECT_NE(errors[0].message.find("unknown routine 'nope'"), std::string::npos);
   EXPECT_EQ(errors[1].where.line, 2);
@@ -122,7 +129,8 @@ TEST(Assembler, TasksNameTheirRoutine) {
 TEST(Assembler, ReportsErrorsWithTheirPlace) {
   Image image;
   std::vector<Diagnostic> errors;
-  EXPECT_FALSE(assemble("  PUSHI 99999999\n  BOGUS\n  JMP nowhere\n.const float x\n", "bad.s", image, errors));
+  EXPECT_FALSE(assemble("  PUSHI 99999999\n  BOGUS\n  JMP nowhere\n.const float x\n", "bad.s",
+                        image, errors));
   ASSERT_EQ(errors.size(), 4u);
   EXPECT_EQ(format_text(errors[0]).rfind("bad.s:1:9: error:", 0), 0u) << format_text(errors[0]);
   EXPECT_EQ(errors[1].where.line, 2);

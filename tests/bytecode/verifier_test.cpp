@@ -1,10 +1,11 @@
 // One hand-made bad image for each verifier rule (tests/bytecode/bad/*.s, each naming the error
 // it expects), a check that every rule has one, and random code whose accepted images must run
 // safely on the VM.
+#include "bytecode/verifier.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
-
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -15,7 +16,6 @@
 #include "bytecode/assembly.h"
 #include "bytecode/image.h"
 #include "bytecode/opcodes.h"
-#include "bytecode/verifier.h"
 #include "run_image.h"
 #include "vm/machine.h"
 
@@ -25,10 +25,10 @@ namespace {
 namespace fs = std::filesystem;
 
 const char* const kErrorNames[] = {
-    "Ok", "EmptyCode", "BadOpcode", "Truncated", "BreakInImage", "BadConstant", "BadGlobal",
-    "BadLocal", "BadRoutine", "BadTarget", "BadOperand", "BadEntry", "StackUnderflow",
-    "StackOverflow", "StackMismatch", "FallsOffEnd", "ReturnWithValues", "NoScratch",
-    "BadLineEnd"};
+    "Ok",          "EmptyCode",        "BadOpcode",      "Truncated",     "BreakInImage",
+    "BadConstant", "BadGlobal",        "BadLocal",       "BadRoutine",    "BadTarget",
+    "BadOperand",  "BadEntry",         "StackUnderflow", "StackOverflow", "StackMismatch",
+    "FallsOffEnd", "ReturnWithValues", "NoScratch",      "BadLineEnd"};
 
 VerifyResult verify_bytes(const std::vector<uint8_t>& bytes) {
   ImageView view;
@@ -45,7 +45,8 @@ vm::SliceEnd run_once(const std::vector<uint8_t>& bytes) {
   std::vector<uint64_t> memory(vm::Machine::memory_needed(view, {}) / 8 + 1);
   fuzz::FuzzHost host;
   vm::Machine machine;
-  EXPECT_TRUE(machine.load(bytes.data(), bytes.size(), {}, memory.data(), memory.size() * 8, host).ok());
+  EXPECT_TRUE(
+      machine.load(bytes.data(), bytes.size(), {}, memory.data(), memory.size() * 8, host).ok());
   EXPECT_EQ(machine.start(0, 0), vm::RunError::None);
   vm::SliceEnd end = vm::SliceEnd::NotRunning;
   for (int slice = 0; slice < 64; ++slice) {
@@ -76,7 +77,8 @@ TEST_P(BadImage, IsRefusedForItsReason) {
   std::vector<Diagnostic> errors;
   ASSERT_TRUE(assemble(s, GetParam().string(), image, errors)) << format_text(errors);
   const VerifyResult r = verify_bytes(encode(image));
-  EXPECT_STREQ(kErrorNames[static_cast<int>(r.error)], m[1].str().c_str()) << verify_error_text(r.error);
+  EXPECT_STREQ(kErrorNames[static_cast<int>(r.error)], m[1].str().c_str())
+      << verify_error_text(r.error);
 }
 
 INSTANTIATE_TEST_SUITE_P(Files, BadImage, ::testing::ValuesIn(bad_files()),
@@ -113,9 +115,10 @@ TEST(Verifier, RefusesTooLittleScratch) {
 TEST(Verifier, ReportsTheDeepestStack) {
   Image image;
   std::vector<Diagnostic> errors;
-  ASSERT_TRUE(assemble(".routine function \"m\" in=0 out=0 entry=m\nm:\n PUSHI 1\n PUSHI 2\n "
-                       "PUSHI 3\n ADDI\n ADDI\n POP\n RET\n",
-                       "t", image, errors));
+  ASSERT_TRUE(
+      assemble(".routine function \"m\" in=0 out=0 entry=m\nm:\n PUSHI 1\n PUSHI 2\n "
+               "PUSHI 3\n ADDI\n ADDI\n POP\n RET\n",
+               "t", image, errors));
   const VerifyResult r = verify_bytes(encode(image));
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(r.max_depth, 3u);
@@ -126,11 +129,12 @@ TEST(Verifier, ReportsTheDeepestStack) {
 TEST(Verifier, StackDepthAtFollowsOneRoutinesPaths) {
   Image image;
   std::vector<Diagnostic> errors;
-  ASSERT_TRUE(assemble(".routine function \"m\" in=0 out=0 entry=m\n"
-                       ".routine function \"f\" in=0 out=0 entry=f\n"
-                       "m:\n PUSHI 1\n PUSHI 2\n ADDI\n POP\n RET\n"
-                       "f:\n RET\n",
-                       "t", image, errors));
+  ASSERT_TRUE(
+      assemble(".routine function \"m\" in=0 out=0 entry=m\n"
+               ".routine function \"f\" in=0 out=0 entry=f\n"
+               "m:\n PUSHI 1\n PUSHI 2\n ADDI\n POP\n RET\n"
+               "f:\n RET\n",
+               "t", image, errors));
   const auto bytes = encode(image);
   ImageView view;
   ASSERT_EQ(load_image(bytes.data(), bytes.size(), view), LoadError::Ok);
@@ -170,7 +174,8 @@ TEST(Verifier, WhatItAcceptsRunsSafely) {
     Image image;
     image.constants = {{ValueType::Int, 1}};
     image.globals = {{"g", ValueType::Int, 4}};
-    image.routines = {{"m", RoutineKind::Function, 0, 1, {{"a", ValueType::Int}, {"b", ValueType::Int}}, 0}};
+    image.routines = {
+        {"m", RoutineKind::Function, 0, 1, {{"a", ValueType::Int}, {"b", ValueType::Int}}, 0}};
     const uint32_t n = 1 + next() % 12;
     for (uint32_t i = 0; i < n; ++i) {
       const uint32_t op = next() % (kOpCount + 2);
@@ -181,13 +186,15 @@ TEST(Verifier, WhatItAcceptsRunsSafely) {
     const std::vector<uint8_t> bytes = encode(image);
     if (!verify_bytes(bytes).ok()) continue;
     ++accepted;
-    accepted_with_marks += std::any_of(image.code.begin(), image.code.end(), word_ends_line) ? 1 : 0;
+    accepted_with_marks +=
+        std::any_of(image.code.begin(), image.code.end(), word_ends_line) ? 1 : 0;
     SCOPED_TRACE(disassemble(image));
     Image decoded;
     std::string why;
     ASSERT_TRUE(decode(bytes.data(), bytes.size(), decoded, why)) << why;
     EXPECT_EQ(decoded.code, image.code);
-    EXPECT_TRUE(fuzz::load_and_run(bytes.data(), bytes.size()).ok()) << "verified, but the Machine refuses it";
+    EXPECT_TRUE(fuzz::load_and_run(bytes.data(), bytes.size()).ok())
+        << "verified, but the Machine refuses it";
     ends[run_once(bytes)]++;
   }
   EXPECT_GT(accepted, 100);

@@ -39,7 +39,7 @@ TEST(controller_contract, TheFirmwareCyclesOnItsOwnPeriodInExactVirtualTime) {
   c.advance_ns(1);
   EXPECT_EQ(one(c, "cycles"), "17");
   EXPECT_EQ(c.now_ns(), 1'062'500u);
-  c.advance(100'000'000);  // 100 s more: no drift in 1.6 million cycles
+  c.advance(100'000'000);                   // 100 s more: no drift in 1.6 million cycles
   EXPECT_EQ(c.now_ns(), 100'001'062'500u);  // 100 s + 1.0625 ms
   EXPECT_EQ(one(c, "cycles"), std::to_string(c.now_ns() / 62'500));
 }
@@ -56,7 +56,8 @@ TEST(controller_contract, TheAxisStepsOnItsServoPeriodAndItsEventsReachTheNextCy
   c.advance(25);
   c.set_input_level(1, true);
   c.advance(100);
-  EXPECT_EQ(std::stoul(one(c, "events")) & drive::general_input_event(1), drive::general_input_event(1));
+  EXPECT_EQ(std::stoul(one(c, "events")) & drive::general_input_event(1),
+            drive::general_input_event(1));
 }
 
 TEST(controller_contract, TheStoredFormLivesInTheFlashAcrossReboots) {

@@ -24,7 +24,8 @@ uint32_t every_of(const std::vector<uint8_t>& form) {
 
 class ToyFirmware final : public dialect::Firmware {
  public:
-  explicit ToyFirmware(dialect::Runtime& runtime) : runtime_(runtime), wire_(dialect::FramerOptions{}) {}
+  explicit ToyFirmware(dialect::Runtime& runtime)
+      : runtime_(runtime), wire_(dialect::FramerOptions{}) {}
 
   const dialect::WireForm& wire() const override { return wire_; }
   void boot(std::vector<std::string>& messages) override {
@@ -91,14 +92,18 @@ class ToyFirmware final : public dialect::Firmware {
 class ToySession final : public dialect::Session {
  public:
   explicit ToySession(ToyFirmware& f) : firmware_(f), number_(f.next_session()) {}
-  std::vector<dialect::Answer> send(std::string_view line) override { return firmware_.answer(line, number_); }
+  std::vector<dialect::Answer> send(std::string_view line) override {
+    return firmware_.answer(line, number_);
+  }
 
  private:
   ToyFirmware& firmware_;
   int number_;
 };
 
-std::unique_ptr<dialect::Session> ToyFirmware::open_session() { return std::make_unique<ToySession>(*this); }
+std::unique_ptr<dialect::Session> ToyFirmware::open_session() {
+  return std::make_unique<ToySession>(*this);
+}
 
 class ToyDialect final : public dialect::Dialect {
  public:
@@ -106,11 +111,14 @@ class ToyDialect final : public dialect::Dialect {
   std::string_view description() const override { return "a test dialect"; }
   std::span<const std::string_view> source_extensions() const override { return kExtensions; }
   std::string_view stored_extension() const override { return ".toy"; }
-  dialect::CompileOutput compile_file(const std::string& path, const dialect::CompileSettings&) const override {
+  dialect::CompileOutput compile_file(const std::string& path,
+                                      const dialect::CompileSettings&) const override {
     dialect::CompileOutput out;
     std::string error;
-    if (auto text = read_text_file(path, &error)) out.stored_form.assign(text->begin(), text->end());
-    else out.diagnostics.push_back(Diagnostic{Severity::Error, "toy", 1, error, {}, {}});
+    if (auto text = read_text_file(path, &error))
+      out.stored_form.assign(text->begin(), text->end());
+    else
+      out.diagnostics.push_back(Diagnostic{Severity::Error, "toy", 1, error, {}, {}});
     return out;
   }
   std::span<const dialect::ErrorInfo> diagnostic_codes() const override { return kErrors; }

@@ -513,11 +513,14 @@ TEST(DapServer, AttachStopsTheDrivesRunningProgramAndItsTime) {
   int64_t seq = 1;
   auto request = [&](const std::string& command, json arguments = json::object()) {
     out.clear();
-    server.handle(json{{"seq", seq++}, {"type", "request"}, {"command", command}, {"arguments", arguments}}.dump());
+    server.handle(
+        json{{"seq", seq++}, {"type", "request"}, {"command", command}, {"arguments", arguments}}
+            .dump());
     return out;
   };
   request("initialize", {{"adapterID", "uprog"}});
-  EXPECT_EQ(kinds(request("launch", {{"program", program}})), std::vector<std::string>{"response launch"});
+  EXPECT_EQ(kinds(request("launch", {{"program", program}})),
+            std::vector<std::string>{"response launch"});
   EXPECT_FALSE(out.at(0)["success"]);
   EXPECT_EQ(kinds(request("attach", {{"host", "127.0.0.1"}, {"port", 4712}})),
             (std::vector<std::string>{"response attach", "event initialized", "event thread"}));
@@ -540,7 +543,8 @@ TEST(DapServer, AttachStopsTheDrivesRunningProgramAndItsTime) {
   EXPECT_EQ(drive.now_us(), at);
   // Continue, with the breakpoint gone: time and the program go on.
   request("setBreakpoints", {{"source", {{"path", program}}}, {"breakpoints", json::array()}});
-  EXPECT_EQ(kinds(request("continue", {{"threadId", 1}})), std::vector<std::string>{"response continue"});
+  EXPECT_EQ(kinds(request("continue", {{"threadId", 1}})),
+            std::vector<std::string>{"response continue"});
   for (int i = 0; i < 50; ++i) EXPECT_TRUE(server.keep_time(1'000'000));
   EXPECT_EQ(drive.now_us(), at + 50'000);
   // Disconnect: the drive keeps its own time again, the program runs on.

@@ -23,9 +23,8 @@ constexpr int64_t kTask1 = 2;  // a DAP thread id is the VM's thread + 1: task t
 struct Client {
   std::vector<json> out;
   DapReader reader;
-  DapServer server{{[](const std::string&, const std::string&, std::string&) -> const dialect::Dialect* {
-                     return &pdl::dialect();
-                   }},
+  DapServer server{{[](const std::string&, const std::string&,
+                       std::string&) -> const dialect::Dialect* { return &pdl::dialect(); }},
                    [this](const std::string& framed) {
                      reader.feed(framed);
                      while (auto body = reader.next()) out.push_back(json::parse(*body));
@@ -34,7 +33,8 @@ struct Client {
 
   std::vector<json> request(const std::string& command, json arguments = json::object()) {
     out.clear();
-    const json r = {{"seq", seq++}, {"type", "request"}, {"command", command}, {"arguments", arguments}};
+    const json r = {
+        {"seq", seq++}, {"type", "request"}, {"command", command}, {"arguments", arguments}};
     server.handle(r.dump());
     return out;
   }
@@ -66,7 +66,8 @@ struct Client {
   json variables(int64_t frame_id, const std::string& scope) {
     const json scopes = body("scopes", {{"frameId", frame_id}})["scopes"];
     for (const json& s : scopes)
-      if (s["name"] == scope) return body("variables", {{"variablesReference", s["variablesReference"]}})["variables"];
+      if (s["name"] == scope)
+        return body("variables", {{"variablesReference", s["variablesReference"]}})["variables"];
     return json::array();
   }
   std::string value(int64_t frame_id, const std::string& scope, const std::string& name) {
@@ -76,7 +77,8 @@ struct Client {
     return "<none>";
   }
   std::string eval(int64_t frame_id, const std::string& expression) {
-    const auto r = request("evaluate", {{"expression", expression}, {"frameId", frame_id}, {"context", "watch"}});
+    const auto r = request(
+        "evaluate", {{"expression", expression}, {"frameId", frame_id}, {"context", "watch"}});
     return r.at(0)["success"] ? r[0]["body"]["result"].get<std::string>() : "error";
   }
 };
@@ -164,20 +166,25 @@ TEST(PdlDebugger, SetALocalAndAGlobalAndTheProgramUsesThem) {
   c.stopped();
   const int64_t scale = c.frames(kTask1)[0]["id"];
   json scopes = c.body("scopes", {{"frameId", scale}})["scopes"];
-  json r = c.body("setVariable", {{"variablesReference", scopes[0]["variablesReference"]}, {"name", "prod"}, {"value", "40"}});
+  json r = c.body(
+      "setVariable",
+      {{"variablesReference", scopes[0]["variablesReference"]}, {"name", "prod"}, {"value", "40"}});
   EXPECT_EQ(r["value"], "40");
   EXPECT_FALSE(c.request("setVariable", {{"variablesReference", scopes[0]["variablesReference"]},
                                          {"name", "nosuch"},
                                          {"value", "1"}})
                    .at(0)["success"]);
-  r = c.body("setVariable", {{"variablesReference", scopes[1]["variablesReference"]}, {"name", "count"}, {"value", "9"}});
+  r = c.body(
+      "setVariable",
+      {{"variablesReference", scopes[1]["variablesReference"]}, {"name", "count"}, {"value", "9"}});
   EXPECT_EQ(r["value"], "9");
   c.body("setBreakpoints", {{"source", {{"path", kScale}}}, {"breakpoints", json::array()}});
-  c.body("setBreakpoints", {{"source", {{"path", kProgram}}}, {"breakpoints", json::array({{{"line", 13}}})}});
+  c.body("setBreakpoints",
+         {{"source", {{"path", kProgram}}}, {"breakpoints", json::array({{{"line", 13}}})}});
   c.request("continue", {{"threadId", kTask1}});
   c.stopped();
   const int64_t task = c.frames(kTask1)[0]["id"];
-  EXPECT_EQ(c.value(task, "Globals", "total"), "40");   // *res=prod stored the value set
+  EXPECT_EQ(c.value(task, "Globals", "total"), "40");    // *res=prod stored the value set
   EXPECT_EQ(c.value(task, "Globals", "ratio"), "10.0");  // and the next line used it
   EXPECT_EQ(c.value(task, "Globals", "count"), "9");
   EXPECT_EQ(c.eval(task, "set count = count + 1"), "10");  // an assignment stays made
@@ -207,7 +214,8 @@ TEST(PdlDebugger, ConditionHitCountAndLogMessage) {
 TEST(PdlDebugger, AFunctionBreakpointOnAProcedureAndOnALabel) {
   Client c;
   c.start(json::array());
-  json r = c.body("setFunctionBreakpoints", {{"breakpoints", json::array({{{"name", "twice"}}, {{"name", "nosuch"}}})}});
+  json r = c.body("setFunctionBreakpoints",
+                  {{"breakpoints", json::array({{{"name", "twice"}}, {{"name", "nosuch"}}})}});
   ASSERT_EQ(r["breakpoints"].size(), 2u);
   EXPECT_TRUE(r["breakpoints"][0]["verified"]);
   EXPECT_EQ(r["breakpoints"][0]["line"], 5);  // its first command, past the prologue

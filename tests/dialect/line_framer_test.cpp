@@ -46,9 +46,7 @@ TEST(transport_framer, SemicolonBeforeLineEndIsIgnoredAndCrLfIsOneBreak) {
   EXPECT_EQ(frame(";;\r\n\r\n\n"), (std::vector<Frame>{kBreak}));
 }
 
-TEST(transport_framer, BlankLinesGiveNothing) {
-  EXPECT_TRUE(frame("\r\n  \t \n\r").empty());
-}
+TEST(transport_framer, BlankLinesGiveNothing) { EXPECT_TRUE(frame("\r\n  \t \n\r").empty()); }
 
 TEST(transport_framer, IndentationIsTrimmed) {
   EXPECT_EQ(frame("   UI[1] = 3  \t\n"), (std::vector<Frame>{line("UI[1] = 3"), kBreak}));
@@ -173,7 +171,8 @@ TEST(transport_framer, DriveFormAnswersEmptyExpressions) {
   EXPECT_EQ(frame(";", drive_options()), (std::vector<Frame>{line("")}));
   EXPECT_EQ(frame("\r", drive_options()), (std::vector<Frame>{line("")}));
   EXPECT_EQ(frame("PX;\r", drive_options()), (std::vector<Frame>{line("PX"), line(""), kBreak}));
-  EXPECT_EQ(frame("PX\r\nMO\r\n", drive_options()), (std::vector<Frame>{line("PX"), kBreak, line("MO"), kBreak}));
+  EXPECT_EQ(frame("PX\r\nMO\r\n", drive_options()),
+            (std::vector<Frame>{line("PX"), kBreak, line("MO"), kBreak}));
   EXPECT_EQ(frame("\n\n", drive_options()), (std::vector<Frame>{line(""), line("")}));
   EXPECT_EQ(frame("  ;", drive_options()), (std::vector<Frame>{line("")}));
   EXPECT_EQ(frame("** a comment\r", drive_options()), (std::vector<Frame>{kBreak}));

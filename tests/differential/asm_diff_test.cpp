@@ -27,7 +27,8 @@ void run_style(AsmStyle style, uint32_t seed) {
   for (uint32_t n = 0; n < cases; ++n) {
     const Vars vars = gen.vars();
     const auto expr = gen.expression(1 + static_cast<int>(gen.below(5)));
-    const Outcome want = evaluate(*expr, vars, style == AsmStyle::Typed ? IntMul::Wrap : IntMul::Promote);
+    const Outcome want =
+        evaluate(*expr, vars, style == AsmStyle::Typed ? IntMul::Wrap : IntMul::Promote);
     const std::string text = asm_program(*expr, vars, style);
     bytecode::Image image;
     std::vector<Diagnostic> diagnostics;
@@ -42,15 +43,18 @@ void run_style(AsmStyle style, uint32_t seed) {
         got = "the VM refused the image";
       } else if (want.division_by_zero) {
         ok = run.end == vm::SliceEnd::Error && run.error == vm::RunError::DivisionByZero;
-        got = "end " + std::to_string(static_cast<int>(run.end)) + ", error " + std::to_string(static_cast<int>(run.error));
+        got = "end " + std::to_string(static_cast<int>(run.end)) + ", error " +
+              std::to_string(static_cast<int>(run.error));
       } else if (run.end != vm::SliceEnd::Finished) {
-        got = "end " + std::to_string(static_cast<int>(run.end)) + ", error " + std::to_string(static_cast<int>(run.error));
+        got = "end " + std::to_string(static_cast<int>(run.end)) + ", error " +
+              std::to_string(static_cast<int>(run.error));
       } else {
         Num shown;
         if (style == AsmStyle::Typed) {
           const bool is_float = statically_float(*expr);
-          shown = is_float ? Num::of_float(run.global(static_cast<uint32_t>(image.find_global("rf"))).f)
-                           : Num::of_int(run.global(static_cast<uint32_t>(image.find_global("ri"))).i);
+          shown = is_float
+                      ? Num::of_float(run.global(static_cast<uint32_t>(image.find_global("rf"))).f)
+                      : Num::of_int(run.global(static_cast<uint32_t>(image.find_global("ri"))).i);
         } else {
           const Value v = run.global(static_cast<uint32_t>(image.find_global("rv")));
           const bool is_float = run.global(static_cast<uint32_t>(image.find_global("rt"))).i != 0;
@@ -63,9 +67,11 @@ void run_style(AsmStyle style, uint32_t seed) {
     errors_expected += want.division_by_zero;
     floats += !want.division_by_zero && want.value.is_float;
     if (!ok && ++failures <= 25) {
-      ADD_FAILURE() << "case " << n << " (seed " << seed << "): " << gold_text(*expr, 1) << "\n  reference: "
-                    << (want.division_by_zero ? "division by zero" : describe(want.value)) << "\n  VM:        " << got
-                    << "\n" << text;
+      ADD_FAILURE() << "case " << n << " (seed " << seed << "): " << gold_text(*expr, 1)
+                    << "\n  reference: "
+                    << (want.division_by_zero ? "division by zero" : describe(want.value))
+                    << "\n  VM:        " << got << "\n"
+                    << text;
     }
   }
   EXPECT_EQ(failures, 0u) << "of " << cases << " cases";

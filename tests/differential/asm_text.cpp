@@ -33,9 +33,12 @@ class Lowering {
     code_ << "  RET\n";
     std::ostringstream s;
     s << ".source \"differential.s\"\n";
-    for (int k = 0; k < kVars; ++k) s << ".global int \"i" << k << "\" 1\n.global float \"f" << k << "\" 1\n";
-    s << ".global int \"ri\" 1\n.global float \"rf\" 1\n.global int \"rv\" 1\n.global int \"rt\" 1\n";
-    s << consts_.str() << ".routine function \"main\" in=0 out=0 entry=main\nmain:\n" << code_.str();
+    for (int k = 0; k < kVars; ++k)
+      s << ".global int \"i" << k << "\" 1\n.global float \"f" << k << "\" 1\n";
+    s << ".global int \"ri\" 1\n.global float \"rf\" 1\n.global int \"rv\" 1\n.global int \"rt\" "
+         "1\n";
+    s << consts_.str() << ".routine function \"main\" in=0 out=0 entry=main\nmain:\n"
+      << code_.str();
     return s.str();
   }
 
@@ -59,40 +62,76 @@ class Lowering {
   // Typed style: returns whether the value left on the stack is a float.
   bool typed(const Expr& e) {
     switch (e.op) {
-      case Op::IntLit: push_int(e.literal.i); return false;
-      case Op::FloatLit: push_float(e.literal.f); return true;
-      case Op::IntVar: code_ << "  LDG i" << e.var << "\n"; return false;
-      case Op::FloatVar: code_ << "  LDG f" << e.var << "\n"; return true;
-      default: break;
+      case Op::IntLit:
+        push_int(e.literal.i);
+        return false;
+      case Op::FloatLit:
+        push_float(e.literal.f);
+        return true;
+      case Op::IntVar:
+        code_ << "  LDG i" << e.var << "\n";
+        return false;
+      case Op::FloatVar:
+        code_ << "  LDG f" << e.var << "\n";
+        return true;
+      default:
+        break;
     }
     if (is_unary(e.op)) {
       const bool f = typed(*e.a);
       switch (e.op) {
-        case Op::Neg: emit(f ? "NEGF" : "NEGI"); return f;
-        case Op::Abs: emit(f ? "ABSF" : "ABSI"); return f;
-        case Op::Sign: emit(f ? "SIGNF" : "SIGNI"); return false;
-        case Op::Fix: if (f) emit("F2IT"); return false;
-        case Op::Rnd: if (f) emit("F2IR"); return false;
-        case Op::Real: if (!f) emit("I2F"); return true;
-        case Op::Sqrt: if (!f) emit("I2F"); emit("SQRTF"); return true;
-        case Op::Not: if (f) emit("F2IT"); emit("LNOT"); return false;
-        default: if (f) emit("F2IT"); emit("NOTI"); return false;  // BitNot
+        case Op::Neg:
+          emit(f ? "NEGF" : "NEGI");
+          return f;
+        case Op::Abs:
+          emit(f ? "ABSF" : "ABSI");
+          return f;
+        case Op::Sign:
+          emit(f ? "SIGNF" : "SIGNI");
+          return false;
+        case Op::Fix:
+          if (f) emit("F2IT");
+          return false;
+        case Op::Rnd:
+          if (f) emit("F2IR");
+          return false;
+        case Op::Real:
+          if (!f) emit("I2F");
+          return true;
+        case Op::Sqrt:
+          if (!f) emit("I2F");
+          emit("SQRTF");
+          return true;
+        case Op::Not:
+          if (f) emit("F2IT");
+          emit("LNOT");
+          return false;
+        default:
+          if (f) emit("F2IT");
+          emit("NOTI");
+          return false;  // BitNot
       }
     }
     switch (e.op) {
-      case Op::Rem: case Op::And: case Op::Or: case Op::Shl: case Op::Shr: {
+      case Op::Rem:
+      case Op::And:
+      case Op::Or:
+      case Op::Shl:
+      case Op::Shr: {
         if (typed(*e.a)) emit("F2IT");
         if (typed(*e.b)) emit("F2IT");
         static const char* const kOps[] = {"REMI", "ANDI", "ORI", "SHLI", "SHRI"};
         emit(kOps[static_cast<int>(e.op) - static_cast<int>(Op::Rem)]);
         return false;
       }
-      case Op::LogAnd: case Op::LogOr:
+      case Op::LogAnd:
+      case Op::LogOr:
         truth_typed(*e.a);
         truth_typed(*e.b);
         emit(e.op == Op::LogAnd ? "ANDI" : "ORI");
         return false;
-      default: break;
+      default:
+        break;
     }
     // Arithmetic and comparisons: an int beside a float becomes a float.
     const bool fa = typed(*e.a), fb = typed(*e.b);
@@ -122,28 +161,74 @@ class Lowering {
   // Pairs style: every value is [value, tag].
   void pairs(const Expr& e) {
     switch (e.op) {
-      case Op::IntLit: push_int(e.literal.i); emit("I2D"); return;
-      case Op::FloatLit: push_float(e.literal.f); emit("F2D"); return;
-      case Op::IntVar: code_ << "  LDG i" << e.var << "\n"; emit("I2D"); return;
-      case Op::FloatVar: code_ << "  LDG f" << e.var << "\n"; emit("F2D"); return;
-      default: break;
+      case Op::IntLit:
+        push_int(e.literal.i);
+        emit("I2D");
+        return;
+      case Op::FloatLit:
+        push_float(e.literal.f);
+        emit("F2D");
+        return;
+      case Op::IntVar:
+        code_ << "  LDG i" << e.var << "\n";
+        emit("I2D");
+        return;
+      case Op::FloatVar:
+        code_ << "  LDG f" << e.var << "\n";
+        emit("F2D");
+        return;
+      default:
+        break;
     }
     if (is_unary(e.op)) {
       pairs(*e.a);
       switch (e.op) {
-        case Op::Neg: emit("NEGD"); return;
-        case Op::Abs: emit("ABSD"); return;
-        case Op::Sign: emit("D2F"); emit("SIGNF"); emit("I2D"); return;
-        case Op::Fix: emit("D2IT"); emit("I2D"); return;
-        case Op::Rnd: emit("D2IR"); emit("I2D"); return;
-        case Op::Real: emit("D2F"); emit("F2D"); return;
-        case Op::Sqrt: emit("D2F"); emit("SQRTF"); emit("F2D"); return;
-        case Op::Not: emit("D2IT"); emit("LNOT"); emit("I2D"); return;
-        default: emit("D2IT"); emit("NOTI"); emit("I2D"); return;
+        case Op::Neg:
+          emit("NEGD");
+          return;
+        case Op::Abs:
+          emit("ABSD");
+          return;
+        case Op::Sign:
+          emit("D2F");
+          emit("SIGNF");
+          emit("I2D");
+          return;
+        case Op::Fix:
+          emit("D2IT");
+          emit("I2D");
+          return;
+        case Op::Rnd:
+          emit("D2IR");
+          emit("I2D");
+          return;
+        case Op::Real:
+          emit("D2F");
+          emit("F2D");
+          return;
+        case Op::Sqrt:
+          emit("D2F");
+          emit("SQRTF");
+          emit("F2D");
+          return;
+        case Op::Not:
+          emit("D2IT");
+          emit("LNOT");
+          emit("I2D");
+          return;
+        default:
+          emit("D2IT");
+          emit("NOTI");
+          emit("I2D");
+          return;
       }
     }
     switch (e.op) {
-      case Op::Rem: case Op::And: case Op::Or: case Op::Shl: case Op::Shr: {
+      case Op::Rem:
+      case Op::And:
+      case Op::Or:
+      case Op::Shl:
+      case Op::Shr: {
         pairs(*e.a);
         emit("D2IT");
         pairs(*e.b);
@@ -153,7 +238,8 @@ class Lowering {
         emit("I2D");
         return;
       }
-      case Op::LogAnd: case Op::LogOr:
+      case Op::LogAnd:
+      case Op::LogOr:
         pairs(*e.a);
         emit("D2F");
         emit("TRUTHF");
@@ -163,7 +249,8 @@ class Lowering {
         emit(e.op == Op::LogAnd ? "ANDI" : "ORI");
         emit("I2D");
         return;
-      default: break;
+      default:
+        break;
     }
     pairs(*e.a);
     pairs(*e.b);

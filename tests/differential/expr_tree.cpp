@@ -17,7 +17,9 @@ Outcome error() { return {true, {}}; }
 Num I(int32_t v) { return Num::of_int(v); }
 Num F(float v) { return Num::of_float(v); }
 
-int32_t wrap(int64_t v) { return static_cast<int32_t>(static_cast<uint32_t>(static_cast<uint64_t>(v))); }
+int32_t wrap(int64_t v) {
+  return static_cast<int32_t>(static_cast<uint32_t>(static_cast<uint64_t>(v)));
+}
 
 // Operands of bitwise and logical-not operators are truncated to integers (1.6).
 int32_t as_int(Num x) { return x.is_float ? ref::truncate_to_int(x.f) : x.i; }
@@ -28,8 +30,10 @@ Outcome unary(Op op, Num x) {
     case Op::Neg:
       if (x.is_float) return value(F(-x.f));
       return value(I(x.i == INT32_MIN ? INT32_MAX : -x.i));  // 1.5: -0x80000000 is 0x7FFFFFFF
-    case Op::Not: return value(I(as_int(x) == 0 ? 1 : 0));  // 1.6: !0.0004 is 1
-    case Op::BitNot: return value(I(~as_int(x)));
+    case Op::Not:
+      return value(I(as_int(x) == 0 ? 1 : 0));  // 1.6: !0.0004 is 1
+    case Op::BitNot:
+      return value(I(~as_int(x)));
     case Op::Abs:
       if (x.is_float) return value(F(std::fabs(x.f)));
       return value(I(x.i == INT32_MIN ? INT32_MAX : (x.i < 0 ? -x.i : x.i)));
@@ -37,14 +41,18 @@ Outcome unary(Op op, Num x) {
       const double d = x.is_float ? static_cast<double>(x.f) : static_cast<double>(x.i);
       return value(I(d > 0 ? 1 : d < 0 ? -1 : 0));
     }
-    case Op::Fix: return value(I(x.is_float ? truncate_to_int(x.f) : x.i));
-    case Op::Rnd: return value(I(x.is_float ? round_to_int(x.f) : x.i));
-    case Op::Real: return value(F(to_float(x)));
+    case Op::Fix:
+      return value(I(x.is_float ? truncate_to_int(x.f) : x.i));
+    case Op::Rnd:
+      return value(I(x.is_float ? round_to_int(x.f) : x.i));
+    case Op::Real:
+      return value(F(to_float(x)));
     case Op::Sqrt: {
       const float v = to_float(x);
       return value(F(v < 0 ? 0.0f : to_f32(std::sqrt(static_cast<double>(v)))));
     }
-    default: std::abort();
+    default:
+      std::abort();
   }
 }
 
@@ -53,8 +61,10 @@ Outcome binary(Op op, Num x, Num y, IntMul mul) {
   const bool ints = !x.is_float && !y.is_float;
   const double fx = to_float(x), fy = to_float(y);  // exact in double
   switch (op) {
-    case Op::Add: return value(ints ? I(wrap(int64_t{x.i} + y.i)) : F(to_f32(fx + fy)));
-    case Op::Sub: return value(ints ? I(wrap(int64_t{x.i} - y.i)) : F(to_f32(fx - fy)));
+    case Op::Add:
+      return value(ints ? I(wrap(int64_t{x.i} + y.i)) : F(to_f32(fx + fy)));
+    case Op::Sub:
+      return value(ints ? I(wrap(int64_t{x.i} - y.i)) : F(to_f32(fx - fy)));
     case Op::Mul: {
       if (!ints) return value(F(to_f32(fx * fy)));
       const int64_t p = int64_t{x.i} * y.i;
@@ -76,8 +86,10 @@ Outcome binary(Op op, Num x, Num y, IntMul mul) {
       if (b == -1) return value(I(0));
       return value(I(a % b));
     }
-    case Op::And: return value(I(as_int(x) & as_int(y)));
-    case Op::Or: return value(I(as_int(x) | as_int(y)));
+    case Op::And:
+      return value(I(as_int(x) & as_int(y)));
+    case Op::Or:
+      return value(I(as_int(x) | as_int(y)));
     case Op::Shl: {
       const int32_t a = as_int(x), n = as_int(y);
       if (n < 0 || n > 31) return value(I(0));
@@ -87,17 +99,27 @@ Outcome binary(Op op, Num x, Num y, IntMul mul) {
       const int32_t a = as_int(x), n = as_int(y);
       if (n < 0 || n > 31) return value(I(a < 0 ? -1 : 0));
       // Arithmetic: floor(a / 2^n), written without >> so that it is independent.
-      return value(I(static_cast<int32_t>(std::floor(static_cast<double>(a) / std::ldexp(1.0, n)))));
+      return value(
+          I(static_cast<int32_t>(std::floor(static_cast<double>(a) / std::ldexp(1.0, n)))));
     }
-    case Op::Lt: return value(I(ints ? x.i < y.i : fx < fy));
-    case Op::Le: return value(I(ints ? x.i <= y.i : fx <= fy));
-    case Op::Gt: return value(I(ints ? x.i > y.i : fx > fy));
-    case Op::Ge: return value(I(ints ? x.i >= y.i : fx >= fy));
-    case Op::Eq: return value(I(ints ? x.i == y.i : fx == fy));
-    case Op::Ne: return value(I(ints ? x.i != y.i : fx != fy));
-    case Op::LogAnd: return value(I(truth(x) && truth(y)));
-    case Op::LogOr: return value(I(truth(x) || truth(y)));
-    default: std::abort();
+    case Op::Lt:
+      return value(I(ints ? x.i < y.i : fx < fy));
+    case Op::Le:
+      return value(I(ints ? x.i <= y.i : fx <= fy));
+    case Op::Gt:
+      return value(I(ints ? x.i > y.i : fx > fy));
+    case Op::Ge:
+      return value(I(ints ? x.i >= y.i : fx >= fy));
+    case Op::Eq:
+      return value(I(ints ? x.i == y.i : fx == fy));
+    case Op::Ne:
+      return value(I(ints ? x.i != y.i : fx != fy));
+    case Op::LogAnd:
+      return value(I(truth(x) && truth(y)));
+    case Op::LogOr:
+      return value(I(truth(x) || truth(y)));
+    default:
+      std::abort();
   }
 }
 
@@ -106,10 +128,14 @@ Outcome binary(Op op, Num x, Num y, IntMul mul) {
 Outcome evaluate(const Expr& e, const Vars& vars, IntMul mul) {
   switch (e.op) {
     case Op::IntLit:
-    case Op::FloatLit: return value(e.literal);
-    case Op::IntVar: return value(I(vars.i[e.var]));
-    case Op::FloatVar: return value(F(vars.f[e.var]));
-    default: break;
+    case Op::FloatLit:
+      return value(e.literal);
+    case Op::IntVar:
+      return value(I(vars.i[e.var]));
+    case Op::FloatVar:
+      return value(F(vars.f[e.var]));
+    default:
+      break;
   }
   const Outcome x = evaluate(*e.a, vars, mul);
   if (x.division_by_zero) return x;
@@ -122,31 +148,46 @@ Outcome evaluate(const Expr& e, const Vars& vars, IntMul mul) {
 bool statically_float(const Expr& e) {
   switch (e.op) {
     case Op::IntLit:
-    case Op::FloatLit: return e.literal.is_float;
-    case Op::IntVar: return false;
-    case Op::FloatVar: return true;
+    case Op::FloatLit:
+      return e.literal.is_float;
+    case Op::IntVar:
+      return false;
+    case Op::FloatVar:
+      return true;
     case Op::Neg:
-    case Op::Abs: return statically_float(*e.a);
+    case Op::Abs:
+      return statically_float(*e.a);
     case Op::Real:
-    case Op::Sqrt: return true;
+    case Op::Sqrt:
+      return true;
     case Op::Add:
     case Op::Sub:
     case Op::Mul:
-    case Op::Div: return statically_float(*e.a) || statically_float(*e.b);
-    default: return false;
+    case Op::Div:
+      return statically_float(*e.a) || statically_float(*e.b);
+    default:
+      return false;
   }
 }
 
 int32_t Generator::interesting_int() {
   switch (below(8)) {
-    case 0: return static_cast<int32_t>(below(10));
-    case 1: return static_cast<int32_t>(below(1000)) - 500;
-    case 2: return static_cast<int32_t>(below(100000));
-    case 3: return static_cast<int32_t>(rng_());                      // anything
-    case 4: return INT32_MAX - static_cast<int32_t>(below(4));
-    case 5: return INT32_MIN + static_cast<int32_t>(below(4));
-    case 6: return static_cast<int32_t>(below(70)) - 35;              // shift counts
-    default: return 46340 + static_cast<int32_t>(below(10)) - 5;      // products near 2^31
+    case 0:
+      return static_cast<int32_t>(below(10));
+    case 1:
+      return static_cast<int32_t>(below(1000)) - 500;
+    case 2:
+      return static_cast<int32_t>(below(100000));
+    case 3:
+      return static_cast<int32_t>(rng_());  // anything
+    case 4:
+      return INT32_MAX - static_cast<int32_t>(below(4));
+    case 5:
+      return INT32_MIN + static_cast<int32_t>(below(4));
+    case 6:
+      return static_cast<int32_t>(below(70)) - 35;  // shift counts
+    default:
+      return 46340 + static_cast<int32_t>(below(10)) - 5;  // products near 2^31
   }
 }
 
@@ -178,12 +219,22 @@ std::unique_ptr<Expr> Generator::float_literal() {
       e->literal = Num::of_float(static_cast<float>(v));
       return e;
     }
-    case 0: std::snprintf(buf, sizeof buf, "%u.%u", below(100000), below(1000)); break;
-    case 1: std::snprintf(buf, sizeof buf, "%u.%02u", below(100), below(100)); break;
-    case 2: std::snprintf(buf, sizeof buf, "%u.%ue%d", below(10), below(1000),
-                          static_cast<int>(below(13)) - 6); break;
-    case 3: std::snprintf(buf, sizeof buf, "%u.5", below(20)); break;  // halves: rounding
-    default: std::snprintf(buf, sizeof buf, "%u.0", below(2000000000u)); break;
+    case 0:
+      std::snprintf(buf, sizeof buf, "%u.%u", below(100000), below(1000));
+      break;
+    case 1:
+      std::snprintf(buf, sizeof buf, "%u.%02u", below(100), below(100));
+      break;
+    case 2:
+      std::snprintf(buf, sizeof buf, "%u.%ue%d", below(10), below(1000),
+                    static_cast<int>(below(13)) - 6);
+      break;
+    case 3:
+      std::snprintf(buf, sizeof buf, "%u.5", below(20));
+      break;  // halves: rounding
+    default:
+      std::snprintf(buf, sizeof buf, "%u.0", below(2000000000u));
+      break;
   }
   e->text = buf;
   e->literal = Num::of_float(std::strtof(buf, nullptr));
@@ -194,10 +245,16 @@ std::unique_ptr<Expr> Generator::expression(int depth) {
   if (depth <= 0 || below(5) == 0) {
     auto e = std::make_unique<Expr>();
     switch (below(4)) {
-      case 0: return int_literal();
-      case 1: return float_literal();
-      case 2: e->op = Op::IntVar; break;
-      default: e->op = Op::FloatVar; break;
+      case 0:
+        return int_literal();
+      case 1:
+        return float_literal();
+      case 2:
+        e->op = Op::IntVar;
+        break;
+      default:
+        e->op = Op::FloatVar;
+        break;
     }
     e->var = static_cast<int>(below(kVars));
     return e;

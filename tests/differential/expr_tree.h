@@ -12,17 +12,43 @@
 namespace uprog::differential {
 
 enum class Op {
-  IntLit, FloatLit, IntVar, FloatVar,                    // leaves
-  Neg, Not, BitNot, Abs, Sign, Fix, Rnd, Real, Sqrt,     // one operand
-  Add, Sub, Mul, Div, Rem, And, Or, Shl, Shr,            // two operands
-  Lt, Le, Gt, Ge, Eq, Ne, LogAnd, LogOr,
+  IntLit,
+  FloatLit,
+  IntVar,
+  FloatVar,  // leaves
+  Neg,
+  Not,
+  BitNot,
+  Abs,
+  Sign,
+  Fix,
+  Rnd,
+  Real,
+  Sqrt,  // one operand
+  Add,
+  Sub,
+  Mul,
+  Div,
+  Rem,
+  And,
+  Or,
+  Shl,
+  Shr,  // two operands
+  Lt,
+  Le,
+  Gt,
+  Ge,
+  Eq,
+  Ne,
+  LogAnd,
+  LogOr,
 };
 
 struct Expr {
   Op op = Op::IntLit;
-  Num literal;              // IntLit / FloatLit: the value
-  std::string text;         // the literal as written in Gold ("0x80000000", "2.5e3", ...)
-  int var = 0;              // IntVar / FloatVar: which of kVars
+  Num literal;       // IntLit / FloatLit: the value
+  std::string text;  // the literal as written in Gold ("0x80000000", "2.5e3", ...)
+  int var = 0;       // IntVar / FloatVar: which of kVars
   std::unique_ptr<Expr> a, b;
 };
 

@@ -45,7 +45,8 @@ TEST(DifferentialGoldLine, RandomExpressionsMatchTheReference) {
     const std::string text = gold_text(*expr, n * 2654435761u + 1);
     if (assign == 0) {
       line += "i2=" + text + "; i2";
-      if (!want.division_by_zero && want.value.is_float) want.value = Num::of_int(ref::round_to_int(want.value.f));
+      if (!want.division_by_zero && want.value.is_float)
+        want.value = Num::of_int(ref::round_to_int(want.value.f));
     } else if (assign == 1) {
       line += "f2=" + text + "; f2";
       if (!want.division_by_zero) want.value = Num::of_float(ref::to_float(want.value));
@@ -78,7 +79,8 @@ TEST(DifferentialGoldLine, RandomExpressionsMatchTheReference) {
         const gold::LineValue& v = compiled.values[0];
         const Value x = run.global(v.value_global);
         bool is_float = v.kind == gold::Kind::Float;
-        if (v.kind == gold::Kind::Dynamic) is_float = run.global(static_cast<uint32_t>(v.tag_global)).i != 0;
+        if (v.kind == gold::Kind::Dynamic)
+          is_float = run.global(static_cast<uint32_t>(v.tag_global)).i != 0;
         const Num shown = is_float ? Num::of_float(x.f) : Num::of_int(x.i);
         ok = same(shown, want.value);
         got = describe(shown);
@@ -87,8 +89,10 @@ TEST(DifferentialGoldLine, RandomExpressionsMatchTheReference) {
     errors_expected += want.division_by_zero;
     floats += !want.division_by_zero && want.value.is_float;
     if (!ok && ++failures <= 25) {
-      ADD_FAILURE() << "case " << n << " (seed " << base_seed() << "): " << line << "\n  reference: "
-                    << (want.division_by_zero ? "division by zero" : describe(want.value)) << "\n  VM:        " << got;
+      ADD_FAILURE() << "case " << n << " (seed " << base_seed() << "): " << line
+                    << "\n  reference: "
+                    << (want.division_by_zero ? "division by zero" : describe(want.value))
+                    << "\n  VM:        " << got;
     }
   }
   EXPECT_EQ(failures, 0u) << "of " << cases << " cases";
@@ -97,8 +101,10 @@ TEST(DifferentialGoldLine, RandomExpressionsMatchTheReference) {
   EXPECT_GT(ran, cases * 9 / 10);
   EXPECT_GT(errors_expected, 0u);
   EXPECT_GT(floats, cases / 10);
-  std::printf("[ differential ] gold line: %u cases, %u run on the VM, %u division-by-zero, %u float results\n",
-              cases, ran, errors_expected, floats);
+  std::printf(
+      "[ differential ] gold line: %u cases, %u run on the VM, %u division-by-zero, %u float "
+      "results\n",
+      cases, ran, errors_expected, floats);
 }
 
 }  // namespace

@@ -10,31 +10,93 @@ namespace {
 
 int precedence(Op op) {
   switch (op) {
-    case Op::Mul: case Op::Div: case Op::Rem: return 16;
-    case Op::Add: case Op::Sub: return 15;
-    case Op::Shl: case Op::Shr: return 14;
-    case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: return 13;
-    case Op::Eq: case Op::Ne: return 12;
-    case Op::And: return 11;
-    case Op::Or: return 9;
-    case Op::LogAnd: return 8;
-    case Op::LogOr: return 7;
-    default: return 100;  // leaves, unary operators and function calls
+    case Op::Mul:
+    case Op::Div:
+    case Op::Rem:
+      return 16;
+    case Op::Add:
+    case Op::Sub:
+      return 15;
+    case Op::Shl:
+    case Op::Shr:
+      return 14;
+    case Op::Lt:
+    case Op::Le:
+    case Op::Gt:
+    case Op::Ge:
+      return 13;
+    case Op::Eq:
+    case Op::Ne:
+      return 12;
+    case Op::And:
+      return 11;
+    case Op::Or:
+      return 9;
+    case Op::LogAnd:
+      return 8;
+    case Op::LogOr:
+      return 7;
+    default:
+      return 100;  // leaves, unary operators and function calls
   }
 }
 
 const char* symbol(Op op) {
   switch (op) {
-    case Op::Add: return "+"; case Op::Sub: return "-"; case Op::Mul: return "*";
-    case Op::Div: return "/"; case Op::Rem: return "%"; case Op::And: return "&";
-    case Op::Or: return "|"; case Op::Shl: return "<<"; case Op::Shr: return ">>";
-    case Op::Lt: return "<"; case Op::Le: return "<="; case Op::Gt: return ">";
-    case Op::Ge: return ">="; case Op::Eq: return "=="; case Op::Ne: return "!=";
-    case Op::LogAnd: return "&&"; case Op::LogOr: return "||";
-    case Op::Neg: return "-"; case Op::Not: return "!"; case Op::BitNot: return "~";
-    case Op::Abs: return "abs"; case Op::Sign: return "sign"; case Op::Fix: return "fix";
-    case Op::Rnd: return "rnd"; case Op::Real: return "real"; case Op::Sqrt: return "sqrt";
-    default: std::abort();
+    case Op::Add:
+      return "+";
+    case Op::Sub:
+      return "-";
+    case Op::Mul:
+      return "*";
+    case Op::Div:
+      return "/";
+    case Op::Rem:
+      return "%";
+    case Op::And:
+      return "&";
+    case Op::Or:
+      return "|";
+    case Op::Shl:
+      return "<<";
+    case Op::Shr:
+      return ">>";
+    case Op::Lt:
+      return "<";
+    case Op::Le:
+      return "<=";
+    case Op::Gt:
+      return ">";
+    case Op::Ge:
+      return ">=";
+    case Op::Eq:
+      return "==";
+    case Op::Ne:
+      return "!=";
+    case Op::LogAnd:
+      return "&&";
+    case Op::LogOr:
+      return "||";
+    case Op::Neg:
+      return "-";
+    case Op::Not:
+      return "!";
+    case Op::BitNot:
+      return "~";
+    case Op::Abs:
+      return "abs";
+    case Op::Sign:
+      return "sign";
+    case Op::Fix:
+      return "fix";
+    case Op::Rnd:
+      return "rnd";
+    case Op::Real:
+      return "real";
+    case Op::Sqrt:
+      return "sqrt";
+    default:
+      std::abort();
   }
 }
 
@@ -45,15 +107,19 @@ class Printer {
   std::string text(const Expr& e) {
     switch (e.op) {
       case Op::IntLit:
-      case Op::FloatLit: return e.text;
-      case Op::IntVar: return "i" + std::to_string(e.var);
-      case Op::FloatVar: return "f" + std::to_string(e.var);
+      case Op::FloatLit:
+        return e.text;
+      case Op::IntVar:
+        return "i" + std::to_string(e.var);
+      case Op::FloatVar:
+        return "f" + std::to_string(e.var);
       case Op::Neg:
       case Op::Not:
       case Op::BitNot:
         // Always "(-x)": never "--", and no question of how "a*-b" binds.
         return std::string("(") + symbol(e.op) + child(*e.a, 100) + ")";
-      default: break;
+      default:
+        break;
     }
     if (is_unary(e.op)) return std::string(symbol(e.op)) + "(" + text(*e.a) + ")";
     const int p = precedence(e.op);

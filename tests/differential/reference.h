@@ -25,10 +25,10 @@ bool same(const Num& a, const Num& b);  // same type and value; NaNs match, +0 m
 std::string describe(const Num& n);
 
 namespace ref {
-float to_float(const Num& n);          // int to float32, rounding to nearest even
-float to_f32(double d);                // rounds a double to float32, overflowing to infinity
-int32_t truncate_to_int(float x);      // toward zero, saturating, NaN 0 (bitwise operands, fix)
-int32_t round_to_int(float x);         // nearest, halves away from zero, saturating (assignment, rnd)
+float to_float(const Num& n);      // int to float32, rounding to nearest even
+float to_f32(double d);            // rounds a double to float32, overflowing to infinity
+int32_t truncate_to_int(float x);  // toward zero, saturating, NaN 0 (bitwise operands, fix)
+int32_t round_to_int(float x);     // nearest, halves away from zero, saturating (assignment, rnd)
 bool truth(const Num& n);
 }  // namespace ref
 

@@ -16,7 +16,9 @@ class NoDriveHost final : public vm::Host {
     return vm::kCommandOk;
   }
   vm::CommandStatus write(uint32_t, int32_t, Value) override { return vm::kCommandOk; }
-  vm::CommandStatus execute(uint32_t, int32_t, const Value*, uint32_t) override { return vm::kCommandOk; }
+  vm::CommandStatus execute(uint32_t, int32_t, const Value*, uint32_t) override {
+    return vm::kCommandOk;
+  }
   uint32_t now_us() override { return 0; }
   ~NoDriveHost() = default;
 };
@@ -38,7 +40,9 @@ struct VmRun {
     vm::MachineConfig config;
     config.threads = 1;
     memory.assign(vm::Machine::memory_needed(view, config) / 8 + 1, 0);
-    loaded = machine.load(bytes.data(), bytes.size(), config, memory.data(), memory.size() * 8, host).ok();
+    loaded =
+        machine.load(bytes.data(), bytes.size(), config, memory.data(), memory.size() * 8, host)
+            .ok();
     if (!loaded) return;
     machine.start(0, 0);
     end = machine.run_slice(0, vm::Budget::of_instructions(1000000)).end;

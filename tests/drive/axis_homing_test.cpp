@@ -151,7 +151,8 @@ TEST(drive_homing, SwitchThenIndexTakesTheFirstIndexAfterTheSwitch) {
   axis.arm_homing(true);
   jog(axis, 20000);
   uint32_t homes = 0;
-  for (int k = 0; k < 20000 && axis.homing_armed(); ++k) homes += (axis.step() & kEventHome) ? 1 : 0;
+  for (int k = 0; k < 20000 && axis.homing_armed(); ++k)
+    homes += (axis.step() & kEventHome) ? 1 : 0;
   EXPECT_EQ(homes, 1u);  // the switch alone is not the event while the process is armed
   EXPECT_EQ(axis.home_capture(), 5000);  // 1000 came before the switch (3000): ignored
   EXPECT_NEAR(axis.position(), -7, 2);
@@ -213,13 +214,13 @@ TEST(drive_homing, IndexCrossing) {
   // Pulses at 1000 + k * 4000.
   EXPECT_EQ(index_crossed(1000, 4000, 900, 1100), 1000.0);
   EXPECT_EQ(index_crossed(1000, 4000, 1100, 900), 1000.0);
-  EXPECT_EQ(index_crossed(1000, 4000, 900, 1000), 1000.0);      // `to` counts
+  EXPECT_EQ(index_crossed(1000, 4000, 900, 1000), 1000.0);          // `to` counts
   EXPECT_FALSE(index_crossed(1000, 4000, 1000, 1100).has_value());  // `from` does not
   EXPECT_FALSE(index_crossed(1000, 4000, 1100, 4900).has_value());
   EXPECT_EQ(index_crossed(1000, 4000, -3100, -2900), -3000.0);
-  EXPECT_EQ(index_crossed(1000, 4000, 0, 10000), 1000.0);       // several: the first
+  EXPECT_EQ(index_crossed(1000, 4000, 0, 10000), 1000.0);  // several: the first
   EXPECT_EQ(index_crossed(1000, 4000, 10000, 0), 9000.0);
-  EXPECT_FALSE(index_crossed(1000, 0, 0, 10000).has_value());   // no period, no pulse
+  EXPECT_FALSE(index_crossed(1000, 0, 0, 10000).has_value());  // no period, no pulse
   EXPECT_FALSE(index_crossed(1000, 4000, 500, 500).has_value());
 }
 

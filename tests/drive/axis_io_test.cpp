@@ -18,13 +18,13 @@ TEST(drive_axis_io, PolarityEvenIsActiveLowOddIsActiveHigh) {
   ASSERT_EQ(axis.set_input_logic(1, 7), Status::kOk);
   ASSERT_EQ(axis.set_input_logic(2, 6), Status::kOk);
   EXPECT_FALSE(axis.input_active(1));
-  EXPECT_TRUE(axis.input_active(2));  // unwired = low = active for an active-low input
+  EXPECT_TRUE(axis.input_active(2));    // unwired = low = active for an active-low input
   EXPECT_EQ(axis.input_port(), 0b10u);  // general-purpose input 2 is active; no level is high
   axis.set_input_level(1, true);
   axis.set_input_level(2, true);
   // Input 1 active; both levels high (bits 16 and 17).
   EXPECT_EQ(axis.input_port(), 0b01u | (0b11u << kIpLevelShift));
-  EXPECT_EQ(axis.set_input_logic(1, 23), Status::kOk);   // abort, the last function
+  EXPECT_EQ(axis.set_input_logic(1, 23), Status::kOk);  // abort, the last function
   EXPECT_EQ(axis.set_input_logic(1, 24), Status::kOutOfRange);
   EXPECT_EQ(axis.set_input_logic(1, -1), Status::kOutOfRange);
   EXPECT_EQ(axis.set_input_logic(7, 7), Status::kOutOfRange);

@@ -60,8 +60,12 @@ double max_reference_jerk(Axis& axis, uint64_t us) {
   double max_jerk = 0.0;
   for (uint64_t k = 0; k * axis.period_us() < us; ++k) {
     axis.step();
-    p[0] = p[1]; p[1] = p[2]; p[2] = p[3]; p[3] = axis.reference_position_exact();
-    if (k >= 3) max_jerk = std::max(max_jerk, std::abs(p[3] - 3 * p[2] + 3 * p[1] - p[0]) / (dt * dt * dt));
+    p[0] = p[1];
+    p[1] = p[2];
+    p[2] = p[3];
+    p[3] = axis.reference_position_exact();
+    if (k >= 3)
+      max_jerk = std::max(max_jerk, std::abs(p[3] - 3 * p[2] + 3 * p[1] - p[0]) / (dt * dt * dt));
   }
   return max_jerk;
 }

@@ -49,7 +49,7 @@ TEST(drive_status, AtRestWhenOffStoppedOrSettled) {
   EXPECT_TRUE(axis.at_rest());  // on, nothing commanded
   start_move(axis);
   EXPECT_FALSE(axis.at_rest());
-  run_us(axis, 260000);         // the profile ended, TR[2] not yet over: still settling
+  run_us(axis, 260000);  // the profile ended, TR[2] not yet over: still settling
   EXPECT_FALSE(axis.at_rest());
   run_us(axis, 20000);
   EXPECT_TRUE(axis.at_rest());
@@ -106,7 +106,10 @@ TEST(drive_status, NoProfilerInVelocityModeStepsToJv) {
 }
 
 TEST(drive_status, SrPowerStageCodeAndMotorFailure) {
-  struct Case { const char* fault; uint32_t low_bits; };
+  struct Case {
+    const char* fault;
+    uint32_t low_bits;
+  };
   // SR bit 0 "problem", bits 1..3 the MF power-stage code (reference SR table, bits 1-3).
   for (const Case& c : {Case{"undervoltage", 0x3u}, Case{"overvoltage", 0x5u}, Case{"short", 0xBu},
                         Case{"temperature", 0xDu}, Case{"feedback", 0x0u}}) {
@@ -153,12 +156,16 @@ TEST(drive_status, SrStoppedBySoftwarePositionLimit) {
 }
 
 TEST(drive_status, InputPortBitForEveryFunction) {
-  struct Case { int32_t il; uint32_t bit; };
+  struct Case {
+    int32_t il;
+    uint32_t bit;
+  };
   const uint32_t level1 = 1u << kIpLevelShift;
-  for (const Case& c : {Case{1, kIpInhibit}, Case{3, kIpHardStop}, Case{5, 0}, Case{7, kIpGeneralPurpose1},
-                        Case{9, kIpReverseLimit}, Case{11, kIpForwardLimit}, Case{13, kIpBegin},
-                        Case{15, kIpSoftStop}, Case{17, kIpMainHome}, Case{19, kIpAuxHome},
-                        Case{21, kIpHardStop}, Case{23, kIpAbort}}) {
+  for (const Case& c :
+       {Case{1, kIpInhibit}, Case{3, kIpHardStop}, Case{5, 0}, Case{7, kIpGeneralPurpose1},
+        Case{9, kIpReverseLimit}, Case{11, kIpForwardLimit}, Case{13, kIpBegin},
+        Case{15, kIpSoftStop}, Case{17, kIpMainHome}, Case{19, kIpAuxHome}, Case{21, kIpHardStop},
+        Case{23, kIpAbort}}) {
     Axis axis;
     ASSERT_EQ(axis.set_input_logic(1, c.il), Status::kOk) << c.il;
     EXPECT_EQ(axis.input_port(), 0u) << c.il;

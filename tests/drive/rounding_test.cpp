@@ -25,19 +25,31 @@ TEST(Rounding, HalvesGoAwayFromZero) {
 TEST(Rounding, MatchesTheLibraryAtTheEdges) {
   const double largest_below_half = std::nextafter(0.5, 0.0);  // 0.49999999999999994
   const double edges[] = {
-      largest_below_half, -largest_below_half, std::nextafter(1.5, 0.0), std::nextafter(1.5, 2.0),
+      largest_below_half,
+      -largest_below_half,
+      std::nextafter(1.5, 0.0),
+      std::nextafter(1.5, 2.0),
       4503599627370495.5,  // 2^52 - 0.5: the last half a double holds
-      -4503599627370495.5, 4503599627370496.0, 9007199254740993.0, 123456789.49999999,
+      -4503599627370495.5,
+      4503599627370496.0,
+      9007199254740993.0,
+      123456789.49999999,
       4611686018427387904.0 - 1024.0,  // just below 2^62: the fast path
-      4611686018427387904.0, -4611686018427387904.0, 1e300, -1e300,  // the library's
-      std::numeric_limits<double>::denorm_min(), 2147483647.5, -2147483648.5,
+      4611686018427387904.0,
+      -4611686018427387904.0,
+      1e300,
+      -1e300,  // the library's
+      std::numeric_limits<double>::denorm_min(),
+      2147483647.5,
+      -2147483648.5,
   };
   for (const double x : edges) EXPECT_EQ(round_half_away(x), std::lround(x)) << x;
 }
 
 TEST(Rounding, NoNumberIsTheLibrarysAnswer) {
-  for (const double x : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
-                         -std::numeric_limits<double>::infinity()})
+  for (const double x :
+       {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+        -std::numeric_limits<double>::infinity()})
     EXPECT_EQ(round_half_away(x), std::lround(x)) << x;
 }
 

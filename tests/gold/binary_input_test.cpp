@@ -33,7 +33,9 @@ gold::CompileResult check(const std::string& name, std::string text) {
 TEST(gold_binary_input, AnExecutableGivesBoundedEscapedDiagnostics) {
   const std::string bytes = own_executable(4 << 20);
   ASSERT_GT(bytes.size(), 100000u);
-  ASSERT_EQ(bytes.substr(0, 4), "\x7f" "ELF");
+  ASSERT_EQ(bytes.substr(0, 4),
+            "\x7f"
+            "ELF");
   const gold::CompileResult r = check("a.out", bytes);
   ASSERT_FALSE(r.ok());
   ASSERT_EQ(r.diagnostics.size(), gold::CompileOptions{}.max_errors + 1);
@@ -52,7 +54,8 @@ TEST(gold_binary_input, AnErrorOnEveryLineIsFoundInBoundedTime) {
   text += "return\n";
   const auto start = std::chrono::steady_clock::now();
   const gold::CompileResult r = check("many.gold", text);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_LT(seconds, 2.0);
   ASSERT_EQ(r.diagnostics.size(), 31u);
   // The first 30 by place, as without the bound: "Value is expected" at each ')' from line 2.

@@ -1,12 +1,12 @@
 // `uprog check` and `uprog exec` given a binary file (this test's own executable), as a new user
 // might: a bounded number of errors, then a count of the rest, and nothing a terminal would act on.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "testlib/terminal_text.h"
 
@@ -57,5 +57,6 @@ TEST(cli_binary_input, ExecShowsThirtyErrorsThenHowManyMore) {
   EXPECT_EQ(count(r.output, ": error: "), 30u) << r.output.substr(0, 2000);
   const size_t note = r.output.rfind(": note: ");
   ASSERT_NE(note, std::string::npos);
-  EXPECT_NE(r.output.find(" more errors not shown\n", note), std::string::npos) << r.output.substr(note);
+  EXPECT_NE(r.output.find(" more errors not shown\n", note), std::string::npos)
+      << r.output.substr(note);
 }

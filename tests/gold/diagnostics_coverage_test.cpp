@@ -47,8 +47,8 @@ TEST(gold_diagnostics, EveryCodeHasACaseOrAReason) {
     if (kNoCase.count(code)) {
       EXPECT_FALSE(covered.count(code)) << "gold " << code << " has a case now: drop its exemption";
     } else {
-      EXPECT_TRUE(covered.count(code)) << "no case in tests/diagnostics/gold for gold " << code << " ("
-                                       << errors[i].name << ")";
+      EXPECT_TRUE(covered.count(code))
+          << "no case in tests/diagnostics/gold for gold " << code << " (" << errors[i].name << ")";
     }
   }
   for (const auto& [code, why] : kNoCase) EXPECT_LT(code, static_cast<int>(count)) << why;

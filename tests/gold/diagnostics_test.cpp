@@ -79,7 +79,8 @@ TEST(gold_diagnostics, EveryCasePrintsItsExpectedOutput) {
     ASSERT_TRUE(fs::exists(expected)) << "no .expected beside the case";
     const gold::CompileResult r = gold::compile(SourceFile{src.filename().string(), slurp(src)});
     const std::string want = slurp(expected);
-    EXPECT_EQ(shows_excerpts(want) ? format_text(r.diagnostics) : without_excerpts(r.diagnostics), want);
+    EXPECT_EQ(shows_excerpts(want) ? format_text(r.diagnostics) : without_excerpts(r.diagnostics),
+              want);
     EXPECT_FALSE(r.ok());
   }
 }
@@ -114,7 +115,8 @@ TEST(gold_diagnostics, EveryExcerptShowsTheLineAndColumnItNames) {
         const bool own_line = n.where.line != d.where.line;
         EXPECT_EQ(n.line.has_value(), own_line) << shown;
         if (own_line) {
-          EXPECT_NE(shown.find(": note: " + n.message + "\n" + excerpt(n.where)), std::string::npos) << shown;
+          EXPECT_NE(shown.find(": note: " + n.message + "\n" + excerpt(n.where)), std::string::npos)
+              << shown;
         }
       }
     }
@@ -128,7 +130,8 @@ TEST(gold_diagnostics, EachCaseProducesTheCodeInItsName) {
     const int code = case_code(src);
     const gold::CompileResult r = gold::compile(SourceFile{src.filename().string(), slurp(src)});
     bool found = false;
-    for (const Diagnostic& d : r.diagnostics) found = found || (d.scheme == "gold" && d.code == code);
+    for (const Diagnostic& d : r.diagnostics)
+      found = found || (d.scheme == "gold" && d.code == code);
     EXPECT_TRUE(found) << "the case does not produce gold " << code;
   }
 }

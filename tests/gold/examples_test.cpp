@@ -6,10 +6,10 @@
 
 #include <filesystem>
 
-#include "transcript/transcript.h"
 #include "dialects/gold/compile.h"
 #include "gold_runner.h"
 #include "testlib/test_files.h"
+#include "transcript/transcript.h"
 
 namespace fs = std::filesystem;
 
@@ -23,7 +23,8 @@ TEST(gold_examples, AllCompileClean) {
   size_t n = 0;
   for (const fs::path& path : examples()) {
     ++n;
-    const auto r = uprog::gold::compile(uprog::SourceFile{path.filename().string(), uprog::test::read_whole(path)});
+    const auto r = uprog::gold::compile(
+        uprog::SourceFile{path.filename().string(), uprog::test::read_whole(path)});
     EXPECT_TRUE(r.diagnostics.empty()) << uprog::format_text(r.diagnostics);
     EXPECT_FALSE(r.image.code.empty()) << path;
     // The VM's verifier accepts what the compiler made.
@@ -42,7 +43,8 @@ TEST_P(GoldExample, RunsAsItsTranscriptSays) {
   const std::string text = uprog::test::read_whole(transcript);
   EXPECT_NE(text.find("load " + GetParam().filename().string() + "\n"), std::string::npos)
       << "the transcript must load its own example";
-  const uprog::transcript::TranscriptResult r = uprog::transcript::run_transcript_file(transcript.string());
+  const uprog::transcript::TranscriptResult r =
+      uprog::transcript::run_transcript_file(transcript.string());
   for (const std::string& f : r.failures) ADD_FAILURE() << f;
   EXPECT_GE(r.checks, 3) << "a transcript that checks almost nothing proves almost nothing";
 }

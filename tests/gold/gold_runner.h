@@ -40,12 +40,16 @@ struct GoldRun {
     }
     vm::MachineConfig config;
     memory.assign(vm::Machine::memory_needed(view, config) / 8 + 1, 0);
-    const vm::LoadStatus st = machine.load(bytes.data(), bytes.size(), config, memory.data(), memory.size() * 8, host);
-    if (!st.ok()) ADD_FAILURE() << "the VM refuses the image: verify error " << static_cast<int>(st.verify) << " at pc " << st.pc;
+    const vm::LoadStatus st =
+        machine.load(bytes.data(), bytes.size(), config, memory.data(), memory.size() * 8, host);
+    if (!st.ok())
+      ADD_FAILURE() << "the VM refuses the image: verify error " << static_cast<int>(st.verify)
+                    << " at pc " << st.pc;
     return st.ok();
   }
   // Runs `routine` on thread 0 until it ends; each slice moves the clock by `step_us`.
-  vm::SliceEnd run(const std::string& routine, uint32_t step_us = 1000, uint64_t max_slices = 100000) {
+  vm::SliceEnd run(const std::string& routine, uint32_t step_us = 1000,
+                   uint64_t max_slices = 100000) {
     const int r = image.find_routine(routine);
     EXPECT_GE(r, 0) << "no routine " << routine;
     if (r < 0) return vm::SliceEnd::NotRunning;

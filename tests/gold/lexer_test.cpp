@@ -11,7 +11,9 @@
 namespace uprog::gold_test {
 namespace {
 
-gold::CompileResult compile(const std::string& text) { return gold::compile(SourceFile{"t.ehl", text}); }
+gold::CompileResult compile(const std::string& text) {
+  return gold::compile(SourceFile{"t.ehl", text});
+}
 
 TEST(gold_lexer, CommentsAndContinuation) {
   const auto r = compile(
@@ -54,7 +56,8 @@ TEST(gold_lexer, DeepNestingIsBounded) {
 // each with a code of the manual's table and a place inside the text.
 TEST(gold_lexer, RandomInputGetsAnImageOrPlacedErrors) {
   std::mt19937 rng(12345);
-  const std::string alphabet = "ab01.x#@[](),;:=+-*/%<>!&|~^ \n\tfunction if end while for return case switch try catch ...";
+  const std::string alphabet =
+      "ab01.x#@[](),;:=+-*/%<>!&|~^ \n\tfunction if end while for return case switch try catch ...";
   size_t error_count = 0;
   for (int n = 0; n < 300; ++n) {
     std::string s;

@@ -13,7 +13,8 @@ struct Shown {
   float f;
 };
 
-std::vector<Shown> run_line(const std::string& line, GoldRun& p, const std::vector<gold::KnownGlobal>& known = {}) {
+std::vector<Shown> run_line(const std::string& line, GoldRun& p,
+                            const std::vector<gold::KnownGlobal>& known = {}) {
   gold::CompiledLine c = gold::compile_line(line, known);
   EXPECT_TRUE(c.ok()) << format_text(c.diagnostics);
   if (!c.ok()) return {};
@@ -66,7 +67,8 @@ TEST(gold_line, ProductKeepsItsRunTimeType) {
 }
 
 TEST(gold_line, KnownGlobalsOfALoadedProgram) {
-  const gold::CompileResult prog = gold::compile(SourceFile{"p.ehl", "int myvar, arr[3]\nfloat temp\n##A\nmyvar = 1\n"});
+  const gold::CompileResult prog =
+      gold::compile(SourceFile{"p.ehl", "int myvar, arr[3]\nfloat temp\n##A\nmyvar = 1\n"});
   ASSERT_TRUE(prog.ok()) << format_text(prog.diagnostics);
   const auto known = gold::known_globals(prog.image);
   ASSERT_EQ(known.size(), 3u);

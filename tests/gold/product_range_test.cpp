@@ -19,7 +19,8 @@ int count_op(const std::string& source, const std::string& op) {
   EXPECT_TRUE(r.ok()) << format_text(r.diagnostics);
   const std::string text = bytecode::disassemble(r.image);
   const std::regex word("\\b" + op + "\\b");
-  return static_cast<int>(std::distance(std::sregex_iterator(text.begin(), text.end(), word), std::sregex_iterator()));
+  return static_cast<int>(
+      std::distance(std::sregex_iterator(text.begin(), text.end(), word), std::sregex_iterator()));
 }
 
 TEST(gold_product_range, LoopVariableTimesConstantIsAnIntProduct) {
@@ -41,7 +42,8 @@ return
   GoldRun p;
   ASSERT_TRUE(p.compile(src));
   EXPECT_EQ(p.run("main"), vm::SliceEnd::Finished);
-  for (int i : {0, 1, 7, 2039}) EXPECT_EQ(p.i("a", static_cast<uint32_t>(i)), (i * 7919 + 3) % 2040) << i;
+  for (int i : {0, 1, 7, 2039})
+    EXPECT_EQ(p.i("a", static_cast<uint32_t>(i)), (i * 7919 + 3) % 2040) << i;
 }
 
 TEST(gold_product_range, RemainderMaskAndNegativeStepBoundTheProduct) {

@@ -407,7 +407,8 @@ g = f(1, 2.0)
   EXPECT_EQ(img.routines[static_cast<size_t>(a)].kind, bytecode::RoutineKind::AutoRoutine);
   ASSERT_EQ(img.events.size(), 1u);
   EXPECT_EQ(img.events[0].event, 8u);  // AUTO_I2 is masked by MI bit 8 (256)
-  EXPECT_EQ(img.routines[static_cast<size_t>(img.find_routine("MAIN"))].kind, bytecode::RoutineKind::Label);
+  EXPECT_EQ(img.routines[static_cast<size_t>(img.find_routine("MAIN"))].kind,
+            bytecode::RoutineKind::Label);
 }
 
 }  // namespace

@@ -12,7 +12,8 @@ class TestHost final : public vm::Host {
  public:
   vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override;
   vm::CommandStatus write(uint32_t command, int32_t index, Value value) override;
-  vm::CommandStatus execute(uint32_t command, int32_t index, const Value* args, uint32_t arg_count) override;
+  vm::CommandStatus execute(uint32_t command, int32_t index, const Value* args,
+                            uint32_t arg_count) override;
   uint32_t now_us() override { return now; }
 
   uint32_t now = 0;

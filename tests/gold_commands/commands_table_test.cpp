@@ -1,11 +1,11 @@
 // The Gold command table: every command of shared/spec/gold-drive.md and the Elmo reference's
 // that real programs and hosts send, stable ids, flags, ranges.
-#include "dialects/gold/commands.h"
-
 #include <gtest/gtest.h>
 
 #include <set>
 #include <string>
+
+#include "dialects/gold/commands.h"
 
 namespace uprog::gold {
 namespace {
@@ -18,10 +18,10 @@ const char* const kSpecCommands[] = {
 
 // Issue 12's list (docs/dialects/gold.md, "Commands from the reference"), with IQ and HX that
 // host drivers send.
-const char* const kReferenceCommands[] = {"HM", "CA", "QP", "TR", "TI", "WS", "EO", "LL", "HL", "FP",
-                                          "FV", "VR", "SN", "MP", "PT", "PY", "PM", "IQ", "HX",
-                                          "RC", "RP", "WI", "BH",   // issue 17: the recorder's
-                                          "RM", "ID", "FC", "BP", "SC", "FS", "OV", "LC"};  // 38
+const char* const kReferenceCommands[] = {
+    "HM", "CA", "QP", "TR", "TI", "WS", "EO", "LL", "HL", "FP", "FV", "VR",
+    "SN", "MP", "PT", "PY", "PM", "IQ", "HX", "RC", "RP", "WI", "BH",  // issue 17: the recorder's
+    "RM", "ID", "FC", "BP", "SC", "FS", "OV", "LC"};                   // 38
 
 const CommandInfo& get(const char* name) {
   const CommandInfo* c = find_command(name);
@@ -70,7 +70,8 @@ TEST(gold_commands_table, IdsAreStable) {
 }
 
 TEST(gold_commands_table, ActionsAreNotAssignable) {
-  for (const char* name : {"BG", "ST", "SV", "LD", "RS", "HP", "XC", "KL", "CC", "LS", "XQ", "DB"}) {
+  for (const char* name :
+       {"BG", "ST", "SV", "LD", "RS", "HP", "XC", "KL", "CC", "LS", "XQ", "DB"}) {
     EXPECT_TRUE(get(name).flags & kAction) << name;
     EXPECT_TRUE(get(name).flags & kNotAssignable) << name;
   }
@@ -85,8 +86,8 @@ TEST(gold_commands_table, HostOnlyCommandsAreNotProgram) {
 }
 
 TEST(gold_commands_table, StatusesAreReadOnly) {
-  for (const char* name : {"SO", "VX", "PE", "DV", "MS", "IP", "IB", "MF", "SR", "PS", "EC", "TI", "WS",
-                           "FP", "FV", "VR", "SN", "IQ"})
+  for (const char* name : {"SO", "VX", "PE", "DV", "MS", "IP", "IB", "MF", "SR", "PS", "EC", "TI",
+                           "WS", "FP", "FV", "VR", "SN", "IQ"})
     EXPECT_TRUE(get(name).flags & kReadOnly) << name;
   for (const char* name : {"MO", "PX", "TM", "OP", "OB", "UI", "IL"})
     EXPECT_FALSE(get(name).flags & kReadOnly) << name;
@@ -98,13 +99,17 @@ TEST(gold_commands_table, StatusesAreReadOnly) {
 }
 
 TEST(gold_commands_table, IndexRanges) {
-  struct Range { const char* name; int32_t lo, hi; };
-  for (const Range& r : {Range{"UI", 1, 24}, Range{"UF", 1, 24}, Range{"IL", 1, 6}, Range{"IB", 0, 31},
-                         Range{"HM", 1, 7}, Range{"CA", 1, 57}, Range{"QP", 1, 1024}, Range{"TR", 1, 2},
-                         Range{"LL", 2, 3}, Range{"HL", 2, 3}, Range{"SN", 1, 4}, Range{"MP", 1, 6},
-                         Range{"OB", 1, 4}, Range{"RV", 1, 8}, Range{"DV", 2, 3}, Range{"ER", 2, 3},
-                         Range{"VH", 2, 3}, Range{"VL", 2, 3}, Range{"XM", 1, 2}, Range{"KP", 1, 3},
-                         Range{"CL", 1, 1}, Range{"PL", 1, 1}}) {
+  struct Range {
+    const char* name;
+    int32_t lo, hi;
+  };
+  for (const Range& r :
+       {Range{"UI", 1, 24}, Range{"UF", 1, 24}, Range{"IL", 1, 6},    Range{"IB", 0, 31},
+        Range{"HM", 1, 7},  Range{"CA", 1, 57}, Range{"QP", 1, 1024}, Range{"TR", 1, 2},
+        Range{"LL", 2, 3},  Range{"HL", 2, 3},  Range{"SN", 1, 4},    Range{"MP", 1, 6},
+        Range{"OB", 1, 4},  Range{"RV", 1, 8},  Range{"DV", 2, 3},    Range{"ER", 2, 3},
+        Range{"VH", 2, 3},  Range{"VL", 2, 3},  Range{"XM", 1, 2},    Range{"KP", 1, 3},
+        Range{"CL", 1, 1},  Range{"PL", 1, 1}}) {
     const CommandInfo& c = get(r.name);
     EXPECT_TRUE(c.flags & kIndexed) << r.name;
     EXPECT_EQ(c.min_index, r.lo) << r.name;

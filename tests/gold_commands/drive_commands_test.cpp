@@ -1,14 +1,14 @@
 // The mapping of Gold commands onto the axis: every command read or written, every refusal.
 #include "dialects/gold/drive_commands.h"
 
-#include "drive/faults.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <map>
 #include <string>
+
+#include "drive/faults.h"
 
 namespace uprog::gold {
 namespace {
@@ -50,33 +50,38 @@ struct Fixture {
 };
 
 // A value inside each writable drive command's range, and the value read back after it.
-struct Sample { int32_t index; bool is_float; double write; double read_back; };
+struct Sample {
+  int32_t index;
+  bool is_float;
+  double write;
+  double read_back;
+};
 const std::map<std::string, Sample> kWritable{
-    {"MO", {0, false, 0, 0}},          {"UM", {0, false, 2, 2}},
-    {"PA", {0, false, 777, 777}},      {"PR", {0, false, -5, -5}},
-    {"SP", {0, false, 1234, 1234}},    {"AC", {0, false, 5000, 5000}},
-    {"DC", {0, false, 6000, 6000}},    {"SD", {0, false, 7000, 7000}},
-    {"SF", {0, false, 12, 12}},        {"JV", {0, false, -300, -300}},
-    {"TC", {0, true, 0.25, 0.25}},     {"PX", {0, false, 4242, 4242}},
-    {"ER", {3, false, 999, 999}},      {"VH", {2, false, 30000, 30000}},
-    {"VL", {3, false, -4000, -4000}},  {"XM", {2, false, 360, 360}},
-    {"KP", {3, true, 150.5, 150.5}},   {"KI", {2, true, 33.0, 33.0}},
-    {"KV", {1, true, 0.5, 0.5}},       {"CL", {1, true, 2.5, 2.5}},
-    {"PL", {1, true, 5.5, 5.5}},       {"IL", {4, false, 9, 9}},
-    {"OP", {0, false, 5, 5}},          {"OB", {4, false, 1, 1}},
-    {"TM", {0, false, 100, 100}},      {"TS", {0, false, 100, 100}},
-    {"UI", {24, false, -17, -17}},     {"UF", {1, true, 1.5, 1.5}},
-    {"RV", {8, false, 3, 3}},          {"RL", {0, false, 500, 500}},
-    {"RG", {0, false, 4, 4}},          {"RR", {0, false, 0, -1}},  // RR=0 kills; no valid data
-    {"RC", {0, false, 5, 5}},          {"RP", {2, false, 20, 20}},
-    {"HM", {2, false, 1234, 1234}},    {"CA", {19, false, 4, 4}},
-    {"QP", {10, false, -5, -5}},       {"TR", {1, false, 50, 50}},
-    {"EO", {0, false, 0, 0}},          {"LL", {2, false, -3000000, -3000000}},
-    {"HL", {3, false, 900, 900}},      {"MP", {2, false, 10, 10}},
-    {"PT", {0, false, 5, 5}},          {"PY", {0, false, 77, 77}},
-    {"PM", {0, false, 0, 0}},          {"HX", {0, false, 1, 1}},
-    {"RM", {0, false, 1, 1}},          {"FC", {5, false, 2, 2}},
-    {"BP", {2, false, 100, 100}},      {"SC", {13, false, 3, 3}},
+    {"MO", {0, false, 0, 0}},         {"UM", {0, false, 2, 2}},
+    {"PA", {0, false, 777, 777}},     {"PR", {0, false, -5, -5}},
+    {"SP", {0, false, 1234, 1234}},   {"AC", {0, false, 5000, 5000}},
+    {"DC", {0, false, 6000, 6000}},   {"SD", {0, false, 7000, 7000}},
+    {"SF", {0, false, 12, 12}},       {"JV", {0, false, -300, -300}},
+    {"TC", {0, true, 0.25, 0.25}},    {"PX", {0, false, 4242, 4242}},
+    {"ER", {3, false, 999, 999}},     {"VH", {2, false, 30000, 30000}},
+    {"VL", {3, false, -4000, -4000}}, {"XM", {2, false, 360, 360}},
+    {"KP", {3, true, 150.5, 150.5}},  {"KI", {2, true, 33.0, 33.0}},
+    {"KV", {1, true, 0.5, 0.5}},      {"CL", {1, true, 2.5, 2.5}},
+    {"PL", {1, true, 5.5, 5.5}},      {"IL", {4, false, 9, 9}},
+    {"OP", {0, false, 5, 5}},         {"OB", {4, false, 1, 1}},
+    {"TM", {0, false, 100, 100}},     {"TS", {0, false, 100, 100}},
+    {"UI", {24, false, -17, -17}},    {"UF", {1, true, 1.5, 1.5}},
+    {"RV", {8, false, 3, 3}},         {"RL", {0, false, 500, 500}},
+    {"RG", {0, false, 4, 4}},         {"RR", {0, false, 0, -1}},  // RR=0 kills; no valid data
+    {"RC", {0, false, 5, 5}},         {"RP", {2, false, 20, 20}},
+    {"HM", {2, false, 1234, 1234}},   {"CA", {19, false, 4, 4}},
+    {"QP", {10, false, -5, -5}},      {"TR", {1, false, 50, 50}},
+    {"EO", {0, false, 0, 0}},         {"LL", {2, false, -3000000, -3000000}},
+    {"HL", {3, false, 900, 900}},     {"MP", {2, false, 10, 10}},
+    {"PT", {0, false, 5, 5}},         {"PY", {0, false, 77, 77}},
+    {"PM", {0, false, 0, 0}},         {"HX", {0, false, 1, 1}},
+    {"RM", {0, false, 1, 1}},         {"FC", {5, false, 2, 2}},
+    {"BP", {2, false, 100, 100}},     {"SC", {13, false, 3, 3}},
     {"FS", {0, false, 0, 0}},
 };
 
@@ -190,7 +195,7 @@ TEST(gold_commands_mapping, RefusedOutOfRange) {
   Fixture f;
   EXPECT_EQ(f.write_int("SP", 0), kErrorOutOfRange);
   EXPECT_EQ(f.write_int("MO", 2), kErrorOutOfRange);
-  EXPECT_EQ(f.write_int("UM", 3), kErrorOutOfRange);   // inside 1..5 but not a mode
+  EXPECT_EQ(f.write_int("UM", 3), kErrorOutOfRange);      // inside 1..5 but not a mode
   EXPECT_EQ(f.write_int("IL", 24, 1), kErrorOutOfRange);  // beyond the last input function
   EXPECT_EQ(f.write_int("TS", 10), kErrorOutOfRange);
   EXPECT_EQ(f.write_float("UF", std::numeric_limits<float>::quiet_NaN(), 1), kErrorOutOfRange);
@@ -245,9 +250,11 @@ TEST(gold_commands_mapping, RefusedNotAllowed) {
 }
 
 TEST(gold_commands_mapping, ControllerCommandsAreLeftToTheCaller) {
-  for (const char* name : {"XQ", "HP", "XC", "KL", "PS", "CC", "LS", "MI", "DB", "RS", "SV", "LD", "EC"})
+  for (const char* name :
+       {"XQ", "HP", "XC", "KL", "PS", "CC", "LS", "MI", "DB", "RS", "SV", "LD", "EC"})
     EXPECT_FALSE(handled_by_drive(id(name))) << name;
-  for (const char* name : {"BG", "PX", "UI", "RV", "TM"}) EXPECT_TRUE(handled_by_drive(id(name))) << name;
+  for (const char* name : {"BG", "PX", "UI", "RV", "TM"})
+    EXPECT_TRUE(handled_by_drive(id(name))) << name;
 }
 
 }  // namespace

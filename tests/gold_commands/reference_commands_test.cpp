@@ -71,7 +71,7 @@ TEST(gold_reference_commands, HmRangesPerIndex) {
 TEST(gold_reference_commands, CountsPerRevolutionSpacesTheIndex) {
   Fixture f;
   EXPECT_EQ(f.read("CA", 18), 65536);
-  EXPECT_EQ(f.write("CA", 18, 5), kErrorOutOfRange);          // the reference's 6..530,000,000
+  EXPECT_EQ(f.write("CA", 18, 5), kErrorOutOfRange);  // the reference's 6..530,000,000
   EXPECT_EQ(f.write("CA", 18, 530000001), kErrorOutOfRange);
   ASSERT_EQ(f.write("CA", 18, 4000), kDriveOk);
   EXPECT_EQ(f.axis.parameters().counts_per_revolution(), 4000);

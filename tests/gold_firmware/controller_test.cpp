@@ -8,10 +8,10 @@
 
 #include "bytecode/assembly.h"
 #include "bytecode/image.h"
-#include "gold_drive.h"
 #include "compile_bytes.h"
 #include "dialects/gold/compile.h"
 #include "drive/axis.h"
+#include "gold_drive.h"
 #include "support/files.h"
 
 namespace uprog::controller {
@@ -33,7 +33,8 @@ TEST(controller, AcceptanceMove) {
   Controller c(gold_options());
   for (const char* line : {"UM=5", "PX=0", "MO=1"}) ASSERT_TRUE(c.send(line).empty()) << line;
   c.advance(20000);
-  for (const char* line : {"PA=100000", "SP=50000", "AC=1000000", "DC=1000000"}) ASSERT_TRUE(c.send(line).empty());
+  for (const char* line : {"PA=100000", "SP=50000", "AC=1000000", "DC=1000000"})
+    ASSERT_TRUE(c.send(line).empty());
   const uint64_t t0 = c.now_us();
   ASSERT_TRUE(c.send("BG").empty());
   c.advance(1000000 - (c.now_us() - t0));
@@ -98,12 +99,14 @@ TEST(controller, AnotherDialectsProgramIsRefused) {
     hand_made.dialect.clear();
     EXPECT_TRUE(c.download(bytecode::encode(hand_made)).ok);
   }
-  ASSERT_TRUE(write_file_atomically(dir + "/program.upi", foreign_bytes.data(), foreign_bytes.size()));
+  ASSERT_TRUE(
+      write_file_atomically(dir + "/program.upi", foreign_bytes.data(), foreign_bytes.size()));
   ControllerOptions o = gold_options();
   o.state_dir = dir;
   Controller c(o);
   ASSERT_EQ(c.boot_messages().size(), 1u);
-  EXPECT_NE(c.boot_messages()[0].find("the program is for the pdl dialect"), std::string::npos) << c.boot_messages()[0];
+  EXPECT_NE(c.boot_messages()[0].find("the program is for the pdl dialect"), std::string::npos)
+      << c.boot_messages()[0];
   EXPECT_EQ(ps(c), -2);
 }
 
@@ -185,8 +188,9 @@ TEST(controller, UnlimitedBudgetRunsUntilAWait) {
   ControllerOptions o = gold_options();
   o.timing.unlimited = true;
   Controller c(o);
-  ASSERT_TRUE(c.download(compile_bytes(
-      "int i, done\nfunction main()\nfor i = 1:1000\nend\ndone = 1\nwait(100)\ndone = 2\nreturn\n")).ok);
+  ASSERT_TRUE(c.download(compile_bytes("int i, done\nfunction main()\nfor i = 1:1000\nend\ndone = "
+                                       "1\nwait(100)\ndone = 2\nreturn\n"))
+                  .ok);
   ASSERT_TRUE(load(c));
   ASSERT_EQ(xq(c, "main"), 0);
   c.advance(50);
@@ -202,7 +206,8 @@ TEST(controller, UnlimitedBudgetCapsABusyLoopPerCycle) {
   o.timing.unlimited = true;
   o.timing.unlimited_line_cap = 3000;
   Controller c(o);
-  ASSERT_TRUE(c.download(compile_bytes("int i\nfunction main()\nwhile (1)\ni = i + 1\nend\nreturn\n")).ok);
+  ASSERT_TRUE(
+      c.download(compile_bytes("int i\nfunction main()\nwhile (1)\ni = i + 1\nend\nreturn\n")).ok);
   ASSERT_TRUE(load(c));
   ASSERT_EQ(xq(c, "main"), 0);
   // Each iteration ends three lines: the while header, `i = i + 1`, and the loop's end.
@@ -218,10 +223,11 @@ TEST(controller, UnlimitedBudgetCapsABusyLoopPerCycle) {
 TEST(controller, ALoopWithoutALineEndDoesNotHangTheDrive) {
   bytecode::Image image;
   std::vector<Diagnostic> errors;
-  ASSERT_TRUE(bytecode::assemble(".global int \"n\" 1\n"
-                                 ".routine function \"main\" in=0 out=0 entry=main\n"
-                                 "main:\n  LDG n\n  PUSHI 1\n  ADDI\n  STG n\n  JMP main\n",
-                                 "spin.s", image, errors));
+  ASSERT_TRUE(
+      bytecode::assemble(".global int \"n\" 1\n"
+                         ".routine function \"main\" in=0 out=0 entry=main\n"
+                         "main:\n  LDG n\n  PUSHI 1\n  ADDI\n  STG n\n  JMP main\n",
+                         "spin.s", image, errors));
   ControllerOptions o = gold_options();
   o.timing.back_jump_cap = 5000;
   Controller c(o);

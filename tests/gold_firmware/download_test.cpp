@@ -1,15 +1,16 @@
-// Downloading over the command line (a dialect::Session of the Gold firmware): a good image in DL lines is stored,
-// and every malformed transfer gets its error and leaves the stored program as it was.
+// Downloading over the command line (a dialect::Session of the Gold firmware): a good image in DL
+// lines is stored, and every malformed transfer gets its error and leaves the stored program as it
+// was.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "bytecode/image.h"
-#include "gold_drive.h"
-#include "dialects/gold/download_protocol.h"
-#include "dialects/gold/interpreter_errors.h"
 #include "compile_bytes.h"
 #include "dialects/gold/compile.h"
+#include "dialects/gold/download_protocol.h"
+#include "dialects/gold/interpreter_errors.h"
+#include "gold_drive.h"
 #include "support/files.h"
 
 namespace uprog::controller {

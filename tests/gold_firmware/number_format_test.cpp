@@ -1,9 +1,10 @@
 // The Gold number display rule (docs/dialects/gold-command-line.md) and expression splitting.
+#include "dialects/gold/number_format.h"
+
 #include <gtest/gtest.h>
 
 #include "dialect/line_framer.h"
 #include "dialects/gold/firmware.h"
-#include "dialects/gold/number_format.h"
 
 namespace uprog::gold {
 namespace {
@@ -33,7 +34,8 @@ TEST(controller_number_format, Floats) {
 
 std::vector<std::string> split_expressions(std::string_view text) {
   std::vector<std::string> out;
-  for (const dialect::Frame& f : dialect::frame_text(text, command_line_framing())) out.push_back(f.text);
+  for (const dialect::Frame& f : dialect::frame_text(text, command_line_framing()))
+    out.push_back(f.text);
   return out;
 }
 

@@ -17,20 +17,27 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<fs::path> error_transcripts() { return source_files("tests/transcripts/errors", ".txt"); }
+std::vector<fs::path> error_transcripts() {
+  return source_files("tests/transcripts/errors", ".txt");
+}
 
 // The codes no host line can produce today, each with the reason. A code leaves this table
 // when a transcript produces it: the coverage test fails while both hold.
 const std::map<int32_t, const char*> kNotFromAHostLine = {
-    {5, "the compiler refuses reading an action (gold 7) or a host-only command (gold 79) first: 19"},
+    {5,
+     "the compiler refuses reading an action (gold 7) or a host-only command (gold 79) first: 19"},
     {23, "the compiler refuses assigning an action first (gold 82): 19"},
     {43, "the compiler refuses assigning a status first (gold 82): 19"},
-    {64, "needs a persistent fault cause, which a transcript's `fault` cannot latch "
-         "(list_matches_enums_test.cpp produces it through the Controller's API)"},
-    {103, "a line calls no function, and an expression too deep for the stack does not compile (gold 3)"},
+    {64,
+     "needs a persistent fault cause, which a transcript's `fault` cannot latch "
+     "(list_matches_enums_test.cpp produces it through the Controller's API)"},
+    {103,
+     "a line calls no function, and an expression too deep for the stack does not compile (gold "
+     "3)"},
     {104, "a line calls no function"},
     {106, "a refused drive command answers with the drive's own code (2..65) instead"},
-    {107, "a line holds one block (nested blocks are gold 43), at most two temporaries in 64 locals"},
+    {107,
+     "a line holds one block (nested blocks are gold 43), at most two temporaries in 64 locals"},
     {108, "try and catch stand on lines of their own (gold 85); a host line is one line"},
     {109, "the compiler never ends a try block it did not enter"},
     {110, "a line's routine takes no inputs; XQ##f with wrong arguments is 205"},
@@ -66,15 +73,18 @@ TEST(ErrorTranscripts, ExpectEveryRegisteredCode) {
   for (const dialect::ErrorInfo& e : gold::dialect().interpreter_errors()) {
     registered.insert(e.code);
     if (kNotFromAHostLine.count(e.code)) {
-      EXPECT_FALSE(expected.count(e.code)) << e.code << " (" << e.name << ") is produced now: drop its exemption";
+      EXPECT_FALSE(expected.count(e.code))
+          << e.code << " (" << e.name << ") is produced now: drop its exemption";
     } else {
       EXPECT_TRUE(expected.count(e.code)) << "no transcript in tests/transcripts/errors produces "
                                           << e.code << " (" << e.name << ")";
     }
   }
-  for (int32_t code : expected) EXPECT_TRUE(registered.count(code)) << code << " is expected but not registered";
+  for (int32_t code : expected)
+    EXPECT_TRUE(registered.count(code)) << code << " is expected but not registered";
   for (const auto& [code, why] : kNotFromAHostLine)
-    EXPECT_TRUE(registered.count(code)) << "exempt " << code << " is not registered (" << why << ")";
+    EXPECT_TRUE(registered.count(code))
+        << "exempt " << code << " is not registered (" << why << ")";
 }
 
 }  // namespace

@@ -29,17 +29,18 @@ struct EnumValue {
 
 // Every constant of the two enums that is a code a host sees. The name is made from the
 // constant itself, so a constant renamed or removed fails to compile.
-#define ENUM_VALUE(name) EnumValue{kError##name, #name}
+#define ENUM_VALUE(name) \
+  EnumValue { kError##name, #name }
 const EnumValue kEnumValues[] = {
-    ENUM_VALUE(BadCommand),       ENUM_VALUE(BadIndex),        ENUM_VALUE(NoValue),
-    ENUM_VALUE(OutOfRange),       ENUM_VALUE(NotAssignable),   ENUM_VALUE(ModeNotSupported),
-    ENUM_VALUE(ReadOnly),         ENUM_VALUE(MotorMustBeOn),   ENUM_VALUE(MotorMustBeOff),
-    ENUM_VALUE(FaultPresent),     ENUM_VALUE(InhibitActive),   ENUM_VALUE(Syntax),
-    ENUM_VALUE(NoProgram),        ENUM_VALUE(NoSuchEntry),     ENUM_VALUE(ProgramRunning),
-    ENUM_VALUE(NotHalted),        ENUM_VALUE(BadArguments),    ENUM_VALUE(Storage),
-    ENUM_VALUE(NoStoredProgram),  ENUM_VALUE(LineDidNotFinish), ENUM_VALUE(NoSuchVariable),
-    ENUM_VALUE(NoDownload),       ENUM_VALUE(DownloadSize),    ENUM_VALUE(DownloadChunk),
-    ENUM_VALUE(DownloadRefused),  ENUM_VALUE(RecorderBusy),    ENUM_VALUE(RecorderNoSignals),
+    ENUM_VALUE(BadCommand),      ENUM_VALUE(BadIndex),         ENUM_VALUE(NoValue),
+    ENUM_VALUE(OutOfRange),      ENUM_VALUE(NotAssignable),    ENUM_VALUE(ModeNotSupported),
+    ENUM_VALUE(ReadOnly),        ENUM_VALUE(MotorMustBeOn),    ENUM_VALUE(MotorMustBeOff),
+    ENUM_VALUE(FaultPresent),    ENUM_VALUE(InhibitActive),    ENUM_VALUE(Syntax),
+    ENUM_VALUE(NoProgram),       ENUM_VALUE(NoSuchEntry),      ENUM_VALUE(ProgramRunning),
+    ENUM_VALUE(NotHalted),       ENUM_VALUE(BadArguments),     ENUM_VALUE(Storage),
+    ENUM_VALUE(NoStoredProgram), ENUM_VALUE(LineDidNotFinish), ENUM_VALUE(NoSuchVariable),
+    ENUM_VALUE(NoDownload),      ENUM_VALUE(DownloadSize),     ENUM_VALUE(DownloadChunk),
+    ENUM_VALUE(DownloadRefused), ENUM_VALUE(RecorderBusy),     ENUM_VALUE(RecorderNoSignals),
     ENUM_VALUE(RecorderNoData),
 };
 #undef ENUM_VALUE

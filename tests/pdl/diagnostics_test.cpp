@@ -52,8 +52,10 @@ std::vector<std::string> got(const Case& c) {
   std::vector<std::string> out;
   for (const Diagnostic& d : r.diagnostics) {
     if (d.severity == Severity::Note) continue;
-    const std::string file = d.where.file == name ? "" : fs::path(d.where.file).filename().string() + ":";
-    out.push_back(file + std::to_string(d.where.line) + ":" + std::to_string(d.where.column) + " " + std::to_string(d.code));
+    const std::string file =
+        d.where.file == name ? "" : fs::path(d.where.file).filename().string() + ":";
+    out.push_back(file + std::to_string(d.where.line) + ":" + std::to_string(d.where.column) + " " +
+                  std::to_string(d.code));
   }
   return out;
 }
@@ -73,17 +75,21 @@ TEST(PdlDiagnostics, EveryRegisteredCodeHasACase) {
   }
   size_t count = 0;
   const pdl::ErrorEntry* all = pdl::all_errors(count);
-  for (size_t i = 0; i < count; ++i) EXPECT_TRUE(seen.count(all[i].code)) << "no case gives [pdl " << all[i].code << "] " << all[i].name;
+  for (size_t i = 0; i < count; ++i)
+    EXPECT_TRUE(seen.count(all[i].code))
+        << "no case gives [pdl " << all[i].code << "] " << all[i].name;
 }
 
 TEST(PdlDiagnostics, PrintedAsGccDoes) {
   const pdl::CompileResult r = pdl::compile(SourceFile{"f.pdl", "#long a\nb = 1;\n"});
   ASSERT_EQ(r.diagnostics.size(), 1u);
-  EXPECT_EQ(format_text(r.diagnostics[0]).substr(0, 43), "f.pdl:2:1: error: unknown name: b [pdl 20]\n");
+  EXPECT_EQ(format_text(r.diagnostics[0]).substr(0, 43),
+            "f.pdl:2:1: error: unknown name: b [pdl 20]\n");
 }
 
 TEST(PdlDiagnostics, ACleanProgramHasNone) {
-  const pdl::CompileResult r = pdl::compile(SourceFile{"f.pdl", "#long a\n#task/1;\na = 1;\nhalt;\n"});
+  const pdl::CompileResult r =
+      pdl::compile(SourceFile{"f.pdl", "#long a\n#task/1;\na = 1;\nhalt;\n"});
   EXPECT_TRUE(r.diagnostics.empty());
   EXPECT_TRUE(r.ok());
   EXPECT_FALSE(r.image.code.empty());

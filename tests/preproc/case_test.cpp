@@ -58,11 +58,16 @@ std::string brief(const Diagnostic& d) {
 PreprocOptions options_for(const std::string& spec) {
   PreprocOptions o;
   for (const std::string& word : lines_of(spec)) {
-    if (word == "undefined_identifier_is_zero") o.undefined_identifier_is_zero = true;
-    else if (word == "no_unknown_hash_lines") o.unknown_hash_lines_pass_through = false;
-    else if (word == "allow_include") o.allow_include = true;
-    else if (word == "allow_function_macros") o.allow_function_macros = true;
-    else ADD_FAILURE() << "unknown option in case: " << word;
+    if (word == "undefined_identifier_is_zero")
+      o.undefined_identifier_is_zero = true;
+    else if (word == "no_unknown_hash_lines")
+      o.unknown_hash_lines_pass_through = false;
+    else if (word == "allow_include")
+      o.allow_include = true;
+    else if (word == "allow_function_macros")
+      o.allow_function_macros = true;
+    else
+      ADD_FAILURE() << "unknown option in case: " << word;
   }
   return o;
 }
@@ -91,7 +96,8 @@ TEST_P(PreprocCase, GivesExpectedOutputAndDiagnostics) {
 
   EXPECT_EQ(p.text, c.sections.at("output"));
   // Line numbers survive: one output line per input line.
-  EXPECT_EQ(std::count(p.text.begin(), p.text.end(), '\n'), std::count(input.begin(), input.end(), '\n'));
+  EXPECT_EQ(std::count(p.text.begin(), p.text.end(), '\n'),
+            std::count(input.begin(), input.end(), '\n'));
 
   std::vector<std::string> got;
   for (const Diagnostic& d : diagnostics.items()) {
@@ -100,8 +106,8 @@ TEST_P(PreprocCase, GivesExpectedOutputAndDiagnostics) {
     got.push_back(brief(d));
   }
   const auto diag_it = c.sections.find("diagnostics");
-  const std::vector<std::string> want = diag_it == c.sections.end() ? std::vector<std::string>{}
-                                                                     : lines_of(diag_it->second);
+  const std::vector<std::string> want =
+      diag_it == c.sections.end() ? std::vector<std::string>{} : lines_of(diag_it->second);
   EXPECT_EQ(got, want);
 }
 

@@ -1,11 +1,11 @@
 // The constant evaluator on its own: types of results (manual 2.10: logical, bitwise and
 // comparison results are ints; calculation results are float when an operand is), number
 // forms of manual 1.3, and the errors it reports.
+#include "preproc/const_expr.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
-
-#include "preproc/const_expr.h"
 
 namespace uprog::preproc {
 namespace {
@@ -27,7 +27,7 @@ TEST(preproc_const_expr, ResultTypesFollowManual210) {
 }
 
 TEST(preproc_const_expr, NumberForms) {
-  EXPECT_EQ(eval("0x10").value.value.i, 16);             // manual 1.3.1
+  EXPECT_EQ(eval("0x10").value.value.i, 16);  // manual 1.3.1
   EXPECT_EQ(eval("0X7fffffff").value.value.i, INT32_MAX);
   EXPECT_EQ(eval("0x80000000").value.value.i, INT32_MIN);  // manual 1.3 note
   EXPECT_FLOAT_EQ(eval("2.5e4").value.value.f, 25000.0f);  // manual 1.3.2
@@ -55,7 +55,8 @@ TEST(preproc_const_expr, Errors) {
   EXPECT_EQ(eval("1/0").status, EvalStatus::DivisionByZero);
   EXPECT_EQ(eval("1%0.5").status, EvalStatus::DivisionByZero);  // 0.5 truncates to 0
   EXPECT_EQ(eval("X").status, EvalStatus::UnknownIdentifier);
-  EXPECT_EQ(eval(std::string(10000, '(') + "1" + std::string(10000, ')')).status, EvalStatus::TooDeep);
+  EXPECT_EQ(eval(std::string(10000, '(') + "1" + std::string(10000, ')')).status,
+            EvalStatus::TooDeep);
   EXPECT_EQ(eval(std::string(10000, '-') + "1").status, EvalStatus::TooDeep);
   EXPECT_EQ(eval(std::string(100, '(') + "1" + std::string(100, ')')).status, EvalStatus::Ok);
 }
@@ -93,7 +94,8 @@ TEST(preproc_const_expr, FormatReadsBack) {
   EXPECT_EQ(format_constant(TypedValue::of_float(0.5f)), "0.5");
   EXPECT_EQ(format_constant(TypedValue::of_float(-1e10f)), "(-1.0e10)");
   EXPECT_EQ(format_constant(TypedValue::of_float(1.5e-20f)), "1.5e-20");
-  EXPECT_EQ(format_constant(TypedValue::of_float(2147483648.0f)), "2.1474836e09");  // not 2147483648.0
+  EXPECT_EQ(format_constant(TypedValue::of_float(2147483648.0f)),
+            "2.1474836e09");  // not 2147483648.0
   EXPECT_EQ(format_constant(TypedValue::of_float(1e-5f)), "1.0e-05");
   // Whatever is printed evaluates back to the same value and type.
   for (float f : {0.1f, 3.14159f, 1e30f, -2.5e-7f, 123456789.0f, 0.0f}) {

@@ -15,19 +15,25 @@ Preprocessed run(const std::string& text, DiagnosticList& d) {
   return preprocess({"g.prg", text}, PreprocOptions{}, d);
 }
 
-size_t lines(const std::string& s) { return static_cast<size_t>(std::count(s.begin(), s.end(), '\n')); }
+size_t lines(const std::string& s) {
+  return static_cast<size_t>(std::count(s.begin(), s.end(), '\n'));
+}
 
 TEST(preproc_robustness, RandomBytesAndRandomDirectives) {
   std::mt19937 rng(12345);
-  const std::string pieces[] = {"#define ", "#if ", "#elseif ", "#else", "#endif", "#undef ", "#ifdef ",
-                                "A", "B ", "1", "/*", "*/", "//", "**", "\"", "\n", "(", ")", "-", "0x",
-                                "1e", ".", "\r\n", std::string(1, '\0'), "\xff", "##", "#@"};
+  const std::string pieces[] = {
+      "#define ", "#if ", "#elseif ", "#else", "#endif", "#undef ", "#ifdef ", "A",
+      "B ",       "1",    "/*",       "*/",    "//",     "**",      "\"",      "\n",
+      "(",        ")",    "-",        "0x",    "1e",     ".",       "\r\n",    std::string(1, '\0'),
+      "\xff",     "##",   "#@"};
   for (int round = 0; round < 300; ++round) {
     std::string src;
     const int n = static_cast<int>(rng() % 400);
     for (int i = 0; i < n; ++i) {
-      if (rng() % 3 == 0) src += static_cast<char>(rng() % 256);
-      else src += pieces[rng() % std::size(pieces)];
+      if (rng() % 3 == 0)
+        src += static_cast<char>(rng() % 256);
+      else
+        src += pieces[rng() % std::size(pieces)];
     }
     DiagnosticList d;
     const Preprocessed p = run(src, d);
@@ -41,7 +47,8 @@ TEST(preproc_robustness, RandomBytesAndRandomDirectives) {
 }
 
 TEST(preproc_robustness, HugeLine) {
-  std::string src = "#define X 1\n" + std::string(1 << 22, 'a') + " X " + std::string(1 << 20, '(') + "\n";
+  std::string src =
+      "#define X 1\n" + std::string(1 << 22, 'a') + " X " + std::string(1 << 20, '(') + "\n";
   DiagnosticList d;
   const Preprocessed p = run(src, d);
   EXPECT_EQ(p.text.size(), src.size() - 11);
@@ -69,7 +76,8 @@ TEST(preproc_robustness, DeepConditionIsAnErrorNotACrash) {
 TEST(preproc_robustness, LongChainOfDefinesHitsTheDepthBound) {
   // M0 -> M1 -> ... -> M79: each a string, so the expansion nests 80 deep (limit 64).
   std::string src;
-  for (int i = 0; i < 80; ++i) src += "#define M" + std::to_string(i) + " x+M" + std::to_string(i + 1) + "\n";
+  for (int i = 0; i < 80; ++i)
+    src += "#define M" + std::to_string(i) + " x+M" + std::to_string(i + 1) + "\n";
   src += "y = M0\ny = M60\n";
   DiagnosticList d;
   const Preprocessed p = run(src, d);
@@ -84,7 +92,8 @@ TEST(preproc_robustness, ExponentialDefinesAreBounded) {
   // Each name doubles the previous one: 2^60 characters if nothing stopped it.
   std::string src = "#define E0 ab\n";
   for (int i = 1; i <= 60; ++i)
-    src += "#define E" + std::to_string(i) + " E" + std::to_string(i - 1) + " E" + std::to_string(i - 1) + "\n";
+    src += "#define E" + std::to_string(i) + " E" + std::to_string(i - 1) + " E" +
+           std::to_string(i - 1) + "\n";
   for (int i = 0; i < 2000; ++i) src += "E60 E10\n";
   DiagnosticList d(100000);
   const Preprocessed p = run(src, d);

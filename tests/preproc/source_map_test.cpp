@@ -105,7 +105,9 @@ TEST(preproc_source_map, DiagnosticsNamePlacesInTheSource) {
 
 TEST(preproc_source_map, LocateOnAManyLineFileMatchesALinearScan) {
   std::string src;
-  for (int i = 0; i < 2000; ++i) src += (i % 7 == 0 ? "#define M" + std::to_string(i) + " " + std::to_string(i) + "\n" : "a M" + std::to_string(i - i % 7) + " b\n");
+  for (int i = 0; i < 2000; ++i)
+    src += (i % 7 == 0 ? "#define M" + std::to_string(i) + " " + std::to_string(i) + "\n"
+                       : "a M" + std::to_string(i - i % 7) + " b\n");
   DiagnosticList d;
   const Preprocessed p = run(src, d);
   // Walk the output: lines count by '\n'; outside expansions the column restarts after each one.

@@ -1,7 +1,7 @@
 // The loader's fused copies (line_runs.h) run a CUP program as its lines do: each program here
 // runs once in slices of one line (the drive's cycle, which never takes a copy), once without a
-// line budget (which does) and once in slices of 7 and of 100 lines, and ends with the same general data,
-// the same end and, for an error, the same CUP line.
+// line budget (which does) and once in slices of 7 and of 100 lines, and ends with the same general
+// data, the same end and, for an error, the same CUP line.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -40,7 +40,9 @@ Outcome run(const LoadedCup& cup, vm::Budget budget) {
   std::vector<uint64_t> memory(vm::Machine::memory_needed(view, config) / 8 + 1);
   NoHost host;
   vm::Machine machine;
-  EXPECT_TRUE(machine.load(bytes.data(), bytes.size(), config, memory.data(), memory.size() * 8, host).ok());
+  EXPECT_TRUE(
+      machine.load(bytes.data(), bytes.size(), config, memory.data(), memory.size() * 8, host)
+          .ok());
   EXPECT_TRUE(bind_gen_data(machine, cup, out.gen_data));
   machine.start(0, static_cast<uint32_t>(cup.task_routine[1]));
   vm::SliceResult r{};
@@ -75,11 +77,13 @@ size_t count_of(const LoadedCup& cup, bytecode::Op op) {
 // says the other budgets did run copies.
 void expect_same_runs(const LoadedCup& cup, const Outcome& lines) {
   ASSERT_GT(count_of(cup, bytecode::Op::JLINES), 0u) << "no copy to test";
-  for (const vm::Budget budget : {vm::Budget::unlimited(), vm::Budget::of_lines(7), vm::Budget::of_lines(100)}) {
+  for (const vm::Budget budget :
+       {vm::Budget::unlimited(), vm::Budget::of_lines(7), vm::Budget::of_lines(100)}) {
     const Outcome other = run(cup, budget);
     EXPECT_EQ(other.end, lines.end);
     EXPECT_EQ(other.line, lines.line);
-    for (size_t i = 0; i < kGenDataSize; ++i) EXPECT_EQ(other.gen_data[i].i, lines.gen_data[i].i) << "AGenData[" << i + 1 << "]";
+    for (size_t i = 0; i < kGenDataSize; ++i)
+      EXPECT_EQ(other.gen_data[i].i, lines.gen_data[i].i) << "AGenData[" << i + 1 << "]";
   }
 }
 
@@ -87,56 +91,56 @@ void expect_same_runs(const LoadedCup& cup, const Outcome& lines) {
 // ACompare and indexed AGenData: I from 1 to 29, S the sum of those not divisible by 3, X
 // the count of those above 20, and AGenData[100 + I] = (I / 7) xor (I && 1).
 const std::vector<std::string> kLoop = {
-    "AProgTask[1]",                 //  1
-    "AGenData[1]=1",                //  2 I = 1
-    "APushParam,AGenData[1]",       //  3 loop: I >= 30 ends it
-    "APushConstant,30",             //  4
-    "AJump[6],37",                  //  5
-    "APushParam,AGenData[1]",       //  6 I % 3 == 0 skips the sum
-    "APushConstant,3",              //  7
-    "AMath[5]",                     //  8
-    "AJump[9],14",                  //  9
-    "APushParam,AGenData[2]",       // 10 S = S + I
-    "APushParam,AGenData[1]",       // 11
-    "AMath[1]",                     // 12
-    "APopParam,AGenData[2]",        // 13
-    "APushParam,AGenData[1]",       // 14 (I / 7) xor (I && 1) into AGenData[100 + I]
-    "APushConstant,7",              // 15
-    "AMath[4]",                     // 16
-    "APushParam,AGenData[1]",       // 17
-    "APushConstant,1",              // 18
-    "AMath[20]",                    // 19
-    "AMath[12]",                    // 20
-    "APushParam,AGenData[1]",       // 21
+    "AProgTask[1]",                    //  1
+    "AGenData[1]=1",                   //  2 I = 1
+    "APushParam,AGenData[1]",          //  3 loop: I >= 30 ends it
+    "APushConstant,30",                //  4
+    "AJump[6],37",                     //  5
+    "APushParam,AGenData[1]",          //  6 I % 3 == 0 skips the sum
+    "APushConstant,3",                 //  7
+    "AMath[5]",                        //  8
+    "AJump[9],14",                     //  9
+    "APushParam,AGenData[2]",          // 10 S = S + I
+    "APushParam,AGenData[1]",          // 11
+    "AMath[1]",                        // 12
+    "APopParam,AGenData[2]",           // 13
+    "APushParam,AGenData[1]",          // 14 (I / 7) xor (I && 1) into AGenData[100 + I]
+    "APushConstant,7",                 // 15
+    "AMath[4]",                        // 16
+    "APushParam,AGenData[1]",          // 17
+    "APushConstant,1",                 // 18
+    "AMath[20]",                       // 19
+    "AMath[12]",                       // 20
+    "APushParam,AGenData[1]",          // 21
     "APopParamIdx[40],AGenData[101]",  // 22
-    "APushParam,AGenData[1]",       // 23 I > 20 counts in X (ACompare[5], then AJump[10])
-    "APushConstant,20",             // 24
-    "ACompare[5]",                  // 25
-    "AJump[9],31",                  // 26
-    "APushParam,AGenData[3]",       // 27
-    "APushConstant,1",              // 28
-    "AMath[1]",                     // 29
-    "APopParam,AGenData[3]",        // 30
-    "APushParam,AGenData[1]",       // 31 I = I + 1
-    "APushConstant,1",              // 32
-    "AMath[1]",                     // 33
-    "APopParam,AGenData[1]",        // 34
-    "APushConstant,1",              // 35 AJump[2]: the top above 0, as it is
-    "AJump[2],3",                   // 36
-    "APushParam,AGenData[2]",       // 37 done: AGenData[4] = S
-    "APopParam,AGenData[4]",        // 38
+    "APushParam,AGenData[1]",          // 23 I > 20 counts in X (ACompare[5], then AJump[10])
+    "APushConstant,20",                // 24
+    "ACompare[5]",                     // 25
+    "AJump[9],31",                     // 26
+    "APushParam,AGenData[3]",          // 27
+    "APushConstant,1",                 // 28
+    "AMath[1]",                        // 29
+    "APopParam,AGenData[3]",           // 30
+    "APushParam,AGenData[1]",          // 31 I = I + 1
+    "APushConstant,1",                 // 32
+    "AMath[1]",                        // 33
+    "APopParam,AGenData[1]",           // 34
+    "APushConstant,1",                 // 35 AJump[2]: the top above 0, as it is
+    "AJump[2],3",                      // 36
+    "APushParam,AGenData[2]",          // 37 done: AGenData[4] = S
+    "APopParam,AGenData[4]",           // 38
 };
 
 TEST(CupCopies, ALoopRunsAsItsLines) {
   const LoadedCup cup = load(kLoop);
   const Outcome lines = run(cup, vm::Budget::of_lines(1));
   ASSERT_EQ(lines.end, vm::SliceEnd::Finished);
-  EXPECT_EQ(lines.gen_data[0].i, 30);                   // I
-  EXPECT_EQ(lines.gen_data[1].i, 435 - 135);           // 1..29 less 3, 6, ..., 27
-  EXPECT_EQ(lines.gen_data[2].i, 9);                    // 21..29
+  EXPECT_EQ(lines.gen_data[0].i, 30);         // I
+  EXPECT_EQ(lines.gen_data[1].i, 435 - 135);  // 1..29 less 3, 6, ..., 27
+  EXPECT_EQ(lines.gen_data[2].i, 9);          // 21..29
   EXPECT_EQ(lines.gen_data[3].i, 300);
-  EXPECT_EQ(lines.gen_data[100].i, (1 / 7) ^ 1);        // AGenData[101], I = 1
-  EXPECT_EQ(lines.gen_data[113].i, (14 / 7) ^ 1);       // AGenData[114], I = 14
+  EXPECT_EQ(lines.gen_data[100].i, (1 / 7) ^ 1);   // AGenData[101], I = 1
+  EXPECT_EQ(lines.gen_data[113].i, (14 / 7) ^ 1);  // AGenData[114], I = 14
   expect_same_runs(cup, lines);
   EXPECT_LT(run(cup, vm::Budget::unlimited()).slices, lines.slices);
 }

@@ -13,7 +13,8 @@
 namespace uprog::pup {
 namespace {
 
-const std::filesystem::path kDir = std::filesystem::path(UPROG_SOURCE_DIR) / "tests/pup/diagnostics";
+const std::filesystem::path kDir =
+    std::filesystem::path(UPROG_SOURCE_DIR) / "tests/pup/diagnostics";
 
 std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
 

@@ -32,13 +32,15 @@ TEST(CupLoader, RefusesUnsafeLinesByTheirNumber) {
   // Line 2 is reached with 0 (the task's start) and with 1 (the jump back from line 3).
   EXPECT_EQ(refusal({"AProgTask[1]", "APushConstant,1", "AJump[1],2"}),
             "line 2: reachable at two stack depths");
-  EXPECT_EQ(refusal({"AProgFunc[1]", "APushConstant,1", "AReturn"}), "line 3: AReturn with values on the stack");
+  EXPECT_EQ(refusal({"AProgFunc[1]", "APushConstant,1", "AReturn"}),
+            "line 3: AReturn with values on the stack");
   EXPECT_EQ(refusal({"AProgTask[1]", "ASpeed"}), "line 2: a bare read of 'ASpeed'");
   EXPECT_EQ(refusal({"AProgTask[1]", "ANoSuch=1"}), "line 2: unknown keyword 'ANoSuch'");
   EXPECT_EQ(refusal({"ASpeed = 5"}), "line 1: blanks in a program line");
   EXPECT_EQ(refusal({"AJump[1],3"}), "line 1: jump to line 3, which is not there");
   EXPECT_EQ(refusal({"AProgFuncCall,2"}), "line 1: no function 2");
-  EXPECT_EQ(refusal({"ADownloadUProg[1],5"}), "line 1: 'ADownloadUProg' is not allowed in a program (error 14)");
+  EXPECT_EQ(refusal({"ADownloadUProg[1],5"}),
+            "line 1: 'ADownloadUProg' is not allowed in a program (error 14)");
   EXPECT_EQ(refusal({"AVel=5"}), "line 1: 'AVel' is not assignable");
   EXPECT_EQ(refusal({"AMath[16]"}), "line 1: no AMath[16]");
   EXPECT_EQ(refusal({"AGenData[0]=1"}), "line 1: index 0 of 'AGenData' out of range");
@@ -52,8 +54,9 @@ TEST(CupLoader, RefusesUnsafeLinesByTheirNumber) {
 TEST(CupLoader, EveryLineHasItsCodeAndTheImageVerifies) {
   CupProgram p;
   p.name = "Counter";
-  p.lines = {"AProgTask[1]", "AWaitTime,1000", "AJump[1],2", "AProgFunc[1]", "APushParam,AGenData[1]",
-             "APushConstant,1", "AMath[1]", "APopParam,AGenData[1]", "AReturn"};
+  p.lines = {"AProgTask[1]", "AWaitTime,1000",         "AJump[1],2",
+             "AProgFunc[1]", "APushParam,AGenData[1]", "APushConstant,1",
+             "AMath[1]",     "APopParam,AGenData[1]",  "AReturn"};
   p.events = {{6, 1}};
   std::string why;
   const auto loaded = load_cup(p, &why);

@@ -19,14 +19,17 @@ TEST(gold_recorder_commands, IdsAreTheTablesAndServed) {
   EXPECT_EQ(id("RC"), 76);
   EXPECT_EQ(id("RP"), 77);
   EXPECT_EQ(id("WI"), 78);
-  for (const char* n : {"RV", "RL", "RG", "RR", "RC", "RP", "WI"}) EXPECT_TRUE(RecorderCommands::serves(id(n))) << n;
+  for (const char* n : {"RV", "RL", "RG", "RR", "RC", "RP", "WI"})
+    EXPECT_TRUE(RecorderCommands::serves(id(n))) << n;
   EXPECT_FALSE(RecorderCommands::serves(id("PX")));
 }
 
 struct Fixture {
   drive::Axis axis;
   DriveCommands commands{axis};
-  int32_t write(const char* name, int32_t index, int32_t v) { return commands.write(id(name), index, Value::of_int(v)); }
+  int32_t write(const char* name, int32_t index, int32_t v) {
+    return commands.write(id(name), index, Value::of_int(v));
+  }
   int32_t read(const char* name, int32_t index = 0) {
     Value v{};
     EXPECT_EQ(commands.read(id(name), index, v), kDriveOk) << name;
@@ -45,14 +48,14 @@ TEST(gold_recorder_commands, RangesAndRefusals) {
   EXPECT_EQ(f.write("RP", 0, 2), kErrorOutOfRange);
   EXPECT_EQ(f.write("RP", 2, 101), kErrorOutOfRange);
   EXPECT_EQ(f.write("RP", 3, 7), kErrorOutOfRange);
-  EXPECT_EQ(f.write("RP", 7, 64), kErrorOutOfRange);        // 6 inputs
+  EXPECT_EQ(f.write("RP", 7, 64), kErrorOutOfRange);  // 6 inputs
   EXPECT_EQ(f.write("RG", 0, 4097), kErrorOutOfRange);
   EXPECT_EQ(f.write("RR", 0, 4), kErrorOutOfRange);
   EXPECT_EQ(f.write("RV", 2, 0), kDriveOk);
   EXPECT_EQ(f.write("RC", 0, 2), kDriveOk);
   EXPECT_EQ(f.write("RR", 0, 2), kErrorRecorderNoSignals);  // RC's bit 1 selects RV[2] = 0
   EXPECT_EQ(f.write("RV", 2, 1), kDriveOk);
-  EXPECT_EQ(f.write("RP", 3, 2), kDriveOk);                 // positive slope, but no RP[1]
+  EXPECT_EQ(f.write("RP", 3, 2), kDriveOk);  // positive slope, but no RP[1]
   EXPECT_EQ(f.write("RR", 0, 3), kErrorRecorderNoSignals);
 }
 

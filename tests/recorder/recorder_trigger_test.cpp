@@ -50,7 +50,8 @@ struct Bench {
 
 RecorderSettings profile_settings(uint32_t length, uint32_t pre, uint32_t gap, TriggerKind kind) {
   RecorderSettings s;
-  s.channels = {signal_channel(Signal::kReferencePosition, "DV3"), signal_channel(Signal::kReferenceVelocity, "DV2")};
+  s.channels = {signal_channel(Signal::kReferencePosition, "DV3"),
+                signal_channel(Signal::kReferenceVelocity, "DV2")};
   s.length = length;
   s.pretrigger_percent = pre;
   s.gap_cycles = gap;
@@ -64,7 +65,8 @@ TEST(recorder_trigger, ImmediateTakesLengthSamplesFromTheNextCycle) {
   b.steps(100);
   const uint32_t t0 = b.axis.time_us();
   std::string why;
-  ASSERT_TRUE(b.axis.recorder().arm(profile_settings(10, 0, 1, TriggerKind::kImmediate), &why)) << why;
+  ASSERT_TRUE(b.axis.recorder().arm(profile_settings(10, 0, 1, TriggerKind::kImmediate), &why))
+      << why;
   EXPECT_EQ(b.axis.recorder().state(), RecorderState::kWaiting);
   EXPECT_EQ(b.until_done(100), 10);
   const std::optional<Recording> r = b.axis.recorder().recording(b.axis.period_us());
@@ -82,14 +84,16 @@ TEST(recorder_trigger, ImmediateTakesLengthSamplesFromTheNextCycle) {
 TEST(recorder_trigger, BeginOfMotionWithTwentyPercentPretriggerAndGap) {
   Bench b;
   std::string why;
-  ASSERT_TRUE(b.axis.recorder().arm(profile_settings(100, 20, 2, TriggerKind::kBeginMotion), &why)) << why;
+  ASSERT_TRUE(b.axis.recorder().arm(profile_settings(100, 20, 2, TriggerKind::kBeginMotion), &why))
+      << why;
   EXPECT_EQ(b.axis.recorder().state(), RecorderState::kArmed);
   b.steps(39);  // samples at cycles 1, 3, ..., 39: 20 of them fill the pre-trigger share
   EXPECT_EQ(b.axis.recorder().state(), RecorderState::kWaiting);
-  b.steps(1);   // cycle 40 takes none; cycle 41 is both the first motion step and a sample
+  b.steps(1);  // cycle 40 takes none; cycle 41 is both the first motion step and a sample
   const uint32_t bg_time = b.axis.time_us();
   b.begin(100000);
-  EXPECT_EQ(b.until_done(1000), 159);  // 80 samples after the trigger, at motion steps 1, 3, ..., 159
+  EXPECT_EQ(b.until_done(1000),
+            159);  // 80 samples after the trigger, at motion steps 1, 3, ..., 159
   const std::optional<Recording> r = b.axis.recorder().recording(b.axis.period_us());
   ASSERT_TRUE(r);
   ASSERT_EQ(r->samples(), 100u);
@@ -97,7 +101,8 @@ TEST(recorder_trigger, BeginOfMotionWithTwentyPercentPretriggerAndGap) {
   EXPECT_EQ(r->sample_period_us, 100u);
   EXPECT_EQ(r->trigger_time_us, bg_time + 50u);
   EXPECT_EQ(r->time_us(0), -2000);
-  for (int i = 0; i < 20; ++i) EXPECT_EQ(r->channels[0].values[i], 0.0) << "pre-trigger sample " << i;
+  for (int i = 0; i < 20; ++i)
+    EXPECT_EQ(r->channels[0].values[i], 0.0) << "pre-trigger sample " << i;
   for (int j = 0; j < 80; ++j) {
     const int step = 1 + 2 * j;
     EXPECT_NEAR(r->channels[0].values[20 + j], analytic_position(step), 1.0) << "sample " << 20 + j;
@@ -107,7 +112,8 @@ TEST(recorder_trigger, BeginOfMotionWithTwentyPercentPretriggerAndGap) {
 
 TEST(recorder_trigger, BeginOfMotionBeforeThePretriggerIsFullIsMissed) {
   Bench b;
-  ASSERT_TRUE(b.axis.recorder().arm(profile_settings(100, 50, 1, TriggerKind::kBeginMotion), nullptr));
+  ASSERT_TRUE(
+      b.axis.recorder().arm(profile_settings(100, 50, 1, TriggerKind::kBeginMotion), nullptr));
   b.steps(10);
   b.begin(100000);
   b.steps(200);
@@ -129,7 +135,8 @@ TEST(recorder_trigger, AnEarlyTriggerTakesTheSamplesThereAreWhenAllowed) {
   ASSERT_TRUE(r);
   EXPECT_EQ(r->samples(), 100u);
   EXPECT_EQ(r->trigger_index, 10u);
-  for (int j = 0; j < 90; ++j) EXPECT_NEAR(r->channels[0].values[10 + j], analytic_position(1 + j), 1.0);
+  for (int j = 0; j < 90; ++j)
+    EXPECT_NEAR(r->channels[0].values[10 + j], analytic_position(1 + j), 1.0);
 }
 
 // The trigger sample is the first at or past the level; the sample before it lies below.
@@ -214,7 +221,8 @@ TEST(recorder_trigger, EnteringAWindowAroundTheTarget) {
   EXPECT_EQ(r->trigger_index, 10u);
   EXPECT_GE(r->channels[0].values[10], 99000.0);
   EXPECT_LT(r->channels[0].values[9], 99000.0);
-  // In the deceleration 1000 counts before the end: 0.5 a t^2 = 1000 at t = sqrt(2e-3) s before 2.05 s.
+  // In the deceleration 1000 counts before the end: 0.5 a t^2 = 1000 at t = sqrt(2e-3) s
+  // before 2.05 s.
   const double t = static_cast<double>(r->trigger_time_us - bg_time) * 1e-6;
   EXPECT_NEAR(t, 2.05 - std::sqrt(2.0 * 1000.0 / kAccel), kTs);
 }

@@ -1,8 +1,8 @@
 // The CSV form: export, import and export again give the same bytes; a broken file is refused
 // naming its line; comparisons name the first differing sample's channel and time.
-#include <gtest/gtest.h>
-
 #include "drive/recording_csv.h"
+
+#include <gtest/gtest.h>
 
 namespace uprog::drive {
 namespace {

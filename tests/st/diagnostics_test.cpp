@@ -63,7 +63,8 @@ TEST(st_diagnostics, EveryCasePrintsItsExpectedErrors) {
   const st::ErrorInfo* all = st::all_errors(count);
   for (size_t i = 0; i < count; ++i) {
     if (all[i].code == static_cast<int>(st::Error::SourceTooLong)) continue;  // below
-    EXPECT_TRUE(covered.count(all[i].code)) << "no case for [st " << all[i].code << "] " << all[i].name;
+    EXPECT_TRUE(covered.count(all[i].code))
+        << "no case for [st " << all[i].code << "] " << all[i].name;
   }
 }
 

@@ -1,11 +1,12 @@
 // The S300's ASCII wire end to end through a host's session: PROMPT=0 answers bare lines,
 // PROMPT=1 echoes the input with CR LF and ends with the prompt `-->`, an error is BEL `ERR`
 // code text; PRINTF's text reaches the host as unsolicited CR LF lines.
+#include "dialects/st/wire.h"
+
 #include <gtest/gtest.h>
 
 #include "controller/controller.h"
 #include "dialects/st/dialect.h"
-#include "dialects/st/wire.h"
 #include "drive/axis.h"
 #include "transport/controller_service.h"
 #include "transport/host_session.h"

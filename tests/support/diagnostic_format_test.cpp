@@ -2,6 +2,7 @@
 // own lines, text that is not printable escaped, long lines windowed, errors beyond a limit
 // counted, and JSON that stays valid whatever bytes the source held.
 #include <gtest/gtest.h>
+
 #include <nlohmann/json.hpp>
 
 #include "support/diagnostic.h"
@@ -42,7 +43,8 @@ TEST(diagnostic_format, TabsBeforeTheColumnStayTabsSoTheCaretLinesUp) {
 }
 
 TEST(diagnostic_format, ACaretPastTheEndOfTheLineAndNoCaretWithoutAColumn) {
-  std::vector<Diagnostic> ds{error_at("e.gold", 1, 4, "end"), error_at("e.gold", 2, 0, "no column")};
+  std::vector<Diagnostic> ds{error_at("e.gold", 1, 4, "end"),
+                             error_at("e.gold", 2, 0, "no column")};
   attach_source_lines(ds, SourceFile{"e.gold", "a =\nb\n"});
   EXPECT_EQ(format_text(ds),
             "e.gold:1:4: error: end [gold 12]\n 1 | a =\n   |    ^\n"
@@ -85,16 +87,23 @@ TEST(diagnostic_format, ALineBeyondTheTextHasNoExcerpt) {
 TEST(diagnostic_format, UnprintableBytesAreEscapedInLineAndMessage) {
   // An escape sequence that would turn the terminal red, a NUL, DEL, a lone continuation byte,
   // a C1 control (U+009B, CSI) and a right-to-left override; valid UTF-8 text stays.
-  const std::string line = std::string("a\x1b[31m\x00\x7f\x80", 9) + "\xc2\x9b" "\xe2\x80\xae" "µs b";
-  std::vector<Diagnostic> ds{error_at("bin", 1, static_cast<int>(line.size()), "unknown opcode '" + line + "'")};
+  const std::string line = std::string("a\x1b[31m\x00\x7f\x80", 9) +
+                           "\xc2\x9b"
+                           "\xe2\x80\xae"
+                           "µs b";
+  std::vector<Diagnostic> ds{
+      error_at("bin", 1, static_cast<int>(line.size()), "unknown opcode '" + line + "'")};
   attach_source_lines(ds, SourceFile{"bin", line + "\n"});
   const std::string shown = format_text(ds);
   EXPECT_TRUE(safe_for_terminal(shown)) << shown;
   const std::string escaped = "a\\x1B[31m\\x00\\x7F\\x80\\xC2\\x9B\\xE2\\x80\\xAEµs b";
   EXPECT_EQ(shown, "bin:1:" + std::to_string(line.size()) + ": error: unknown opcode '" + escaped +
                        "' [gold 12]\n"
-                       " 1 | " + escaped + "\n"
-                       "   | " + std::string(escaped.size() - 2, ' ') + "^\n");
+                       " 1 | " +
+                       escaped +
+                       "\n"
+                       "   | " +
+                       std::string(escaped.size() - 2, ' ') + "^\n");
 }
 
 TEST(diagnostic_format, ALongLineShowsAWindowAroundTheColumn) {

@@ -1,4 +1,6 @@
 // format_message() against C's printf, case by case (format_cases.txt), and its limits.
+#include "support/format_message.h"
+
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -6,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "support/format_message.h"
 #include "testlib/test_files.h"
 
 namespace uprog {
@@ -34,7 +35,8 @@ Value word(const std::string& token) {
 }
 
 TEST(FormatMessage, Cases) {
-  std::istringstream lines(test::read_whole(std::string(UPROG_SOURCE_DIR) + "/tests/support/format_cases.txt"));
+  std::istringstream lines(
+      test::read_whole(std::string(UPROG_SOURCE_DIR) + "/tests/support/format_cases.txt"));
   int cases = 0;
   for (std::string line; std::getline(lines, line);) {
     if (line.empty() || line[0] == '#') continue;
@@ -60,9 +62,7 @@ TEST(FormatMessage, WidthsAreCapped) {
   EXPECT_EQ(wide.size(), 2u + kMaxFormatWidth);  // "0." and the capped precision
 }
 
-TEST(FormatMessage, NoWordsAtAll) {
-  EXPECT_EQ(format_message("%d|%s|%x", nullptr, 0), "0||0");
-}
+TEST(FormatMessage, NoWordsAtAll) { EXPECT_EQ(format_message("%d|%s|%x", nullptr, 0), "0||0"); }
 
 }  // namespace
 }  // namespace uprog

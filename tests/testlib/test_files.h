@@ -13,7 +13,8 @@ namespace uprog::test {
 inline std::vector<std::filesystem::path> source_files(const std::string& dir,
                                                        const std::string& extension = "") {
   std::vector<std::filesystem::path> files;
-  for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(UPROG_SOURCE_DIR) / dir))
+  for (const auto& e :
+       std::filesystem::directory_iterator(std::filesystem::path(UPROG_SOURCE_DIR) / dir))
     if (extension.empty() || e.path().extension() == extension) files.push_back(e.path());
   std::sort(files.begin(), files.end());
   return files;

@@ -13,7 +13,8 @@ TranscriptResult run_toy(const std::string& text) {
 }
 
 TEST(transcript_output, OutputLinesAreTakenOldestFirstAndQuietWantsNone) {
-  const TranscriptResult r = run_toy("quiet\n> say one\n> say two\noutput one\noutput two   \nquiet\n");
+  const TranscriptResult r =
+      run_toy("quiet\n> say one\n> say two\noutput one\noutput two   \nquiet\n");
   EXPECT_TRUE(r.ok) << (r.failures.empty() ? "" : r.failures[0]);
   EXPECT_EQ(r.checks, 4);
 }

@@ -46,12 +46,13 @@ TEST(controller_transcript, BadDirectivesFail) {
 // `drive axes=N phase_us=N` takes 1..4 axes and TS's range (25..2000 µs), and says so by place.
 TEST(controller_transcript, TheDriveDirectiveChecksItsShape) {
   EXPECT_TRUE(run("drive axes=2 phase_us=100\n> TS\n< 100\n").ok);
-  for (const char* bad : {"drive axes=5\n", "drive axes=0\n", "drive phase_us=24\n", "drive phase_us=2001\n",
-                          "drive speed=3\n", "drive axes=1.5\n"}) {
+  for (const char* bad : {"drive axes=5\n", "drive axes=0\n", "drive phase_us=24\n",
+                          "drive phase_us=2001\n", "drive speed=3\n", "drive axes=1.5\n"}) {
     const TranscriptResult r = run(bad);
     ASSERT_FALSE(r.ok) << bad;
     ASSERT_EQ(r.failures.size(), 1u) << bad;
-    EXPECT_EQ(r.failures[0].rfind("t.txt:1: drive takes axes=1..4 and phase_us=25..2000, not '", 0), 0u)
+    EXPECT_EQ(r.failures[0].rfind("t.txt:1: drive takes axes=1..4 and phase_us=25..2000, not '", 0),
+              0u)
         << r.failures[0];
   }
   const TranscriptResult late = run("> 1\n< 1\ndrive axes=2\n");

@@ -31,7 +31,8 @@ TEST(transport_echo_filter, PassesAnswersOfADriveThatDoesNotEcho) {
 
 TEST(transport_echo_filter, AnErrorAnswerAndAnEmptyExpression) {
   EchoFilter filter;
-  EXPECT_EQ(filtered(filter, "AC=-5;\r", std::string("AC=-5;\x15?;\r;", 11)), std::string("\x15?;;", 4));
+  EXPECT_EQ(filtered(filter, "AC=-5;\r", std::string("AC=-5;\x15?;\r;", 11)),
+            std::string("\x15?;;", 4));
 }
 
 TEST(transport_echo_filter, EchoTurnedOffByTheLineItself) {

@@ -26,8 +26,8 @@ TEST(transport_pty, SlaveOpensAndServesLines) {
 
 TEST(transport_pty, SocatTalksToTheSlave) {
   testing::ServerFixture server(true);
-  const std::string command = "printf 'two;err 19\\r' | timeout 10 socat -t 1 - " +
-                              server.pty_path() + ",raw,echo=0 2>&1";
+  const std::string command =
+      "printf 'two;err 19\\r' | timeout 10 socat -t 1 - " + server.pty_path() + ",raw,echo=0 2>&1";
   FILE* pipe = ::popen(command.c_str(), "r");
   ASSERT_NE(pipe, nullptr);
   std::string output;

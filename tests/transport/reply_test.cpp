@@ -1,8 +1,9 @@
 // Answers on the wire: the server's form and the host-side reader agree.
+#include "transport/reply.h"
+
 #include <gtest/gtest.h>
 
 #include "transport/answer_reader.h"
-#include "transport/reply.h"
 
 namespace uprog::transport {
 namespace {

@@ -13,8 +13,8 @@
 #include <thread>
 
 #include "bytecode/image.h"
-#include "dialects/gold/download_protocol.h"
 #include "dialects/gold/compile.h"
+#include "dialects/gold/download_protocol.h"
 #include "sim_process.h"
 #include "support/files.h"
 #include "test_client.h"
@@ -38,7 +38,8 @@ std::vector<uint8_t> program_image(int which) {
   source.name = which == 0 ? "a.ehl" : "b.ehl";
   source.text = "int " + g + ";\nfunction main()\n";
   for (int k = 0; k < 1000; ++k) {
-    source.text += "  " + g + " = " + g + " + " + std::to_string(k * (which == 0 ? 7 : 11) + 3) + "\n";
+    source.text +=
+        "  " + g + " = " + g + " + " + std::to_string(k * (which == 0 ? 7 : 11) + 3) + "\n";
   }
   source.text += "return\n";
   const gold::CompileResult r = gold::compile(source);
@@ -69,7 +70,8 @@ std::vector<std::string> sim_args(const std::string& dir) {
 
 // Sends `lines` one at a time, each waiting for its one answer; the number answered without
 // error before the drive went away (or all of them).
-std::size_t send_lines(TestClient& client, const std::vector<std::string>& lines, std::string& error) {
+std::size_t send_lines(TestClient& client, const std::vector<std::string>& lines,
+                       std::string& error) {
   std::size_t answered = 0;
   for (const std::string& line : lines) {
     if (!client.send(line + "\n")) return answered;
@@ -77,7 +79,8 @@ std::size_t send_lines(TestClient& client, const std::vector<std::string>& lines
     const auto replies = client.line_answers(20s);
     if (replies.empty()) return answered;
     if (replies[0].error != 0) {
-      error = line.substr(0, 20) + " answered ?" + std::to_string(replies[0].error) + " " + replies[0].text;
+      error = line.substr(0, 20) + " answered ?" + std::to_string(replies[0].error) + " " +
+              replies[0].text;
       return answered;
     }
     ++answered;
@@ -113,7 +116,8 @@ Held inspect(SimProcess& sim, const std::string& dir, const std::vector<uint8_t>
   const auto ld = client.line_answers(20s);
   EXPECT_EQ(cc, (std::vector<Reply>{{"", 0}})) << "CC of the stored program";
   const std::string global = held.program == 0 ? "int ga" : "int gb";
-  EXPECT_TRUE(std::find(ls.begin(), ls.end(), Reply{global, 0}) != ls.end()) << "LS lacks " << global;
+  EXPECT_TRUE(std::find(ls.begin(), ls.end(), Reply{global, 0}) != ls.end())
+      << "LS lacks " << global;
   if (ld != std::vector<Reply>{{"", 0}}) {
     ADD_FAILURE() << "LD failed: the saved parameters were refused ("
                   << (ld.empty() ? std::string("no answer") : ld[0].text) << ")";
@@ -126,7 +130,8 @@ Held inspect(SimProcess& sim, const std::string& dir, const std::vector<uint8_t>
   for (int set = 0; set < 2; ++set) {
     bool all = values.size() == kUserVariables;
     for (int i = 1; all && i <= kUserVariables; ++i) {
-      all = values[static_cast<std::size_t>(i - 1)] == Reply{std::to_string(parameter_value(set, i)), 0};
+      all = values[static_cast<std::size_t>(i - 1)] ==
+            Reply{std::to_string(parameter_value(set, i)), 0};
     }
     if (all) held.parameters = set;
   }
@@ -140,8 +145,8 @@ Held inspect(SimProcess& sim, const std::string& dir, const std::vector<uint8_t>
 
 TEST(transport_sim_kill, SigkillDuringDownloadOrSvNeverLosesOrMixesTheStoredState) {
   const char* seed_text = std::getenv("UPROG_KILL_SEED");
-  const std::uint64_t seed = seed_text != nullptr ? std::strtoull(seed_text, nullptr, 10)
-                                                  : std::random_device{}();
+  const std::uint64_t seed =
+      seed_text != nullptr ? std::strtoull(seed_text, nullptr, 10) : std::random_device{}();
   std::printf("seed %llu (set UPROG_KILL_SEED to replay)\n", static_cast<unsigned long long>(seed));
   std::fflush(stdout);
   std::mt19937_64 rng(seed);
@@ -170,7 +175,8 @@ TEST(transport_sim_kill, SigkillDuringDownloadOrSvNeverLosesOrMixesTheStoredStat
       const int which = i % 2 == 0 ? 1 : 0;
       const auto t0 = Clock::now();
       ASSERT_EQ(send_lines(client, {lines[which].begin(), lines[which].end() - 1}, error),
-                lines[which].size() - 1) << error;
+                lines[which].size() - 1)
+          << error;
       const auto t1 = Clock::now();
       ASSERT_EQ(send_lines(client, {"DL##END"}, error), 1u) << error;
       const auto t2 = Clock::now();
@@ -188,9 +194,10 @@ TEST(transport_sim_kill, SigkillDuringDownloadOrSvNeverLosesOrMixesTheStoredStat
     sv_us = sv[1];
     ASSERT_EQ(sim.stop(), 0);
   }
-  std::printf("a download (%zu bytes, %zu lines) takes %lld us, %lld of them until DL##END is "
-              "sent; UI[1..24]= and SV %lld us\n",
-              images[1].size(), lines[1].size(), download_us, end_sent_us, sv_us);
+  std::printf(
+      "a download (%zu bytes, %zu lines) takes %lld us, %lld of them until DL##END is "
+      "sent; UI[1..24]= and SV %lld us\n",
+      images[1].size(), lines[1].size(), download_us, end_sent_us, sv_us);
 
   // What the last round allows the next boot to find.
   struct Allowed {
@@ -222,7 +229,8 @@ TEST(transport_sim_kill, SigkillDuringDownloadOrSvNeverLosesOrMixesTheStoredStat
     // little after the answer to DL##END; an SV round anywhere up to a little after SV's answer.
     long long low = 0, high = download ? download_us * 6 / 5 : sv_us * 6 / 5;
     if (download && std::uniform_int_distribution<int>(0, 2)(rng) != 0) high = end_sent_us;
-    const auto delay = std::chrono::microseconds(std::uniform_int_distribution<long long>(low, high)(rng));
+    const auto delay =
+        std::chrono::microseconds(std::uniform_int_distribution<long long>(low, high)(rng));
     TestClient client(sim.port);
     const pid_t pid = sim.pid();
     const auto kill_at = Clock::now() + delay;  // counted from here, not from the thread's start
@@ -269,9 +277,10 @@ TEST(transport_sim_kill, SigkillDuringDownloadOrSvNeverLosesOrMixesTheStoredStat
     EXPECT_EQ(sim.reap(), SIGKILL) << "round " << round;
   }
   const auto seconds = std::chrono::duration<double>(Clock::now() - started).count();
-  std::printf("%d kills: %d mid-download, %d during DL##END, %d during SV, %d before the first "
-              "answer, %d after the last; %.1f s\n",
-              kKills, mid_download, during_end, during_sv, before, after, seconds);
+  std::printf(
+      "%d kills: %d mid-download, %d during DL##END, %d during SV, %d before the first "
+      "answer, %d after the last; %.1f s\n",
+      kKills, mid_download, during_end, during_sv, before, after, seconds);
 }
 
 }  // namespace

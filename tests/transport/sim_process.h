@@ -26,7 +26,8 @@ class SimProcess {
     posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
     posix_spawn_file_actions_addclose(&actions, out[0]);
     // The readable wire form unless a test asks for another (its CR LF marks end each line).
-    if (std::find(args.begin(), args.end(), "--wire") == args.end()) args.insert(args.end(), {"--wire", "readable"});
+    if (std::find(args.begin(), args.end(), "--wire") == args.end())
+      args.insert(args.end(), {"--wire", "readable"});
     args.insert(args.begin(), {UPROG_BINARY, "sim"});
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());

@@ -19,7 +19,8 @@ using namespace std::chrono_literals;
 using testing::SimProcess;
 using testing::TestClient;
 
-const std::string kCounterProgram = std::string(UPROG_SOURCE_DIR) + "/tests/transport/data/counter.ehl";
+const std::string kCounterProgram =
+    std::string(UPROG_SOURCE_DIR) + "/tests/transport/data/counter.ehl";
 
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -83,8 +84,8 @@ TEST(transport_sim, EightClientsTwoThousandLinesEachWhileAProgramRuns) {
     });
   }
   for (auto& t : threads) t.join();
-  const auto ms =
-      std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start);
+  const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+      std::chrono::steady_clock::now() - start);
   for (int c = 0; c < kClients; ++c) EXPECT_EQ(correct[c], kLines) << "client " << c;
   ASSERT_TRUE(watcher.send("UI[2];PS\n"));
   const auto after = watcher.line_answers();
@@ -142,19 +143,20 @@ TEST(transport_sim, PtyThroughSocat) {
   SimProcess sim({"--pty", "--safe-boot"});
   ASSERT_TRUE(sim.pty_path.starts_with("/dev/pts/"));
   int status = 0;
-  const auto output = run_shell("printf 'PX=7; PX-3\\r3+4\\r' | timeout 10 socat -t 1 - " +
-                                    sim.pty_path + ",raw,echo=0 2>&1",
-                                &status);
+  const auto output = run_shell(
+      "printf 'PX=7; PX-3\\r3+4\\r' | timeout 10 socat -t 1 - " + sim.pty_path + ",raw,echo=0 2>&1",
+      &status);
   EXPECT_EQ(status, 0) << output;
   EXPECT_EQ(output, ";4;\r\n7;\r\n");
 }
 
 TEST(transport_sim, TermInPipeMode) {
   SimProcess sim({"--listen", "127.0.0.1:0", "--safe-boot"});
-  const std::string term = std::string(UPROG_BINARY) + " term 127.0.0.1:" + std::to_string(sim.port);
+  const std::string term =
+      std::string(UPROG_BINARY) + " term 127.0.0.1:" + std::to_string(sim.port);
   int status = 0;
-  auto output = run_shell("printf 'PX=7; PX-3\\n\\n** a comment\\n(3.2+4)/2\\nAC=-5\\n' | " + term,
-                          &status);
+  auto output =
+      run_shell("printf 'PX=7; PX-3\\n\\n** a comment\\n(3.2+4)/2\\nAC=-5\\n' | " + term, &status);
   EXPECT_EQ(WEXITSTATUS(status), 0);
   EXPECT_EQ(output.substr(0, 11), "4\n3.600000\n");
   EXPECT_TRUE(output.substr(11).starts_with("?21")) << output;
@@ -170,10 +172,13 @@ TEST(transport_sim, TermInPipeMode) {
 // its own), before the answer to the line typed a second later. The values are the program's:
 // level = step*step in %04x, ratio = level/25.
 TEST(transport_sim, TermShowsPdlPrintlEventsAsTheyArrive) {
-  SimProcess sim({"--listen", "127.0.0.1:0", "--program", std::string(UPROG_SOURCE_DIR) + "/examples/pdl/printl_report.pdl"});
-  const std::string term = std::string(UPROG_BINARY) + " term 127.0.0.1:" + std::to_string(sim.port);
+  SimProcess sim({"--listen", "127.0.0.1:0", "--program",
+                  std::string(UPROG_SOURCE_DIR) + "/examples/pdl/printl_report.pdl"});
+  const std::string term =
+      std::string(UPROG_BINARY) + " term 127.0.0.1:" + std::to_string(sim.port);
   int status = 0;
-  const std::string output = run_shell("(printf 'reset\\n'; sleep 1; printf 'step\\n') | " + term + " 2>&1", &status);
+  const std::string output =
+      run_shell("(printf 'reset\\n'; sleep 1; printf 'step\\n') | " + term + " 2>&1", &status);
   EXPECT_EQ(WEXITSTATUS(status), 0);
   const char* const kReports[] = {"step=1 level=0001 ratio=0.04", "step=2 level=0004 ratio=0.16",
                                   "step=3 level=0009 ratio=0.36", "step=4 level=0010 ratio=0.64",
@@ -194,14 +199,14 @@ TEST(transport_sim, DriveFormByteForByte) {
   TestClient client(sim.port);
   ASSERT_TRUE(client.send("PX=7;PX-3\r3+4\rAC=-5\r\rEO=0\rPX;MO\rAC=-5\rEC\r"));
   const std::string expected =
-      "PX=7;;PX-3\r4;"      // echo, answer, echo, answer
+      "PX=7;;PX-3\r4;"  // echo, answer, echo, answer
       "3+4\r7;"
-      "AC=-5\r\x15?;"       // 21: out of the command's range
-      "\r;"                 // an empty line gets the empty answer
-      "EO=0\r;"             // still echoed: the echo was on when its bytes came
-      "7;0;"                // no echo from here on
+      "AC=-5\r\x15?;"  // 21: out of the command's range
+      "\r;"            // an empty line gets the empty answer
+      "EO=0\r;"        // still echoed: the echo was on when its bytes came
+      "7;0;"           // no echo from here on
       "\x15?;"
-      "21;";                // EC names the last error
+      "21;";  // EC names the last error
   EXPECT_EQ(client.raw(expected.size(), 5s), expected);
   EXPECT_EQ(client.raw(1, 300ms), "");  // no line end, no prompt
   // A line too long for the drive is a syntax error (19) there, and the drive goes on.
@@ -214,14 +219,16 @@ TEST(transport_sim, TermAndDownloadSpeakTheDriveForm) {
   const std::string address = "127.0.0.1:" + std::to_string(sim.port);
   int status = 0;
   // Echo on at first, then off: the answers are the same; the error gets the dialect's text.
-  const auto output = run_shell("printf 'PX=7; PX-3\\nAC=-5\\n** a comment\\nEO=0\\nVR\\nPX;PX+1\\n' | " +
-                                    std::string(UPROG_BINARY) + " term " + address,
-                                &status);
+  const auto output =
+      run_shell("printf 'PX=7; PX-3\\nAC=-5\\n** a comment\\nEO=0\\nVR\\nPX;PX+1\\n' | " +
+                    std::string(UPROG_BINARY) + " term " + address,
+                &status);
   EXPECT_EQ(WEXITSTATUS(status), 0) << output;
-  EXPECT_EQ(output, "4\n?21 Value out of the command's range\nuprog simulated Gold drive 1.0\n7\n8\n");
-  const auto download = run_shell(std::string(UPROG_BINARY) + " download " + address + " " + kCounterProgram +
-                                      " --load 2>&1",
-                                  &status);
+  EXPECT_EQ(output,
+            "4\n?21 Value out of the command's range\nuprog simulated Gold drive 1.0\n7\n8\n");
+  const auto download = run_shell(
+      std::string(UPROG_BINARY) + " download " + address + " " + kCounterProgram + " --load 2>&1",
+      &status);
   EXPECT_EQ(WEXITSTATUS(status), 0) << download;
   EXPECT_NE(download.find("loaded into RAM (CC)"), std::string::npos) << download;
 }

@@ -30,8 +30,10 @@ TEST(transport_tcp, WhatTheDriveSendsOnItsOwnReachesEveryHostAsALineOfItsOwn) {
   ASSERT_TRUE(second.send("b\r\n"));
   ASSERT_EQ(second.line_answers(), (std::vector<Reply>{{"b", 0}}));
   server.emit("%P 1 00000000 00000000 hello; world");
-  EXPECT_EQ(first.output_lines(1, 5s), (std::vector<std::string>{"%P 1 00000000 00000000 hello  world"}));
-  EXPECT_EQ(second.output_lines(1, 5s), (std::vector<std::string>{"%P 1 00000000 00000000 hello  world"}));
+  EXPECT_EQ(first.output_lines(1, 5s),
+            (std::vector<std::string>{"%P 1 00000000 00000000 hello  world"}));
+  EXPECT_EQ(second.output_lines(1, 5s),
+            (std::vector<std::string>{"%P 1 00000000 00000000 hello  world"}));
   // An answer after it is still an answer to its own line.
   ASSERT_TRUE(first.send("c\r\n"));
   EXPECT_EQ(first.line_answers(), (std::vector<Reply>{{"c", 0}}));
@@ -63,8 +65,8 @@ TEST(transport_tcp, EightClientsTwoThousandLinesEachAllAnsweredInOrder) {
     });
   }
   for (auto& t : threads) t.join();
-  const auto ms =
-      std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start);
+  const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+      std::chrono::steady_clock::now() - start);
   for (int c = 0; c < kClients; ++c) EXPECT_EQ(correct[c], kLines) << "client " << c;
   EXPECT_EQ(server.lines_handled(), std::uint64_t{kClients} * kLines);
   std::printf("8 clients x 2000 lines: %lld ms\n", static_cast<long long>(ms.count()));
@@ -102,7 +104,8 @@ TEST(transport_tcp, BinaryGarbageGetsErrorsNeverACrash) {
   ASSERT_FALSE(got.empty());
   EXPECT_EQ(got.back(), (Reply{"ping", 0}));
   std::size_t errors = 0;
-  for (const auto& reply : got) errors += reply.error == kErrorBadCharacter || reply.error == kErrorLineTooLong;
+  for (const auto& reply : got)
+    errors += reply.error == kErrorBadCharacter || reply.error == kErrorLineTooLong;
   EXPECT_GT(errors, 100u);
   TestClient other(server.port());
   ASSERT_TRUE(other.send("fine\n"));
@@ -150,7 +153,7 @@ TEST(transport_tcp, ClientThatNeverReadsDoesNotStallOthers) {
   ASSERT_TRUE(other.send("alive\n"));
   EXPECT_EQ(other.line_answers(2s), (std::vector<Reply>{{"alive", 0}}));
   const auto handled = server.lines_handled();
-  EXPECT_LT(handled, kFloodLines);  // back-pressure: the flood is not all taken in
+  EXPECT_LT(handled, kFloodLines);      // back-pressure: the flood is not all taken in
   ::shutdown(flooder.fd(), SHUT_RDWR);  // unblocks the writer with an error
   writer.join();
 }

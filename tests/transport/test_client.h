@@ -97,7 +97,7 @@ class TestClient {
     return closed;
   }
 
- // The raw bytes the drive sends, until `count` have come or the timeout passes (no framing:
+  // The raw bytes the drive sends, until `count` have come or the timeout passes (no framing:
   // for byte-exact tests of a wire form).
   std::string raw(std::size_t count, std::chrono::milliseconds timeout) {
     std::string out;

@@ -1,8 +1,8 @@
 // The execute loop's split of a 64-bit budget count into 32-bit chunks: the chunks add up to
 // the budget exactly, and "no limit" is never spent.
-#include <gtest/gtest.h>
-
 #include "vm/budget_count.h"
+
+#include <gtest/gtest.h>
 
 namespace uprog::vm {
 namespace {

@@ -21,8 +21,8 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <optional>
 #include <fstream>
+#include <optional>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -50,13 +50,15 @@ std::optional<std::string> directive(const std::string& text, const char* patter
 // One refusal the machine reports directly (from start or interrupt): the error a case expects
 // of it (";" KIND ": error NAME"), or none.
 void expect_refusal(const std::string& text, const char* kind, vm::RunError got) {
-  const auto wanted = directive(text, (std::string("; expect ") + kind + R"(: error (\w+))").c_str());
+  const auto wanted =
+      directive(text, (std::string("; expect ") + kind + R"(: error (\w+))").c_str());
   EXPECT_STREQ(vm::run_error_name(got), wanted.value_or("None").c_str()) << kind;
 }
 
 // Starts the case as its directives say and runs it to its end. False when the start was
 // refused (then nothing ran).
-bool run_as_directed(const std::string& text, LoadedProgram& p, uint32_t thread, vm::SliceResult& r) {
+bool run_as_directed(const std::string& text, LoadedProgram& p, uint32_t thread,
+                     vm::SliceResult& r) {
   int routine = p.image.find_routine(directive(text, R"(; entry: (\w+))").value_or("main"));
   if (const auto number = directive(text, R"(; entry number: (\d+))")) routine = std::stoi(*number);
   EXPECT_GE(routine, 0);
@@ -67,7 +69,8 @@ bool run_as_directed(const std::string& text, LoadedProgram& p, uint32_t thread,
     p.machine.run_slice(thread, vm::Budget::unlimited());
     const int event_routine = p.image.find_routine(*event);
     EXPECT_GE(event_routine, 0) << *event;
-    expect_refusal(text, "interrupt", p.machine.interrupt(thread, static_cast<uint32_t>(event_routine)));
+    expect_refusal(text, "interrupt",
+                   p.machine.interrupt(thread, static_cast<uint32_t>(event_routine)));
   }
   r = p.run_to_end(thread);
   return true;
@@ -78,7 +81,8 @@ TEST_P(VmCase, RunsAsExpected) {
   LoadedProgram p;
   ASSERT_TRUE(p.load(text)) << "load failed: verify error " << static_cast<int>(p.status.verify)
                             << " at " << p.status.pc;
-  const uint32_t thread = static_cast<uint32_t>(std::stoul(directive(text, R"(; thread: (\d+))").value_or("0")));
+  const uint32_t thread =
+      static_cast<uint32_t>(std::stoul(directive(text, R"(; thread: (\d+))").value_or("0")));
   vm::SliceResult r{};
   const bool ran = run_as_directed(text, p, thread, r);
 
@@ -118,7 +122,8 @@ TEST_P(VmCase, RunsAsExpected) {
       for (int32_t a; words >> a;) args.push_back(a);
       EXPECT_EQ(p.host.messages[k].arguments(), args) << line;
     } else if (std::regex_match(
-                   line, m, std::regex(R"(; expect (\w+)(?:\[(\d+)\])? = (-?[0-9.eE+-]+|nan)\s*)"))) {
+                   line, m,
+                   std::regex(R"(; expect (\w+)(?:\[(\d+)\])? = (-?[0-9.eE+-]+|nan)\s*)"))) {
       const uint32_t element = m[2].matched ? static_cast<uint32_t>(std::stoul(m[2])) : 0;
       const Value v = p.global(m[1], element);
       const std::string want = m[3];
@@ -141,7 +146,8 @@ TEST(VmCases, TogetherUseEveryOpcode) {
     bytecode::Image image;
     std::vector<Diagnostic> errors;
     ASSERT_TRUE(bytecode::assemble(read(f), f.string(), image, errors)) << f;
-    for (uint32_t pc = 0; pc < image.code.size(); pc += bytecode::op_length(bytecode::word_op(image.code[pc])))
+    for (uint32_t pc = 0; pc < image.code.size();
+         pc += bytecode::op_length(bytecode::word_op(image.code[pc])))
       used.insert(bytecode::op_name(bytecode::word_op(image.code[pc])));
   }
   for (uint32_t i = 0; i < bytecode::kOpCount; ++i) {

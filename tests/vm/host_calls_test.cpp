@@ -102,7 +102,8 @@ TEST(HostCalls, AHostWithoutMessagesRefusesThem) {
   std::vector<uint64_t> memory(vm::Machine::memory_needed(view, {}) / 8 + 1);
   SilentHost host;
   vm::Machine machine;
-  ASSERT_TRUE(machine.load(bytes.data(), bytes.size(), {}, memory.data(), memory.size() * 8, host).ok());
+  ASSERT_TRUE(
+      machine.load(bytes.data(), bytes.size(), {}, memory.data(), memory.size() * 8, host).ok());
   machine.start(0, 0);
   EXPECT_EQ(machine.run_slice(0, Budget::unlimited()).end, SliceEnd::Error);
   EXPECT_EQ(machine.last_error(0), RunError::CommandRefused);
@@ -166,7 +167,8 @@ TEST(HostCalls, ARefusedReadStopsAWait) {
     ASSERT_TRUE(p.load(std::string(R"(
 .routine function "main" in=0 out=0 entry=main
 main:
-)") + (at_slice_start ? "  YIELD\n" : "") + R"(
+)") + (at_slice_start ? "  YIELD\n" : "") +
+                       R"(
   UNTILCK 2 0       ; command 2 refuses every call with 21
   RET
 )"));
@@ -183,4 +185,3 @@ main:
 
 }  // namespace
 }  // namespace uprog::test
-

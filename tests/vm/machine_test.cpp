@@ -470,7 +470,7 @@ other:
   EXPECT_FALSE(p.machine.move_pc(0, 7, scratch.data(), size));  // other's
   EXPECT_FALSE(p.machine.move_pc(0, 2, scratch.data(), 4));     // too little scratch
   EXPECT_EQ(p.machine.pc(0), 3u);
-  ASSERT_TRUE(p.machine.move_pc(0, 2, scratch.data(), size));   // the EOL, entered with both
+  ASSERT_TRUE(p.machine.move_pc(0, 2, scratch.data(), size));  // the EOL, entered with both
   EXPECT_EQ(p.machine.pc(0), 2u);
   p.machine.resume(0);
   EXPECT_EQ(p.machine.run_slice(0, Budget::unlimited()).end, SliceEnd::Finished);
@@ -603,8 +603,9 @@ bad:
 
 TEST(Machine, WideDivisionChecksItsDivisor) {
   LoadedProgram p;
-  ASSERT_TRUE(p.load(".routine function \"main\" in=0 out=0 entry=main\nmain:\n"
-                     "  PUSHI 7\n  PUSHI 7\n  PUSHI 0\n  MULDIV\n  POP\n  RET\n"));
+  ASSERT_TRUE(
+      p.load(".routine function \"main\" in=0 out=0 entry=main\nmain:\n"
+             "  PUSHI 7\n  PUSHI 7\n  PUSHI 0\n  MULDIV\n  POP\n  RET\n"));
   p.machine.start(0, 0);
   EXPECT_EQ(p.run_to_end().end, SliceEnd::Error);
   EXPECT_EQ(p.machine.last_error(0), vm::RunError::DivisionByZero);

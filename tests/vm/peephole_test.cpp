@@ -1,5 +1,7 @@
 // The peephole pass changes no behaviour: every VM case runs to the same end with the same
 // globals before and after it. And it fuses what it should, and nothing control can enter.
+#include "bytecode/peephole.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -8,7 +10,6 @@
 #include <sstream>
 
 #include "bytecode/opcodes.h"
-#include "bytecode/peephole.h"
 #include "testlib/test_files.h"
 #include "vm_fixture.h"
 
@@ -22,7 +23,8 @@ std::string read(const fs::path& p) { return read_whole(p); }
 
 std::vector<Op> ops_of(const bytecode::Image& image) {
   std::vector<Op> ops;
-  for (uint32_t pc = 0; pc < image.code.size(); pc += bytecode::op_length(bytecode::word_op(image.code[pc])))
+  for (uint32_t pc = 0; pc < image.code.size();
+       pc += bytecode::op_length(bytecode::word_op(image.code[pc])))
     ops.push_back(bytecode::word_op(image.code[pc]));
   return ops;
 }
@@ -30,7 +32,8 @@ std::vector<Op> ops_of(const bytecode::Image& image) {
 // The instructions that carry the line-end mark, in order.
 std::vector<Op> marked_ops(const bytecode::Image& image) {
   std::vector<Op> ops;
-  for (uint32_t pc = 0; pc < image.code.size(); pc += bytecode::op_length(bytecode::word_op(image.code[pc])))
+  for (uint32_t pc = 0; pc < image.code.size();
+       pc += bytecode::op_length(bytecode::word_op(image.code[pc])))
     if (bytecode::word_ends_line(image.code[pc])) ops.push_back(bytecode::word_op(image.code[pc]));
   return ops;
 }
@@ -60,7 +63,8 @@ void expect_same_behaviour(const std::string& text, const std::string& name) {
   bytecode::Image image = plain.image;
   bytecode::optimize(image);
   LoadedProgram fused;
-  ASSERT_TRUE(fused.load(bytecode::disassemble(image))) << name << "\n" << bytecode::disassemble(image);
+  ASSERT_TRUE(fused.load(bytecode::disassemble(image))) << name << "\n"
+                                                        << bytecode::disassemble(image);
   const int main_routine = image.find_routine("main");
   ASSERT_GE(main_routine, 0);
   plain.machine.start(0, static_cast<uint32_t>(main_routine));
@@ -72,7 +76,8 @@ void expect_same_behaviour(const std::string& text, const std::string& name) {
   EXPECT_EQ(plain.host.clock_us, fused.host.clock_us) << name;
   for (const auto& g : plain.image.globals) {
     for (uint32_t k = 0; k < g.length; ++k) {
-      EXPECT_EQ(plain.global(g.name, k).bits, fused.global(g.name, k).bits) << name << " " << g.name;
+      EXPECT_EQ(plain.global(g.name, k).bits, fused.global(g.name, k).bits)
+          << name << " " << g.name;
     }
   }
 }
@@ -145,15 +150,15 @@ TEST(Peephole, FusesTheLoop) {
   EXPECT_GT(stats.fused, 0u);
   EXPECT_LT(stats.words_after, stats.words_before);
   const std::vector<Op> expected = {
-      Op::PUSHI, Op::STL, Op::PUSHI, Op::STL,   // the EOL after the STL is its line-end mark
-      Op::JGTLL,                        // LDL i; LDL n; LEI; JZ done
-      Op::REMLK, Op::JZ,                // LDL i; PUSHI 3; REMI — then PUSHI 0; NEI; JZ
-      Op::REMLK, Op::ADDIGEOL,          // LDG total; ...; ADDI; STG total; EOL
-      Op::ADDLK, Op::STL,               // next: is a target, so the EOL before it stays
-      Op::JGTLK,                        // LDL i; PUSHI 50; GTI; JNZ skip
-      Op::JNLTFGK,                      // LDG x; PUSHK 0; LTF; JZ skip
-      Op::ADDFGK, Op::STG,              // LDG x; PUSHK 0; ADDF
-      Op::JMPEOL,                       // skip: EOL; JMP top
+      Op::PUSHI,   Op::STL,      Op::PUSHI, Op::STL,  // the EOL after the STL is its line-end mark
+      Op::JGTLL,                                      // LDL i; LDL n; LEI; JZ done
+      Op::REMLK,   Op::JZ,        // LDL i; PUSHI 3; REMI — then PUSHI 0; NEI; JZ
+      Op::REMLK,   Op::ADDIGEOL,  // LDG total; ...; ADDI; STG total; EOL
+      Op::ADDLK,   Op::STL,       // next: is a target, so the EOL before it stays
+      Op::JGTLK,                  // LDL i; PUSHI 50; GTI; JNZ skip
+      Op::JNLTFGK,                // LDG x; PUSHK 0; LTF; JZ skip
+      Op::ADDFGK,  Op::STG,       // LDG x; PUSHK 0; ADDF
+      Op::JMPEOL,                 // skip: EOL; JMP top
       Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   // STG x; skip: EOL — the EOL is a jump target, so it stays an instruction.
@@ -222,7 +227,7 @@ done:
 
 TEST(Peephole, FusesTwoIntGlobalsCompared) {
   const bytecode::Image image = optimized(kIntGlobalCompares);
-  const std::vector<Op> expected = {Op::STGK, Op::STGK, Op::JCMPGG, Op::INCG,
+  const std::vector<Op> expected = {Op::STGK,   Op::STGK, Op::JCMPGG, Op::INCG,
                                     Op::JCMPGG, Op::INCG, Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   EXPECT_EQ(run_and_read(image, "hits"), 1);  // 4 < 9 holds; 9 >= 4 jumps over the 10
@@ -339,12 +344,12 @@ leave:
 .const float 4.0
 )";
   const bytecode::Image image = optimized(text);
-  const std::vector<Op> expected = {Op::STLK, Op::STLK,      // a = 1.5, b = 4.0
-                                    Op::SUBFLLS,             // c = a - b
-                                    Op::MULFLL, Op::STG,     // out = c * a
-                                    Op::MOVL,                // a = c
-                                    Op::RET,                 // the jumps to hop and done: gone
-                                    Op::PUSHI, Op::STLJEOL,  // r = 4, end of line, to leave
+  const std::vector<Op> expected = {Op::STLK,    Op::STLK,     // a = 1.5, b = 4.0
+                                    Op::SUBFLLS,               // c = a - b
+                                    Op::MULFLL,  Op::STG,      // out = c * a
+                                    Op::MOVL,                  // a = c
+                                    Op::RET,                   // the jumps to hop and done: gone
+                                    Op::PUSHI,   Op::STLJEOL,  // r = 4, end of line, to leave
                                     Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   expect_same_behaviour(text, "locals");
@@ -394,10 +399,10 @@ skip3:
 .const float bits 2143289344
 )";
   const bytecode::Image image = optimized(text);
-  const std::vector<Op> expected = {Op::STLK, Op::STLK, Op::STLK,
-                                    Op::JNLTFLL, Op::STGK,             // a < b: count = 1
-                                    Op::JNGEFLK, Op::STGK,             // q >= 0.5: NaN, skipped
-                                    Op::JNGEFLK, Op::INCG,                   // a >= 0.5: count += 10
+  const std::vector<Op> expected = {Op::STLK,    Op::STLK, Op::STLK,
+                                    Op::JNLTFLL, Op::STGK,  // a < b: count = 1
+                                    Op::JNGEFLK, Op::STGK,  // q >= 0.5: NaN, skipped
+                                    Op::JNGEFLK, Op::INCG,  // a >= 0.5: count += 10
                                     Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   expect_same_behaviour(text, "float compares");
@@ -451,14 +456,13 @@ end:
 .const float 0.5
 )";
   const bytecode::Image image = optimized(text);
-  const std::vector<Op> expected = {Op::STLK, Op::EOL, Op::PUSHI, Op::STL,
-                                    Op::JGTLK,                                  // k > 3
-                                    Op::LDL, Op::ADDIGEOL,                      // total += k
-                                    Op::INCLJEOL,                               // k += 1; back
-                                    Op::JNEGK,                                  // total == 6
-                                    Op::PUSHI, Op::STLJEOL,                     // k = 100; to end
-                                    Op::PUSHI, Op::STL,
-                                    Op::LDL, Op::STG, Op::RET};
+  const std::vector<Op> expected = {Op::STLK,     Op::EOL,      Op::PUSHI, Op::STL,
+                                    Op::JGTLK,                   // k > 3
+                                    Op::LDL,      Op::ADDIGEOL,  // total += k
+                                    Op::INCLJEOL,                // k += 1; back
+                                    Op::JNEGK,                   // total == 6
+                                    Op::PUSHI,    Op::STLJEOL,   // k = 100; to end
+                                    Op::PUSHI,    Op::STL,      Op::LDL,   Op::STG, Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   // STLK is a superinstruction, which carries no mark: its EOL stays.
   EXPECT_EQ(marked_ops(image), (std::vector<Op>{Op::STL})) << bytecode::disassemble(image);
@@ -566,20 +570,20 @@ end:
 )";
   const bytecode::Image image = optimized(text);
   const std::vector<Op> expected = {
-      Op::STGKEOL,                    // i = 1 (the immediate as a constant)
-      Op::STGKEOL,                    // v = 0.5
-      Op::STGKEOL,                    // p = 0.5
-      Op::JGTGK, Op::EOL,             // while i <= 100 (the constant 100)
-      Op::REMGKEOL,                   // r = i % 3
-      Op::JZG,                        // if r <> 0
-      Op::ADDIGG, Op::STGJEOL,        // s = s + r; end of line, to next (STGJEOL, not EOL)
-      Op::MULFGG, Op::STG,            // skip: p = p * v (next: is a target)
-      Op::INCG, Op::JMPEOL,           // next: i = i + 1; end of line, back to top
-      Op::JNLTFGK,                    // done: if p < 0.5
-      Op::LDG2, Op::MULI, Op::STG,    // r = s * i
-      Op::ADDGK, Op::STG,             // s = i - 5
-      Op::JLEGK,                      // if r > 7 (the immediate 7 as an added constant)
-      Op::STGK,                       // v = 1
+      Op::STGKEOL,                         // i = 1 (the immediate as a constant)
+      Op::STGKEOL,                         // v = 0.5
+      Op::STGKEOL,                         // p = 0.5
+      Op::JGTGK,    Op::EOL,               // while i <= 100 (the constant 100)
+      Op::REMGKEOL,                        // r = i % 3
+      Op::JZG,                             // if r <> 0
+      Op::ADDIGG,   Op::STGJEOL,           // s = s + r; end of line, to next (STGJEOL, not EOL)
+      Op::MULFGG,   Op::STG,               // skip: p = p * v (next: is a target)
+      Op::INCG,     Op::JMPEOL,            // next: i = i + 1; end of line, back to top
+      Op::JNLTFGK,                         // done: if p < 0.5
+      Op::LDG2,     Op::MULI,    Op::STG,  // r = s * i
+      Op::ADDGK,    Op::STG,               // s = i - 5
+      Op::JLEGK,                           // if r > 7 (the immediate 7 as an added constant)
+      Op::STGK,                            // v = 1
       Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   // The immediates 1 (stored twice) and 7 became constants of their own; 100 and 0.5 were
@@ -626,10 +630,10 @@ done:
   RET
 )";
   const bytecode::Image image = optimized(text);
-  const std::vector<Op> expected = {Op::JGEGK, Op::EOL,     // while n < 5
-                                    Op::STGKEOL,            // f = 0.0
-                                    Op::INCGEOL,            // n = n + 1
-                                    Op::MOVG, Op::JMPEOL,   // m = n; end of line, back to top
+  const std::vector<Op> expected = {Op::JGEGK,   Op::EOL,     // while n < 5
+                                    Op::STGKEOL,              // f = 0.0
+                                    Op::INCGEOL,              // n = n + 1
+                                    Op::MOVG,    Op::JMPEOL,  // m = n; end of line, back to top
                                     Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   expect_same_behaviour(text, "line-ending counter and constant");
@@ -717,19 +721,19 @@ done:
 )";
   const bytecode::Image image = optimized(text);
   const std::vector<Op> expected = {
-      Op::STGKEOL,                                  // i = 0
-      Op::STGKEOL,                                  // q = 1.0
-      Op::JGEGKEOL,                                 // while i < 10
-      Op::JNGEFGKEOL,                               // if p >= 0.5
-      Op::INCG, Op::JMPEOL,                         // s = s + 1 (else1's EOL: dropped)
-      Op::ADDFGK, Op::STGEOL,                       // p = p + 0.5
-      Op::JNLTFGGEOL,                               // join1: if p < q
-      Op::STGKEOL,                                  // r = 1
-      Op::EOL,                                      // skip2
-      Op::JZGEOL,                                   // if r
-      Op::INCG, Op::JMPEOL,                         // i = i + 1
-      Op::INCG, Op::JMPEOL,                         // skip3 (its EOL dropped): i = i + 1
-      Op::RET};                                     // done (its EOL dropped)
+      Op::STGKEOL,                 // i = 0
+      Op::STGKEOL,                 // q = 1.0
+      Op::JGEGKEOL,                // while i < 10
+      Op::JNGEFGKEOL,              // if p >= 0.5
+      Op::INCG,       Op::JMPEOL,  // s = s + 1 (else1's EOL: dropped)
+      Op::ADDFGK,     Op::STGEOL,  // p = p + 0.5
+      Op::JNLTFGGEOL,              // join1: if p < q
+      Op::STGKEOL,                 // r = 1
+      Op::EOL,                     // skip2
+      Op::JZGEOL,                  // if r
+      Op::INCG,       Op::JMPEOL,  // i = i + 1
+      Op::INCG,       Op::JMPEOL,  // skip3 (its EOL dropped): i = i + 1
+      Op::RET};                    // done (its EOL dropped)
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   expect_same_behaviour(text, "branches that end their lines");
   EXPECT_EQ(run_and_read(image, "i"), 10);
@@ -862,21 +866,21 @@ done:
 )";
   const bytecode::Image image = optimized(text);
   const std::vector<Op> expected = {
-      Op::STGKEOL,                    // v = 2.0
-      Op::JGEGK, Op::EOL,             // while i < 12
-      Op::SUBIGGEOL,                  // d = i - s
-      Op::REMGKEOL,                   // r = i % 5
-      Op::REMGK, Op::STGEOL,          // d = i % 100000: beyond a 16-bit immediate
-      Op::REMGK, Op::ADDIGEOL,        // s = s + i % 7
-      Op::MULFGK, Op::ADDFGEOL,       // p = p + v * 0.5
-      Op::MULFGG, Op::SUBFGEOL,       // q = q - p * v
-      Op::LDG, Op::MULFGK, Op::ADDF, Op::STGEOL,  // t = p + v * 0.5: t is not p
-      Op::ADDFGGEOL,                  // t = p + q
-      Op::MULFKG, Op::STGEOL,         // t = 2.0 * t
-      Op::SUBFGK, Op::STGEOL,         // t = t - 2.0
-      Op::JNGTFGG,                    // if p > q
-      Op::ADDFGK, Op::STG,            // t = t + 0.5
-      Op::INCG, Op::JMPEOL,           // next: i = i + 1
+      Op::STGKEOL,                  // v = 2.0
+      Op::JGEGK,     Op::EOL,       // while i < 12
+      Op::SUBIGGEOL,                // d = i - s
+      Op::REMGKEOL,                 // r = i % 5
+      Op::REMGK,     Op::STGEOL,    // d = i % 100000: beyond a 16-bit immediate
+      Op::REMGK,     Op::ADDIGEOL,  // s = s + i % 7
+      Op::MULFGK,    Op::ADDFGEOL,  // p = p + v * 0.5
+      Op::MULFGG,    Op::SUBFGEOL,  // q = q - p * v
+      Op::LDG,       Op::MULFGK,   Op::ADDF, Op::STGEOL,  // t = p + v * 0.5: t is not p
+      Op::ADDFGGEOL,                                      // t = p + q
+      Op::MULFKG,    Op::STGEOL,                          // t = 2.0 * t
+      Op::SUBFGK,    Op::STGEOL,                          // t = t - 2.0
+      Op::JNGTFGG,                                        // if p > q
+      Op::ADDFGK,    Op::STG,                             // t = t + 0.5
+      Op::INCG,      Op::JMPEOL,                          // next: i = i + 1
       Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   expect_same_behaviour(text, "three-address globals");
@@ -956,16 +960,15 @@ big:
 )";
   const bytecode::Image image = optimized(text);
   const std::vector<Op> expected = {
-      Op::PUSHI, Op::STL, Op::PUSHI, Op::STL,
-      Op::PUSHI, Op::STMLK, Op::EOL,                   // frame[1] = 7
-      Op::ADDLK, Op::STMLK, Op::EOL,                   // frame[2] = base + 2 (a pointer: 6)
-      Op::LDPMLK, Op::RAISE,                           // r = frame[2], in the user memory or the frame
-      Op::ADDMLK, Op::STM,                             // flat: *r = frame[1] - 1 (STM's mark)
-      Op::LDMLK, Op::STMLK,                            // frame[0] = frame[3]
-      Op::PUSHI, Op::LDMLK, Op::STM,                   // seen = frame[1]: the address first
-      Op::JCMPMKEOL,                                   // if (frame[1] < 7), ending its line
-      Op::PUSHI, Op::PUSHI, Op::STM,                   // seen = 1 (not run: frame[1] is 7)
-      Op::EOL,                                         // big's, after the body: it falls into it
+      Op::PUSHI,     Op::STL,   Op::PUSHI, Op::STL, Op::PUSHI, Op::STMLK, Op::EOL,  // frame[1] = 7
+      Op::ADDLK,     Op::STMLK, Op::EOL,  // frame[2] = base + 2 (a pointer: 6)
+      Op::LDPMLK,    Op::RAISE,           // r = frame[2], in the user memory or the frame
+      Op::ADDMLK,    Op::STM,             // flat: *r = frame[1] - 1 (STM's mark)
+      Op::LDMLK,     Op::STMLK,           // frame[0] = frame[3]
+      Op::PUSHI,     Op::LDMLK, Op::STM,  // seen = frame[1]: the address first
+      Op::JCMPMKEOL,                      // if (frame[1] < 7), ending its line
+      Op::PUSHI,     Op::PUSHI, Op::STM,  // seen = 1 (not run: frame[1] is 7)
+      Op::EOL,                            // big's, after the body: it falls into it
       Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   EXPECT_EQ(marked_ops(image), (std::vector<Op>{Op::STM, Op::STM, Op::STM}))
@@ -1020,12 +1023,11 @@ done:
 )";
   const bytecode::Image image = optimized(text);
   const std::vector<Op> expected = {
-      Op::JGTGK, Op::EOL,  // while i <= 9
-      Op::REMGKEOL,        // r = i % 3
-      Op::JZGEOL,          // if r: to end, the line ended (f's EOL is dropped)
-      Op::ADDIGGEOL,       // s = s + r, falling through to end
-      Op::INCG, Op::JMPEOL,
-      Op::RET};
+      Op::JGTGK,     Op::EOL,  // while i <= 9
+      Op::REMGKEOL,            // r = i % 3
+      Op::JZGEOL,              // if r: to end, the line ended (f's EOL is dropped)
+      Op::ADDIGGEOL,           // s = s + r, falling through to end
+      Op::INCG,      Op::JMPEOL, Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   expect_same_behaviour(text, "dead code");
   EXPECT_EQ(run_and_read(image, "s"), 9);  // 1 + 2 + 0, three times
@@ -1075,13 +1077,11 @@ done:
   RET
 )";
   const bytecode::Image image = optimized(text);
-  const std::vector<Op> expected = {
-      Op::JGTGK, Op::EOL,  // while i <= 9
-      Op::INCGEOL,         // r = r + 1
-      Op::JNEGKEOL,        // if r = 3: the line ends on both paths
-      Op::STGKEOL,         // r = 0
-      Op::INCG, Op::JMPEOL,
-      Op::RET};
+  const std::vector<Op> expected = {Op::JGTGK,    Op::EOL,  // while i <= 9
+                                    Op::INCGEOL,            // r = r + 1
+                                    Op::JNEGKEOL,           // if r = 3: the line ends on both paths
+                                    Op::STGKEOL,            // r = 0
+                                    Op::INCG,     Op::JMPEOL, Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   expect_same_behaviour(text, "an arm ended in its store");
   EXPECT_EQ(run_and_read(image, "r"), 1);  // ten steps: 1, 2, 0, 1, 2, 0, 1, 2, 0, 1
@@ -1113,8 +1113,8 @@ inside2:
   image.routines.push_back({"other", bytecode::RoutineKind::Label, 0, 0, {}, 1});
   bytecode::optimize(image);
   // After inside2 (entered), `LDG g; STG h; EOL` is one move that ends the line.
-  const std::vector<Op> expected = {Op::LDG, Op::PUSHI, Op::ADDI, Op::STG, Op::JZG,
-                                    Op::MOVG, Op::RET};
+  const std::vector<Op> expected = {Op::LDG, Op::PUSHI, Op::ADDI, Op::STG,
+                                    Op::JZG, Op::MOVG,  Op::RET};
   EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
 }
 
@@ -1165,7 +1165,8 @@ TEST(Peephole, WaitsOnACommandInPlace) {
                                     Op::PUSHI,   Op::CMDSET, Op::UNTILCK, Op::RET};
   ASSERT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
   std::vector<uint32_t> tests;
-  for (uint32_t pc = 0; pc < image.code.size(); pc += bytecode::op_length(bytecode::word_op(image.code[pc])))
+  for (uint32_t pc = 0; pc < image.code.size();
+       pc += bytecode::op_length(bytecode::word_op(image.code[pc])))
     if (bytecode::word_op(image.code[pc]) == Op::UNTILCK) tests.push_back(image.code[pc + 1]);
   const std::vector<uint32_t> packed = {bytecode::pack_command_test(0, 5, 3),   // >= 3
                                         bytecode::pack_command_test(0, 5, 6),   // >= 6

@@ -114,7 +114,8 @@ TEST(Round, ALineThatCallsTheHostEndsIt) {
   Round round{kThreads};
   const auto r = p.machine.run_round(round, kOneLine);
   EXPECT_EQ(r.end, SliceEnd::LineEnd);
-  EXPECT_EQ(round.at, 2u);  // thread 2's line ran whole; thread 3 is the schedule's to look at again
+  EXPECT_EQ(round.at,
+            2u);  // thread 2's line ran whole; thread 3 is the schedule's to look at again
   EXPECT_EQ(p.global("order").i, 12);
 }
 
@@ -205,7 +206,8 @@ TEST(Round, ASliceRunFromInsideAHostCallRunsAlone) {
   NestingHost host;
   vm::Machine machine;
   host.machine = &machine;
-  ASSERT_TRUE(machine.load(bytes.data(), bytes.size(), {}, memory.data(), memory.size() * 8, host).ok());
+  ASSERT_TRUE(
+      machine.load(bytes.data(), bytes.size(), {}, memory.data(), memory.size() * 8, host).ok());
   ASSERT_EQ(machine.start(1, kOne), vm::RunError::None);
   ASSERT_EQ(machine.start(2, kReads), vm::RunError::None);
   ASSERT_EQ(machine.start(3, kThree), vm::RunError::None);

@@ -45,14 +45,16 @@ class ScriptedHost final : public vm::Host {
     registers[index] = value;
     return done(command);
   }
-  vm::CommandStatus execute(uint32_t command, int32_t index, const Value* args, uint32_t n) override {
+  vm::CommandStatus execute(uint32_t command, int32_t index, const Value* args,
+                            uint32_t n) override {
     if (command != 3 && command != 4) return 21;
     ++runs;
     action_index = index;
     for (uint32_t i = 0; i < n; ++i) registers[0].i += args[i].i;
     return done(command);
   }
-  vm::CommandStatus message(uint32_t thread, uint32_t text, const Value* args, uint32_t n) override {
+  vm::CommandStatus message(uint32_t thread, uint32_t text, const Value* args,
+                            uint32_t n) override {
     if (message_count < kKeptMessages) {
       Message& m = messages[message_count];
       m.thread = thread;
@@ -100,7 +102,8 @@ struct LoadedProgram {
     bytecode::ImageView view;
     bytecode::load_image(bytes.data(), bytes.size(), view);
     memory.assign(vm::Machine::memory_needed(view, config) / 8 + 1, 0);
-    status = machine.load(bytes.data(), bytes.size(), config, memory.data(), memory.size() * 8, host);
+    status =
+        machine.load(bytes.data(), bytes.size(), config, memory.data(), memory.size() * 8, host);
     return status.ok();
   }
 

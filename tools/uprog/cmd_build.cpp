@@ -47,17 +47,21 @@ int build(const BuildOptions& o) {
   bool written = false;
   if (o.emit == "asm") {
     if (!r.image) {
-      fmt::print(stderr, "uprog build: the {} compiler makes no image to show as assembly\n", d->name());
+      fmt::print(stderr, "uprog build: the {} compiler makes no image to show as assembly\n",
+                 d->name());
       return 1;
     }
     const std::string text = bytecode::disassemble(*r.image);
-    written = write_file_atomically(o.output.empty() ? o.input + ".s" : o.output, text.data(), text.size(), &error);
+    written = write_file_atomically(o.output.empty() ? o.input + ".s" : o.output, text.data(),
+                                    text.size(), &error);
   } else {
     const std::string out = o.output.empty() ? d->stored_path(o.input) : o.output;
     written = write_file_atomically(out, r.stored_form.data(), r.stored_form.size(), &error);
-    // The debug map beside it (PUP: X.cup.json), for `uprog sim --program X.cup` to debug by source.
+    // The debug map beside it (PUP: X.cup.json), for `uprog sim --program X.cup` to debug by
+    // source.
     if (written && !r.debug_map.empty())
-      written = write_file_atomically(out + ".json", r.debug_map.data(), r.debug_map.size(), &error);
+      written =
+          write_file_atomically(out + ".json", r.debug_map.data(), r.debug_map.size(), &error);
   }
   if (!written) {
     fmt::print(stderr, "uprog build: {}\n", error);
@@ -69,8 +73,9 @@ int build(const BuildOptions& o) {
 void add_build(Options& cmd, Action& action) {
   auto o = std::make_shared<BuildOptions>();
   cmd.option("FILE", o->input, "source file").required();
-  cmd.option("-o,--output", o->output, "output file (default FILE plus the stored form's extension, "
-                                            "e.g. FILE.upi, or FILE.s with --emit asm)");
+  cmd.option("-o,--output", o->output,
+             "output file (default FILE plus the stored form's extension, "
+             "e.g. FILE.upi, or FILE.s with --emit asm)");
   cmd.option("--emit", o->emit, "image (the stored form) or asm").one_of({"image", "asm"});
   add_dialect_option(cmd, o->dialect);
   cmd.on_chosen([&action, o] { action = [o] { return build(*o); }; });

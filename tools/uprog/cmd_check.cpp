@@ -41,8 +41,10 @@ int check(const CheckOptions& o) {
     errors = errors || !r.ok();
     all.insert(all.end(), r.diagnostics.begin(), r.diagnostics.end());
   }
-  if (o.format == "json") fmt::print("{}\n", format_json(all));
-  else fmt::print("{}", format_text(all));
+  if (o.format == "json")
+    fmt::print("{}\n", format_json(all));
+  else
+    fmt::print("{}", format_text(all));
   return errors ? 1 : 0;
 }
 
@@ -51,7 +53,9 @@ void add_check(Options& cmd, Action& action) {
   cmd.option("FILE", o->files, "source files").required();
   cmd.option("--format", o->format, "text or json").one_of({"text", "json"});
   add_dialect_option(cmd, o->dialect);
-  cmd.option("-D", o->defines, "NAME=value: a name the preprocessor sees with that value (ST: a drive parameter in #IF)");
+  cmd.option(
+      "-D", o->defines,
+      "NAME=value: a name the preprocessor sees with that value (ST: a drive parameter in #IF)");
   cmd.on_chosen([&action, o] { action = [o] { return check(*o); }; });
 }
 

@@ -56,9 +56,9 @@ struct Remote {
 };
 
 bool connect_remote(Remote& remote, const std::string& host, uint16_t port, std::string& error) {
-  const std::string where =
-      host.find(':') != std::string::npos ? "[" + host + "]:" + std::to_string(port)
-                                          : host + ":" + std::to_string(port);
+  const std::string where = host.find(':') != std::string::npos
+                                ? "[" + host + "]:" + std::to_string(port)
+                                : host + ":" + std::to_string(port);
   return transport::connect_tcp(remote.io, where, remote.socket, error);
 }
 
@@ -74,8 +74,9 @@ bool relay_from_remote(Remote& remote, debug::DapServer& server, int out, bool& 
     if (m.is_discarded()) continue;
     if (m.value("type", "") == "response" && m.value("command", "") == "initialize") continue;
     m["seq"] = server.next_seq();
-    broken = broken || !write_all(out, debug::frame_message(m.dump(
-                                           -1, ' ', false, nlohmann::json::error_handler_t::replace)));
+    broken =
+        broken || !write_all(out, debug::frame_message(m.dump(
+                                      -1, ' ', false, nlohmann::json::error_handler_t::replace)));
   }
   return remote.reader.error().empty();
 }
@@ -169,9 +170,8 @@ int listen_and_serve(const std::string& where) {
 
 void add_options(Options& cmd, Action& action) {
   auto listen = std::make_shared<std::string>();
-  cmd.option(
-      "--listen", *listen,
-      "HOST:PORT: serve one client over TCP instead of stdin/stdout (port 0 picks one)");
+  cmd.option("--listen", *listen,
+             "HOST:PORT: serve one client over TCP instead of stdin/stdout (port 0 picks one)");
   cmd.on_chosen([&action, listen] {
     action = [listen] {
       return listen->empty() ? serve(STDIN_FILENO, STDOUT_FILENO) : listen_and_serve(*listen);

@@ -11,8 +11,8 @@
 #include "bytecode/image.h"
 #include "commands.h"
 #include "dialect_choice.h"
-#include "support/files.h"
 #include "drive_link.h"
+#include "support/files.h"
 
 namespace uprog::cli {
 namespace {
@@ -26,7 +26,8 @@ struct DownloadOptions {
 };
 
 // What to send: FILE read as is when it is a stored form, else compiled in its dialect.
-std::optional<std::vector<uint8_t>> stored_form_of(const std::string& path, const dialect::Dialect& d) {
+std::optional<std::vector<uint8_t>> stored_form_of(const std::string& path,
+                                                   const dialect::Dialect& d) {
   if (path.ends_with(d.stored_extension())) {
     std::string error;
     auto bytes = read_binary_file(path, &error);
@@ -40,8 +41,8 @@ std::optional<std::vector<uint8_t>> stored_form_of(const std::string& path, cons
 }
 
 // Sends `line` and expects no error; prints the drive's error otherwise.
-bool send_expecting_success(transport::DriveClient& link, const dialect::Dialect& d, const std::string& line,
-                            std::chrono::milliseconds timeout) {
+bool send_expecting_success(transport::DriveClient& link, const dialect::Dialect& d,
+                            const std::string& line, std::chrono::milliseconds timeout) {
   std::string error;
   const auto replies = link.exchange(line, timeout, error);
   if (!replies) {
@@ -89,15 +90,18 @@ int run_download(const DownloadOptions& options) {
 
 void add_download(Options& cmd, Action& action) {
   auto options = std::make_shared<DownloadOptions>();
-  cmd.option("ADDRESS", options->address, "HOST:PORT of the drive (uprog sim prints it)").required();
+  cmd.option("ADDRESS", options->address, "HOST:PORT of the drive (uprog sim prints it)")
+      .required();
   cmd.option("FILE", options->file, "source, or a stored form such as a .upi image").required();
   add_dialect_option(cmd, options->dialect);
-  cmd.flag("--load", options->load, "then load the program to run, with the dialect's load command");
+  cmd.flag("--load", options->load,
+           "then load the program to run, with the dialect's load command");
   cmd.option("--timeout", options->timeout_s, "seconds to wait for each answer (default 10)");
   cmd.on_chosen([&action, options] { action = [options] { return run_download(*options); }; });
 }
 
-const Subcommand kDownload("download", "Download a program into a running drive (uprog sim)", add_download);
+const Subcommand kDownload("download", "Download a program into a running drive (uprog sim)",
+                           add_download);
 
 }  // namespace
 }  // namespace uprog::cli

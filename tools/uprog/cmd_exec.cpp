@@ -8,8 +8,8 @@
 
 #include "bytecode/assembly.h"
 #include "bytecode/image.h"
-#include "dialect/loaded_program.h"
 #include "commands.h"
+#include "dialect/loaded_program.h"
 #include "support/diagnostic.h"
 #include "support/files.h"
 #include "support/format_message.h"
@@ -80,7 +80,8 @@ int run(const std::string& path, const std::string& entry) {
   }
 
   BareHost host(image.texts);
-  const auto program = dialect::LoadedProgram::load(std::move(*bytes), vm::MachineConfig{}, host, &error, false);
+  const auto program =
+      dialect::LoadedProgram::load(std::move(*bytes), vm::MachineConfig{}, host, &error, false);
   if (!program) {
     fmt::print(stderr, "uprog exec: {}: {}\n", path, error);
     return 1;
@@ -102,8 +103,7 @@ int run(const std::string& path, const std::string& entry) {
                static_cast<int>(machine.last_error(0)), vm::run_error_text(machine.last_error(0)),
                machine.pc(0));
   } else {
-    fmt::print("{}: finished after {} µs of virtual time\n", entry,
-               host.now_us());
+    fmt::print("{}: finished after {} µs of virtual time\n", entry, host.now_us());
   }
   for (uint32_t g = 0; g < image.globals.size(); ++g) {
     const auto& global = image.globals[g];
@@ -124,7 +124,8 @@ void add_exec(Options& cmd, Action& action) {
   auto entry = std::make_shared<std::string>("main");
   cmd.option("FILE", *input, "image (.upi) or assembly (.s)").required();
   cmd.option("--entry", *entry, "routine to start").show_default();
-  cmd.on_chosen([&action, input, entry] { action = [input, entry] { return run(*input, *entry); }; });
+  cmd.on_chosen(
+      [&action, input, entry] { action = [input, entry] { return run(*input, *entry); }; });
 }
 
 const Subcommand kExec("exec", "Run an image or assembly file on the bare VM", add_exec);

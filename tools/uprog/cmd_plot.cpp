@@ -32,7 +32,8 @@ int plot(const PlotOptions& o) {
     fmt::print(stderr, "uprog plot: {}: {}\n", o.csv, error);
     return 2;
   }
-  const std::string title = o.title.empty() ? std::filesystem::path(o.csv).filename().string() : o.title;
+  const std::string title =
+      o.title.empty() ? std::filesystem::path(o.csv).filename().string() : o.title;
   if (!plot_recording(*r, title, o.out, &error)) {
     fmt::print(stderr, "uprog plot: {}\n", error);
     return 2;
@@ -43,7 +44,8 @@ int plot(const PlotOptions& o) {
 
 void add_plot(Options& cmd, Action& action) {
   auto o = std::make_shared<PlotOptions>();
-  cmd.option("RECORDING", o->csv, "a recording's CSV file (uprog run --record ... --csv)").required();
+  cmd.option("RECORDING", o->csv, "a recording's CSV file (uprog run --record ... --csv)")
+      .required();
   cmd.option("-o,--output", o->out, "the picture: FILE.png or FILE.svg").required();
   cmd.option("--title", o->title, "the plot's title (default: the recording's file name)");
   cmd.on_chosen([&action, o] { action = [o] { return plot(*o); }; });

@@ -13,13 +13,13 @@
 #include "commands.h"
 #include "controller/controller.h"
 #include "dialect_choice.h"
-#include "drive_shape.h"
 #include "drive/axis.h"
 #include "drive/recording_csv.h"
+#include "drive_shape.h"
 #include "plot_recording.h"
+#include "support/files.h"
 #include "transcript/recording_options.h"
 #include "transcript/transcript.h"
-#include "support/files.h"
 
 namespace uprog::cli {
 namespace {
@@ -32,13 +32,13 @@ struct RunOptions {
   std::string duration;  // empty: until the program has ended and the axis is still
   std::string limit = "60s";
   std::string budget = "1";
-  std::vector<std::string> inputs;  // N=LEVEL@TIME
-  std::vector<std::string> faults;  // NAME@TIME
+  std::vector<std::string> inputs;    // N=LEVEL@TIME
+  std::vector<std::string> faults;    // NAME@TIME
   std::vector<std::string> switches;  // N=FROM:TO
-  std::string record;               // PX,VX,myvar
+  std::string record;                 // PX,VX,myvar
   std::string trigger = "immediate";
   std::string pretrigger = "0";
-  std::string length;               // empty: the whole run (immediate, no pre-trigger) or 1000
+  std::string length;  // empty: the whole run (immediate, no pre-trigger) or 1000
   std::string gap = "1";
   std::string csv;
   std::string plot;
@@ -82,7 +82,8 @@ bool parse_schedule(const RunOptions& o, std::vector<Scheduled>& out) {
     e.fault = s.substr(0, at);
     out.push_back(e);
   }
-  std::stable_sort(out.begin(), out.end(), [](const Scheduled& a, const Scheduled& b) { return a.at_us < b.at_us; });
+  std::stable_sort(out.begin(), out.end(),
+                   [](const Scheduled& a, const Scheduled& b) { return a.at_us < b.at_us; });
   return true;
 }
 
@@ -95,8 +96,10 @@ bool place_switches(const RunOptions& o, controller::Controller& drive) {
     char tail = 0;
     if (std::sscanf(s.c_str(), "%d=%lf:%lf%c", &n, &from, &to, &tail) != 3 || n < 1 || n > 6 ||
         !std::isfinite(from) || !std::isfinite(to) || !(from <= to)) {
-      fmt::print(stderr, "uprog run: --switch {}: expected N=FROM:TO, N 1..6, FROM <= TO in motor "
-                 "counts, e.g. 5=40000:42000\n", s);
+      fmt::print(stderr,
+                 "uprog run: --switch {}: expected N=FROM:TO, N 1..6, FROM <= TO in motor "
+                 "counts, e.g. 5=40000:42000\n",
+                 s);
       return false;
     }
     drive.axis().place_position_switch(n, from, to);
@@ -109,12 +112,14 @@ std::string shown(const controller::Answer& a) {
 }
 
 // Arms the drive's recorder for --record before any time passes; "" or why not.
-std::string arm_recorder(controller::Controller& drive, const RunOptions& o, uint64_t duration_us, bool& length_given) {
+std::string arm_recorder(controller::Controller& drive, const RunOptions& o, uint64_t duration_us,
+                         bool& length_given) {
   transcript::RecordRequest request;
   request.channels = o.record;
   request.trigger = o.trigger;
   request.early_trigger = true;  // a BG right after the start still gets its recording
-  if (!transcript::parse_count(o.pretrigger, 100, request.pretrigger_percent)) return "--pretrigger takes 0..100";
+  if (!transcript::parse_count(o.pretrigger, 100, request.pretrigger_percent))
+    return "--pretrigger takes 0..100";
   if (!transcript::parse_count(o.gap, 1u << 20, request.gap_cycles) || request.gap_cycles == 0)
     return "--gap takes a number of servo cycles, 1 or more";
   length_given = !o.length.empty();
@@ -123,22 +128,28 @@ std::string arm_recorder(controller::Controller& drive, const RunOptions& o, uin
       return "--length takes a number of samples, 1 or more";
   } else if (o.trigger == "immediate" && request.pretrigger_percent == 0) {
     // The whole run, as far as the recorder's memory goes.
-    const uint64_t cycles = duration_us / std::max<uint64_t>(drive.axis().period_us(), 1) / request.gap_cycles + 1;
-    const size_t channels = static_cast<size_t>(std::count(o.record.begin(), o.record.end(), ',') + 1);
-    request.length = static_cast<uint32_t>(std::min<uint64_t>(cycles, drive::kMaxRecorderWords / channels));
+    const uint64_t cycles =
+        duration_us / std::max<uint64_t>(drive.axis().period_us(), 1) / request.gap_cycles + 1;
+    const size_t channels =
+        static_cast<size_t>(std::count(o.record.begin(), o.record.end(), ',') + 1);
+    request.length =
+        static_cast<uint32_t>(std::min<uint64_t>(cycles, drive::kMaxRecorderWords / channels));
   }
   drive::RecorderSettings settings;
-  if (std::string why = transcript::recorder_settings(drive, request, settings); !why.empty()) return "--record: " + why;
+  if (std::string why = transcript::recorder_settings(drive, request, settings); !why.empty())
+    return "--record: " + why;
   std::string why;
   if (!drive.recorder().arm(settings, &why)) return "--record: " + why;
   return {};
 }
 
 // After the run: the recording to --csv, --plot and --expect; 0, or the exit code.
-int finish_recording(controller::Controller& drive, const RunOptions& o, const std::vector<drive::Tolerance>& tolerances) {
+int finish_recording(controller::Controller& drive, const RunOptions& o,
+                     const std::vector<drive::Tolerance>& tolerances) {
   const std::optional<drive::Recording> r = drive.recorder().recording(drive.axis().period_us());
   if (!r) {
-    fmt::print(stderr, "uprog run: the recorder was never triggered ({}), nothing recorded\n", o.trigger);
+    fmt::print(stderr, "uprog run: the recorder was never triggered ({}), nothing recorded\n",
+               o.trigger);
     return 4;
   }
   std::string error;
@@ -158,7 +169,8 @@ int finish_recording(controller::Controller& drive, const RunOptions& o, const s
   }
   if (o.expect.empty()) return 0;
   const std::optional<std::string> text = read_text_file(o.expect, &error);
-  const std::optional<drive::Recording> expected = text ? drive::read_recording_csv(*text, &error) : std::nullopt;
+  const std::optional<drive::Recording> expected =
+      text ? drive::read_recording_csv(*text, &error) : std::nullopt;
   if (!expected) {
     fmt::print(stderr, "uprog run: --expect {}: {}\n", o.expect, error);
     return 2;
@@ -181,7 +193,8 @@ int run(const RunOptions& o) {
   } else {
     const long n = std::strtol(o.budget.c_str(), nullptr, 10);
     if (n <= 0 || std::to_string(n) != o.budget) {
-      fmt::print(stderr, "uprog run: --budget takes a positive number of lines per cycle or 'unlimited'\n");
+      fmt::print(stderr,
+                 "uprog run: --budget takes a positive number of lines per cycle or 'unlimited'\n");
       return 2;
     }
     copts.timing.lines_per_cycle = static_cast<uint32_t>(n);
@@ -197,7 +210,8 @@ int run(const RunOptions& o) {
   if (!parse_schedule(o, schedule)) return 2;
   const bool recording = !o.record.empty();
   if (recording && o.csv.empty() && o.plot.empty() && o.expect.empty()) {
-    fmt::print(stderr, "uprog run: --record needs --csv OUT, --plot FILE.png or --expect REFERENCE.csv\n");
+    fmt::print(stderr,
+               "uprog run: --record needs --csv OUT, --plot FILE.png or --expect REFERENCE.csv\n");
     return 2;
   }
   std::vector<drive::Tolerance> tolerances;
@@ -245,18 +259,21 @@ int run(const RunOptions& o) {
   // the axis is at rest (in position, or its motor off): what the motor did is then complete.
   const auto idle = [&] {
     // A recording of a given length goes on after the trigger until it is complete.
-    const bool recording_on = length_given && drive.recorder().state() == drive::RecorderState::kTriggered;
-    return until_idle && !drive.program_running() && next == schedule.size() && drive.axis().at_rest() &&
-           !recording_on;
+    const bool recording_on =
+        length_given && drive.recorder().state() == drive::RecorderState::kTriggered;
+    return until_idle && !drive.program_running() && next == schedule.size() &&
+           drive.axis().at_rest() && !recording_on;
   };
   while (drive.now_us() - start < duration_us && !idle()) {
     while (next < schedule.size() && schedule[next].at_us <= drive.now_us() - start) {
       const Scheduled& e = schedule[next++];
       if (e.fault.empty()) {
         drive.set_input_level(e.input, e.level);
-        fmt::print("[{:10.3f} ms] input {} = {}\n", static_cast<double>(drive.now_us()) / 1000.0, e.input, e.level ? 1 : 0);
+        fmt::print("[{:10.3f} ms] input {} = {}\n", static_cast<double>(drive.now_us()) / 1000.0,
+                   e.input, e.level ? 1 : 0);
       } else if (drive.inject_fault(e.fault)) {
-        fmt::print("[{:10.3f} ms] fault {}\n", static_cast<double>(drive.now_us()) / 1000.0, e.fault);
+        fmt::print("[{:10.3f} ms] fault {}\n", static_cast<double>(drive.now_us()) / 1000.0,
+                   e.fault);
       } else {
         fmt::print(stderr, "uprog run: no fault named '{}'\n", e.fault);
         return 2;
@@ -269,7 +286,8 @@ int run(const RunOptions& o) {
   if (recording) recording_result = finish_recording(drive, o, tolerances);
   fmt::print("after {:.3f} ms: {}", static_cast<double>(drive.now_us() - start) / 1000.0,
              drive.firmware().state_summary());
-  if (drive.program_error() != 0) fmt::print(" error={} ({})", drive.program_error(), drive.program_error_text());
+  if (drive.program_error() != 0)
+    fmt::print(" error={} ({})", drive.program_error(), drive.program_error_text());
   fmt::print("\n");
   for (const std::string& line : o.then) {
     for (const controller::Answer& a : drive.send(line)) fmt::print("{}\n", shown(a));
@@ -283,27 +301,33 @@ void add_run(Options& cmd, Action& action) {
   auto o = std::make_shared<RunOptions>();
   cmd.option("FILE", o->file, "source file").required();
   add_dialect_option(cmd, o->dialect);
-  cmd.option("--entry", o->entry, "where to start (a routine of the program; default: where its dialect starts one)");
+  cmd.option("--entry", o->entry,
+             "where to start (a routine of the program; default: where its dialect starts one)");
   cmd.option("--for", o->duration,
-                  "virtual time to run (default: until the program has ended and the axis is still)");
-  cmd.option("--limit", o->limit, "without --for, the longest virtual time to run")
-      .show_default();
+             "virtual time to run (default: until the program has ended and the axis is still)");
+  cmd.option("--limit", o->limit, "without --for, the longest virtual time to run").show_default();
   add_drive_shape_options(cmd, o->shape);
   cmd.option("--budget", o->budget, "source lines per servo cycle, or 'unlimited' (default 1)");
   cmd.option("--input", o->inputs, "N=LEVEL@TIME: set digital input N at TIME");
   cmd.option("--switch", o->switches,
-                  "N=FROM:TO: input N is high while the motor lies in [FROM, TO] counts (a cam)");
+             "N=FROM:TO: input N is high while the motor lies in [FROM, TO] counts (a cam)");
   cmd.option("--fault", o->faults, "NAME@TIME: latch a drive fault at TIME");
-  cmd.option("--record", o->record, "comma-separated channels for the drive's recorder: signals and globals (PX,VX,myvar)");
+  cmd.option(
+      "--record", o->record,
+      "comma-separated channels for the drive's recorder: signals and globals (PX,VX,myvar)");
   cmd.option("--trigger", o->trigger,
-                  "immediate, begin, rising:CH:LEVEL, falling:CH:LEVEL, leave:CH:LOW:HIGH, enter:CH:LOW:HIGH, input:N:rise|fall")
+             "immediate, begin, rising:CH:LEVEL, falling:CH:LEVEL, leave:CH:LOW:HIGH, "
+             "enter:CH:LOW:HIGH, input:N:rise|fall")
       .show_default();
-  cmd.option("--pretrigger", o->pretrigger, "percent of the recording before the trigger").show_default();
-  cmd.option("--length", o->length, "samples per channel (default: the whole run with an immediate trigger, else 1000)");
+  cmd.option("--pretrigger", o->pretrigger, "percent of the recording before the trigger")
+      .show_default();
+  cmd.option("--length", o->length,
+             "samples per channel (default: the whole run with an immediate trigger, else 1000)");
   cmd.option("--gap", o->gap, "servo cycles between samples").show_default();
   cmd.option("--csv", o->csv, "where the recording goes (docs/recorder.md, \"The CSV file\")");
   cmd.option("--plot", o->plot, "draw the recording: FILE.png or FILE.svg");
-  cmd.option("--expect", o->expect, "a reference recording (CSV): the run fails where this one differs");
+  cmd.option("--expect", o->expect,
+             "a reference recording (CSV): the run fails where this one differs");
   cmd.option("--tolerance", o->tolerances, "CHANNEL=VALUE: how far --expect lets a channel differ");
   cmd.option("--then", o->then, "a command line sent after the run; its answers are printed");
   cmd.on_chosen([&action, o] { action = [o] { return run(*o); }; });

@@ -1,8 +1,8 @@
 // `uprog sim`: the simulated drive served to hosts over TCP and/or a pseudo-terminal, its virtual
 // time paced to the wall clock. Stops cleanly on SIGINT/SIGTERM. See docs/protocol.md.
-#include <algorithm>
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -12,13 +12,13 @@
 #include "controller/controller.h"
 #include "dialect_choice.h"
 #include "drive_shape.h"
+#include "sim_debugger.h"
 #include "support/files.h"
 #include "transport/controller_service.h"
 #include "transport/pacer.h"
 #include "transport/pty_server.h"
-#include "transport/udp_server.h"
 #include "transport/tcp_server.h"
-#include "sim_debugger.h"
+#include "transport/udp_server.h"
 
 namespace uprog::cli {
 
@@ -69,7 +69,8 @@ bool install_program(controller::Controller& drive, const SimOptions& options) {
     }
     // `uprog build`'s debug map beside the stored form (PUP: X.cup.json), for the debugger.
     if (std::filesystem::exists(path + ".json")) {
-      if (const auto map = read_text_file(path + ".json", &error)) drive.firmware().set_debug_map(*map);
+      if (const auto map = read_text_file(path + ".json", &error))
+        drive.firmware().set_debug_map(*map);
     }
   } else {
     std::vector<Diagnostic> diagnostics;
@@ -100,8 +101,8 @@ int run_sim(const SimOptions& options) {
   asio::ip::tcp::endpoint endpoint;
   std::string error;
   const bool listen = !options.listen.empty() || (!options.pty && options.udp.empty());
-  if (listen && !transport::parse_endpoint(options.listen.empty() ? "127.0.0.1:5025" : options.listen,
-                                           endpoint, error)) {
+  if (listen && !transport::parse_endpoint(
+                    options.listen.empty() ? "127.0.0.1:5025" : options.listen, endpoint, error)) {
     fmt::print(stderr, "uprog sim: {}\n", error);
     return 2;
   }
@@ -111,7 +112,8 @@ int run_sim(const SimOptions& options) {
   controller_options.state_dir = options.state_dir;
   controller_options.safe_boot = options.safe_boot;
   apply(options.shape, controller_options);
-  controller_options.wire_style = options.wire == "readable" ? dialect::WireStyle::kReadable : dialect::WireStyle::kDrive;
+  controller_options.wire_style =
+      options.wire == "readable" ? dialect::WireStyle::kReadable : dialect::WireStyle::kDrive;
   controller::Controller drive(controller_options);
   for (const auto& message : drive.boot_messages()) fmt::print(stderr, "uprog sim: {}\n", message);
   if (!options.program.empty() && !install_program(drive, options)) return 1;
@@ -157,8 +159,8 @@ int run_sim(const SimOptions& options) {
       debugger = std::make_unique<SimDebugger>(io, drive, service, dap_endpoint);
       const auto where = debugger->local_endpoint();
       const auto address = where.address().to_string();
-      fmt::print("debugger on tcp {}:{}\n",
-                 where.address().is_v6() ? "[" + address + "]" : address, where.port());
+      fmt::print("debugger on tcp {}:{}\n", where.address().is_v6() ? "[" + address + "]" : address,
+                 where.port());
     }
   } catch (const boost::system::system_error& e) {
     fmt::print(stderr, "uprog sim: {}\n", e.what());
@@ -183,27 +185,26 @@ int run_sim(const SimOptions& options) {
   return 0;
 }
 
-
 void add_sim(Options& cmd, Action& action) {
   auto options = std::make_shared<SimOptions>();
   cmd.option("--listen", options->listen,
-                  "HOST:PORT to listen on (default 127.0.0.1:5025; port 0 picks a free one)");
+             "HOST:PORT to listen on (default 127.0.0.1:5025; port 0 picks a free one)");
   cmd.flag("--pty", options->pty, "also open a pseudo-terminal and print its path");
   cmd.option("--udp", options->udp,
-                  "HOST:PORT of a UDP port too: one command per datagram, one reply datagram "
-                  "(Elmo drives use 5001; port 0 picks a free one)");
+             "HOST:PORT of a UDP port too: one command per datagram, one reply datagram "
+             "(Elmo drives use 5001; port 0 picks a free one)");
   cmd.option("--state", options->state_dir, "folder for the stored program and parameters");
   cmd.option("--program", options->program, "source or stored form (.upi) to download and load");
   add_dialect_option(cmd, options->dialect);
   add_drive_shape_options(cmd, options->shape);
   cmd.flag("--safe-boot", options->safe_boot, "boot without running AUTOEXEC");
   cmd.option("--wire", options->wire,
-                  "drive: the bytes the vendor's drive sends (default); readable: error texts and a "
-                  "line end after each line (docs/protocol.md)")
+             "drive: the bytes the vendor's drive sends (default); readable: error texts and a "
+             "line end after each line (docs/protocol.md)")
       .one_of({"drive", "readable"});
   cmd.option("--dap", options->dap,
-                  "HOST:PORT: serve the debugger there, for `uprog dap`'s attach or an editor "
-                  "(port 0 picks one; docs/debugging.md)");
+             "HOST:PORT: serve the debugger there, for `uprog dap`'s attach or an editor "
+             "(port 0 picks one; docs/debugging.md)");
   cmd.flag("--log", options->log, "print what the firmware does (auto-routines, errors)");
   cmd.on_chosen([&action, options] { action = [options] { return run_sim(*options); }; });
 }

@@ -1,6 +1,6 @@
-// `uprog term HOST:PORT`: a terminal to a drive (`uprog sim` or anything speaking docs/protocol.md):
-// sends each typed line, prints its answers one per line. libedit editing and history on a tty;
-// reads stdin line by line when piped, so scripts and tests can use it.
+// `uprog term HOST:PORT`: a terminal to a drive (`uprog sim` or anything speaking
+// docs/protocol.md): sends each typed line, prints its answers one per line. libedit editing and
+// history on a tty; reads stdin line by line when piped, so scripts and tests can use it.
 #include <fmt/core.h>
 
 #include <chrono>
@@ -56,7 +56,8 @@ int run_term(const TermOptions& options) {
   if (editor.interactive()) fmt::print("connected to {}; Ctrl-D quits\n", options.address);
   while (true) {
     // Anything the drive sent on its own since the last line.
-    if (connection->read_answers(std::chrono::milliseconds(0), false, print, print_output) == DriveClient::Wait::kClosed) {
+    if (connection->read_answers(std::chrono::milliseconds(0), false, print, print_output) ==
+        DriveClient::Wait::kClosed) {
       fmt::print(stderr, "uprog term: the drive closed the connection\n");
       return 1;
     }
@@ -85,12 +86,12 @@ int run_term(const TermOptions& options) {
 void add_term(Options& cmd, Action& action) {
   auto options = std::make_shared<TermOptions>();
   cmd.option("ADDRESS", options->address,
-                  "HOST:PORT of the drive (uprog sim prints it); udp:HOST:PORT over UDP")
+             "HOST:PORT of the drive (uprog sim prints it); udp:HOST:PORT over UDP")
       .required();
   add_dialect_option(cmd, options->dialect);
   cmd.option("--timeout", options->timeout_s, "seconds to wait for a line's answers (default 5)");
   cmd.flag("--fail-on-error", options->fail_on_error,
-                "exit with status 4 if any answer was an error");
+           "exit with status 4 if any answer was an error");
   cmd.on_chosen([&action, options] { action = [options] { return run_term(*options); }; });
 }
 

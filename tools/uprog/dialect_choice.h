@@ -12,6 +12,7 @@ namespace uprog::cli {
 void add_dialect_option(Options& cmd, std::string& name);
 // The dialect for `path`: nullptr (with the reason printed as "uprog COMMAND: ...") when
 // `name` names no dialect.
-const dialect::Dialect* choose_dialect(const std::string& name, const std::string& path, const char* command);
+const dialect::Dialect* choose_dialect(const std::string& name, const std::string& path,
+                                       const char* command);
 
 }  // namespace uprog::cli

@@ -6,7 +6,8 @@
 
 namespace uprog::cli {
 
-std::unique_ptr<transport::DriveClient> connect_to_drive(const std::string& address, const dialect::Dialect& d,
+std::unique_ptr<transport::DriveClient> connect_to_drive(const std::string& address,
+                                                         const dialect::Dialect& d,
                                                          std::string& error) {
   auto client = transport::DriveClient::connect(address, error);
   if (client) {
@@ -24,7 +25,8 @@ std::string shown_error(const dialect::Dialect& d, const transport::Reply& reply
   std::string text = reply.text;
   if (text.empty()) {
     const auto errors = d.interpreter_errors();
-    const auto it = std::find_if(errors.begin(), errors.end(), [&](const auto& e) { return e.code == reply.error; });
+    const auto it = std::find_if(errors.begin(), errors.end(),
+                                 [&](const auto& e) { return e.code == reply.error; });
     if (it != errors.end()) text = it->text;
   }
   return "?" + std::to_string(reply.error) + (text.empty() ? "" : " " + text);

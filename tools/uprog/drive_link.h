@@ -10,7 +10,8 @@
 
 namespace uprog::cli {
 
-std::unique_ptr<transport::DriveClient> connect_to_drive(const std::string& address, const dialect::Dialect& d,
+std::unique_ptr<transport::DriveClient> connect_to_drive(const std::string& address,
+                                                         const dialect::Dialect& d,
                                                          std::string& error);
 // `?CODE TEXT` for an error answer.
 std::string shown_error(const dialect::Dialect& d, const transport::Reply& reply);

@@ -10,7 +10,7 @@ void add_drive_shape_options(Options& cmd, DriveShape& shape) {
       .within(1u, controller::kMaxAxes)
       .show_default();
   cmd.option("--servo-us", shape.servo_us,
-                  "every axis's servo period in microseconds (PDL's phase; default: the saved one)")
+             "every axis's servo period in microseconds (PDL's phase; default: the saved one)")
       .within(drive::kMinPeriod_us, drive::kMaxPeriod_us);
 }
 

@@ -30,7 +30,8 @@ std::string gp_string(const std::string& s) {
 std::string temp_path(const char* suffix) {
   static int counter = 0;
   return (std::filesystem::temp_directory_path() /
-          fmt::format("uprog-plot-{}-{}{}", getpid(), counter++, suffix)).string();
+          fmt::format("uprog-plot-{}-{}{}", getpid(), counter++, suffix))
+      .string();
 }
 
 std::string script(const drive::Recording& r, const std::string& title, const std::string& data,
@@ -50,15 +51,18 @@ std::string script(const drive::Recording& r, const std::string& title, const st
   s += "set datafile separator ','\nset datafile commentschars '#'\n";
   // Plain text (a '_' in a name is no subscript); the same margins and time range in every
   // panel, so that their time axes line up.
-  s += "set termoption noenhanced\nset grid\nset key outside right top\nset lmargin 12\nset rmargin 18\n";
+  s += "set termoption noenhanced\nset grid\nset key outside right top\nset lmargin 12\nset "
+       "rmargin 18\n";
   s += fmt::format("set xrange [{}:{}]\n", static_cast<double>(r.time_us(0)) / 1000.0,
                    static_cast<double>(r.time_us(r.samples() - 1)) / 1000.0);
-  s += fmt::format("set multiplot layout {},1 title {}\n", units.size(),
-                   gp_string(fmt::format("{}: trigger {} at {:.3f} ms, {} samples every {} us", title, r.trigger,
-                                      static_cast<double>(r.trigger_time_us) / 1000.0, r.samples(),
-                                      r.sample_period_us)));
+  s += fmt::format(
+      "set multiplot layout {},1 title {}\n", units.size(),
+      gp_string(fmt::format("{}: trigger {} at {:.3f} ms, {} samples every {} us", title, r.trigger,
+                            static_cast<double>(r.trigger_time_us) / 1000.0, r.samples(),
+                            r.sample_period_us)));
   // The trigger sample is at 0 ms: a dashed line through every panel.
-  s += "set arrow 1 from first 0, graph 0 to first 0, graph 1 nohead dashtype 2 linecolor rgb 'red' linewidth 1.5\n";
+  s += "set arrow 1 from first 0, graph 0 to first 0, graph 1 nohead dashtype 2 linecolor rgb "
+       "'red' linewidth 1.5\n";
   s += "set label 1 'trigger' at first 0, graph 1 offset 0.5,-1 textcolor rgb 'red'\n";
   for (size_t p = 0; p < units.size(); ++p) {
     s += "set ylabel " + gp_string(units[p]) + "\n";
@@ -66,8 +70,9 @@ std::string script(const drive::Recording& r, const std::string& title, const st
     s += "plot ";
     const std::vector<size_t>& cs = panels[units[p]];
     for (size_t k = 0; k < cs.size(); ++k) {
-      s += fmt::format("{}{} every ::1 using ($1/1000.0):{} with lines linewidth 1.5 title {}", k ? ", " : "",
-                       gp_string(data), cs[k] + 2, gp_string(r.channels[cs[k]].name));
+      s +=
+          fmt::format("{}{} every ::1 using ($1/1000.0):{} with lines linewidth 1.5 title {}",
+                      k ? ", " : "", gp_string(data), cs[k] + 2, gp_string(r.channels[cs[k]].name));
     }
     s += "\n";
   }
@@ -78,7 +83,8 @@ std::string script(const drive::Recording& r, const std::string& title, const st
 bool run_gnuplot(const std::string& script_path, std::string* error) {
   const char* argv[] = {"gnuplot", script_path.c_str(), nullptr};
   pid_t pid = 0;
-  if (posix_spawnp(&pid, "gnuplot", nullptr, nullptr, const_cast<char* const*>(argv), environ) != 0) {
+  if (posix_spawnp(&pid, "gnuplot", nullptr, nullptr, const_cast<char* const*>(argv), environ) !=
+      0) {
     *error = "cannot run gnuplot (scripts/install-deps installs it: Debian's gnuplot-nox)";
     return false;
   }
@@ -92,8 +98,8 @@ bool run_gnuplot(const std::string& script_path, std::string* error) {
 
 }  // namespace
 
-bool plot_recording(const drive::Recording& recording, const std::string& title, const std::string& out_path,
-                    std::string* error) {
+bool plot_recording(const drive::Recording& recording, const std::string& title,
+                    const std::string& out_path, std::string* error) {
   const std::string ext = std::filesystem::path(out_path).extension().string();
   if (ext != ".png" && ext != ".svg") {
     *error = out_path + ": the plot's file ends in .png or .svg";

@@ -8,7 +8,7 @@
 namespace uprog::cli {
 
 // Writes FILE.png or FILE.svg (by its extension); false with `error` set when it cannot.
-bool plot_recording(const drive::Recording& recording, const std::string& title, const std::string& out_path,
-                    std::string* error);
+bool plot_recording(const drive::Recording& recording, const std::string& title,
+                    const std::string& out_path, std::string* error);
 
 }  // namespace uprog::cli

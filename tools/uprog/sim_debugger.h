@@ -18,7 +18,8 @@ class SimDebugger {
  public:
   // Binds and listens at once (throws boost::system::system_error if it cannot).
   SimDebugger(boost::asio::io_context& io, controller::Controller& drive,
-              transport::ControllerService& service, const boost::asio::ip::tcp::endpoint& endpoint);
+              transport::ControllerService& service,
+              const boost::asio::ip::tcp::endpoint& endpoint);
   ~SimDebugger();
   SimDebugger(const SimDebugger&) = delete;
   SimDebugger& operator=(const SimDebugger&) = delete;

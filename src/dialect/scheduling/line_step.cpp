@@ -8,7 +8,8 @@ vm::SliceEnd run_bare_end(vm::Machine& machine, uint32_t thread, uint64_t back_j
   return machine.run_slice(thread, vm::Budget{1, 0, back_jump_cap}).end;
 }
 
-LineStep step_waiting_lines(vm::Machine& machine, uint32_t thread, uint64_t lines, uint64_t back_jump_cap) {
+LineStep step_waiting_lines(vm::Machine& machine, uint32_t thread, uint64_t lines,
+                            uint64_t back_jump_cap) {
   if (machine.status(thread) != vm::ThreadStatus::Waiting) return {};
   // Most waits are not over: no slice for them (it would end Waiting, having run nothing).
   if (machine.sleeping(thread)) return {vm::SliceEnd::Waiting};

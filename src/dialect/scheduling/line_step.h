@@ -40,9 +40,11 @@ inline LineStep finish_step(vm::Machine& machine, uint32_t thread, const vm::Sli
 }
 
 // step_lines for a thread that is not running: waiting, or not to be run at all.
-LineStep step_waiting_lines(vm::Machine& machine, uint32_t thread, uint64_t lines, uint64_t back_jump_cap);
+LineStep step_waiting_lines(vm::Machine& machine, uint32_t thread, uint64_t lines,
+                            uint64_t back_jump_cap);
 
-inline LineStep step_lines(vm::Machine& machine, uint32_t thread, uint64_t lines, uint64_t back_jump_cap) {
+inline LineStep step_lines(vm::Machine& machine, uint32_t thread, uint64_t lines,
+                           uint64_t back_jump_cap) {
   if (machine.status(thread) != vm::ThreadStatus::Running)
     return step_waiting_lines(machine, thread, lines, back_jump_cap);
   const vm::SliceResult r = machine.run_slice(thread, vm::Budget{0, lines, back_jump_cap});
@@ -54,10 +56,14 @@ inline LineStep step_lines(vm::Machine& machine, uint32_t thread, uint64_t lines
 inline void report_step(Report& report, uint32_t thread, const LineStep& step) {
   if (step.ran) report.mark_ran(thread);
   switch (step.end) {
-    case vm::SliceEnd::Finished: return report.add(thread, ThreadEvent::Finished);
-    case vm::SliceEnd::Error: return report.add(thread, ThreadEvent::Error);
-    case vm::SliceEnd::Breakpoint: return report.add(thread, ThreadEvent::Breakpoint);
-    default: return;
+    case vm::SliceEnd::Finished:
+      return report.add(thread, ThreadEvent::Finished);
+    case vm::SliceEnd::Error:
+      return report.add(thread, ThreadEvent::Error);
+    case vm::SliceEnd::Breakpoint:
+      return report.add(thread, ThreadEvent::Breakpoint);
+    default:
+      return;
   }
 }
 

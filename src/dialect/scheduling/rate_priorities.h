@@ -75,8 +75,8 @@ class RatePriorities {
 };
 
 inline uint32_t RatePriorities::ready_from(const vm::Machine& machine, uint32_t thread) const {
-  const uint32_t active = machine.threads_in(vm::ThreadStatus::Running) |
-                          machine.threads_in(vm::ThreadStatus::Waiting);
+  const uint32_t active =
+      machine.threads_in(vm::ThreadStatus::Running) | machine.threads_in(vm::ThreadStatus::Waiting);
   uint32_t ready = active & covered_ & ~held_ & ~started_now_ & (~0u << thread);
   // A thread of priority k is due every k-th cycle from its start; most are due every cycle.
   for (uint32_t slow = ready & slow_; slow != 0; slow &= slow - 1) {

@@ -26,7 +26,22 @@ using ExprPtr = Expr*;
 // What a name turned out to be, filled in by the checker.
 enum class RefKind : uint8_t { Unresolved, Local, Global, Function, Builtin, Command, Nargout };
 
-enum class Builtin : uint8_t { Sin, Cos, Abs, Sqrt, Fix, Rnd, Sign, Real, Tdif, Prgerr, Tick, Tock, Utick, Utock };
+enum class Builtin : uint8_t {
+  Sin,
+  Cos,
+  Abs,
+  Sqrt,
+  Fix,
+  Rnd,
+  Sign,
+  Real,
+  Tdif,
+  Prgerr,
+  Tick,
+  Tock,
+  Utick,
+  Utock
+};
 
 enum class ExprKind : uint8_t { IntLit, FloatLit, Ref, Unary, Binary, Nargout };
 
@@ -39,8 +54,8 @@ struct Expr {
   ExprPtr lhs = nullptr, rhs = nullptr;  // Unary uses lhs
   // Ref: a name, maybe with [index] or (arguments). Names view into the lexer's text.
   std::string_view name;
-  bool has_index = false;   // name[...]
-  bool has_parens = false;  // name(...)
+  bool has_index = false;     // name[...]
+  bool has_parens = false;    // name(...)
   std::vector<ExprPtr> args;  // the index (one) or the call's arguments
   // Filled by the checker.
   Kind type = Kind::None;
@@ -55,12 +70,23 @@ using StmtPtr = Stmt*;
 using Block = std::vector<StmtPtr>;
 
 enum class StmtKind : uint8_t {
-  Expr,      // a call, a drive action (BG), or a value (shown on the command line)
-  Assign,    // targets = value; several targets for [a,b] = f(x)
-  IncDec,    // i++ / i--
-  If, While, For, Until, Wait, Switch, Try,
-  Break, Continue, Return, Exit,
-  Goto, Reset, Label,
+  Expr,    // a call, a drive action (BG), or a value (shown on the command line)
+  Assign,  // targets = value; several targets for [a,b] = f(x)
+  IncDec,  // i++ / i--
+  If,
+  While,
+  For,
+  Until,
+  Wait,
+  Switch,
+  Try,
+  Break,
+  Continue,
+  Return,
+  Exit,
+  Goto,
+  Reset,
+  Label,
 };
 
 struct IfArm {
@@ -77,18 +103,18 @@ struct SwitchCase {
 struct Stmt {
   StmtKind kind;
   uint32_t offset = 0;
-  bool ends_line = false;    // the last statement on its source line: an EOL follows it
-  ExprPtr value = nullptr;  // Expr, Assign, While, Until, Wait, Switch (subject), For (start)
+  bool ends_line = false;        // the last statement on its source line: an EOL follows it
+  ExprPtr value = nullptr;       // Expr, Assign, While, Until, Wait, Switch (subject), For (start)
   std::vector<ExprPtr> targets;  // Assign, IncDec, For (the iteration variable)
   ExprPtr step = nullptr, end = nullptr;  // For
-  int delta = 0;             // IncDec
-  std::vector<IfArm> arms;   // If
-  std::vector<SwitchCase> cases;  // Switch
-  Block body, handler;       // While/For body; Try body and catch
-  std::string_view name;     // Goto/Reset/Label target
-  bool auto_label = false;   // #@ rather than ##
-  bool bracketed = false;    // Assign: [a, b] = ...
-  uint32_t end_offset = 0;   // the line of the block's `end`
+  int delta = 0;                          // IncDec
+  std::vector<IfArm> arms;                // If
+  std::vector<SwitchCase> cases;          // Switch
+  Block body, handler;                    // While/For body; Try body and catch
+  std::string_view name;                  // Goto/Reset/Label target
+  bool auto_label = false;                // #@ rather than ##
+  bool bracketed = false;                 // Assign: [a, b] = ...
+  uint32_t end_offset = 0;                // the line of the block's `end`
 };
 
 struct VarDecl {
@@ -110,11 +136,11 @@ struct FunctionDef {
   uint32_t offset = 0;
   std::vector<Param> inputs, outputs;
   bool has_body = false;
-  bool is_auto = false;  // named like an auto-routine (function AUTOEXEC())
+  bool is_auto = false;         // named like an auto-routine (function AUTOEXEC())
   std::vector<VarDecl> locals;  // declared locals and global re-declarations, in order
-  Block body;               // empty when the parser handed the body to a FunctionBodySink
-  LexState body_start;      // where the body begins, to parse it again
-  uint32_t end_offset = 0;  // the closing return
+  Block body;                   // empty when the parser handed the body to a FunctionBodySink
+  LexState body_start;          // where the body begins, to parse it again
+  uint32_t end_offset = 0;      // the closing return
 };
 
 // Takes each function body from the parser as soon as it is parsed, so that a program's tree
@@ -134,7 +160,8 @@ class FunctionBodySink {
 // statement opens a routine; a top-level Return closes it.
 struct Program {
   std::vector<VarDecl> globals;
-  std::deque<FunctionDef> functions;  // definitions and prototypes, in source order (stable addresses)
+  std::deque<FunctionDef>
+      functions;  // definitions and prototypes, in source order (stable addresses)
   Block top;
   bool empty = true;  // nothing but blanks and comments
 };

@@ -7,8 +7,9 @@ namespace uprog::gold {
 
 const char* auto_event_name(uint32_t event) {
   static constexpr const char* kNames[kAutoEventCount] = {
-      "AUTOEXEC", "AUTO_ER", "AUTO_STOP", "AUTO_BG", "AUTO_RLS", "AUTO_FLS", "AUTO_ENA", "AUTO_I1",
-      "AUTO_I2",  "AUTO_I3", "AUTO_I4",   "AUTO_I5", "AUTO_I6",  "AUTO_HM",  "AUTO_HY",  "AUTO_PERR"};
+      "AUTOEXEC", "AUTO_ER", "AUTO_STOP", "AUTO_BG",  "AUTO_RLS", "AUTO_FLS",
+      "AUTO_ENA", "AUTO_I1", "AUTO_I2",   "AUTO_I3",  "AUTO_I4",  "AUTO_I5",
+      "AUTO_I6",  "AUTO_HM", "AUTO_HY",   "AUTO_PERR"};
   return event < kAutoEventCount ? kNames[event] : "?";
 }
 
@@ -72,8 +73,8 @@ void AutoRoutines::update_active(const vm::Machine& machine, uint32_t thread) {
   while (!active_.empty()) {
     const Active& a = active_.back();
     const uint32_t count = machine.frame_count(thread);
-    bool gone = status == vm::ThreadStatus::Idle || status == vm::ThreadStatus::Error ||
-                count < a.depth;
+    bool gone =
+        status == vm::ThreadStatus::Idle || status == vm::ThreadStatus::Error || count < a.depth;
     // `reset` drops every frame and starts another routine at the same depth.
     if (!gone && machine.frame(thread, count - a.depth).routine != a.routine) gone = true;
     if (!gone) break;

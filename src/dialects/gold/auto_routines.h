@@ -14,8 +14,17 @@ namespace uprog::gold {
 // Event numbers as the Gold code generator stores them (dialects/gold/keywords.cpp); the MI
 // bit of event e is 1 << e.
 enum AutoEvent : uint32_t {
-  kAutoExec = 0, kAutoEr = 1, kAutoStop = 2, kAutoBg = 3, kAutoRls = 4, kAutoFls = 5,
-  kAutoEna = 6, kAutoI1 = 7, kAutoHm = 13, kAutoHy = 14, kAutoPerr = 15,
+  kAutoExec = 0,
+  kAutoEr = 1,
+  kAutoStop = 2,
+  kAutoBg = 3,
+  kAutoRls = 4,
+  kAutoFls = 5,
+  kAutoEna = 6,
+  kAutoI1 = 7,
+  kAutoHm = 13,
+  kAutoHy = 14,
+  kAutoPerr = 15,
 };
 constexpr uint32_t kAutoEventCount = 16;
 const char* auto_event_name(uint32_t event);
@@ -31,7 +40,10 @@ class AutoRoutines {
 
   uint32_t mask() const { return mask_; }
   // MI assignment; it also lifts the block AUTO_PERR put on the other auto-routines.
-  void set_mask(uint32_t mi) { mask_ = mi; perr_block_ = false; }
+  void set_mask(uint32_t mi) {
+    mask_ = mi;
+    perr_block_ = false;
+  }
 
   // An event happened: remembered when the program has a routine for it and MI allows it.
   void raise(uint32_t event);

@@ -15,7 +15,8 @@ void Firmware::dispatch_auto_routines() {
   while (auto event = autos_.take_next()) {
     const uint32_t routine = *autos_.routine_of(*event);
     if (m.interrupt(kProgramThread, routine) != vm::RunError::None) {
-      log(std::string(auto_event_name(*event)) + " could not be entered (no room on the call stack)");
+      log(std::string(auto_event_name(*event)) +
+          " could not be entered (no room on the call stack)");
       continue;
     }
     ever_run_ = true;
@@ -58,8 +59,8 @@ void Firmware::on_run_time_error() {
   const vm::ThreadStatus before = m.status(kProgramThread);
   if (before != vm::ThreadStatus::Running && before != vm::ThreadStatus::Waiting) return;
   // A step of the Elmo debugger runs to the nearest end of line (DB##SO, SI, SU).
-  const vm::SliceResult r =
-      m.run_slice(kProgramThread, debug_step_ == DebugStep::None ? slice_budget_ : vm::Budget::of_lines(1));
+  const vm::SliceResult r = m.run_slice(
+      kProgramThread, debug_step_ == DebugStep::None ? slice_budget_ : vm::Budget::of_lines(1));
   if (debug_active_) after_debug_slice(r.end);
   if (r.end == vm::SliceEnd::Error) on_run_time_error();
   if (r.end == vm::SliceEnd::Finished) log("program finished");

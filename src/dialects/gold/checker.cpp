@@ -24,7 +24,8 @@ Kind binary_kind(Tok op, Kind a, Kind b) {
       // int * int is exact when it fits and a float when it does not (manual 1.5).
       if (a == Kind::Float || b == Kind::Float) return Kind::Float;
       return Kind::Dynamic;
-    default: return Kind::Int;  // %, bitwise, shifts, comparisons, logic
+    default:
+      return Kind::Int;  // %, bitwise, shifts, comparisons, logic
   }
 }
 
@@ -97,7 +98,10 @@ class NameList {
 };
 
 bool const_index(const Expr& e, int32_t& out) {
-  if (e.kind == ExprKind::IntLit) { out = e.int_value; return true; }
+  if (e.kind == ExprKind::IntLit) {
+    out = e.int_value;
+    return true;
+  }
   return false;
 }
 
@@ -133,7 +137,8 @@ class Checker {
     capture_ = &ignored;
     declare_globals(p.globals, globals_seen_);
     globals_seen_ = p.globals.size();
-    for (; functions_seen_ < p.functions.size(); ++functions_seen_) declare_function(p.functions[functions_seen_]);
+    for (; functions_seen_ < p.functions.size(); ++functions_seen_)
+      declare_function(p.functions[functions_seen_]);
     declare_top_labels(p.top, top_seen_);
     top_seen_ = p.top.size();
     out.symbol = symbol_for_body(f);
@@ -145,7 +150,8 @@ class Checker {
       poisoned_added_ = &out.poisoned;
       const size_t labels = syms_.labels.size();
       function_body(f, out.symbol, body);
-      out.labels.assign(syms_.labels.begin() + static_cast<std::ptrdiff_t>(labels), syms_.labels.end());
+      out.labels.assign(syms_.labels.begin() + static_cast<std::ptrdiff_t>(labels),
+                        syms_.labels.end());
     }
     capture_ = nullptr;
     queried_ = nullptr;
@@ -190,8 +196,10 @@ class Checker {
   // `name`: what the error is about, quoted after the manual's text. Cold: kept out of the
   // checking paths it is called from.
   [[gnu::cold, gnu::noinline]] void error(Error e, uint32_t offset, std::string_view name = {}) {
-    if (capture_) capture_->push_back({e, offset, name});
-    else r_.error(e, offset, name);
+    if (capture_)
+      capture_->push_back({e, offset, name});
+    else
+      r_.error(e, offset, name);
   }
 
   // A name whose meaning a later declaration could change (a function, a label): while
@@ -261,7 +269,8 @@ class Checker {
       }
       FunctionSym& s = syms_.functions[static_cast<size_t>(it->second)];
       if (!same_signature(*s.def, f)) {
-        error(Error::BadFunctionFormat, f.offset, f.name);  // the definition differs from its prototype
+        error(Error::BadFunctionFormat, f.offset,
+              f.name);  // the definition differs from its prototype
         return;
       }
       if (f.has_body && s.has_body) {
@@ -286,7 +295,8 @@ class Checker {
       if (s->auto_label) {
         auto it = function_index_.find(s->name);
         if (it != function_index_.end()) {
-          error(Error::NameIsNotDistinct, s->offset, s->name);  // both #@AUTO_I1 and function AUTO_I1()
+          error(Error::NameIsNotDistinct, s->offset,
+                s->name);  // both #@AUTO_I1 and function AUTO_I1()
           continue;
         }
       }
@@ -339,11 +349,13 @@ class Checker {
     for (const Param& p : f.inputs) add_local(p.name, p.type, p.offset);
     for (const Param& p : f.outputs) add_local(p.name, p.type, p.offset);
     // Inputs and outputs keep their slots even after an error, so calls still line up.
-    while (s.locals.size() < f.inputs.size() + f.outputs.size()) s.locals.push_back({"", VarType::Int});
+    while (s.locals.size() < f.inputs.size() + f.outputs.size())
+      s.locals.push_back({"", VarType::Int});
     for (const VarDecl& d : f.locals) {
       if (d.is_global_redecl) {
         auto it = global_index_.find(d.name);
-        const GlobalSym* g = it == global_index_.end() ? nullptr : &syms_.globals[static_cast<size_t>(it->second)];
+        const GlobalSym* g =
+            it == global_index_.end() ? nullptr : &syms_.globals[static_cast<size_t>(it->second)];
         if (g == nullptr || g->offset > f.offset || g->type != d.type || g->length != d.length) {
           error(Error::IllegalGlobal, d.offset, d.name);  // not defined before, or another type
           continue;
@@ -370,8 +382,12 @@ class Checker {
 
   void statement(Stmt& s) {
     switch (s.kind) {
-      case StmtKind::Expr: expression_statement(s); break;
-      case StmtKind::Assign: assignment(s); break;
+      case StmtKind::Expr:
+        expression_statement(s);
+        break;
+      case StmtKind::Assign:
+        assignment(s);
+        break;
       case StmtKind::IncDec:
         lvalue(*s.targets[0]);
         break;
@@ -385,7 +401,9 @@ class Checker {
         if (s.value) value(*s.value);
         block(s.body);
         break;
-      case StmtKind::For: for_loop(s); break;
+      case StmtKind::For:
+        for_loop(s);
+        break;
       case StmtKind::Until:
       case StmtKind::Wait:
         value(*s.value);
@@ -401,13 +419,18 @@ class Checker {
         block(s.body);
         block(s.handler);
         break;
-      case StmtKind::Goto: jump(s); break;
-      case StmtKind::Reset: reset(s); break;
+      case StmtKind::Goto:
+        jump(s);
+        break;
+      case StmtKind::Reset:
+        reset(s);
+        break;
       case StmtKind::Break:
       case StmtKind::Continue:
       case StmtKind::Return:
       case StmtKind::Exit:
-      case StmtKind::Label: break;
+      case StmtKind::Label:
+        break;
     }
   }
 
@@ -434,15 +457,18 @@ class Checker {
       const size_t n = s.targets.size();
       if (rhs.kind == ExprKind::Ref) {
         resolve(rhs);
-        if (rhs.ref == RefKind::Function) call(rhs, n);
-        else if (n > 1 && rhs.ref != RefKind::Unresolved) error(Error::SidesMismatch, rhs.offset);
-        else value(rhs);
+        if (rhs.ref == RefKind::Function)
+          call(rhs, n);
+        else if (n > 1 && rhs.ref != RefKind::Unresolved)
+          error(Error::SidesMismatch, rhs.offset);
+        else
+          value(rhs);
       } else if (rhs.kind == ExprKind::Unary && rhs.op == Tok::Minus &&
                  rhs.lhs->kind == ExprKind::Ref && rhs.lhs->has_parens) {
         value(rhs);  // "[a, b] = -func(c)": a minus before a call of several outputs is 34
         const Expr& x = *rhs.lhs;
-        const bool several = x.ref == RefKind::Function &&
-                             syms_.functions[static_cast<size_t>(x.slot)].outputs > 1;
+        const bool several =
+            x.ref == RefKind::Function && syms_.functions[static_cast<size_t>(x.slot)].outputs > 1;
         if (!several && n > 1) error(Error::SidesMismatch, start_of(rhs));
       } else {
         const Expr* left = &rhs;
@@ -450,9 +476,12 @@ class Checker {
         if (left->kind == ExprKind::Ref && left->has_parens) note(left->name);
         const bool call_first = left->kind == ExprKind::Ref && left->has_parens &&
                                 function_index_.count(left->name) > 0;
-        if (call_first) error(Error::BadFunctionCall, start_of(rhs), left->name);  // "[a,b] = f(x) + 5"
-        else if (n > 1) error(Error::SidesMismatch, start_of(rhs));    // "[a,b] = 12 + c"
-        else value(rhs);
+        if (call_first)
+          error(Error::BadFunctionCall, start_of(rhs), left->name);  // "[a,b] = f(x) + 5"
+        else if (n > 1)
+          error(Error::SidesMismatch, start_of(rhs));  // "[a,b] = 12 + c"
+        else
+          value(rhs);
       }
     } else {
       value(rhs);
@@ -468,7 +497,8 @@ class Checker {
         error(Error::VariableIsUndefined, v.offset, v.name);
         poison(v.name);  // one error for the loop, not one per use
         v.ref = RefKind::Unresolved;
-      } else if (v.has_index || v.has_parens || (v.ref == RefKind::Global && global(v).length > 0)) {
+      } else if (v.has_index || v.has_parens ||
+                 (v.ref == RefKind::Global && global(v).length > 0)) {
         error(Error::VariableIsArray, v.offset, v.name);  // "for k[10]=1:10"
         v.ref = RefKind::Unresolved;
       } else {
@@ -481,8 +511,9 @@ class Checker {
     // Inside the body a local int loop variable with constant bounds stays within them, unless
     // the body assigns it (only its own frame can: it is a local).
     IntRange r;
-    const bool known = !s.targets.empty() && s.targets[0]->ref == RefKind::Local && s.targets[0]->type == Kind::Int &&
-                       !s.targets[0]->has_index && !s.targets[0]->has_parens && constant_loop_range(s, r) &&
+    const bool known = !s.targets.empty() && s.targets[0]->ref == RefKind::Local &&
+                       s.targets[0]->type == Kind::Int && !s.targets[0]->has_index &&
+                       !s.targets[0]->has_parens && constant_loop_range(s, r) &&
                        !block_assigns(s.body, s.targets[0]->name);
     if (known) loops_.push_back({s.targets[0]->name, r});
     block(s.body);
@@ -500,7 +531,8 @@ class Checker {
     if (!in_function && s.auto_label && function_index_.count(s.name) &&
         syms_.functions[static_cast<size_t>(function_index_[s.name])].is_auto)
       return;
-    const bool known = top_labels_.count(s.name) || function_index_.count(s.name) || any_local_label(s.name);
+    const bool known =
+        top_labels_.count(s.name) || function_index_.count(s.name) || any_local_label(s.name);
     error(known ? Error::BadJumpToLabel : Error::NoSuchFunction, s.offset, s.name);
   }
 
@@ -520,17 +552,21 @@ class Checker {
         error(Error::BadFunctionAfterReset, s.offset, s.name);
       return;
     }
-    error(any_local_label(s.name) || local_labels_.count(s.name) ? Error::BadJumpToLabel : Error::NoSuchFunction,
+    error(any_local_label(s.name) || local_labels_.count(s.name) ? Error::BadJumpToLabel
+                                                                 : Error::NoSuchFunction,
           s.offset, s.name);
   }
 
   // ---- names
 
-  const GlobalSym& global(const Expr& e) const { return syms_.globals[static_cast<size_t>(e.slot)]; }
+  const GlobalSym& global(const Expr& e) const {
+    return syms_.globals[static_cast<size_t>(e.slot)];
+  }
 
   Kind variable_kind(const Expr& e) const {
     if (e.ref == RefKind::Local)
-      return kind_of(syms_.functions[static_cast<size_t>(current_)].locals[static_cast<size_t>(e.slot)].type);
+      return kind_of(
+          syms_.functions[static_cast<size_t>(current_)].locals[static_cast<size_t>(e.slot)].type);
     return kind_of(global(e).type);
   }
 
@@ -613,8 +649,10 @@ class Checker {
       return;
     }
     if (c.flags & kIndexed) {
-      if (e.has_index) value(*e.args[0]);
-      else if (!(c.flags & kIndexOptional)) error(Error::BadIndexExpression, e.offset, e.name);
+      if (e.has_index)
+        value(*e.args[0]);
+      else if (!(c.flags & kIndexOptional))
+        error(Error::BadIndexExpression, e.offset, e.name);
     } else if (e.has_index) {
       error(Error::VariableIsNotArray, e.offset, e.name);
     }
@@ -651,18 +689,27 @@ class Checker {
         variable_index(e, global(e).length > 0);
         e.type = variable_kind(e);
         break;
-      case RefKind::Command: command_use(e, true); break;
+      case RefKind::Command:
+        command_use(e, true);
+        break;
       case RefKind::Function:
-      case RefKind::Builtin: error(Error::NoSuchVariable, e.offset, e.name); break;
-      default: break;
+      case RefKind::Builtin:
+        error(Error::NoSuchVariable, e.offset, e.name);
+        break;
+      default:
+        break;
     }
   }
 
   // An expression used for its value.
   void value(Expr& e) {
     switch (e.kind) {
-      case ExprKind::IntLit: e.type = Kind::Int; return;
-      case ExprKind::FloatLit: e.type = Kind::Float; return;
+      case ExprKind::IntLit:
+        e.type = Kind::Int;
+        return;
+      case ExprKind::FloatLit:
+        e.type = Kind::Float;
+        return;
       case ExprKind::Nargout:
         if (current_ < 0) error(Error::IllegalNargout, e.offset);
         e.type = Kind::Int;
@@ -687,11 +734,13 @@ class Checker {
         const Kind b = e.rhs->type == Kind::None ? Kind::Int : e.rhs->type;
         e.type = binary_kind(e.op, a, b);
         // int * int is a pair only because it may overflow (1.5): not when it provably fits.
-        if (e.op == Tok::Star && a == Kind::Int && b == Kind::Int && product_fits(*e.lhs, *e.rhs, loops_))
+        if (e.op == Tok::Star && a == Kind::Int && b == Kind::Int &&
+            product_fits(*e.lhs, *e.rhs, loops_))
           e.type = Kind::Int;
         return;
       }
-      case ExprKind::Ref: break;
+      case ExprKind::Ref:
+        break;
     }
     resolve(e);
     e.type = Kind::Int;
@@ -712,7 +761,8 @@ class Checker {
         const BuiltinInfo& b = *builtin_info(e.builtin);
         for (ExprPtr& a : e.args) value(*a);
         if (!e.has_parens || e.args.size() != 1) {
-          error(e.has_index ? Error::BadIndexExpression : Error::BadNumberOfInputs, e.offset, e.name);
+          error(e.has_index ? Error::BadIndexExpression : Error::BadNumberOfInputs, e.offset,
+                e.name);
           return;
         }
         e.type = b.result == BuiltinResult::SameAsInput ? e.args[0]->type : b.kind;
@@ -721,13 +771,16 @@ class Checker {
       }
       case RefKind::Command:
         if (e.command->flags & kAction) {
-          if (e.command->flags & kNotProgram) error(Error::CommandNotProgram, e.offset, e.name);
-          else error(Error::ValueIsExpected, e.offset, e.name);  // an action has no value
+          if (e.command->flags & kNotProgram)
+            error(Error::CommandNotProgram, e.offset, e.name);
+          else
+            error(Error::ValueIsExpected, e.offset, e.name);  // an action has no value
           return;
         }
         command_use(e, false);
         return;
-      default: return;
+      default:
+        return;
     }
   }
 
@@ -750,7 +803,8 @@ class Checker {
 
 }  // namespace detail
 
-ProgramChecker::ProgramChecker(Reporter& reporter) : c_(std::make_unique<detail::Checker>(reporter)) {}
+ProgramChecker::ProgramChecker(Reporter& reporter)
+    : c_(std::make_unique<detail::Checker>(reporter)) {}
 ProgramChecker::~ProgramChecker() = default;
 void ProgramChecker::declare(Program& p) { c_->declare(p); }
 int ProgramChecker::symbol_for_body(const FunctionDef& f) const { return c_->symbol_for_body(f); }
@@ -759,7 +813,9 @@ void ProgramChecker::speculate(Program& p, FunctionDef& f, Block& body, CheckedB
   c_->speculate(p, f, body, out, queried);
 }
 void ProgramChecker::accept(int symbol, CheckedBody& spec) { c_->accept(symbol, spec); }
-void ProgramChecker::check_body(FunctionDef& f, int symbol, Block& body) { c_->check_body(f, symbol, body); }
+void ProgramChecker::check_body(FunctionDef& f, int symbol, Block& body) {
+  c_->check_body(f, symbol, body);
+}
 void ProgramChecker::check_top(Program& p) { c_->check_top(p); }
 void ProgramChecker::forget_locals(int symbol) { c_->forget_locals(symbol); }
 Symbols& ProgramChecker::symbols() { return c_->symbols(); }

@@ -29,7 +29,8 @@ Kind operand_kind(Kind k) { return k == Kind::None ? Kind::Int : k; }
 
 class Gen {
  public:
-  Gen(bytecode::Image& image, const Symbols* symbols, const Locator& locator, ConstantTable& constants)
+  Gen(bytecode::Image& image, const Symbols* symbols, const Locator& locator,
+      ConstantTable& constants)
       : img_(image), cb_(image.code), syms_(symbols), loc_(locator), constants_(constants) {}
 
   // ---- routines
@@ -45,7 +46,8 @@ class Gen {
 
   void declare_goto_labels(const Block& b) {
     for (const StmtPtr& s : b)
-      if (s->kind == StmtKind::Label) goto_labels_[label_key(s->name, s->auto_label)] = cb_.new_label();
+      if (s->kind == StmtKind::Label)
+        goto_labels_[label_key(s->name, s->auto_label)] = cb_.new_label();
   }
 
   void block(const Block& b) {
@@ -59,7 +61,9 @@ class Gen {
     if (!with_lines) return;  // a check needs no line table
     const Location where = loc_.locate(offset);
     const uint32_t line = static_cast<uint32_t>(where.line);
-    if (!img_.lines.empty() && img_.lines.back().line == line && img_.lines.back().file == where.file) return;
+    if (!img_.lines.empty() && img_.lines.back().line == line &&
+        img_.lines.back().file == where.file)
+      return;
     if (!img_.lines.empty() && img_.lines.back().code == cb_.here()) {
       img_.lines.back().line = line;
       img_.lines.back().file = where.file;
@@ -76,15 +80,17 @@ class Gen {
   // Set for a function's code on its own: routine numbers are known only when the program is
   // put together, so CALL and RESET operands are left for the driver to fill in.
   std::vector<RoutineFixup>* fixups = nullptr;
-  std::function<void(const Expr&)> show;  // the command line's way to show a bare value
+  std::function<void(const Expr&)> show;     // the command line's way to show a bare value
   std::vector<int32_t> routine_of_function;  // function symbol -> routine index
   std::unordered_map<std::string, int32_t> routine_of_label;  // top-level labels
 
   // ---- values
 
   void push_int(int32_t v) {
-    if (bytecode::fits_imm(v)) cb_.emit_imm(Op::PUSHI, v);
-    else emit(Op::PUSHK, constant(ValueType::Int, static_cast<uint32_t>(v)));
+    if (bytecode::fits_imm(v))
+      cb_.emit_imm(Op::PUSHI, v);
+    else
+      emit(Op::PUSHK, constant(ValueType::Int, static_cast<uint32_t>(v)));
   }
   void push_float(float f) {
     uint32_t bits;
@@ -99,12 +105,19 @@ class Gen {
     if (from == to || to == Kind::None) return;
     switch (to) {
       case Kind::Int:
-        if (from == Kind::Float) emit(round ? Op::F2IR : Op::F2IT);
-        else emit(round ? Op::D2IR : Op::D2IT);
+        if (from == Kind::Float)
+          emit(round ? Op::F2IR : Op::F2IT);
+        else
+          emit(round ? Op::D2IR : Op::D2IT);
         return;
-      case Kind::Float: emit(from == Kind::Int ? Op::I2F : Op::D2F); return;
-      case Kind::Dynamic: emit(from == Kind::Int ? Op::I2D : Op::F2D); return;
-      case Kind::None: return;
+      case Kind::Float:
+        emit(from == Kind::Int ? Op::I2F : Op::D2F);
+        return;
+      case Kind::Dynamic:
+        emit(from == Kind::Int ? Op::I2D : Op::F2D);
+        return;
+      case Kind::None:
+        return;
     }
   }
 
@@ -117,9 +130,17 @@ class Gen {
   void truth(const Expr& e) {
     value(e);
     switch (operand_kind(e.type)) {
-      case Kind::Int: push_int(0); emit(Op::NEI); return;
-      case Kind::Float: emit(Op::TRUTHF); return;
-      default: emit(Op::D2F); emit(Op::TRUTHF); return;
+      case Kind::Int:
+        push_int(0);
+        emit(Op::NEI);
+        return;
+      case Kind::Float:
+        emit(Op::TRUTHF);
+        return;
+      default:
+        emit(Op::D2F);
+        emit(Op::TRUTHF);
+        return;
     }
   }
 
@@ -127,9 +148,15 @@ class Gen {
   void branch(const Expr& e, Op jump, CodeBuilder::Label target) {
     value(e);
     switch (operand_kind(e.type)) {
-      case Kind::Int: break;
-      case Kind::Float: emit(Op::TRUTHF); break;
-      default: emit(Op::D2F); emit(Op::TRUTHF); break;
+      case Kind::Int:
+        break;
+      case Kind::Float:
+        emit(Op::TRUTHF);
+        break;
+      default:
+        emit(Op::D2F);
+        emit(Op::TRUTHF);
+        break;
     }
     cb_.emit_to(jump, target);
   }
@@ -137,12 +164,24 @@ class Gen {
 
   void value(const Expr& e) {
     switch (e.kind) {
-      case ExprKind::IntLit: push_int(e.int_value); return;
-      case ExprKind::FloatLit: push_float(e.float_value); return;
-      case ExprKind::Nargout: emit(Op::NARGOUT); return;
-      case ExprKind::Unary: unary(e); return;
-      case ExprKind::Binary: binary(e); return;
-      case ExprKind::Ref: ref(e); return;
+      case ExprKind::IntLit:
+        push_int(e.int_value);
+        return;
+      case ExprKind::FloatLit:
+        push_float(e.float_value);
+        return;
+      case ExprKind::Nargout:
+        emit(Op::NARGOUT);
+        return;
+      case ExprKind::Unary:
+        unary(e);
+        return;
+      case ExprKind::Binary:
+        binary(e);
+        return;
+      case ExprKind::Ref:
+        ref(e);
+        return;
     }
   }
 
@@ -206,8 +245,11 @@ class Gen {
       case Tok::Shr: {
         value(*e.lhs, Kind::Int, false);
         value(*e.rhs, Kind::Int, false);
-        emit(e.op == Tok::Percent ? Op::REMI : e.op == Tok::Amp ? Op::ANDI : e.op == Tok::Pipe ? Op::ORI
-             : e.op == Tok::Shl ? Op::SHLI : Op::SHRI);
+        emit(e.op == Tok::Percent ? Op::REMI
+             : e.op == Tok::Amp   ? Op::ANDI
+             : e.op == Tok::Pipe  ? Op::ORI
+             : e.op == Tok::Shl   ? Op::SHLI
+                                  : Op::SHRI);
         return;
       }
       case Tok::AndAnd:
@@ -217,24 +259,39 @@ class Gen {
         truth(*e.rhs);
         emit(e.op == Tok::AndAnd ? Op::ANDI : Op::ORI);
         return;
-      default: compare(e.op, *e.lhs, *e.rhs); return;
+      default:
+        compare(e.op, *e.lhs, *e.rhs);
+        return;
     }
   }
 
   void compare(Tok op, const Expr& l, const Expr& r) {
     const Kind a = operand_kind(l.type), b = operand_kind(r.type);
-    const Kind k = (a == Kind::Float || b == Kind::Float) ? Kind::Float
-                   : (a == Kind::Dynamic || b == Kind::Dynamic) ? Kind::Dynamic : Kind::Int;
+    const Kind k = (a == Kind::Float || b == Kind::Float)       ? Kind::Float
+                   : (a == Kind::Dynamic || b == Kind::Dynamic) ? Kind::Dynamic
+                                                                : Kind::Int;
     value(l, k);
     value(r, k);
     int how = 0;
     switch (op) {
-      case Tok::EqEq: how = 0; break;
-      case Tok::Ne: how = 1; break;
-      case Tok::Lt: how = 2; break;
-      case Tok::Le: how = 3; break;
-      case Tok::Gt: how = 4; break;
-      default: how = 5; break;
+      case Tok::EqEq:
+        how = 0;
+        break;
+      case Tok::Ne:
+        how = 1;
+        break;
+      case Tok::Lt:
+        how = 2;
+        break;
+      case Tok::Le:
+        how = 3;
+        break;
+      case Tok::Gt:
+        how = 4;
+        break;
+      default:
+        how = 5;
+        break;
     }
     if (k == Kind::Dynamic) {
       emit(Op::CMPD, static_cast<uint32_t>(how));
@@ -242,8 +299,10 @@ class Gen {
     }
     static constexpr Op kInt[6] = {Op::EQI, Op::NEI, Op::LTI, Op::LEI, Op::GTI, Op::GEI};
     static constexpr Op kFloat[6] = {Op::EQF, Op::NEF, Op::LTF, Op::LEF, Op::GTF, Op::GEF};
-    if (k == Kind::Float && how <= 1) float_equality(how == 0);
-    else emit(k == Kind::Int ? kInt[how] : kFloat[how]);
+    if (k == Kind::Float && how <= 1)
+      float_equality(how == 0);
+    else
+      emit(k == Kind::Int ? kInt[how] : kFloat[how]);
   }
 
   // Float == (or !=) at the manual's precision (1.3.2: 25000.001 == 25000 is true, 25000.01 ==
@@ -278,11 +337,16 @@ class Gen {
 
   void ref(const Expr& e) {
     switch (e.ref) {
-      case RefKind::Local: emit(Op::LDL, static_cast<uint32_t>(e.slot)); return;
+      case RefKind::Local:
+        emit(Op::LDL, static_cast<uint32_t>(e.slot));
+        return;
       case RefKind::Global:
-        if (scalar_zero_index(e)) emit(Op::LDG, static_cast<uint32_t>(e.slot));
-        else if (index_of(e)) emit(Op::LDGX, static_cast<uint32_t>(e.slot));
-        else emit(Op::LDG, static_cast<uint32_t>(e.slot));
+        if (scalar_zero_index(e))
+          emit(Op::LDG, static_cast<uint32_t>(e.slot));
+        else if (index_of(e))
+          emit(Op::LDGX, static_cast<uint32_t>(e.slot));
+        else
+          emit(Op::LDG, static_cast<uint32_t>(e.slot));
         return;
       case RefKind::Command: {
         int32_t k = 0;
@@ -297,17 +361,24 @@ class Gen {
         }
         return;
       }
-      case RefKind::Function: call(e, 1); return;
-      case RefKind::Builtin: builtin(e); return;
-      default: push_int(0); return;
+      case RefKind::Function:
+        call(e, 1);
+        return;
+      case RefKind::Builtin:
+        builtin(e);
+        return;
+      default:
+        push_int(0);
+        return;
     }
   }
 
   bool scalar_zero_index(const Expr& e) const {
     if (!e.has_index && !e.has_parens) return true;
-    const GlobalSym* g = e.ref == RefKind::Global ? &(*globals_)[static_cast<size_t>(e.slot)] : nullptr;
-    return g != nullptr && g->length == 0 && e.args.size() == 1 && e.args[0]->kind == ExprKind::IntLit &&
-           e.args[0]->int_value == 0;
+    const GlobalSym* g =
+        e.ref == RefKind::Global ? &(*globals_)[static_cast<size_t>(e.slot)] : nullptr;
+    return g != nullptr && g->length == 0 && e.args.size() == 1 &&
+           e.args[0]->kind == ExprKind::IntLit && e.args[0]->int_value == 0;
   }
   const std::vector<GlobalSym>* globals_ = nullptr;
 
@@ -328,16 +399,31 @@ class Gen {
     const Expr& x = *e.args[0];
     const Kind k = operand_kind(x.type);
     switch (e.builtin) {
-      case Builtin::Sin: value(x, Kind::Float); emit(Op::SINF); return;
-      case Builtin::Cos: value(x, Kind::Float); emit(Op::COSF); return;
-      case Builtin::Sqrt: value(x, Kind::Float); emit(Op::SQRTF); return;
-      case Builtin::Real: value(x, Kind::Float); return;
+      case Builtin::Sin:
+        value(x, Kind::Float);
+        emit(Op::SINF);
+        return;
+      case Builtin::Cos:
+        value(x, Kind::Float);
+        emit(Op::COSF);
+        return;
+      case Builtin::Sqrt:
+        value(x, Kind::Float);
+        emit(Op::SQRTF);
+        return;
+      case Builtin::Real:
+        value(x, Kind::Float);
+        return;
       case Builtin::Abs:
         value(x);
         emit(k == Kind::Int ? Op::ABSI : k == Kind::Float ? Op::ABSF : Op::ABSD);
         return;
-      case Builtin::Fix: value(x, Kind::Int, false); return;
-      case Builtin::Rnd: value(x, Kind::Int, true); return;
+      case Builtin::Fix:
+        value(x, Kind::Int, false);
+        return;
+      case Builtin::Rnd:
+        value(x, Kind::Int, true);
+        return;
       case Builtin::Sign:
         if (k == Kind::Int) {
           value(x);
@@ -347,9 +433,21 @@ class Gen {
           emit(Op::SIGNF);
         }
         return;
-      case Builtin::Prgerr: value(x); drop(k); emit(Op::ERRCODE); return;
-      case Builtin::Utick: value(x); drop(k); emit(Op::CLOCK); return;
-      case Builtin::Tick: value(x); drop(k); milliseconds(); return;
+      case Builtin::Prgerr:
+        value(x);
+        drop(k);
+        emit(Op::ERRCODE);
+        return;
+      case Builtin::Utick:
+        value(x);
+        drop(k);
+        emit(Op::CLOCK);
+        return;
+      case Builtin::Tick:
+        value(x);
+        drop(k);
+        milliseconds();
+        return;
       case Builtin::Utock:
         value(x, Kind::Int, false);
         emit(Op::CLOCK);
@@ -365,8 +463,10 @@ class Gen {
       case Builtin::Tdif: {
         // Milliseconds since TM was sampled into x (1.12).
         value(x, Kind::Int, false);
-        if (const CommandInfo* tm = find_command("TM")) emit(Op::CMDGET, tm->id, 0);
-        else emit(Op::CLOCK);
+        if (const CommandInfo* tm = find_command("TM"))
+          emit(Op::CMDGET, tm->id, 0);
+        else
+          emit(Op::CLOCK);
         emit(Op::SWAP);
         emit(Op::SUBI);
         push_int(static_cast<int32_t>(kMicrosecondsPerMs));
@@ -396,10 +496,14 @@ class Gen {
 
   Kind target_kind(const Expr& t) const {
     switch (t.ref) {
-      case RefKind::Local: return kind_of((*locals_)[static_cast<size_t>(t.slot)].type);
-      case RefKind::Global: return kind_of((*globals_)[static_cast<size_t>(t.slot)].type);
-      case RefKind::Command: return kind_of(t.command->type);
-      default: return Kind::Int;
+      case RefKind::Local:
+        return kind_of((*locals_)[static_cast<size_t>(t.slot)].type);
+      case RefKind::Global:
+        return kind_of((*globals_)[static_cast<size_t>(t.slot)].type);
+      case RefKind::Command:
+        return kind_of(t.command->type);
+      default:
+        return Kind::Int;
     }
   }
 
@@ -407,7 +511,8 @@ class Gen {
   enum class StoreHow { Local, Global, GlobalIndexed, Command, CommandIndexed, Drop };
   StoreHow store_prefix(const Expr& t) {
     switch (t.ref) {
-      case RefKind::Local: return StoreHow::Local;
+      case RefKind::Local:
+        return StoreHow::Local;
       case RefKind::Global:
         if (scalar_zero_index(t)) return StoreHow::Global;
         return index_of(t) ? StoreHow::GlobalIndexed : StoreHow::Global;
@@ -417,19 +522,31 @@ class Gen {
           return StoreHow::CommandIndexed;
         }
         return StoreHow::Command;
-      default: return StoreHow::Drop;
+      default:
+        return StoreHow::Drop;
     }
   }
   void store(const Expr& t, StoreHow how) {
     switch (how) {
-      case StoreHow::Local: emit(Op::STL, static_cast<uint32_t>(t.slot)); return;
-      case StoreHow::Global: emit(Op::STG, static_cast<uint32_t>(t.slot)); return;
-      case StoreHow::GlobalIndexed: emit(Op::STGX, static_cast<uint32_t>(t.slot)); return;
-      case StoreHow::Command:
-        emit(Op::CMDSET, t.command->id, t.has_index ? static_cast<uint32_t>(t.args[0]->int_value) : 0u);
+      case StoreHow::Local:
+        emit(Op::STL, static_cast<uint32_t>(t.slot));
         return;
-      case StoreHow::CommandIndexed: emit(Op::CMDSETX, t.command->id); return;
-      case StoreHow::Drop: emit(Op::POP); return;
+      case StoreHow::Global:
+        emit(Op::STG, static_cast<uint32_t>(t.slot));
+        return;
+      case StoreHow::GlobalIndexed:
+        emit(Op::STGX, static_cast<uint32_t>(t.slot));
+        return;
+      case StoreHow::Command:
+        emit(Op::CMDSET, t.command->id,
+             t.has_index ? static_cast<uint32_t>(t.args[0]->int_value) : 0u);
+        return;
+      case StoreHow::CommandIndexed:
+        emit(Op::CMDSETX, t.command->id);
+        return;
+      case StoreHow::Drop:
+        emit(Op::POP);
+        return;
     }
   }
 
@@ -441,7 +558,8 @@ class Gen {
 
   uint32_t temp(ValueType type) {
     const uint32_t slot = static_cast<uint32_t>(temp_top_++);
-    if (locals_->size() < temp_top_) locals_->push_back({"$t" + std::to_string(slot - temp_base_), type});
+    if (locals_->size() < temp_top_)
+      locals_->push_back({"$t" + std::to_string(slot - temp_base_), type});
     return slot;
   }
 
@@ -455,12 +573,24 @@ class Gen {
     const size_t temps = temp_top_;
     if (s.kind != StmtKind::Label) line_entry(s.offset);
     switch (s.kind) {
-      case StmtKind::Expr: expression_statement(s); break;
-      case StmtKind::Assign: assignment(s); break;
-      case StmtKind::IncDec: incdec(s); break;
-      case StmtKind::If: if_statement(s); break;
-      case StmtKind::While: while_statement(s); break;
-      case StmtKind::For: for_statement(s); break;
+      case StmtKind::Expr:
+        expression_statement(s);
+        break;
+      case StmtKind::Assign:
+        assignment(s);
+        break;
+      case StmtKind::IncDec:
+        incdec(s);
+        break;
+      case StmtKind::If:
+        if_statement(s);
+        break;
+      case StmtKind::While:
+        while_statement(s);
+        break;
+      case StmtKind::For:
+        for_statement(s);
+        break;
       case StmtKind::Until: {
         // Suspends the program, not the drive: poll once per slice (2.12.3).
         const auto top = cb_.new_label(), done = cb_.new_label();
@@ -477,8 +607,12 @@ class Gen {
         emit(Op::WAIT, kMicrosecondsPerMs);
         eol(s);
         break;
-      case StmtKind::Switch: switch_statement(s); break;
-      case StmtKind::Try: try_statement(s); break;
+      case StmtKind::Switch:
+        switch_statement(s);
+        break;
+      case StmtKind::Try:
+        try_statement(s);
+        break;
       case StmtKind::Break:
       case StmtKind::Continue: {
         for (auto it = loops_.rbegin(); it != loops_.rend(); ++it) {
@@ -489,16 +623,26 @@ class Gen {
         }
         break;
       }
-      case StmtKind::Return: emit(Op::RET); break;
-      case StmtKind::Exit: emit(Op::EXIT); break;
+      case StmtKind::Return:
+        emit(Op::RET);
+        break;
+      case StmtKind::Exit:
+        emit(Op::EXIT);
+        break;
       case StmtKind::Goto: {
         auto it = goto_labels_.find(label_key(s.name, s.auto_label));
-        if (it != goto_labels_.end()) cb_.emit_to(Op::JMP, it->second);
-        else reset_to(s.name);  // goto #@AUTOEXEC of "function AUTOEXEC()"
+        if (it != goto_labels_.end())
+          cb_.emit_to(Op::JMP, it->second);
+        else
+          reset_to(s.name);  // goto #@AUTOEXEC of "function AUTOEXEC()"
         break;
       }
-      case StmtKind::Reset: reset_to(s.name); break;
-      case StmtKind::Label: bind_label_stmt(s); break;
+      case StmtKind::Reset:
+        reset_to(s.name);
+        break;
+      case StmtKind::Label:
+        bind_label_stmt(s);
+        break;
     }
     temp_top_ = temps;
   }
@@ -517,7 +661,8 @@ class Gen {
     const Expr& e = *s.value;
     if (e.kind == ExprKind::Ref && e.ref == RefKind::Function) {
       call(e, 0);
-    } else if (e.kind == ExprKind::Ref && e.ref == RefKind::Command && (e.command->flags & kAction)) {
+    } else if (e.kind == ExprKind::Ref && e.ref == RefKind::Command &&
+               (e.command->flags & kAction)) {
       emit(Op::CMDRUN, e.command->id, 0);
     } else if (show) {
       show(e);
@@ -570,8 +715,9 @@ class Gen {
     }
     // The index is computed once.
     int32_t index_slot = -1;
-    const bool indexed = (t.ref == RefKind::Global && !scalar_zero_index(t) && (t.has_index || t.has_parens)) ||
-                         (t.ref == RefKind::Command && t.has_index && t.args[0]->kind != ExprKind::IntLit);
+    const bool indexed =
+        (t.ref == RefKind::Global && !scalar_zero_index(t) && (t.has_index || t.has_parens)) ||
+        (t.ref == RefKind::Command && t.has_index && t.args[0]->kind != ExprKind::IntLit);
     if (indexed) {
       value(*t.args[0], Kind::Int, false);
       index_slot = static_cast<int32_t>(temp(ValueType::Int));
@@ -579,10 +725,15 @@ class Gen {
       emit(Op::LDL, static_cast<uint32_t>(index_slot));
     }
     // load
-    if (t.ref == RefKind::Local) emit(Op::LDL, static_cast<uint32_t>(t.slot));
-    else if (t.ref == RefKind::Global) emit(indexed ? Op::LDGX : Op::LDG, static_cast<uint32_t>(t.slot));
-    else if (indexed) emit(Op::CMDGETX, t.command->id);
-    else emit(Op::CMDGET, t.command->id, t.has_index ? static_cast<uint32_t>(t.args[0]->int_value) : 0u);
+    if (t.ref == RefKind::Local)
+      emit(Op::LDL, static_cast<uint32_t>(t.slot));
+    else if (t.ref == RefKind::Global)
+      emit(indexed ? Op::LDGX : Op::LDG, static_cast<uint32_t>(t.slot));
+    else if (indexed)
+      emit(Op::CMDGETX, t.command->id);
+    else
+      emit(Op::CMDGET, t.command->id,
+           t.has_index ? static_cast<uint32_t>(t.args[0]->int_value) : 0u);
     if (indexed) {
       // [value] -> [index, value]
       emit(Op::LDL, static_cast<uint32_t>(index_slot));
@@ -595,10 +746,15 @@ class Gen {
       push_float(static_cast<float>(s.delta));
       emit(Op::ADDF);
     }
-    if (t.ref == RefKind::Local) emit(Op::STL, static_cast<uint32_t>(t.slot));
-    else if (t.ref == RefKind::Global) emit(indexed ? Op::STGX : Op::STG, static_cast<uint32_t>(t.slot));
-    else if (indexed) emit(Op::CMDSETX, t.command->id);
-    else emit(Op::CMDSET, t.command->id, t.has_index ? static_cast<uint32_t>(t.args[0]->int_value) : 0u);
+    if (t.ref == RefKind::Local)
+      emit(Op::STL, static_cast<uint32_t>(t.slot));
+    else if (t.ref == RefKind::Global)
+      emit(indexed ? Op::STGX : Op::STG, static_cast<uint32_t>(t.slot));
+    else if (indexed)
+      emit(Op::CMDSETX, t.command->id);
+    else
+      emit(Op::CMDSET, t.command->id,
+           t.has_index ? static_cast<uint32_t>(t.args[0]->int_value) : 0u);
     eol(s);
   }
 
@@ -657,8 +813,11 @@ class Gen {
       const Expr& st = *s.step;
       int32_t c = 0;
       bool constant = false;
-      if (st.kind == ExprKind::IntLit) { c = st.int_value; constant = true; }
-      else if (st.kind == ExprKind::Unary && st.op == Tok::Minus && st.lhs->kind == ExprKind::IntLit) {
+      if (st.kind == ExprKind::IntLit) {
+        c = st.int_value;
+        constant = true;
+      } else if (st.kind == ExprKind::Unary && st.op == Tok::Minus &&
+                 st.lhs->kind == ExprKind::IntLit) {
         c = -st.lhs->int_value;
         constant = true;
       }
@@ -684,8 +843,10 @@ class Gen {
     auto test = [&](bool up) {
       value(var);
       emit(Op::LDL, end_slot);
-      if (k == Kind::Int) emit(up ? Op::LEI : Op::GEI);
-      else emit(up ? Op::LEF : Op::GEF);
+      if (k == Kind::Int)
+        emit(up ? Op::LEI : Op::GEI);
+      else
+        emit(up ? Op::LEF : Op::GEF);
     };
     if (step_sign != 0) {
       test(step_sign > 0);
@@ -717,9 +878,12 @@ class Gen {
     } else {
       const StoreHow how = store_prefix(var);
       value(var);
-      if (step_slot >= 0) emit(Op::LDL, static_cast<uint32_t>(step_slot));
-      else if (k == Kind::Int) push_int(1);
-      else push_float(1.0f);  // the implied step of a float variable is 1.0, not int bits (2.12.2)
+      if (step_slot >= 0)
+        emit(Op::LDL, static_cast<uint32_t>(step_slot));
+      else if (k == Kind::Int)
+        push_int(1);
+      else
+        push_float(1.0f);  // the implied step of a float variable is 1.0, not int bits (2.12.2)
       emit(k == Kind::Int ? Op::ADDI : Op::ADDF);
       store(var, how);
     }
@@ -750,15 +914,19 @@ class Gen {
       const auto next_case = cb_.new_label();
       if (c.value) {
         const Kind ck = operand_kind(c.value->type);
-        const Kind k = (sk == Kind::Float || ck == Kind::Float) ? Kind::Float
-                       : (sk == Kind::Dynamic || ck == Kind::Dynamic) ? Kind::Dynamic : Kind::Int;
+        const Kind k = (sk == Kind::Float || ck == Kind::Float)       ? Kind::Float
+                       : (sk == Kind::Dynamic || ck == Kind::Dynamic) ? Kind::Dynamic
+                                                                      : Kind::Int;
         emit(Op::LDL, value_slot);
         if (sk == Kind::Dynamic) emit(Op::LDL, tag_slot);
         convert(sk, k);
         value(*c.value, k);
-        if (k == Kind::Dynamic) emit(Op::CMPD, 0);
-        else if (k == Kind::Int) emit(Op::EQI);
-        else float_equality(true);
+        if (k == Kind::Dynamic)
+          emit(Op::CMPD, 0);
+        else if (k == Kind::Int)
+          emit(Op::EQI);
+        else
+          float_equality(true);
         cb_.emit_to(Op::JZ, next_case);
         emit(Op::EOL);
       }
@@ -847,7 +1015,8 @@ namespace {
 // order would have numbered them.
 void renumber_constants(bytecode::Image& img, const ConstantTable& table) {
   std::vector<uint32_t> renamed(table.constants.size(), UINT32_MAX);
-  for (size_t pc = 0; pc < img.code.size(); pc += bytecode::op_length(bytecode::word_op(img.code[pc]))) {
+  for (size_t pc = 0; pc < img.code.size();
+       pc += bytecode::op_length(bytecode::word_op(img.code[pc]))) {
     const Op op = bytecode::word_op(img.code[pc]);
     if (bytecode::op_info(op).a != bytecode::Operand::Const) continue;
     uint32_t& k = renamed[bytecode::word_a(img.code[pc])];
@@ -889,11 +1058,13 @@ bytecode::Image generate_program(const Program& program, const Symbols& symbols,
     gen.declare_goto_labels(program.top);
     for (const StmtPtr& s : program.top) gen.statement(*s);
     if (!gen.finish() || !bodies_ok) reporter.error(Error::InternalCompilerError, 0);
-    if (img.code.size() + body_words > bytecode::kOperandMax) reporter.error(Error::CompiledCodeTooLong, 0);
+    if (img.code.size() + body_words > bytecode::kOperandMax)
+      reporter.error(Error::CompiledCodeTooLong, 0);
     return {};
   }
   for (const GlobalSym& g : symbols.globals)
-    img.globals.push_back({g.name, value_type(g.type), g.length == 0 ? 1u : static_cast<uint32_t>(g.length)});
+    img.globals.push_back(
+        {g.name, value_type(g.type), g.length == 0 ? 1u : static_cast<uint32_t>(g.length)});
   Gen gen(img, &symbols, locator, constants);
   gen.globals_ = &symbols.globals;
 
@@ -932,7 +1103,8 @@ bytecode::Image generate_program(const Program& program, const Symbols& symbols,
   for (const StmtPtr& s : program.top) {
     if (s->kind == StmtKind::Label) {
       auto it = gen.routine_of_label.find(std::string(s->name));
-      if (it != gen.routine_of_label.end() && img.routines[static_cast<size_t>(it->second)].entry == 0 &&
+      if (it != gen.routine_of_label.end() &&
+          img.routines[static_cast<size_t>(it->second)].entry == 0 &&
           img.routines[static_cast<size_t>(it->second)].kind != bytecode::RoutineKind::Function)
         img.routines[static_cast<size_t>(it->second)].entry = gen.here();
     }
@@ -962,11 +1134,14 @@ bytecode::Image generate_program(const Program& program, const Symbols& symbols,
     }
     for (const RoutineFixup& f : body->fixups) {
       auto it = gen.routine_of_label.find(std::string(f.name));
-      const uint32_t routine = it == gen.routine_of_label.end() || it->second < 0 ? 0u : static_cast<uint32_t>(it->second);
+      const uint32_t routine = it == gen.routine_of_label.end() || it->second < 0
+                                   ? 0u
+                                   : static_cast<uint32_t>(it->second);
       uint32_t& word = img.code[base + f.pc];
       word = bytecode::make_word(bytecode::word_op(word), routine);
     }
-    for (const bytecode::LineEntry& e : body->lines) append_line(img.lines, {e.code + base, e.file, e.line});
+    for (const bytecode::LineEntry& e : body->lines)
+      append_line(img.lines, {e.code + base, e.file, e.line});
   }
 
   // Auto-routines answer their events.
@@ -978,19 +1153,22 @@ bytecode::Image generate_program(const Program& program, const Symbols& symbols,
   // A program of declarations only still loads: its globals serve the command line.
   if (img.code.empty() && body_words == 0) gen.emit(Op::RET);
   if (!ok) reporter.error(Error::InternalCompilerError, 0);
-  if (img.code.size() + body_words > bytecode::kOperandMax) reporter.error(Error::CompiledCodeTooLong, 0);
+  if (img.code.size() + body_words > bytecode::kOperandMax)
+    reporter.error(Error::CompiledCodeTooLong, 0);
   renumber_constants(img, constants);
   img.dialect = "gold";
   img.info.push_back("dialect=gold");
   return img;
 }
 
-bytecode::Image generate_line(const Block& block, const std::vector<KnownGlobal>& known, const Locator& locator,
-                              Reporter& reporter, std::vector<LineValue>& values) {
+bytecode::Image generate_line(const Block& block, const std::vector<KnownGlobal>& known,
+                              const Locator& locator, Reporter& reporter,
+                              std::vector<LineValue>& values) {
   bytecode::Image img;
   std::vector<GlobalSym> globals;
   for (const KnownGlobal& g : known) {
-    img.globals.push_back({g.name, value_type(g.type), g.length == 0 ? 1u : static_cast<uint32_t>(g.length)});
+    img.globals.push_back(
+        {g.name, value_type(g.type), g.length == 0 ? 1u : static_cast<uint32_t>(g.length)});
     globals.push_back({g.name, g.type, g.length, 0});
   }
   ConstantTable constants;
@@ -1006,7 +1184,8 @@ bytecode::Image generate_line(const Block& block, const std::vector<KnownGlobal>
     LineValue v;
     v.kind = k;
     v.value_global = static_cast<uint32_t>(img.globals.size());
-    img.globals.push_back({"$value" + std::to_string(values.size()), k == Kind::Float ? ValueType::Float : ValueType::Int, 1});
+    img.globals.push_back({"$value" + std::to_string(values.size()),
+                           k == Kind::Float ? ValueType::Float : ValueType::Int, 1});
     if (k == Kind::Dynamic) {
       v.tag_global = static_cast<int32_t>(img.globals.size());
       img.globals.push_back({"$tag" + std::to_string(values.size()), ValueType::Int, 1});

@@ -51,7 +51,8 @@ std::optional<int32_t> upload_number(std::string_view digits) {
   }
   uint32_t n = 0;
   const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), n, base);
-  if (digits.empty() || error != std::errc() || end != digits.data() + digits.size()) return std::nullopt;
+  if (digits.empty() || error != std::errc() || end != digits.data() + digits.size())
+    return std::nullopt;
   return static_cast<int32_t>(n);
 }
 
@@ -68,16 +69,18 @@ std::vector<Answer> Firmware::send(std::string_view text, bool takes_time) {
   return send_line(text, takes_time, nullptr);
 }
 
-std::vector<Answer> Firmware::send_line(std::string_view text, bool takes_time, DownloadReceiver* download) {
+std::vector<Answer> Firmware::send_line(std::string_view text, bool takes_time,
+                                        DownloadReceiver* download) {
   std::vector<Answer> answers;
   const dialect::FramerOptions framing = command_line_framing();
   for (const dialect::Frame& frame : dialect::frame_text(text, framing)) {
     if (frame.kind == dialect::Frame::Kind::kTooLong) {
-      answers.push_back(error_answer(kErrorSyntax, "Command syntax error: the expression is longer than " +
-                                                       std::to_string(framing.max_line_length) +
-                                                       " characters"));
+      answers.push_back(
+          error_answer(kErrorSyntax, "Command syntax error: the expression is longer than " +
+                                         std::to_string(framing.max_line_length) + " characters"));
     } else if (frame.kind == dialect::Frame::Kind::kBadCharacter) {
-      answers.push_back(error_answer(kErrorSyntax, "Command syntax error: a character that is not printable ASCII"));
+      answers.push_back(error_answer(
+          kErrorSyntax, "Command syntax error: a character that is not printable ASCII"));
     } else if (download != nullptr && DownloadReceiver::is_download_command(frame.text)) {
       download_expression(frame.text, *download, answers);
     } else {
@@ -99,7 +102,9 @@ void Firmware::download_expression(std::string_view expression, DownloadReceiver
   if (image.empty()) return;  // BEGIN, a chunk or ABORT: nothing more to do
   // The image's CRC and the verifier are checked before anything is stored.
   const dialect::DownloadResult r = this->download(image);
-  if (!r.ok) answers.push_back(error_answer(r.storage_failed ? kErrorStorage : kErrorDownloadRefused, r.error));
+  if (!r.ok)
+    answers.push_back(
+        error_answer(r.storage_failed ? kErrorStorage : kErrorDownloadRefused, r.error));
 }
 
 void Firmware::recorder_upload(std::string_view argument, std::vector<Answer>& answers) {
@@ -124,7 +129,8 @@ void Firmware::expression(std::string_view text, std::vector<Answer>& answers) {
   }
   // A command that answers text (VR) is no expression: its text is the answer.
   if (const CommandInfo* c = find_command(text); c != nullptr && (c->flags & kText) != 0) {
-    if (auto answer = drive_commands_->text(c->id)) answers.push_back(Answer{std::move(*answer), 0});
+    if (auto answer = drive_commands_->text(c->id))
+      answers.push_back(Answer{std::move(*answer), 0});
     return;
   }
   run_line(std::string(text), answers);
@@ -142,9 +148,11 @@ void Firmware::run_line(const std::string& text, std::vector<Answer>& answers) {
     return;
   }
   std::string why;
-  const auto loaded = dialect::LoadedProgram::load(bytecode::encode(line.image), line_config(), *this, &why, false);
+  const auto loaded =
+      dialect::LoadedProgram::load(bytecode::encode(line.image), line_config(), *this, &why, false);
   if (!loaded) {
-    answers.push_back(error_answer(kErrorSyntax, "Command syntax error: the line's image is unsound: " + why));
+    answers.push_back(
+        error_answer(kErrorSyntax, "Command syntax error: the line's image is unsound: " + why));
     return;
   }
   vm::Machine& m = loaded->machine();
@@ -171,14 +179,17 @@ void Firmware::run_line(const std::string& text, std::vector<Answer>& answers) {
       // The drive's own refusal: its code, and what it means.
       const int32_t code = m.error_detail(0);
       const char* meaning = interpreter_error_text(code);
-      answers.push_back(error_answer(code, meaning != nullptr ? meaning : "drive error " + std::to_string(code)));
+      answers.push_back(
+          error_answer(code, meaning != nullptr ? meaning : "drive error " + std::to_string(code)));
     } else {
-      answers.push_back(error_answer(kErrorRunTimeBase + static_cast<int32_t>(e), vm::run_error_text(e)));
+      answers.push_back(
+          error_answer(kErrorRunTimeBase + static_cast<int32_t>(e), vm::run_error_text(e)));
     }
     return;
   }
   if (r.end != vm::SliceEnd::Finished) {
-    answers.push_back(error_answer(kErrorLineDidNotFinish, "the line did not finish (it waited or ran too long)"));
+    answers.push_back(error_answer(kErrorLineDidNotFinish,
+                                   "the line did not finish (it waited or ran too long)"));
     return;
   }
   for (const gold::LineValue& v : line.values) {

@@ -1,14 +1,13 @@
 // The compiler driver: preprocess, check line lengths, lex, parse, check, generate.
 #include "dialects/gold/compile.h"
 
+#include <sys/stat.h>
+
 #include <cstdio>
 #include <cstring>
 
-#include <sys/stat.h>
-
 #include "bytecode/image.h"
 #include "bytecode/peephole.h"
-
 #include "dialects/gold/lexer.h"
 #include "dialects/gold/parser.h"
 #include "dialects/gold/program_compiler.h"
@@ -31,7 +30,8 @@ void check_line_lengths(const SourceFile& source, size_t limit, Reporter& report
   size_t found = 0;
   for (size_t start = 0; start <= t.size() && found <= limit; ++line) {
     const void* nl = std::memchr(t.data() + start, '\n', t.size() - start);
-    const size_t i = nl == nullptr ? t.size() : static_cast<size_t>(static_cast<const char*>(nl) - t.data());
+    const size_t i =
+        nl == nullptr ? t.size() : static_cast<size_t>(static_cast<const char*>(nl) - t.data());
     size_t end = i;
     if (end > start && t[end - 1] == '\r') --end;
     if (end - start > kMaxLineLength) {
@@ -100,7 +100,8 @@ std::optional<std::string> read_source(const std::string& path, std::string* why
   std::FILE* f = std::fopen(path.c_str(), "rb");
   // Only a regular file's size is its length (a directory's "size" asked an exabyte string).
   struct stat st {};
-  if (f != nullptr && ::fstat(::fileno(f), &st) == 0 && S_ISREG(st.st_mode) && std::fseek(f, 0, SEEK_END) == 0) {
+  if (f != nullptr && ::fstat(::fileno(f), &st) == 0 && S_ISREG(st.st_mode) &&
+      std::fseek(f, 0, SEEK_END) == 0) {
     const long size = std::ftell(f);
     std::string text;
     if (size >= 0 && std::fseek(f, 0, SEEK_SET) == 0) {
@@ -154,7 +155,8 @@ CompiledLine compile_line(std::string_view line, const std::vector<KnownGlobal>&
   AstArena arena;
   Block block = parse_line(lexer, reporter, arena);
   check_line(block, known, reporter);
-  if (!reporter.has_errors()) result.image = generate_line(block, known, locator, reporter, result.values);
+  if (!reporter.has_errors())
+    result.image = generate_line(block, known, locator, reporter, result.values);
   result.diagnostics = reporter.finish();
   attach_source_lines(result.diagnostics, source);
   if (!result.ok()) {

@@ -42,7 +42,7 @@ CompileResult compile_file(const std::string& path, const CompileOptions& option
 std::vector<KnownGlobal> known_globals(const bytecode::Image& program);
 
 struct CompiledLine {
-  bytecode::Image image;  // routine 0 runs the line
+  bytecode::Image image;          // routine 0 runs the line
   std::vector<LineValue> values;  // what the line shows, in order
   std::vector<Diagnostic> diagnostics;
   bool ok() const;

@@ -34,7 +34,8 @@ class GoldDialect final : public dialect::Dialect {
   std::span<const std::string_view> source_extensions() const override { return kExtensions; }
   std::string_view stored_extension() const override { return ".upi"; }
 
-  dialect::CompileOutput compile_file(const std::string& path, const dialect::CompileSettings& settings) const override {
+  dialect::CompileOutput compile_file(const std::string& path,
+                                      const dialect::CompileSettings& settings) const override {
     CompileOptions options;
     options.check_only = settings.check_only;
     options.created_unix_s = settings.created_unix_s;
@@ -52,10 +53,12 @@ class GoldDialect final : public dialect::Dialect {
     static const std::vector<dialect::ErrorInfo> table = diagnostic_table();
     return table;
   }
-  std::span<const dialect::ErrorInfo> interpreter_errors() const override { return kInterpreterErrors; }
+  std::span<const dialect::ErrorInfo> interpreter_errors() const override {
+    return kInterpreterErrors;
+  }
 
-  std::unique_ptr<dialect::Firmware> make_firmware(dialect::Runtime& runtime,
-                                                   const dialect::FirmwareOptions& options) const override {
+  std::unique_ptr<dialect::Firmware> make_firmware(
+      dialect::Runtime& runtime, const dialect::FirmwareOptions& options) const override {
     return std::make_unique<Firmware>(runtime, options);
   }
 

@@ -5,8 +5,8 @@
 #include <charconv>
 #include <string>
 
-#include "dialects/gold/interpreter_errors.h"
 #include "dialects/gold/download_protocol.h"
+#include "dialects/gold/interpreter_errors.h"
 
 namespace uprog::gold {
 namespace {
@@ -15,7 +15,8 @@ namespace {
 std::string compact_upper(std::string_view text) {
   std::string out;
   for (char c : text) {
-    if (c != ' ' && c != '\t') out.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
+    if (c != ' ' && c != '\t')
+      out.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
   }
   return out;
 }
@@ -47,16 +48,19 @@ Answer DownloadReceiver::fail(int32_t code, std::string why) {
   return Answer{std::move(why), code};
 }
 
-std::optional<Answer> DownloadReceiver::handle(std::string_view expression, std::vector<uint8_t>& finished) {
+std::optional<Answer> DownloadReceiver::handle(std::string_view expression,
+                                               std::vector<uint8_t>& finished) {
   const std::string word = compact_upper(expression);
   if (word.starts_with("DL=")) {
     if (!in_progress_) return fail(kErrorNoDownload, "DL= without DL##BEGIN");
     const std::string_view hex = std::string_view(word).substr(3);
     if (hex.empty() || hex.size() % 2 != 0) {
-      return fail(kErrorDownloadChunk, "DL= needs hex digit pairs, got " + std::to_string(hex.size()) + " digits");
+      return fail(kErrorDownloadChunk,
+                  "DL= needs hex digit pairs, got " + std::to_string(hex.size()) + " digits");
     }
     if (bytes_.size() + hex.size() / 2 > announced_) {
-      return fail(kErrorDownloadChunk, "more bytes than the " + std::to_string(announced_) + " announced");
+      return fail(kErrorDownloadChunk,
+                  "more bytes than the " + std::to_string(announced_) + " announced");
     }
     const std::size_t before = bytes_.size();
     for (std::size_t i = 0; i < hex.size(); i += 2) {
@@ -76,8 +80,8 @@ std::optional<Answer> DownloadReceiver::handle(std::string_view expression, std:
     const auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), size);
     if (number.empty() || ec != std::errc() || end != number.data() + number.size() || size == 0 ||
         size > kDownloadMaxBytes) {
-      return fail(kErrorDownloadSize, "DL##BEGIN=<bytes> needs a size from 1 to " +
-                                          std::to_string(kDownloadMaxBytes));
+      return fail(kErrorDownloadSize,
+                  "DL##BEGIN=<bytes> needs a size from 1 to " + std::to_string(kDownloadMaxBytes));
     }
     in_progress_ = true;
     announced_ = size;
@@ -86,8 +90,9 @@ std::optional<Answer> DownloadReceiver::handle(std::string_view expression, std:
   if (word == "DL##END") {
     if (!in_progress_) return fail(kErrorNoDownload, "DL##END without DL##BEGIN");
     if (bytes_.size() != announced_) {
-      return fail(kErrorDownloadSize, "DL##END after " + std::to_string(bytes_.size()) + " of the " +
-                                          std::to_string(announced_) + " bytes announced");
+      return fail(kErrorDownloadSize, "DL##END after " + std::to_string(bytes_.size()) +
+                                          " of the " + std::to_string(announced_) +
+                                          " bytes announced");
     }
     finished.swap(bytes_);
     abort();
@@ -97,8 +102,9 @@ std::optional<Answer> DownloadReceiver::handle(std::string_view expression, std:
     abort();
     return std::nullopt;
   }
-  return fail(kErrorSyntax, "Command syntax error: the download commands are DL##BEGIN=<bytes>, DL=<hex>, "
-                            "DL##END and DL##ABORT");
+  return fail(kErrorSyntax,
+              "Command syntax error: the download commands are DL##BEGIN=<bytes>, DL=<hex>, "
+              "DL##END and DL##ABORT");
 }
 
 }  // namespace uprog::gold

@@ -1,6 +1,7 @@
 // Maps the Gold drive commands (commands.h) onto a drive::Axis: reads, writes and actions by
-// command id and index, each refused with a Gold-style error code (docs/dialects/gold-drive-errors.md).
-// Program-control commands belong to the controller and come back as kErrorNotHandledHere.
+// command id and index, each refused with a Gold-style error code
+// (docs/dialects/gold-drive-errors.md). Program-control commands belong to the controller and come
+// back as kErrorNotHandledHere.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -20,20 +21,20 @@ namespace uprog::gold {
 // where it has a matching entry.
 enum DriveError : int32_t {
   kDriveOk = 0,
-  kErrorBadCommand = 2,          // no command with that id
-  kErrorBadIndex = 3,            // index outside the command's range, or an index it does not take
-  kErrorNoValue = 5,             // an action read as a value, or a non-action executed
-  kErrorBadStartData = 7,        // reference EC 7 "Mode cannot be started - bad initialization
-                                 // data": BG of a PT motion whose PT lies outside MP[1]..MP[2]
-  kErrorOutOfRange = 21,         // the value is outside the command's range
-  kErrorNotAssignable = 23,      // an action given a value (BG=1)
-  kErrorModeNotSupported = 26,   // BG in unit mode 1
-  kErrorReadOnly = 43,           // a status assigned (VX=0)
-  kErrorMotorMustBeOn = 57,      // BG while MO=0
-  kErrorMotorMustBeOff = 60,     // UM while MO=1
-  kErrorFaultPresent = 64,       // MO=1 while a fault's cause is present
-  kErrorInhibitActive = 65,      // MO=1 while an inhibit input is active
-  kErrorNotHandledHere = 1000,   // a controller command (XQ, MI, PS, SV, ...): the caller handles it
+  kErrorBadCommand = 2,         // no command with that id
+  kErrorBadIndex = 3,           // index outside the command's range, or an index it does not take
+  kErrorNoValue = 5,            // an action read as a value, or a non-action executed
+  kErrorBadStartData = 7,       // reference EC 7 "Mode cannot be started - bad initialization
+                                // data": BG of a PT motion whose PT lies outside MP[1]..MP[2]
+  kErrorOutOfRange = 21,        // the value is outside the command's range
+  kErrorNotAssignable = 23,     // an action given a value (BG=1)
+  kErrorModeNotSupported = 26,  // BG in unit mode 1
+  kErrorReadOnly = 43,          // a status assigned (VX=0)
+  kErrorMotorMustBeOn = 57,     // BG while MO=0
+  kErrorMotorMustBeOff = 60,    // UM while MO=1
+  kErrorFaultPresent = 64,      // MO=1 while a fault's cause is present
+  kErrorInhibitActive = 65,     // MO=1 while an inhibit input is active
+  kErrorNotHandledHere = 1000,  // a controller command (XQ, MI, PS, SV, ...): the caller handles it
 };
 
 // True for the commands this class serves; the others (program control, MI, PS, EC, SV, LD,
@@ -82,8 +83,8 @@ class DriveCommands {
   drive::Axis& axis_;
   RecorderCommands recorder_;
   ProgramStateSource program_state_;
-  int32_t echo_ = 1;  // EO: a real drive echoes until the host sends EO=0
-  int32_t hex_ = 0;   // HX
+  int32_t echo_ = 1;                   // EO: a real drive echoes until the host sends EO=0
+  int32_t hex_ = 0;                    // HX
   std::array<int32_t, 2> mp_spare_{};  // MP[5], MP[6]: stored, no effect
 };
 

@@ -5,7 +5,8 @@
 
 namespace uprog::gold {
 
-ElmoWire::ElmoWire(dialect::WireStyle style, dialect::FramerOptions framing, std::function<bool()> echo_on)
+ElmoWire::ElmoWire(dialect::WireStyle style, dialect::FramerOptions framing,
+                   std::function<bool()> echo_on)
     : style_(style), framing_(framing), echo_on_(std::move(echo_on)), readable_(framing) {
   // A real drive answers every terminator, an empty expression too (host drivers send `;` alone
   // to see that the drive is there).
@@ -25,7 +26,9 @@ void ElmoWire::write_line_end(std::string& out) const {
   if (!drive_style()) readable_.write_line_end(out);
 }
 
-void ElmoWire::write_output(std::string_view text, std::string& out) const { readable_.write_output(text, out); }
+void ElmoWire::write_output(std::string_view text, std::string& out) const {
+  readable_.write_output(text, out);
+}
 
 void ElmoWire::write_echo(std::string_view bytes, std::string& out) const {
   if (echoes()) out += bytes;

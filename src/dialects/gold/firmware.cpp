@@ -34,7 +34,11 @@ dialect::FramerOptions command_line_framing() {
 }
 
 Firmware::Firmware(dialect::Runtime& runtime, const dialect::FirmwareOptions& options)
-    : runtime_(runtime), options_(options), wire_(options.wire_style, command_line_framing(), [this] { return drive_commands_ && drive_commands_->echo(); }), schedule_(options.timing),
+    : runtime_(runtime),
+      options_(options),
+      wire_(options.wire_style, command_line_framing(),
+            [this] { return drive_commands_ && drive_commands_->echo(); }),
+      schedule_(options.timing),
       slice_budget_(schedule_.budget()) {}
 
 uint64_t Firmware::cycle_ns() const {
@@ -48,8 +52,9 @@ void Firmware::boot(std::vector<std::string>& messages) {
   axis_ = &runtime_.axis();
   drive_commands_ = std::make_unique<DriveCommands>(*axis_);
   // SR's program bits (12 running, 29 stopped by an error) are the firmware's to tell.
-  drive_commands_->set_program_state_source(
-      [this] { return ProgramState{program_status() == 1, program_error_ != vm::RunError::None}; });
+  drive_commands_->set_program_state_source([this] {
+    return ProgramState{program_status() == 1, program_error_ != vm::RunError::None};
+  });
   recorder_map_.clear();
   ec_ = 0;
   if (!flash_read_) {
@@ -60,8 +65,8 @@ void Firmware::boot(std::vector<std::string>& messages) {
       if (r.ok) {
         stored_ = std::move(*bytes);
       } else {
-        messages.push_back("stored program " + runtime_.flash().where(kProgramRecord) + " refused: " + r.error +
-                           "; the drive starts without a program");
+        messages.push_back("stored program " + runtime_.flash().where(kProgramRecord) +
+                           " refused: " + r.error + "; the drive starts without a program");
       }
     }
   }
@@ -80,7 +85,8 @@ void Firmware::boot(std::vector<std::string>& messages) {
 dialect::DownloadResult Firmware::verify(const std::vector<uint8_t>& bytes) {
   dialect::DownloadResult r;
   // The verifier runs inside the load; the scratch program is then dropped.
-  if (!dialect::LoadedProgram::load(bytes, kProgramConfig, *this, &r.error, false, kDialectName)) return r;
+  if (!dialect::LoadedProgram::load(bytes, kProgramConfig, *this, &r.error, false, kDialectName))
+    return r;
   r.ok = true;
   return r;
 }
@@ -130,7 +136,8 @@ int32_t Firmware::load_stored(std::string* error) {
   }
   unload();
   std::string why;
-  program_ = dialect::LoadedProgram::load(*stored_, kProgramConfig, *this, &why, true, kDialectName);
+  program_ =
+      dialect::LoadedProgram::load(*stored_, kProgramConfig, *this, &why, true, kDialectName);
   if (!program_) {
     if (error) *error = "stored program refused: " + why;
     unload();
@@ -173,7 +180,8 @@ int32_t Firmware::execute_program(std::string_view name, const std::vector<doubl
     }
   }
   if (machine()->status(kProgramThread) != vm::ThreadStatus::Idle) machine()->kill(kProgramThread);
-  const int32_t code = start_program(static_cast<uint32_t>(r), values.data(), static_cast<uint32_t>(values.size()));
+  const int32_t code =
+      start_program(static_cast<uint32_t>(r), values.data(), static_cast<uint32_t>(values.size()));
   if (code == 0) log("program started at " + std::string(name));
   return code;
 }
@@ -206,8 +214,10 @@ int32_t Firmware::program_status() const {
   if (!ever_run_) return -1;
   switch (program_->machine().status(kProgramThread)) {
     case vm::ThreadStatus::Running:
-    case vm::ThreadStatus::Waiting: return 1;
-    default: return 0;
+    case vm::ThreadStatus::Waiting:
+      return 1;
+    default:
+      return 0;
   }
 }
 
@@ -217,8 +227,8 @@ std::string Firmware::program_error_text() const {
 
 std::string Firmware::state_summary() const {
   drive::Axis& axis = runtime_.axis();
-  return fmt::format("PS={} PX={} VX={} MO={} MF={}", program_status(), axis.position(), axis.velocity(),
-                     axis.motor_on() ? 1 : 0, axis.motor_fault());
+  return fmt::format("PS={} PX={} VX={} MO={} MF={}", program_status(), axis.position(),
+                     axis.velocity(), axis.motor_on() ? 1 : 0, axis.motor_fault());
 }
 
 std::vector<dialect::ThreadInfo> Firmware::threads() const {
@@ -238,8 +248,9 @@ std::vector<dialect::ThreadInfo> Firmware::threads() const {
 vm::CommandStatus Firmware::read(uint32_t command, int32_t index, Value& out) {
   if (command == kMi || command == kPs || command == kEc) {
     if (index != 0) return kErrorBadIndex;
-    out = Value::of_int(command == kMi ? static_cast<int32_t>(autos_.mask())
-                        : command == kPs ? program_status() : ec_);
+    out = Value::of_int(command == kMi   ? static_cast<int32_t>(autos_.mask())
+                        : command == kPs ? program_status()
+                                         : ec_);
     return vm::kCommandOk;
   }
   if (command > 0xFFFF) return kErrorBadCommand;

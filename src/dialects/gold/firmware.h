@@ -48,22 +48,28 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::string state_summary() const override;
   std::vector<dialect::ThreadInfo> threads() const override;
   const dialect::LoadedProgram* loaded_program() const override { return program_.get(); }
-  std::optional<drive::Signal> recorder_signal(std::string_view n) const override { return gold::recorder_signal(n); }
+  std::optional<drive::Signal> recorder_signal(std::string_view n) const override {
+    return gold::recorder_signal(n);
+  }
   dialect::LoadedProgram* debug_program() override { return program_.get(); }
-  dialect::Evaluation evaluate(uint32_t thread, uint32_t depth, std::string_view expression) override;  // debug_hooks.cpp
-  std::string start_with_arguments(std::string_view entry, const std::vector<double>& args) override;
+  dialect::Evaluation evaluate(uint32_t thread, uint32_t depth,
+                               std::string_view expression) override;  // debug_hooks.cpp
+  std::string start_with_arguments(std::string_view entry,
+                                   const std::vector<double>& args) override;
 
   // --- vm::Host: drive commands, plus MI, PS and EC that the firmware keeps ---
   vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override;
   vm::CommandStatus write(uint32_t command, int32_t index, Value value) override;
-  vm::CommandStatus execute(uint32_t command, int32_t index, const Value* args, uint32_t arg_count) override;
+  vm::CommandStatus execute(uint32_t command, int32_t index, const Value* args,
+                            uint32_t arg_count) override;
   uint32_t now_us() override { return static_cast<uint32_t>(runtime_.now_ns() / 1000); }
 
   // --- the command line (command_line.cpp, program_control.cpp): one host line, its
   // expressions each taking a servo cycle when `takes_time` ---
   std::vector<dialect::Answer> send(std::string_view line, bool takes_time = true);
   // As send(), with the DL commands of one host's download (a Session's).
-  std::vector<dialect::Answer> send_line(std::string_view line, bool takes_time, DownloadReceiver* download);
+  std::vector<dialect::Answer> send_line(std::string_view line, bool takes_time,
+                                         DownloadReceiver* download);
   // Lets one servo cycle pass: the time the drive's background loop takes for an expression.
   void spend_expression_time();
 
@@ -82,7 +88,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   // --- the background (background.cpp) ---
   void background_slice();
   void raise_auto_events(uint32_t drive_events);
-  // --- the Elmo debugger's commands, DB##BP, BC, GO, SO, SI, SU, MS, PS, ES (debug_commands.cpp) ---
+  // --- the Elmo debugger's commands, DB##BP, BC, GO, SO, SI, SU, MS, PS, ES (debug_commands.cpp)
+  // ---
   bool debug_command(const std::string& word, std::vector<dialect::Answer>& answers);
   void after_debug_slice(vm::SliceEnd end);
   void dispatch_auto_routines();
@@ -106,7 +113,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   dialect::FirmwareOptions options_;
   ElmoWire wire_;
   scheduling::WholeLines schedule_;
-  vm::Budget slice_budget_;  // the whole-lines policy's, worked out once
+  vm::Budget slice_budget_;      // the whole-lines policy's, worked out once
   drive::Axis* axis_ = nullptr;  // the runtime's axis since the last boot
   std::unique_ptr<DriveCommands> drive_commands_;
 
@@ -121,7 +128,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   int32_t program_error_detail_ = 0;
   AutoRoutines autos_;
 
-  int32_t ec_ = 0;  // EC: the interpreter's last error code
+  int32_t ec_ = 0;                               // EC: the interpreter's last error code
   std::map<int32_t, std::string> recorder_map_;  // DB##RV[n]=name
 
   // The Elmo debugger's breakpoints (a code word, and the hit that stops: DB##BP=pc,n) and step.
@@ -134,11 +141,10 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::vector<DebugBreakpoint> debug_breakpoints_;
   DebugStep debug_step_ = DebugStep::None;
   uint32_t debug_step_depth_ = 0;
-  bool debug_active_ = false;       // breakpoints or a step: the background looks after each slice
+  bool debug_active_ = false;  // breakpoints or a step: the background looks after each slice
   bool debug_error_reported_ = false;  // DB##ES has read the last run-time error
   uint32_t debug_generation_ = 0;      // the program they belong to (program_generation_)
   void forget_debug_state_of_another_program();
-
 };
 
 }  // namespace uprog::gold

@@ -6,10 +6,12 @@ namespace uprog::gold {
 const char* interpreter_error_text(int32_t code) {
   switch (code) {
 #define EC(value, name, text) \
-  case value: return text;
+  case value:                 \
+    return text;
 #include "dialects/gold/interpreter_errors.def"
 #undef EC
-    default: return nullptr;
+    default:
+      return nullptr;
   }
 }
 

@@ -12,14 +12,30 @@ Keyword keyword_of(std::string_view word) {
   };
   // Sorted by first letter; kFirst[c - 'a'] is where that letter's words begin.
   static constexpr std::array<Entry, 24> kWords = {{
-      {"break", Keyword::Break}, {"case", Keyword::Case}, {"catch", Keyword::Catch},
-      {"continue", Keyword::Continue}, {"else", Keyword::Else}, {"elseif", Keyword::Elseif},
-      {"end", Keyword::End}, {"exit", Keyword::Exit}, {"float", Keyword::Float},
-      {"for", Keyword::For}, {"function", Keyword::Function}, {"global", Keyword::Global},
-      {"goto", Keyword::Goto}, {"if", Keyword::If}, {"int", Keyword::Int},
-      {"nargout", Keyword::Nargout}, {"otherwise", Keyword::Otherwise}, {"reset", Keyword::Reset},
-      {"return", Keyword::Return}, {"switch", Keyword::Switch}, {"try", Keyword::Try},
-      {"until", Keyword::Until}, {"wait", Keyword::Wait}, {"while", Keyword::While},
+      {"break", Keyword::Break},
+      {"case", Keyword::Case},
+      {"catch", Keyword::Catch},
+      {"continue", Keyword::Continue},
+      {"else", Keyword::Else},
+      {"elseif", Keyword::Elseif},
+      {"end", Keyword::End},
+      {"exit", Keyword::Exit},
+      {"float", Keyword::Float},
+      {"for", Keyword::For},
+      {"function", Keyword::Function},
+      {"global", Keyword::Global},
+      {"goto", Keyword::Goto},
+      {"if", Keyword::If},
+      {"int", Keyword::Int},
+      {"nargout", Keyword::Nargout},
+      {"otherwise", Keyword::Otherwise},
+      {"reset", Keyword::Reset},
+      {"return", Keyword::Return},
+      {"switch", Keyword::Switch},
+      {"try", Keyword::Try},
+      {"until", Keyword::Until},
+      {"wait", Keyword::Wait},
+      {"while", Keyword::While},
   }};
   static constexpr auto kFirst = [] {
     std::array<uint8_t, 27> first{};
@@ -54,9 +70,21 @@ Keyword keyword_of(std::string_view word) {
 
 const AutoRoutineName* find_auto_routine(std::string_view name) {
   static constexpr std::array<AutoRoutineName, 16> kNames = {{
-      {"AUTOEXEC", 0}, {"AUTO_ER", 1}, {"AUTO_STOP", 2}, {"AUTO_BG", 3}, {"AUTO_RLS", 4},
-      {"AUTO_FLS", 5}, {"AUTO_ENA", 6}, {"AUTO_I1", 7}, {"AUTO_I2", 8}, {"AUTO_I3", 9},
-      {"AUTO_I4", 10}, {"AUTO_I5", 11}, {"AUTO_I6", 12}, {"AUTO_HM", 13}, {"AUTO_HY", 14},
+      {"AUTOEXEC", 0},
+      {"AUTO_ER", 1},
+      {"AUTO_STOP", 2},
+      {"AUTO_BG", 3},
+      {"AUTO_RLS", 4},
+      {"AUTO_FLS", 5},
+      {"AUTO_ENA", 6},
+      {"AUTO_I1", 7},
+      {"AUTO_I2", 8},
+      {"AUTO_I3", 9},
+      {"AUTO_I4", 10},
+      {"AUTO_I5", 11},
+      {"AUTO_I6", 12},
+      {"AUTO_HM", 13},
+      {"AUTO_HY", 14},
       {"AUTO_PERR", 15},
   }};
   if (name.size() < 7 || name.substr(0, 4) != "AUTO") return nullptr;  // most names: at once

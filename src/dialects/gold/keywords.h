@@ -7,8 +7,31 @@
 namespace uprog::gold {
 
 enum class Keyword : uint8_t {
-  None, Break, Case, Catch, Continue, Else, Elseif, End, Exit, Float, For, Function, Global,
-  Goto, If, Int, Otherwise, Reset, Return, Switch, Try, Until, Wait, While, Nargout,
+  None,
+  Break,
+  Case,
+  Catch,
+  Continue,
+  Else,
+  Elseif,
+  End,
+  Exit,
+  Float,
+  For,
+  Function,
+  Global,
+  Goto,
+  If,
+  Int,
+  Otherwise,
+  Reset,
+  Return,
+  Switch,
+  Try,
+  Until,
+  Wait,
+  While,
+  Nargout,
 };
 
 Keyword keyword_of(std::string_view word);

@@ -11,43 +11,80 @@ namespace uprog::gold {
 
 const char* tok_spelling(Tok t) {
   switch (t) {
-    case Tok::Ident: return "name";
-    case Tok::Int: return "integer";
-    case Tok::Float: return "number";
-    case Tok::Label: return "##label";
-    case Tok::AutoLabel: return "#@label";
-    case Tok::Newline: return "end of line";
-    case Tok::Semicolon: return ";";
-    case Tok::Comma: return ",";
-    case Tok::Colon: return ":";
-    case Tok::LParen: return "(";
-    case Tok::RParen: return ")";
-    case Tok::LBracket: return "[";
-    case Tok::RBracket: return "]";
-    case Tok::Plus: return "+";
-    case Tok::Minus: return "-";
-    case Tok::Star: return "*";
-    case Tok::Slash: return "/";
-    case Tok::Percent: return "%";
-    case Tok::Tilde: return "~";
-    case Tok::Bang: return "!";
-    case Tok::Shl: return "<<";
-    case Tok::Shr: return ">>";
-    case Tok::Lt: return "<";
-    case Tok::Le: return "<=";
-    case Tok::Gt: return ">";
-    case Tok::Ge: return ">=";
-    case Tok::EqEq: return "==";
-    case Tok::Ne: return "!=";
-    case Tok::Amp: return "&";
-    case Tok::Pipe: return "|";
-    case Tok::AndAnd: return "&&";
-    case Tok::OrOr: return "||";
-    case Tok::Assign: return "=";
-    case Tok::PlusPlus: return "++";
-    case Tok::MinusMinus: return "--";
-    case Tok::Unknown: return "character";
-    case Tok::Eof: return "end of file";
+    case Tok::Ident:
+      return "name";
+    case Tok::Int:
+      return "integer";
+    case Tok::Float:
+      return "number";
+    case Tok::Label:
+      return "##label";
+    case Tok::AutoLabel:
+      return "#@label";
+    case Tok::Newline:
+      return "end of line";
+    case Tok::Semicolon:
+      return ";";
+    case Tok::Comma:
+      return ",";
+    case Tok::Colon:
+      return ":";
+    case Tok::LParen:
+      return "(";
+    case Tok::RParen:
+      return ")";
+    case Tok::LBracket:
+      return "[";
+    case Tok::RBracket:
+      return "]";
+    case Tok::Plus:
+      return "+";
+    case Tok::Minus:
+      return "-";
+    case Tok::Star:
+      return "*";
+    case Tok::Slash:
+      return "/";
+    case Tok::Percent:
+      return "%";
+    case Tok::Tilde:
+      return "~";
+    case Tok::Bang:
+      return "!";
+    case Tok::Shl:
+      return "<<";
+    case Tok::Shr:
+      return ">>";
+    case Tok::Lt:
+      return "<";
+    case Tok::Le:
+      return "<=";
+    case Tok::Gt:
+      return ">";
+    case Tok::Ge:
+      return ">=";
+    case Tok::EqEq:
+      return "==";
+    case Tok::Ne:
+      return "!=";
+    case Tok::Amp:
+      return "&";
+    case Tok::Pipe:
+      return "|";
+    case Tok::AndAnd:
+      return "&&";
+    case Tok::OrOr:
+      return "||";
+    case Tok::Assign:
+      return "=";
+    case Tok::PlusPlus:
+      return "++";
+    case Tok::MinusMinus:
+      return "--";
+    case Tok::Unknown:
+      return "character";
+    case Tok::Eof:
+      return "end of file";
   }
   return "?";
 }
@@ -169,7 +206,8 @@ Token Lexer::next() {
       continuation();
       continue;
     }
-    if (c == '#' && i + 1 < n && (s_[i + 1] == '#' || s_[i + 1] == '@' || is_ident_start(s_[i + 1]))) {
+    if (c == '#' && i + 1 < n &&
+        (s_[i + 1] == '#' || s_[i + 1] == '@' || is_ident_start(s_[i + 1]))) {
       // "#start" is read as "##start": the manual's own example (2.6) writes it so.
       const size_t b = i;
       const Tok kind = s_[i + 1] == '@' ? Tok::AutoLabel : Tok::Label;
@@ -237,7 +275,8 @@ Token Lexer::number() {
     const size_t point = i++;
     while (i < n && is_digit(s_[i])) ++i;
     // Manual 1.3.2, "Number Overflow": the integer left of the point must fit a long; right of it,
-    // 13 digits are an error and 12 are not (1.7 computes sin(0.523598775598)): docs/dialects/gold.md.
+    // 13 digits are an error and 12 are not (1.7 computes sin(0.523598775598)):
+    // docs/dialects/gold.md.
     if (digits_exceed_long(s_.substr(b, point - b)) || i - point - 1 > kMaxFractionDigits) {
       r_.lex_error(Error::BadFormat, static_cast<uint32_t>(b));
     }
@@ -280,7 +319,8 @@ Token Lexer::number() {
   // from_chars rounds as strtod does; out of range it leaves `d` alone, so strtod decides.
   double d = 0.0;
   const auto [end, ec] = std::from_chars(spelling.data(), spelling.data() + spelling.size(), d);
-  if (ec != std::errc{} || end != spelling.data() + spelling.size()) d = std::strtod(spelling.c_str(), nullptr);
+  if (ec != std::errc{} || end != spelling.data() + spelling.size())
+    d = std::strtod(spelling.c_str(), nullptr);
   // Manual 1.3: floats live in -1e37 < N < 1e37; anything else is an error.
   if (!(std::fabs(d) < 1e37)) r_.lex_error(Error::BadFormat, static_cast<uint32_t>(b));
   t.float_value = std::fabs(d) < 1e37 ? static_cast<float>(d) : 0.0f;
@@ -294,35 +334,80 @@ Token Lexer::punct() {
   Tok k = Tok::Unknown;
   size_t n = 2;
   switch (c) {
-    case '<': k = d == '<' ? Tok::Shl : d == '=' ? Tok::Le : Tok::Lt; break;
-    case '>': k = d == '>' ? Tok::Shr : d == '=' ? Tok::Ge : Tok::Gt; break;
-    case '=': k = d == '=' ? Tok::EqEq : Tok::Assign; break;
-    case '!': k = d == '=' ? Tok::Ne : Tok::Bang; break;
-    case '&': k = d == '&' ? Tok::AndAnd : Tok::Amp; break;
-    case '|': k = d == '|' ? Tok::OrOr : Tok::Pipe; break;
-    case '+': k = d == '+' ? Tok::PlusPlus : Tok::Plus; break;
-    case '-': k = d == '-' ? Tok::MinusMinus : Tok::Minus; break;
-    default: break;
+    case '<':
+      k = d == '<' ? Tok::Shl : d == '=' ? Tok::Le : Tok::Lt;
+      break;
+    case '>':
+      k = d == '>' ? Tok::Shr : d == '=' ? Tok::Ge : Tok::Gt;
+      break;
+    case '=':
+      k = d == '=' ? Tok::EqEq : Tok::Assign;
+      break;
+    case '!':
+      k = d == '=' ? Tok::Ne : Tok::Bang;
+      break;
+    case '&':
+      k = d == '&' ? Tok::AndAnd : Tok::Amp;
+      break;
+    case '|':
+      k = d == '|' ? Tok::OrOr : Tok::Pipe;
+      break;
+    case '+':
+      k = d == '+' ? Tok::PlusPlus : Tok::Plus;
+      break;
+    case '-':
+      k = d == '-' ? Tok::MinusMinus : Tok::Minus;
+      break;
+    default:
+      break;
   }
   switch (k) {
-    case Tok::Lt: case Tok::Gt: case Tok::Assign: case Tok::Bang: case Tok::Amp: case Tok::Pipe:
-    case Tok::Plus: case Tok::Minus:
+    case Tok::Lt:
+    case Tok::Gt:
+    case Tok::Assign:
+    case Tok::Bang:
+    case Tok::Amp:
+    case Tok::Pipe:
+    case Tok::Plus:
+    case Tok::Minus:
       n = 1;
       break;
     case Tok::Unknown: {
       n = 1;
       switch (c) {
-        case ';': k = Tok::Semicolon; break;
-        case ',': k = Tok::Comma; break;
-        case ':': k = Tok::Colon; break;
-        case '(': k = Tok::LParen; break;
-        case ')': k = Tok::RParen; break;
-        case '[': k = Tok::LBracket; break;
-        case ']': k = Tok::RBracket; break;
-        case '*': k = Tok::Star; break;
-        case '/': k = Tok::Slash; break;
-        case '%': k = Tok::Percent; break;
-        case '~': k = Tok::Tilde; break;
+        case ';':
+          k = Tok::Semicolon;
+          break;
+        case ',':
+          k = Tok::Comma;
+          break;
+        case ':':
+          k = Tok::Colon;
+          break;
+        case '(':
+          k = Tok::LParen;
+          break;
+        case ')':
+          k = Tok::RParen;
+          break;
+        case '[':
+          k = Tok::LBracket;
+          break;
+        case ']':
+          k = Tok::RBracket;
+          break;
+        case '*':
+          k = Tok::Star;
+          break;
+        case '/':
+          k = Tok::Slash;
+          break;
+        case '%':
+          k = Tok::Percent;
+          break;
+        case '~':
+          k = Tok::Tilde;
+          break;
         default: {
           // One token for a whole UTF-8 sequence, so that columns stay on the character.
           if (static_cast<unsigned char>(c) >= 0xC0) {
@@ -332,7 +417,8 @@ Token Lexer::punct() {
       }
       break;
     }
-    default: break;
+    default:
+      break;
   }
   st_.pos = static_cast<uint32_t>(i + n);
   return make(k, i, n);

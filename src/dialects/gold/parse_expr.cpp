@@ -10,19 +10,36 @@ namespace {
 // Binary operator levels, lowest first: || && | & (== !=) (< <= > >=) (<< >>) (+ -) (* / %).
 int level_of(Tok t) {
   switch (t) {
-    case Tok::OrOr: return 0;
-    case Tok::AndAnd: return 1;
-    case Tok::Pipe: return 2;
-    case Tok::Amp: return 3;
-    case Tok::EqEq: case Tok::Ne: return 4;
-    case Tok::Lt: case Tok::Le: case Tok::Gt: case Tok::Ge: return 5;
-    case Tok::Shl: case Tok::Shr: return 6;
-    case Tok::Plus: case Tok::Minus: return 7;
-    case Tok::Star: case Tok::Slash: case Tok::Percent: return 8;
-    default: return -1;
+    case Tok::OrOr:
+      return 0;
+    case Tok::AndAnd:
+      return 1;
+    case Tok::Pipe:
+      return 2;
+    case Tok::Amp:
+      return 3;
+    case Tok::EqEq:
+    case Tok::Ne:
+      return 4;
+    case Tok::Lt:
+    case Tok::Le:
+    case Tok::Gt:
+    case Tok::Ge:
+      return 5;
+    case Tok::Shl:
+    case Tok::Shr:
+      return 6;
+    case Tok::Plus:
+    case Tok::Minus:
+      return 7;
+    case Tok::Star:
+    case Tok::Slash:
+    case Tok::Percent:
+      return 8;
+    default:
+      return -1;
   }
 }
-
 
 }  // namespace
 
@@ -109,7 +126,8 @@ ExprPtr Parser::primary(bool under_minus) {
       if (!inner) return nullptr;
       if (at(Tok::Comma)) {
         // "-(2+3, c/5)": several values in one pair of parentheses.
-        error(under_minus ? Error::IllegalMinus : Error::BadFormat, under_minus ? t.offset : peek().offset);
+        error(under_minus ? Error::IllegalMinus : Error::BadFormat,
+              under_minus ? t.offset : peek().offset);
         return nullptr;
       }
       if (!at(Tok::RParen)) {
@@ -194,15 +212,20 @@ ExprPtr Parser::ref_after_name(const Token& name) {
 // dimensions (2.6: "float w[2.8] // dimension will be truncated to 2").
 bool Parser::const_int(const Expr& e, int32_t& out) const {
   switch (e.kind) {
-    case ExprKind::IntLit: out = e.int_value; return true;
-    case ExprKind::FloatLit: out = arith::trunc_to_int(e.float_value); return true;
+    case ExprKind::IntLit:
+      out = e.int_value;
+      return true;
+    case ExprKind::FloatLit:
+      out = arith::trunc_to_int(e.float_value);
+      return true;
     case ExprKind::Unary:
       if (e.op == Tok::Minus && const_int(*e.lhs, out)) {
         out = out == INT32_MIN ? INT32_MAX : -out;
         return true;
       }
       return false;
-    default: return false;
+    default:
+      return false;
   }
 }
 

@@ -17,9 +17,12 @@ bool is_ref(const Expr* e) { return e != nullptr && e->kind == ExprKind::Ref; }
 void Parser::statement_end() {
   if (at_statement_end()) return;
   const Token& t = peek();
-  if (t.kind == Tok::RParen || t.kind == Tok::RBracket) error(Error::ParenthesesMismatch, t.offset);
-  else if (t.kind == Tok::Colon) error(Error::BadFormat, t.offset);  // "k = 1:2:20"
-  else error(Error::OperatorIsExpected, t.offset);
+  if (t.kind == Tok::RParen || t.kind == Tok::RBracket)
+    error(Error::ParenthesesMismatch, t.offset);
+  else if (t.kind == Tok::Colon)
+    error(Error::BadFormat, t.offset);  // "k = 1:2:20"
+  else
+    error(Error::OperatorIsExpected, t.offset);
   skip_line();
 }
 
@@ -42,9 +45,12 @@ void Parser::finish(Stmt& s) {
 
 bool Parser::type_keyword(VarType& type) {
   const Keyword k = kw();
-  if (k == Keyword::Int) type = VarType::Int;
-  else if (k == Keyword::Float) type = VarType::Float;
-  else return false;
+  if (k == Keyword::Int)
+    type = VarType::Int;
+  else if (k == Keyword::Float)
+    type = VarType::Float;
+  else
+    return false;
   next();
   return true;
 }
@@ -71,7 +77,8 @@ bool Parser::check_name(const Token& t) {
 void Parser::declaration(VarType type, std::vector<VarDecl>& out, bool global_redecl, bool local) {
   while (true) {
     if (at_statement_end() && !at(Tok::Comma)) {
-      error(Error::InvalidName, peek().offset);  // "int a, b," : the name after the comma is missing
+      error(Error::InvalidName,
+            peek().offset);  // "int a, b," : the name after the comma is missing
       return;
     }
     const Token& name = next();
@@ -207,7 +214,10 @@ Block Parser::block(unsigned stops, Keyword& stopped_by) {
     const Token& t = peek();
     switch (k) {
       case Keyword::End:
-        if (stops & kStopEnd) { stopped_by = k; return out; }
+        if (stops & kStopEnd) {
+          stopped_by = k;
+          return out;
+        }
         error(Error::BadNesting, t.offset);
         next();
         alone_on_line(Error::CodeIsNotExpected);
@@ -218,23 +228,33 @@ Block Parser::block(unsigned stops, Keyword& stopped_by) {
       case Keyword::Otherwise:
       case Keyword::Catch: {
         // The keywords that continue an enclosing block: its stop, or misplaced here.
-        const unsigned stop = k == Keyword::Catch                          ? kStopCatch
+        const unsigned stop = k == Keyword::Catch                             ? kStopCatch
                               : k == Keyword::Case || k == Keyword::Otherwise ? kStopCase
-                                                                             : kStopElse;
-        if (stops & stop) { stopped_by = k; return out; }
+                                                                              : kStopElse;
+        if (stops & stop) {
+          stopped_by = k;
+          return out;
+        }
         error(Error::BadNesting, t.offset);
         skip_line();
         continue;
       }
       case Keyword::Function:
-        if (stops & kStopFunction) { stopped_by = k; return out; }
+        if (stops & kStopFunction) {
+          stopped_by = k;
+          return out;
+        }
         error(Error::FunctionInsideBlock, t.offset);
         skip_line();
         continue;
       case Keyword::Return:
-        if ((stops & kStopReturn) && nest_.empty()) { stopped_by = k; return out; }
+        if ((stops & kStopReturn) && nest_.empty()) {
+          stopped_by = k;
+          return out;
+        }
         break;
-      default: break;
+      default:
+        break;
     }
     if ((stops & kStopFunction) && nest_.empty() && !in_function_ &&
         (t.kind == Tok::Label || t.kind == Tok::AutoLabel || k == Keyword::Int ||
@@ -276,13 +296,20 @@ StmtPtr Parser::statement() {
   }
   const Keyword k = kw();
   switch (k) {
-    case Keyword::If: return if_statement();
-    case Keyword::While: return while_statement();
-    case Keyword::For: return for_statement();
-    case Keyword::Switch: return switch_statement();
-    case Keyword::Try: return try_statement();
-    case Keyword::Goto: return goto_or_reset(true);
-    case Keyword::Reset: return goto_or_reset(false);
+    case Keyword::If:
+      return if_statement();
+    case Keyword::While:
+      return while_statement();
+    case Keyword::For:
+      return for_statement();
+    case Keyword::Switch:
+      return switch_statement();
+    case Keyword::Try:
+      return try_statement();
+    case Keyword::Goto:
+      return goto_or_reset(true);
+    case Keyword::Reset:
+      return goto_or_reset(false);
     case Keyword::Until:
     case Keyword::Wait: {
       next();
@@ -310,7 +337,10 @@ StmtPtr Parser::statement() {
         // The innermost loop must lie inside any try...catch around the continue (2.11.4).
         bool ok = false;
         for (auto it = nest_.rbegin(); it != nest_.rend(); ++it) {
-          if (*it == Nest::While || *it == Nest::For) { ok = true; break; }
+          if (*it == Nest::While || *it == Nest::For) {
+            ok = true;
+            break;
+          }
           if (*it == Nest::Try || *it == Nest::Catch) break;
         }
         if (!ok) error(Error::MisplacedContinue, t.offset);
@@ -330,7 +360,8 @@ StmtPtr Parser::statement() {
     case Keyword::Float:
     case Keyword::Global: {
       // Declarations belong before the code (error 29); parse them anyway to avoid follow-ups.
-      error(in_function_ || !nest_.empty() ? Error::BadVariableDefinition : Error::IllegalGlobal, t.offset);
+      error(in_function_ || !nest_.empty() ? Error::BadVariableDefinition : Error::IllegalGlobal,
+            t.offset);
       skip_line();
       return nullptr;
     }
@@ -347,7 +378,8 @@ StmtPtr Parser::statement() {
       error(Error::BadNesting, t.offset);
       skip_line();
       return nullptr;
-    default: break;
+    default:
+      break;
   }
   // XQ##name in a program (the spec's program command, "start the program at a function, label
   // or auto-routine"): the stack is cleared and the program goes on there, as reset does
@@ -368,7 +400,8 @@ StmtPtr Parser::simple_statement() {
     while (true) {
       const Token& name = peek();
       if (name.kind != Tok::Ident || name.kw != Keyword::None) {
-        error(name.kind == Tok::RBracket ? Error::BadNumberOfOutputs : Error::InvalidName, name.offset);
+        error(name.kind == Tok::RBracket ? Error::BadNumberOfOutputs : Error::InvalidName,
+              name.offset);
         skip_line();
         return nullptr;
       }
@@ -485,7 +518,8 @@ StmtPtr Parser::if_statement() {
   if (c) statement_end();
   finish(*s);
   nest_.push_back(Nest::If);
-  if (nest_.size() > static_cast<size_t>(kMaxBlockDepth)) error(Error::CodeIsTooComplex, kw_if.offset);
+  if (nest_.size() > static_cast<size_t>(kMaxBlockDepth))
+    error(Error::CodeIsTooComplex, kw_if.offset);
   Keyword stopped = Keyword::None;
   IfArm arm;
   arm.cond = std::move(c);
@@ -524,7 +558,8 @@ StmtPtr Parser::while_statement() {
   if (s->value) statement_end();
   finish(*s);
   nest_.push_back(Nest::While);
-  if (nest_.size() > static_cast<size_t>(kMaxBlockDepth)) error(Error::CodeIsTooComplex, kw_while.offset);
+  if (nest_.size() > static_cast<size_t>(kMaxBlockDepth))
+    error(Error::CodeIsTooComplex, kw_while.offset);
   Keyword stopped = Keyword::None;
   s->body = block(kStopEnd, stopped);
   nest_.pop_back();
@@ -549,8 +584,10 @@ StmtPtr Parser::for_statement() {
   } else {
     next();
     ExprPtr var = ref_after_name(name);
-    if (!var) ok = false;
-    else s->targets.push_back(std::move(var));
+    if (!var)
+      ok = false;
+    else
+      s->targets.push_back(std::move(var));
   }
   if (ok && !at(Tok::Assign)) {
     error(Error::BadFlowControlExpression, peek().offset);  // "for k a = 0"
@@ -579,7 +616,8 @@ StmtPtr Parser::for_statement() {
       }
     }
     if (ok && parts.size() < 2) {
-      error(Error::BadColonExpression, parts.empty() ? kw_for.offset : parts[0]->offset);  // "for k = a"
+      error(Error::BadColonExpression,
+            parts.empty() ? kw_for.offset : parts[0]->offset);  // "for k = a"
       ok = false;
     }
     if (ok) {
@@ -596,7 +634,8 @@ StmtPtr Parser::for_statement() {
   if (!ok) skip_line();
   finish(*s);
   nest_.push_back(Nest::For);
-  if (nest_.size() > static_cast<size_t>(kMaxBlockDepth)) error(Error::CodeIsTooComplex, kw_for.offset);
+  if (nest_.size() > static_cast<size_t>(kMaxBlockDepth))
+    error(Error::CodeIsTooComplex, kw_for.offset);
   Keyword stopped = Keyword::None;
   s->body = block(kStopEnd, stopped);
   nest_.pop_back();
@@ -617,7 +656,8 @@ StmtPtr Parser::switch_statement() {
   if (s->value) statement_end();
   finish(*s);
   nest_.push_back(Nest::Switch);
-  if (nest_.size() > static_cast<size_t>(kMaxBlockDepth)) error(Error::CodeIsTooComplex, kw_switch.offset);
+  if (nest_.size() > static_cast<size_t>(kMaxBlockDepth))
+    error(Error::CodeIsTooComplex, kw_switch.offset);
   Keyword stopped = Keyword::None;
   // Between switch and the first case only a case may stand.
   skip_separators();
@@ -660,7 +700,8 @@ StmtPtr Parser::try_statement() {
   alone_on_line(Error::TryCatchNotAlone);
   s->ends_line = true;
   nest_.push_back(Nest::Try);
-  if (nest_.size() > static_cast<size_t>(kMaxBlockDepth)) error(Error::CodeIsTooComplex, kw_try.offset);
+  if (nest_.size() > static_cast<size_t>(kMaxBlockDepth))
+    error(Error::CodeIsTooComplex, kw_try.offset);
   Keyword stopped = Keyword::None;
   s->body = block(kStopEnd | kStopCatch, stopped);
   if (stopped == Keyword::Catch) {
@@ -693,7 +734,8 @@ StmtPtr Parser::goto_or_reset(bool is_goto) {
     if (std::find(nest_.begin(), nest_.end(), Nest::For) != nest_.end()) {
       error(Error::BadGoto, k.offset, text(target));  // no goto out of a for loop
     }
-  } else if (target.kind != Tok::Ident && target.kind != Tok::Label && target.kind != Tok::AutoLabel) {
+  } else if (target.kind != Tok::Ident && target.kind != Tok::Label &&
+             target.kind != Tok::AutoLabel) {
     error(Error::NoSuchFunction, target.offset, name_of(target));
     skip_line();
     return nullptr;
@@ -763,7 +805,8 @@ void Parser::function_definition(Program& p, FunctionBodySink* on_body) {
   }
   if (ok && at(Tok::LParen)) ok = param_list(f.inputs, Tok::RParen);
   if (ok) statement_end();
-  if (f.is_auto && (!f.inputs.empty() || !f.outputs.empty())) error(Error::AutoRoutineHasArgument, f.offset, f.name);
+  if (f.is_auto && (!f.inputs.empty() || !f.outputs.empty()))
+    error(Error::AutoRoutineHasArgument, f.offset, f.name);
 
   // A header followed by another function or the end of the file is a prototype.
   skip_separators();
@@ -832,7 +875,7 @@ Block Parser::reparse_body(const LexState& start) {
 
 Program Parser::program(FunctionBodySink* on_body) {
   Program p;
-  bool in_section = false;   // after a label, before its closing return
+  bool in_section = false;  // after a label, before its closing return
   bool reported_outside = false;
   while (true) {
     skip_separators();
@@ -842,7 +885,8 @@ Program Parser::program(FunctionBodySink* on_body) {
     const Keyword k = kw();
     if (k == Keyword::Function) {
       if (in_section) {
-        StmtPtr r = arena_->stmt(StmtKind::Return, t.offset);  // a routine ends where a function begins
+        StmtPtr r =
+            arena_->stmt(StmtKind::Return, t.offset);  // a routine ends where a function begins
         r->ends_line = true;
         p.top.push_back(std::move(r));
         in_section = false;
@@ -913,7 +957,8 @@ Block Parser::line() {
 
 }  // namespace detail
 
-Program parse_program(Lexer& lexer, Reporter& reporter, AstArena& arena, FunctionBodySink* on_body) {
+Program parse_program(Lexer& lexer, Reporter& reporter, AstArena& arena,
+                      FunctionBodySink* on_body) {
   return detail::Parser(lexer, reporter, arena).program(on_body);
 }
 

@@ -24,7 +24,12 @@ constexpr size_t kMaxNameLength = 12;
 enum class Nest : char { If = 'I', While = 'W', For = 'F', Switch = 'S', Try = 'T', Catch = 'C' };
 
 enum Stop : unsigned {
-  kStopEnd = 1, kStopElse = 2, kStopCase = 4, kStopCatch = 8, kStopReturn = 16, kStopFunction = 32,
+  kStopEnd = 1,
+  kStopElse = 2,
+  kStopCase = 4,
+  kStopCatch = 8,
+  kStopReturn = 16,
+  kStopFunction = 32,
 };
 
 class Parser {
@@ -109,7 +114,9 @@ class Parser {
   void error(Error e, uint32_t offset, std::string_view name = {}) { r_.error(e, offset, name); }
   // The name a token spells (a name or a label), or nothing for any other token.
   std::string_view name_of(const Token& t) const {
-    return t.kind == Tok::Ident || t.kind == Tok::Label || t.kind == Tok::AutoLabel ? text(t) : std::string_view{};
+    return t.kind == Tok::Ident || t.kind == Tok::Label || t.kind == Tok::AutoLabel
+               ? text(t)
+               : std::string_view{};
   }
 
   struct Ahead {

@@ -33,7 +33,10 @@ struct BodyRecord {
 class Driver : public FunctionBodySink {
  public:
   Driver(Lexer& lexer, Reporter& reporter, const Locator& locator, bool keep_code)
-      : lexer_(lexer), reporter_(reporter), locator_(locator), keep_code_(keep_code),
+      : lexer_(lexer),
+        reporter_(reporter),
+        locator_(locator),
+        keep_code_(keep_code),
         first_(reporter) {}
 
   AstArena& scratch() override { return scratch_; }

@@ -1,5 +1,6 @@
 // Program-control lines of the Gold command line, handled as text before compiling: XQ##name(args),
-// HP, XC, KL, CC, LS, SV, LD, RS and DB##RV[n]=var (manual 2.2, 2.7, 2.16; shared/spec/gold-drive.md).
+// HP, XC, KL, CC, LS, SV, LD, RS and DB##RV[n]=var (manual 2.2, 2.7, 2.16;
+// shared/spec/gold-drive.md).
 #include <cctype>
 #include <charconv>
 #include <cstdlib>
@@ -39,7 +40,8 @@ bool parse_numbers(const std::string& text, std::vector<double>& out) {
   size_t start = 0;
   for (;;) {
     const size_t comma = text.find(',', start);
-    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const std::string item =
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     if (item.empty()) return false;
     char* end = nullptr;
     const double v = std::strtod(item.c_str(), &end);
@@ -52,10 +54,14 @@ bool parse_numbers(const std::string& text, std::vector<double>& out) {
 
 std::string kind_name(bytecode::RoutineKind k) {
   switch (k) {
-    case bytecode::RoutineKind::Function: return "function";
-    case bytecode::RoutineKind::Label: return "label";
-    case bytecode::RoutineKind::AutoRoutine: return "auto-routine";
-    case bytecode::RoutineKind::Task: return "task";
+    case bytecode::RoutineKind::Function:
+      return "function";
+    case bytecode::RoutineKind::Label:
+      return "label";
+    case bytecode::RoutineKind::AutoRoutine:
+      return "auto-routine";
+    case bytecode::RoutineKind::Task:
+      return "task";
   }
   return "routine";
 }
@@ -65,14 +71,17 @@ std::string kind_name(bytecode::RoutineKind k) {
 bool Firmware::program_control(const std::string& text, std::vector<Answer>& answers) {
   const std::string compact = strip_spaces(text);
   const std::string word = upper(compact);
-  auto fail = [&](int32_t code, const std::string& why) { answers.push_back(error_answer(code, why)); };
+  auto fail = [&](int32_t code, const std::string& why) {
+    answers.push_back(error_answer(code, why));
+  };
 
   if (word.rfind("XQ##", 0) == 0) {
     std::string rest = compact.substr(4);
     std::vector<double> args;
     const size_t paren = rest.find('(');
     if (paren != std::string::npos) {
-      if (rest.back() != ')' || !parse_numbers(rest.substr(paren + 1, rest.size() - paren - 2), args)) {
+      if (rest.back() != ')' ||
+          !parse_numbers(rest.substr(paren + 1, rest.size() - paren - 2), args)) {
         fail(kErrorBadArguments, "XQ## takes numbers as arguments: XQ##name(1,2.5)");
         return true;
       }
@@ -83,10 +92,14 @@ bool Firmware::program_control(const std::string& text, std::vector<Answer>& ans
       return true;
     }
     const int32_t code = execute_program(rest, args);
-    if (code == kErrorNoProgram) fail(code, "no program is loaded");
-    else if (code == kErrorProgramRunning) fail(code, "the program is running (HP or KL first)");
-    else if (code == kErrorNoSuchEntry) fail(code, "the program has no function or label " + rest);
-    else if (code != 0) fail(code, "wrong arguments for " + rest);
+    if (code == kErrorNoProgram)
+      fail(code, "no program is loaded");
+    else if (code == kErrorProgramRunning)
+      fail(code, "the program is running (HP or KL first)");
+    else if (code == kErrorNoSuchEntry)
+      fail(code, "the program has no function or label " + rest);
+    else if (code != 0)
+      fail(code, "wrong arguments for " + rest);
     return true;
   }
   if (word.rfind("DB##", 0) == 0) {
@@ -122,11 +135,14 @@ bool Firmware::program_control(const std::string& text, std::vector<Answer>& ans
     return true;
   }
   if (word == "CC") {
-    if (program_status() == 1) return fail(kErrorProgramRunning, "the program is running (KL first)"), true;
+    if (program_status() == 1)
+      return fail(kErrorProgramRunning, "the program is running (KL first)"), true;
     std::string error;
     const int32_t code = load_stored(&error);
-    if (code != 0) fail(code, error);
-    else log("program loaded into RAM");
+    if (code != 0)
+      fail(code, error);
+    else
+      log("program loaded into RAM");
     return true;
   }
   if (word == "LS") {
@@ -135,12 +151,14 @@ bool Firmware::program_control(const std::string& text, std::vector<Answer>& ans
     return true;
   }
   if (word == "SV") {
-    if (const int32_t code = save_parameters(); code != 0) fail(code, "the parameters could not be saved");
+    if (const int32_t code = save_parameters(); code != 0)
+      fail(code, "the parameters could not be saved");
     return true;
   }
   if (word == "LD") {
     if (const int32_t code = load_parameters(); code != 0) {
-      fail(code, code == kErrorMotorMustBeOff ? "LD needs the motor off" : "no saved parameters to load");
+      fail(code,
+           code == kErrorMotorMustBeOff ? "LD needs the motor off" : "no saved parameters to load");
     }
     return true;
   }
@@ -195,7 +213,8 @@ int32_t Firmware::map_recorder(const std::string& text) {
   const std::string up = upper(text);
   if (up.rfind("RV[", 0) != 0) return kErrorBadCommand;
   const size_t close = text.find(']');
-  if (close == std::string::npos || close + 1 >= text.size() || text[close + 1] != '=') return kErrorSyntax;
+  if (close == std::string::npos || close + 1 >= text.size() || text[close + 1] != '=')
+    return kErrorSyntax;
   int32_t n = 0;
   const auto [p, e] = std::from_chars(text.data() + 3, text.data() + close, n);
   if (e != std::errc() || p != text.data() + close || n < 1 || n > 8) return kErrorBadIndex;
@@ -203,7 +222,8 @@ int32_t Firmware::map_recorder(const std::string& text) {
   int32_t element = 0;
   if (const size_t open = name.find('['); open != std::string::npos) {
     if (name.back() != ']') return kErrorSyntax;
-    const auto [q, f] = std::from_chars(name.data() + open + 1, name.data() + name.size() - 1, element);
+    const auto [q, f] =
+        std::from_chars(name.data() + open + 1, name.data() + name.size() - 1, element);
     if (f != std::errc() || q != name.data() + name.size() - 1) return kErrorSyntax;
     name = name.substr(0, open);
   }

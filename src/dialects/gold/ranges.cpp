@@ -40,7 +40,8 @@ IntRange product(const IntRange& a, const IntRange& b) {
 IntRange range_of(const Expr& e, const std::vector<LoopRange>& loops, int depth) {
   if (e.type != Kind::Int || depth > kMaxDepth) return kFull;
   switch (e.kind) {
-    case ExprKind::IntLit: return {e.int_value, e.int_value};
+    case ExprKind::IntLit:
+      return {e.int_value, e.int_value};
     case ExprKind::Ref:
       if (e.ref != RefKind::Local || e.has_index || e.has_parens) return kFull;
       for (auto it = loops.rbegin(); it != loops.rend(); ++it)
@@ -55,8 +56,10 @@ IntRange range_of(const Expr& e, const std::vector<LoopRange>& loops, int depth)
     case ExprKind::Binary: {
       const IntRange a = range_of(*e.lhs, loops, depth + 1), b = range_of(*e.rhs, loops, depth + 1);
       switch (e.op) {
-        case Tok::Plus: return checked(a.lo + b.lo, a.hi + b.hi);  // wraps only outside int32
-        case Tok::Minus: return checked(a.lo - b.hi, a.hi - b.lo);
+        case Tok::Plus:
+          return checked(a.lo + b.lo, a.hi + b.hi);  // wraps only outside int32
+        case Tok::Minus:
+          return checked(a.lo - b.hi, a.hi - b.lo);
         case Tok::Star: {
           const IntRange p = product(a, b);
           return checked(p.lo, p.hi);  // int only when it fits (the checker made it Int then)
@@ -73,10 +76,12 @@ IntRange range_of(const Expr& e, const std::vector<LoopRange>& loops, int depth)
           if ((constant(*e.rhs, c) || constant(*e.lhs, c)) && c >= 0) return {0, c};  // a mask
           return kFull;
         }
-        default: return kFull;
+        default:
+          return kFull;
       }
     }
-    default: return kFull;
+    default:
+      return kFull;
   }
 }
 

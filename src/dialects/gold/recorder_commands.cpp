@@ -1,4 +1,5 @@
-// Gold's recorder commands (recorder_commands.h). What each follows, quoted in docs/dialects/gold.md
+// Gold's recorder commands (recorder_commands.h). What each follows, quoted in
+// docs/dialects/gold.md
 // ("The recorder"): RC "a bit field. Each on bit ... defines a signal to be recorded" (MAN-SIMCR
 // 3-122), RG "Range: [1…4096]" and "Recorder inactive" (3-123), RR's options 0..3 and reports
 // -1, 0, 1..3 (3-128), RP[0..7] (Software Manual tables 7-4 and the one before it, 7.4.5), RP[8],
@@ -17,24 +18,35 @@ namespace {
 
 using enum RecorderCommands::Id;
 
-constexpr int32_t kErrorOutOfRange = 21;       // as drive_commands.h's
-constexpr int32_t kErrorNoSuchVariable = 209;  // as interpreter_errors.h's: DB##RV[n]'s name is gone
+constexpr int32_t kErrorOutOfRange = 21;  // as drive_commands.h's
+constexpr int32_t kErrorNoSuchVariable =
+    209;  // as interpreter_errors.h's: DB##RV[n]'s name is gone
 constexpr int32_t kErrorOk = 0;
 
 bool rp_in_range(int32_t index, int32_t v) {
   switch (index) {
-    case 0: return v == 0 || v == 1;                        // 4 TS or TS
-    case 1: return v == 0 || (v > 0 && v < (1 << kRecorderSlots) && std::has_single_bit(static_cast<uint32_t>(v)));
-    case 2: return v >= 0 && v <= 100;                      // percent
-    case 3: return v >= 0 && v <= 6;                        // 0..5 the reference's, 6 uprog's window entry
-    case 6: case 7: return v >= 0 && v < (1 << drive::kInputCount);
-    case 8: case 9: return v >= 0;
-    default: return true;                                   // RP[4], RP[5]: levels
+    case 0:
+      return v == 0 || v == 1;  // 4 TS or TS
+    case 1:
+      return v == 0 ||
+             (v > 0 && v < (1 << kRecorderSlots) && std::has_single_bit(static_cast<uint32_t>(v)));
+    case 2:
+      return v >= 0 && v <= 100;  // percent
+    case 3:
+      return v >= 0 && v <= 6;  // 0..5 the reference's, 6 uprog's window entry
+    case 6:
+    case 7:
+      return v >= 0 && v < (1 << drive::kInputCount);
+    case 8:
+    case 9:
+      return v >= 0;
+    default:
+      return true;  // RP[4], RP[5]: levels
   }
 }
 
-// BH's record (MAN-SIMSW 7.4.7's table; table 8-8 of the Harmonica manual): each field as hexadecimal digits, most
-// significant nibble first.
+// BH's record (MAN-SIMSW 7.4.7's table; table 8-8 of the Harmonica manual): each field as
+// hexadecimal digits, most significant nibble first.
 void append_hex(std::string& out, uint32_t value, int digits) {
   char buf[9];
   std::snprintf(buf, sizeof buf, "%0*x", digits, value);
@@ -48,7 +60,8 @@ constexpr uint16_t kMaxUploadItems = 0xFFFF;  // the record's data length is one
 
 uint32_t upload_item(double value, bool is_float) {
   if (!is_float) return static_cast<uint32_t>(static_cast<int32_t>(value));
-  const double units = std::clamp(std::round(value / kFloatUploadUnit), -2147483648.0, 2147483647.0);
+  const double units =
+      std::clamp(std::round(value / kFloatUploadUnit), -2147483648.0, 2147483647.0);
   return static_cast<uint32_t>(static_cast<int32_t>(units));
 }
 
@@ -60,23 +73,41 @@ bool settings_command(uint16_t id, int32_t index) {
 
 uint32_t RecorderCommands::report() const {
   switch (axis_.recorder().state()) {
-    case drive::RecorderState::kIdle: return static_cast<uint32_t>(-1);
-    case drive::RecorderState::kDone: return 0;
-    default: return static_cast<uint32_t>(launched_);
+    case drive::RecorderState::kIdle:
+      return static_cast<uint32_t>(-1);
+    case drive::RecorderState::kDone:
+      return 0;
+    default:
+      return static_cast<uint32_t>(launched_);
   }
 }
 
 int32_t RecorderCommands::read(uint16_t id, int32_t index, Value& out) const {
   int32_t v = 0;
   switch (id) {
-    case RV: v = signals_[static_cast<size_t>(index - 1)]; break;
-    case RC: v = rc_; break;
-    case RL: v = length_; break;
-    case RG: v = gap_; break;
-    case RP: v = rp_[static_cast<size_t>(index)]; break;
-    case RR: v = static_cast<int32_t>(report()); break;
-    case WI: v = samples_recorded(); break;
-    default: return kErrorOutOfRange;
+    case RV:
+      v = signals_[static_cast<size_t>(index - 1)];
+      break;
+    case RC:
+      v = rc_;
+      break;
+    case RL:
+      v = length_;
+      break;
+    case RG:
+      v = gap_;
+      break;
+    case RP:
+      v = rp_[static_cast<size_t>(index)];
+      break;
+    case RR:
+      v = static_cast<int32_t>(report());
+      break;
+    case WI:
+      v = samples_recorded();
+      break;
+    default:
+      return kErrorOutOfRange;
   }
   out = Value::of_int(v);
   return kErrorOk;
@@ -101,14 +132,21 @@ int32_t RecorderCommands::write(uint16_t id, int32_t index, Value value) {
       signals_[slot] = v;
       return kErrorOk;
     }
-    case RC: rc_ = v; return kErrorOk;
-    case RL: length_ = v; return kErrorOk;
-    case RG: gap_ = v; return kErrorOk;
+    case RC:
+      rc_ = v;
+      return kErrorOk;
+    case RL:
+      length_ = v;
+      return kErrorOk;
+    case RG:
+      gap_ = v;
+      return kErrorOk;
     case RP:
       if (!rp_in_range(index, v)) return kErrorOutOfRange;
       rp_[static_cast<size_t>(index)] = v;
       return kErrorOk;
-    default: return kErrorOutOfRange;
+    default:
+      return kErrorOutOfRange;
   }
 }
 
@@ -121,11 +159,15 @@ void RecorderCommands::map_variable(int32_t n, std::string name) {
 uint32_t RecorderCommands::status_bits() const {
   constexpr uint32_t kBit16 = 1u << 16, kBit17 = 1u << 17;
   switch (axis_.recorder().state()) {
-    case drive::RecorderState::kIdle: return 0;
+    case drive::RecorderState::kIdle:
+      return 0;
     case drive::RecorderState::kArmed:
-    case drive::RecorderState::kWaiting: return kBit17;          // armed, waiting for the trigger
-    case drive::RecorderState::kTriggered: return kBit16 | kBit17;  // recording now
-    case drive::RecorderState::kDone: return kBit16;             // valid data ready
+    case drive::RecorderState::kWaiting:
+      return kBit17;  // armed, waiting for the trigger
+    case drive::RecorderState::kTriggered:
+      return kBit16 | kBit17;  // recording now
+    case drive::RecorderState::kDone:
+      return kBit16;  // valid data ready
   }
   return 0;
 }
@@ -155,7 +197,8 @@ int32_t RecorderCommands::upload(int32_t n, std::string& out) const {
     if (first >= end || end > signal.values.size()) return kErrorOutOfRange;
   }
   if (end - first > kMaxUploadItems) return kErrorOutOfRange;
-  const bool variable = signals_[static_cast<size_t>(std::countr_zero(bit))] == kRecorderVariableSignal;
+  const bool variable =
+      signals_[static_cast<size_t>(std::countr_zero(bit))] == kRecorderVariableSignal;
   const uint32_t type = (variable ? 2u : 0u) + (signal.is_float ? 1u : 0u);
   const float factor = signal.is_float ? static_cast<float>(kFloatUploadUnit) : 1.0f;
   out.clear();
@@ -165,7 +208,8 @@ int32_t RecorderCommands::upload(int32_t n, std::string& out) const {
   append_hex(out, static_cast<uint32_t>(end - first), 4);
   append_hex(out, recorder.settings().gap_cycles, 4);  // the sample period in TS
   append_hex(out, std::bit_cast<uint32_t>(factor), 8);
-  for (size_t i = first; i < end; ++i) append_hex(out, upload_item(signal.values[i], signal.is_float), 8);
+  for (size_t i = first; i < end; ++i)
+    append_hex(out, upload_item(signal.values[i], signal.is_float), 8);
   return kErrorOk;
 }
 
@@ -207,25 +251,31 @@ int32_t RecorderCommands::launch(int32_t mode) {
   if (s.channels.empty()) return kErrorRecorderNoSignals;
   const int32_t type = mode == 1 ? 1 : mode == 2 ? 0 : rp_[3];
   using drive::TriggerKind;
-  constexpr TriggerKind kByType[] = {TriggerKind::kImmediate, TriggerKind::kBeginMotion, TriggerKind::kRising,
-                                     TriggerKind::kFalling,   TriggerKind::kWindowLeave, TriggerKind::kInput,
+  constexpr TriggerKind kByType[] = {TriggerKind::kImmediate,   TriggerKind::kBeginMotion,
+                                     TriggerKind::kRising,      TriggerKind::kFalling,
+                                     TriggerKind::kWindowLeave, TriggerKind::kInput,
                                      TriggerKind::kWindowEnter};
   s.trigger.kind = kByType[type];
   if (type >= 2 && type != 5) {
     // RP[1]: "Similar to RC, but only 1 bit may be non-zero"; the signal need not be recorded.
     if (rp_[1] == 0) return kErrorRecorderNoSignals;
-    if (const int32_t e = channel_of(static_cast<size_t>(std::countr_zero(static_cast<uint32_t>(rp_[1]))), s.trigger.source))
+    if (const int32_t e = channel_of(
+            static_cast<size_t>(std::countr_zero(static_cast<uint32_t>(rp_[1]))), s.trigger.source))
       return e;
   }
-  // RP[4]: "Level of positive slope trigger, or high side of window"; RP[5] the negative slope's, the low side.
+  // RP[4]: "Level of positive slope trigger, or high side of window"; RP[5] the negative slope's,
+  // the low side.
   s.trigger.level = type == 3 ? rp_[5] : rp_[4];
   s.trigger.low = rp_[5];
   s.trigger.input_polarity = static_cast<uint32_t>(rp_[6]);
   s.trigger.input_mask = static_cast<uint32_t>(rp_[7]);
   s.pretrigger_percent = static_cast<uint32_t>(rp_[2]);
-  s.gap_cycles = static_cast<uint32_t>(gap_) * (rp_[0] == 0 ? 4u : 1u);  // RP[0]=0: the 4 TS quantum
-  // "If RL > (recorder memory) / (number of signals), the recorder ... will record up to its data volume."
-  s.length = static_cast<uint32_t>(std::min<size_t>(static_cast<size_t>(length_), drive::kMaxRecorderWords / s.channels.size()));
+  s.gap_cycles =
+      static_cast<uint32_t>(gap_) * (rp_[0] == 0 ? 4u : 1u);  // RP[0]=0: the 4 TS quantum
+  // "If RL > (recorder memory) / (number of signals), the recorder ... will record up to its data
+  // volume."
+  s.length = static_cast<uint32_t>(
+      std::min<size_t>(static_cast<size_t>(length_), drive::kMaxRecorderWords / s.channels.size()));
   std::string why;
   if (!recorder.arm(s, &why)) return kErrorOutOfRange;
   launched_ = mode;

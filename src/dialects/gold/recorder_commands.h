@@ -13,11 +13,12 @@ namespace uprog::gold {
 
 // The recorder's own refusals (interpreter_errors.def); the reference pages give them no number,
 // these are uprog's, after the command line's own.
-constexpr int32_t kErrorRecorderBusy = 214;       // RC, RV, RL, RG, RP changed while recording
-constexpr int32_t kErrorRecorderNoSignals = 215;  // RR=1..3 with no signal in RC, or RP[1] off RC's RV
-constexpr int32_t kErrorRecorderNoData = 216;     // BH while no complete recording is held
+constexpr int32_t kErrorRecorderBusy = 214;  // RC, RV, RL, RG, RP changed while recording
+constexpr int32_t kErrorRecorderNoSignals =
+    215;                                       // RR=1..3 with no signal in RC, or RP[1] off RC's RV
+constexpr int32_t kErrorRecorderNoData = 216;  // BH while no complete recording is held
 
-constexpr size_t kRecorderSlots = 8;  // RV[1..8], RC bits 0..7
+constexpr size_t kRecorderSlots = 8;        // RV[1..8], RC bits 0..7
 constexpr size_t kRecorderParameters = 10;  // RP[0..9]
 
 class RecorderCommands {
@@ -49,8 +50,8 @@ class RecorderCommands {
   uint32_t report() const;
 
   drive::Axis& axis_;
-  std::array<int32_t, kRecorderSlots> signals_{};            // RV[n]
-  std::array<std::string, kRecorderSlots> variables_{};      // DB##RV[n]=name
+  std::array<int32_t, kRecorderSlots> signals_{};        // RV[n]
+  std::array<std::string, kRecorderSlots> variables_{};  // DB##RV[n]=name
   int32_t rc_ = 0;
   int32_t length_ = 1024;
   int32_t gap_ = 1;

@@ -46,7 +46,9 @@ Location Locator::locate(uint32_t offset) const {
 Reporter::Reporter(const Locator& locator, size_t limit)
     : locator_(locator),
       limit_(limit),
-      capacity_(limit >= SIZE_MAX / kKeptPerShown - 1 ? SIZE_MAX : std::max<size_t>(limit, 1) * kKeptPerShown + 1) {}
+      capacity_(limit >= SIZE_MAX / kKeptPerShown - 1
+                    ? SIZE_MAX
+                    : std::max<size_t>(limit, 1) * kKeptPerShown + 1) {}
 
 void Reporter::error(Error e, uint32_t offset, std::string_view name) {
   add_pending(e, stage_, offset, name);

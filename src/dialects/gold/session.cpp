@@ -19,6 +19,8 @@ class Session final : public dialect::Session {
 
 }  // namespace
 
-std::unique_ptr<dialect::Session> Firmware::open_session() { return std::make_unique<Session>(*this); }
+std::unique_ptr<dialect::Session> Firmware::open_session() {
+  return std::make_unique<Session>(*this);
+}
 
 }  // namespace uprog::gold

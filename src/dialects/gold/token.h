@@ -10,14 +10,41 @@
 namespace uprog::gold {
 
 enum class Tok : uint8_t {
-  Ident, Int, Float,
+  Ident,
+  Int,
+  Float,
   Label,      // ##NAME (the text is NAME)
   AutoLabel,  // #@NAME
-  Newline, Semicolon, Comma, Colon,
-  LParen, RParen, LBracket, RBracket,
-  Plus, Minus, Star, Slash, Percent, Tilde, Bang,
-  Shl, Shr, Lt, Le, Gt, Ge, EqEq, Ne, Amp, Pipe, AndAnd, OrOr,
-  Assign, PlusPlus, MinusMinus,
+  Newline,
+  Semicolon,
+  Comma,
+  Colon,
+  LParen,
+  RParen,
+  LBracket,
+  RBracket,
+  Plus,
+  Minus,
+  Star,
+  Slash,
+  Percent,
+  Tilde,
+  Bang,
+  Shl,
+  Shr,
+  Lt,
+  Le,
+  Gt,
+  Ge,
+  EqEq,
+  Ne,
+  Amp,
+  Pipe,
+  AndAnd,
+  OrOr,
+  Assign,
+  PlusPlus,
+  MinusMinus,
   Unknown,  // a character Gold has no use for
   Eof,
 };
@@ -25,9 +52,9 @@ enum class Tok : uint8_t {
 struct Token {
   Tok kind = Tok::Eof;
   Keyword kw = Keyword::None;  // for an Ident: the keyword it spells, found once by the lexer
-  uint8_t name_skip = 0;  // labels: the characters before the name ("##", "#@" or "#")
-  uint32_t offset = 0;  // into the preprocessed text
-  uint32_t length = 0;  // of the spelling, from `offset`
+  uint8_t name_skip = 0;       // labels: the characters before the name ("##", "#@" or "#")
+  uint32_t offset = 0;         // into the preprocessed text
+  uint32_t length = 0;         // of the spelling, from `offset`
   union {
     int32_t int_value = 0;  // Int
     float float_value;      // Float

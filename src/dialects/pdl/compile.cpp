@@ -24,22 +24,38 @@ int preproc_code(preproc::PreprocError e) {
 const char* preproc_text(preproc::PreprocError e) {
   using P = preproc::PreprocError;
   switch (e) {
-    case P::IdentifierMissing: return "#define needs a name";
-    case P::InvalidIdentifier: return "not a valid macro name";
-    case P::AlreadyDefined: return "macro already defined";
-    case P::ConditionMissing: return "condition missing";
-    case P::MisplacedElse: return "#else outside #ifdef/#ifndef, or twice";
-    case P::NotDefined: return "#undef of a name that is not defined";
-    case P::MismatchedType: return "condition of the wrong type";
-    case P::TooManyDefines: return "too many #define directives";
-    case P::MisplacedEndif: return "#endif without #ifdef/#ifndef";
-    case P::UnterminatedIf: return "#ifdef/#ifndef without #endif";
-    case P::TooManyElseifs: return "too many branches";
-    case P::UnknownDirective: return "directive not supported";
-    case P::DivisionByZero: return "division by zero";
-    case P::ExpansionTooComplex: return "macro expansion too deep or too long";
-    case P::IncludeNotFound: return "cannot include the file";
-    case P::IncludeTooDeep: return "#include nested more than 20 deep";
+    case P::IdentifierMissing:
+      return "#define needs a name";
+    case P::InvalidIdentifier:
+      return "not a valid macro name";
+    case P::AlreadyDefined:
+      return "macro already defined";
+    case P::ConditionMissing:
+      return "condition missing";
+    case P::MisplacedElse:
+      return "#else outside #ifdef/#ifndef, or twice";
+    case P::NotDefined:
+      return "#undef of a name that is not defined";
+    case P::MismatchedType:
+      return "condition of the wrong type";
+    case P::TooManyDefines:
+      return "too many #define directives";
+    case P::MisplacedEndif:
+      return "#endif without #ifdef/#ifndef";
+    case P::UnterminatedIf:
+      return "#ifdef/#ifndef without #endif";
+    case P::TooManyElseifs:
+      return "too many branches";
+    case P::UnknownDirective:
+      return "directive not supported";
+    case P::DivisionByZero:
+      return "division by zero";
+    case P::ExpansionTooComplex:
+      return "macro expansion too deep or too long";
+    case P::IncludeNotFound:
+      return "cannot include the file";
+    case P::IncludeTooDeep:
+      return "#include nested more than 20 deep";
   }
   return "preprocessor error";
 }
@@ -55,7 +71,8 @@ class PlainLocator {
   Location operator()(size_t offset) const {
     const auto it = std::upper_bound(starts_.begin(), starts_.end(), offset);
     const size_t line = static_cast<size_t>(it - starts_.begin());
-    return Location{name_, static_cast<int>(line), static_cast<int>(offset - starts_[line - 1] + 1)};
+    return Location{name_, static_cast<int>(line),
+                    static_cast<int>(offset - starts_[line - 1] + 1)};
   }
 
  private:
@@ -127,7 +144,8 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   } else {
     locate = PlainLocator(source.name, text);
   }
-  for (const LexError& e : lex_errors) diags.push_back(make_diagnostic(e.error, locate(e.offset), e.detail));
+  for (const LexError& e : lex_errors)
+    diags.push_back(make_diagnostic(e.error, locate(e.offset), e.detail));
   Compiler compiler(std::move(tokens), locate, source.name);
   bytecode::Image image;
   const bool ok = compiler.compile(image) && diags.empty();
@@ -136,13 +154,15 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   for (const Diagnostic& d : diags) bad_lines.emplace_back(d.where.file, d.where.line);
   for (Diagnostic& d : compiler.diagnostics()) {
     const std::pair<std::string, int> line{d.where.file, d.where.line};
-    if (std::find(bad_lines.begin(), bad_lines.end(), line) == bad_lines.end()) diags.push_back(std::move(d));
+    if (std::find(bad_lines.begin(), bad_lines.end(), line) == bad_lines.end())
+      diags.push_back(std::move(d));
   }
   // By place: the source's own first, then each included file's, by name.
   std::stable_sort(diags.begin(), diags.end(), [&source](const Diagnostic& a, const Diagnostic& b) {
     const auto key = [&source](const Diagnostic& d) {
       const bool included = d.where.file != source.name;
-      return std::tuple<bool, const std::string&, int, int>(included, d.where.file, d.where.line, d.where.column);
+      return std::tuple<bool, const std::string&, int, int>(included, d.where.file, d.where.line,
+                                                            d.where.column);
     };
     return key(a) < key(b);
   });
@@ -178,7 +198,8 @@ CompileResult compile_file(const std::string& path, const CompileOptions& option
   std::optional<std::string> text = read_text_file(path, &why);
   if (!text) {
     CompileResult r;
-    r.diagnostics.push_back(make_diagnostic(Error::Syntax, Location{path, 0, 0}, "cannot read: " + why));
+    r.diagnostics.push_back(
+        make_diagnostic(Error::Syntax, Location{path, 0, 0}, "cannot read: " + why));
     return r;
   }
   return compile(SourceFile{path, std::move(*text)}, options);

@@ -40,6 +40,7 @@ struct EvaluationCode {
   bool is_float = false;
   std::string error;  // the first diagnostic's text, when !ok
 };
-EvaluationCode compile_evaluation(std::string_view text, const bytecode::Image& program, const ProcInfo* frame);
+EvaluationCode compile_evaluation(std::string_view text, const bytecode::Image& program,
+                                  const ProcInfo* frame);
 
 }  // namespace uprog::pdl

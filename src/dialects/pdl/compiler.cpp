@@ -14,11 +14,12 @@ constexpr size_t kMaxNameLength = 17;
 constexpr size_t kMaxLabelLength = 24;
 
 constexpr std::string_view kKeywords[] = {
-    "if", "else", "do", "end", "while", "loop", "till", "goto", "call", "ret", "halt", "exitproc", "proc",
-    "wait", "sleep", "lock", "unlock", "run", "kill", "level", "reset", "seton", "setoff", "toggle",
-    "printl", "retprintl", "sttovar", "sizeof", "TOUT", "long", "short", "float", "max", "min", "abs",
-    "sign", "sin", "cos", "sqrt", "divi", "shift", "bitset", "bitclr", "bittog", "memcpy", "memset",
-    "memmin", "memmax", "memsum"};
+    "if",     "else",   "do",       "end",   "while",  "loop",   "till",   "goto",      "call",
+    "ret",    "halt",   "exitproc", "proc",  "wait",   "sleep",  "lock",   "unlock",    "run",
+    "kill",   "level",  "reset",    "seton", "setoff", "toggle", "printl", "retprintl", "sttovar",
+    "sizeof", "TOUT",   "long",     "short", "float",  "max",    "min",    "abs",       "sign",
+    "sin",    "cos",    "sqrt",     "divi",  "shift",  "bitset", "bitclr", "bittog",    "memcpy",
+    "memset", "memmin", "memmax",   "memsum"};
 
 // The first `count` locals of an entry routine; a procedure's routine has as many as it uses.
 std::vector<bytecode::Local> entry_locals(uint32_t count = kEntryLocals) {
@@ -34,7 +35,8 @@ std::vector<bytecode::Local> entry_locals(uint32_t count = kEntryLocals) {
 
 }  // namespace
 
-Compiler::Compiler(std::vector<Token> tokens, std::function<Location(size_t)> locate, std::string source_name)
+Compiler::Compiler(std::vector<Token> tokens, std::function<Location(size_t)> locate,
+                   std::string source_name)
     : toks_(std::move(tokens)), locate_(std::move(locate)), source_name_(std::move(source_name)) {
   bytecode::Routine start;
   start.name = "(start)";
@@ -82,7 +84,8 @@ bool Compiler::accept_word(std::string_view word) {
 bool Compiler::expect_op(std::string_view op) {
   if (accept_op(op)) return true;
   const Token& t = peek();
-  error(Error::Expected, t.offset, "'" + std::string(op) + "' before '" + (t.kind == Tok::End ? "end of file" : t.text) + "'");
+  error(Error::Expected, t.offset,
+        "'" + std::string(op) + "' before '" + (t.kind == Tok::End ? "end of file" : t.text) + "'");
   return false;
 }
 
@@ -132,9 +135,11 @@ bool Compiler::compile(bytecode::Image& out) {
   for (auto& [name, proc] : procs_) {
     if (!proc.defined) error(Error::ProcNotImplemented, proc.declared_at, name);
   }
-  if (!code_.finish()) error(Error::UnknownLabel, toks_.back().offset, "a jump to a label never defined");
+  if (!code_.finish())
+    error(Error::UnknownLabel, toks_.back().offset, "a jump to a label never defined");
   for (auto& [name, proc] : procs_) {
-    if (proc.defined && code_.bound(proc.entry)) image_.routines[static_cast<size_t>(proc.routine)].entry = code_.target(proc.entry);
+    if (proc.defined && code_.bound(proc.entry))
+      image_.routines[static_cast<size_t>(proc.routine)].entry = code_.target(proc.entry);
   }
   for (auto& [name, info] : scopes_[0]) {
     if (info.routine >= 0 && info.defined)
@@ -146,17 +151,23 @@ bool Compiler::compile(bytecode::Image& out) {
       m.info.end = code_.target(m.after);
       debug_info_.procs.push_back(m.info);
     }
-    for (const CodeBuilder::Label& site : return_sites_) debug_info_.return_sites.push_back(code_.target(site));
-    for (const auto& [body, exit] : loop_marks_) debug_info_.loops.push_back({code_.target(body), code_.target(exit)});
+    for (const CodeBuilder::Label& site : return_sites_)
+      debug_info_.return_sites.push_back(code_.target(site));
+    for (const auto& [body, exit] : loop_marks_)
+      debug_info_.loops.push_back({code_.target(body), code_.target(exit)});
   }
   // The free user memory and the tasks' stacks follow the variables, each stack at its address
   // (layout.h), so that addresses count words from the first variable (1.3) and LDM/STM reach
   // every word.
-  if (user_words_ < kUserWords) image_.globals.push_back({"(free)", ValueType::Int, static_cast<uint32_t>(kUserWords - user_words_)});
+  if (user_words_ < kUserWords)
+    image_.globals.push_back(
+        {"(free)", ValueType::Int, static_cast<uint32_t>(kUserWords - user_words_)});
   int32_t end = kUserWords;
   for (uint32_t t = 1; t <= kTasks; ++t) {
-    image_.globals.push_back({"(unused)", ValueType::Int, static_cast<uint32_t>(stack_base(t) - end)});
-    image_.globals.push_back({"(stack " + std::to_string(t) + ")", ValueType::Int, static_cast<uint32_t>(kStackWords)});
+    image_.globals.push_back(
+        {"(unused)", ValueType::Int, static_cast<uint32_t>(stack_base(t) - end)});
+    image_.globals.push_back(
+        {"(stack " + std::to_string(t) + ")", ValueType::Int, static_cast<uint32_t>(kStackWords)});
     end = stack_base(t) + kStackWords;
   }
   image_.dialect = "pdl";
@@ -285,7 +296,8 @@ void Compiler::declaration(Kind kind) {
       v.local = true;
       v.address = frame_words_;
       frame_words_ += static_cast<int32_t>(length);
-      if (frame_words_ > kStackWords) error(Error::StackFrameTooLarge, name.offset, current_proc_->name);
+      if (frame_words_ > kStackWords)
+        error(Error::StackFrameTooLarge, name.offset, current_proc_->name);
       locals_.push_back(v);
       continue;
     }
@@ -295,15 +307,19 @@ void Compiler::declaration(Kind kind) {
     v.address = user_words_;
     user_words_ += static_cast<int32_t>(length);
     if (user_words_ > kUserWords) {
-      error(Error::MemoryFull, name.offset, v.name + " ends at word " + std::to_string(user_words_));
+      error(Error::MemoryFull, name.offset,
+            v.name + " ends at word " + std::to_string(user_words_));
       user_words_ -= static_cast<int32_t>(length);
       continue;
     }
     v.global = static_cast<int32_t>(image_.globals.size());
-    image_.globals.push_back({v.name, kind == Kind::Float && !pointer ? ValueType::Float : ValueType::Int, length});
+    image_.globals.push_back(
+        {v.name, kind == Kind::Float && !pointer ? ValueType::Float : ValueType::Int, length});
     // What the host protocol needs beyond the globals table: the kind, _ro and _lp.
-    const char* kind_name = pointer ? (kind == Kind::Float ? "fptr" : "lptr")
-                            : kind == Kind::Short ? "short" : kind == Kind::Float ? "float" : "long";
+    const char* kind_name = pointer               ? (kind == Kind::Float ? "fptr" : "lptr")
+                            : kind == Kind::Short ? "short"
+                            : kind == Kind::Float ? "float"
+                                                  : "long";
     image_.info.push_back("var " + v.name + " " + kind_name + " " + (read_only ? "1" : "0") + " " +
                           std::to_string(level_read) + " " + std::to_string(level_write));
     globals_.push_back(v);
@@ -329,8 +345,10 @@ void Compiler::procedure() {
   while (!at_op(")") && peek().kind != Tok::End) {
     Param p;
     const Token& type = next();
-    if (equal_ignoring_case(type.text, "long")) p.kind = Kind::Long;
-    else if (equal_ignoring_case(type.text, "float")) p.kind = Kind::Float;
+    if (equal_ignoring_case(type.text, "long"))
+      p.kind = Kind::Long;
+    else if (equal_ignoring_case(type.text, "float"))
+      p.kind = Kind::Float;
     else if (!equal_ignoring_case(type.text, "short"))
       error(Error::Expected, type.offset, "long or float before '" + type.text + "'");
     p.pointer = accept_op("*");
@@ -404,7 +422,8 @@ void Compiler::procedure() {
   proc.frame_patches.clear();
   image_.routines[static_cast<size_t>(proc.routine)].locals = entry_locals(scratch_high_);
   finish_scope();
-  ProcMark mark{{proc.name, 0, 0, frame_words_, static_cast<uint32_t>(params.size()), {}}, proc.entry, after};
+  ProcMark mark{
+      {proc.name, 0, 0, frame_words_, static_cast<uint32_t>(params.size()), {}}, proc.entry, after};
   for (const Var& v : locals_) {
     const char kind = v.kind == Kind::Float ? 'f' : v.kind == Kind::Short ? 's' : 'l';
     mark.info.vars.push_back({v.name, kind, v.pointer, v.length, v.address});
@@ -419,7 +438,8 @@ void Compiler::procedure() {
 
 // A procedure by its head, made on its first prototype or definition with its routine (a
 // prototype's calls need the routine's number); a head that differs from the first is [pdl 86].
-Proc& Compiler::proc_named(const std::string& name, const std::vector<Param>& params, size_t offset) {
+Proc& Compiler::proc_named(const std::string& name, const std::vector<Param>& params,
+                           size_t offset) {
   auto found = procs_.find(name);
   if (found != procs_.end()) {
     if (found->second.params != params) error(Error::PrototypeMismatch, offset, name);
@@ -476,7 +496,8 @@ int Compiler::routine_for_label(const std::string& name, size_t offset) {
   return info.routine;
 }
 
-void Compiler::emit_dispatch(uint32_t local, const std::vector<std::pair<int32_t, CodeBuilder::Label>>& cases) {
+void Compiler::emit_dispatch(uint32_t local,
+                             const std::vector<std::pair<int32_t, CodeBuilder::Label>>& cases) {
   if (cases.size() <= 4) {
     for (const auto& [key, target] : cases) {
       code_.emit(Op::LDL, local);
@@ -559,8 +580,8 @@ void Compiler::patch_loop_exits(int scope) {
 // --- the debugger's evaluations
 
 bool Compiler::compile_evaluation(EvalForm form, std::vector<Var> globals, std::vector<Var> locals,
-                                  const std::vector<bytecode::Global>& image_globals, bytecode::Image& out,
-                                  bool& is_float) {
+                                  const std::vector<bytecode::Global>& image_globals,
+                                  bytecode::Image& out, bool& is_float) {
   strict_forms_ = false;  // the debugger evaluates expressions of any shape
   globals_ = std::move(globals);
   locals_ = std::move(locals);

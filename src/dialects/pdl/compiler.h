@@ -60,8 +60,8 @@ struct Proc {
   CodeBuilder::Label entry{};  // its body's first command, where its routine starts
   int routine = -1;            // its image routine, called with CALLFEOL
   bool defined = false;
-  size_t declared_at = 0;  // token offset
-  int32_t frame_words = -1;  // 2 + parameters + locals, once its definition is compiled
+  size_t declared_at = 0;               // token offset
+  int32_t frame_words = -1;             // 2 + parameters + locals, once its definition is compiled
   std::vector<uint32_t> frame_patches;  // CALLFEOLs compiled before that, their B patched then
 };
 
@@ -99,12 +99,12 @@ struct IndirectGoto {
 // Where a value is read or stored (parse_place()).
 struct Place {
   enum class Form : uint8_t {
-    Global,    // LDG/STG of an image global, nothing on the stack
-    Memory,    // a flat address is on the stack: LDM/STM
-    System,    // CMDGET/CMDSET at an immediate index
-    SystemX,   // the index is on the stack
-    State,     // a state by number (immediate)
-    StateX,    // a state whose number is on the stack
+    Global,   // LDG/STG of an image global, nothing on the stack
+    Memory,   // a flat address is on the stack: LDM/STM
+    System,   // CMDGET/CMDSET at an immediate index
+    SystemX,  // the index is on the stack
+    State,    // a state by number (immediate)
+    StateX,   // a state whose number is on the stack
   } form = Form::Global;
   Ty type = Ty::Int;
   bool is_short = false;
@@ -119,7 +119,8 @@ struct Place {
 
 class Compiler {
  public:
-  Compiler(std::vector<Token> tokens, std::function<Location(size_t)> locate, std::string source_name);
+  Compiler(std::vector<Token> tokens, std::function<Location(size_t)> locate,
+           std::string source_name);
   bool compile(bytecode::Image& image);  // false on errors
   std::vector<Diagnostic>& diagnostics() { return diagnostics_; }
   // The procedures, return sites and loops of the image compile() made, for the debugger.
@@ -160,7 +161,8 @@ class Compiler {
   void emit_indirect_stubs(int scope);
   CodeBuilder::Label dispatch_label(int scope);
   Proc& proc_named(const std::string& name, const std::vector<Param>& params, size_t offset);
-  void emit_dispatch(uint32_t local, const std::vector<std::pair<int32_t, CodeBuilder::Label>>& cases);
+  void emit_dispatch(uint32_t local,
+                     const std::vector<std::pair<int32_t, CodeBuilder::Label>>& cases);
   LabelInfo& label_named(const std::string& name, int scope, size_t offset);
   int routine_for_label(const std::string& name, size_t offset);
 
@@ -278,8 +280,8 @@ class Compiler {
   int scope_ = 0;
   Proc* current_proc_ = nullptr;
   int32_t frame_words_ = 0;  // 2 + parameters + locals of the current procedure
-  std::vector<CodeBuilder::Label> return_sites_;  // of `call`s, by return id
-  std::vector<int> return_scopes_;                // the scope of each
+  std::vector<CodeBuilder::Label> return_sites_;   // of `call`s, by return id
+  std::vector<int> return_scopes_;                 // the scope of each
   std::map<int, CodeBuilder::Label> dispatchers_;  // each scope's dispatch over its return ids
   std::vector<CommandStart> commands_;
   std::vector<IndirectGoto> indirect_;

@@ -12,8 +12,10 @@ void Compiler::line_entry(size_t offset) {
   const Location where = locate_(offset);
   bytecode::LineEntry e{code_.here(), where.file.empty() ? source_name_ : where.file,
                         static_cast<uint32_t>(where.line < 0 ? 0 : where.line)};
-  if (!image_.lines.empty() && image_.lines.back().code == e.code) image_.lines.back() = e;
-  else image_.lines.push_back(e);
+  if (!image_.lines.empty() && image_.lines.back().code == e.code)
+    image_.lines.back() = e;
+  else
+    image_.lines.push_back(e);
 }
 
 void Compiler::begin_command(uint32_t slots) {
@@ -36,9 +38,12 @@ void Compiler::check_code_size() {
 
 // A constant argument: a number, or a negated one.
 bool Compiler::is_literal(size_t first, size_t end) const {
-  auto number = [&](size_t i) { return toks_[i].kind == Tok::Int || toks_[i].kind == Tok::Float || toks_[i].kind == Tok::Char; };
+  auto number = [&](size_t i) {
+    return toks_[i].kind == Tok::Int || toks_[i].kind == Tok::Float || toks_[i].kind == Tok::Char;
+  };
   if (end == first + 1) return number(first);
-  return end == first + 2 && toks_[first].kind == Tok::Op && toks_[first].text == "-" && number(first + 1);
+  return end == first + 2 && toks_[first].kind == Tok::Op && toks_[first].text == "-" &&
+         number(first + 1);
 }
 
 void Compiler::command(int depth, bool in_proc) {
@@ -75,9 +80,12 @@ void Compiler::command(int depth, bool in_proc) {
 void Compiler::simple_command(bool in_proc) {
   const Token& t = peek();
   const size_t errors_before = error_count_;
-  if (at_word("goto")) goto_command();
-  else if (at_word("call")) call_command();
-  else if (at_word("ret")) ret_command();
+  if (at_word("goto"))
+    goto_command();
+  else if (at_word("call"))
+    call_command();
+  else if (at_word("ret"))
+    ret_command();
   else if (at_word("halt")) {
     next();
     begin_command(1);
@@ -95,15 +103,24 @@ void Compiler::simple_command(bool in_proc) {
     code_.emit(Op::CMDRUN, lock ? kLockCommand : kUnlockCommand, 0);
     end_line();
     in_lock_ = lock;
-  } else if (at_word("run")) run_command();
-  else if (at_word("kill")) kill_command();
-  else if (at_word("seton")) set_state_command(1);
-  else if (at_word("setoff")) set_state_command(0);
-  else if (at_word("toggle")) set_state_command(2);
-  else if (at_word("printl")) printl_command(false);
-  else if (at_word("retprintl")) printl_command(true);
-  else if (at_word("sleep")) sleep_command();
-  else if (at_word("wait") || at_word("till") || at_word("if") || at_word("while") || at_word("loop")) {
+  } else if (at_word("run"))
+    run_command();
+  else if (at_word("kill"))
+    kill_command();
+  else if (at_word("seton"))
+    set_state_command(1);
+  else if (at_word("setoff"))
+    set_state_command(0);
+  else if (at_word("toggle"))
+    set_state_command(2);
+  else if (at_word("printl"))
+    printl_command(false);
+  else if (at_word("retprintl"))
+    printl_command(true);
+  else if (at_word("sleep"))
+    sleep_command();
+  else if (at_word("wait") || at_word("till") || at_word("if") || at_word("while") ||
+           at_word("loop")) {
     error(Error::ShortIfCommand, t.offset, t.text);
     next();
   } else if (t.kind == Tok::Name && at_op("(", 1) && !is_keyword(t.text)) {
@@ -132,7 +149,8 @@ uint32_t Compiler::short_command_slots() {
   if (t.kind == Tok::Name && at_op("(", 1) && procs_.count(t.text)) return at_op(")", 2) ? 1 : 2;
   for (size_t k = 0; k < 64; ++k) {
     const Token& a = peek(k);
-    if (a.kind == Tok::End || (a.kind == Tok::Op && a.text == ";") || (k > 0 && a.line_start)) break;
+    if (a.kind == Tok::End || (a.kind == Tok::Op && a.text == ";") || (k > 0 && a.line_start))
+      break;
     if (a.kind == Tok::Op && a.text == "=") {
       const Token& b = peek(k + 1);
       return (b.kind == Tok::Op && b.text == "{") || b.kind == Tok::String ? 2 : 1;
@@ -182,7 +200,8 @@ void Compiler::if_command(int depth, bool in_proc) {
   code_.bind(f);
   end_line();
   code_.bind(end);
-  if (at_word("else") && !at_word("do", 1)) error(Error::StrayEnd, peek().offset, "else after a short if");
+  if (at_word("else") && !at_word("do", 1))
+    error(Error::StrayEnd, peek().offset, "else after a short if");
 }
 
 void Compiler::while_command(int depth, bool in_proc) {
@@ -424,7 +443,8 @@ void Compiler::proc_call(Proc& proc) {
       const Param& p = proc.params[static_cast<size_t>(count)];
       const Ty want = p.pointer ? (p.kind == Kind::Float ? Ty::PtrFloat : Ty::PtrInt)
                                 : (p.kind == Kind::Float ? Ty::Float : Ty::Int);
-      const bool scalar_ok = !p.pointer && (t == Ty::Int || t == Ty::Float) && (t == want || constant);
+      const bool scalar_ok =
+          !p.pointer && (t == Ty::Int || t == Ty::Float) && (t == want || constant);
       if (t != want && !scalar_ok) {
         error(Error::ArgumentType, arg_at, "parameter " + p.name + " of " + proc.name);
       }
@@ -436,12 +456,14 @@ void Compiler::proc_call(Proc& proc) {
   expect_op(")");
   slots_ += static_cast<uint32_t>(count);
   if (count != params) {
-    error(Error::ArgumentCount, at, proc.name + " takes " + std::to_string(params) + ", got " + std::to_string(count));
+    error(Error::ArgumentCount, at,
+          proc.name + " takes " + std::to_string(params) + ", got " + std::to_string(count));
     for (; count > params; --count) code_.emit(Op::POP);
     for (; count < params; ++count) push_int(0);
   }
   if (proc.frame_words < 0) proc.frame_patches.push_back(code_.here());
-  code_.emit(Op::CALLFEOL, static_cast<uint32_t>(proc.routine), frame_shape(proc.frame_words, params));
+  code_.emit(Op::CALLFEOL, static_cast<uint32_t>(proc.routine),
+             frame_shape(proc.frame_words, params));
 }
 
 uint32_t Compiler::frame_shape(int32_t frame_words, int32_t params) {
@@ -454,7 +476,8 @@ void Compiler::run_command() {
   begin_command(1);
   if (!expect_op("/")) return;
   const Token& t = next();
-  if (t.kind != Tok::Int || t.int_value < 1 || t.int_value > 3) error(Error::BadTaskNumber, t.offset, t.text);
+  if (t.kind != Tok::Int || t.int_value < 1 || t.int_value > 3)
+    error(Error::BadTaskNumber, t.offset, t.text);
   const std::string label = expect_name();
   if (label.empty()) return;
   if (scope_ != 0 && scopes_[static_cast<size_t>(scope_)].count(label)) {
@@ -473,7 +496,8 @@ void Compiler::kill_command() {
   begin_command(1);
   if (!expect_op("/")) return;
   const Token& t = next();
-  if (t.kind != Tok::Int || t.int_value < 1 || t.int_value > 3) error(Error::BadTaskNumber, t.offset, t.text);
+  if (t.kind != Tok::Int || t.int_value < 1 || t.int_value > 3)
+    error(Error::BadTaskNumber, t.offset, t.text);
   push_int(t.int_value);
   code_.emit(Op::CMDRUNX, kKillCommand, 0);
   end_line();

@@ -13,12 +13,18 @@ namespace {
 // Binary operators by level, loosest first; `&` and `|` are a condition's own in a condition.
 bool op_at_level(std::string_view op, int level, bool in_condition) {
   switch (level) {
-    case 0: return op == "|" && !in_condition;
-    case 1: return op == "@";
-    case 2: return op == "&" && !in_condition;
-    case 3: return op == "+" || op == "-";
-    case 4: return op == "*" || op == "/" || op == "%";
-    default: return false;
+    case 0:
+      return op == "|" && !in_condition;
+    case 1:
+      return op == "@";
+    case 2:
+      return op == "&" && !in_condition;
+    case 3:
+      return op == "+" || op == "-";
+    case 4:
+      return op == "*" || op == "/" || op == "%";
+    default:
+      return false;
   }
 }
 
@@ -27,8 +33,11 @@ constexpr int kLevels = 5;
 }  // namespace
 
 void Compiler::push_int(int32_t v) {
-  if (bytecode::fits_imm(v)) code_.emit_imm(Op::PUSHI, v);
-  else code_.emit(Op::PUSHK, static_cast<uint32_t>(add_constant(ValueType::Int, static_cast<uint32_t>(v))));
+  if (bytecode::fits_imm(v))
+    code_.emit_imm(Op::PUSHI, v);
+  else
+    code_.emit(Op::PUSHK,
+               static_cast<uint32_t>(add_constant(ValueType::Int, static_cast<uint32_t>(v))));
 }
 
 void Compiler::push_float(float v) {
@@ -93,7 +102,8 @@ Ty Compiler::arith(std::string_view op, Ty a, Ty b, size_t at) {
     if (op == "+" && pb) return b;
     return Ty::Int;
   }
-  if (is_float(a) || is_float(b)) error(Error::IntegerNeeded, at, "'" + std::string(op) + "' of a float");
+  if (is_float(a) || is_float(b))
+    error(Error::IntegerNeeded, at, "'" + std::string(op) + "' of a float");
   code_.emit(op == "%" ? Op::REMI : op == "&" ? Op::ANDI : op == "|" ? Op::ORI : Op::XORI);
   return Ty::Int;
 }
@@ -211,8 +221,14 @@ Ty Compiler::primary(bool in_condition) {
   const Token& t = peek();
   switch (t.kind) {
     case Tok::Int:
-    case Tok::Char: next(); push_int(t.int_value); return Ty::Int;
-    case Tok::Float: next(); push_float(t.float_value); return Ty::Float;
+    case Tok::Char:
+      next();
+      push_int(t.int_value);
+      return Ty::Int;
+    case Tok::Float:
+      next();
+      push_float(t.float_value);
+      return Ty::Float;
     case Tok::String:
       error(Error::Syntax, t.offset, "a string stands only alone on the right of '='");
       next();
@@ -222,7 +238,8 @@ Ty Compiler::primary(bool in_condition) {
       error(Error::Expected, t.offset, "a value at the end of the file");
       push_int(0);
       return Ty::Int;
-    default: break;
+    default:
+      break;
   }
   if (accept_op("(")) {
     const Ty a = expr(in_condition);
@@ -326,8 +343,8 @@ Ty Compiler::builtin(const std::string& raw, size_t at) {
     if (!accept_op(",")) break;
   }
   expect_op(")");
-  const size_t want = name == "max" || name == "min" || name == "divi" || name == "shift" || name == "bitset" ||
-                              name == "bitclr" || name == "bittog"
+  const size_t want = name == "max" || name == "min" || name == "divi" || name == "shift" ||
+                              name == "bitset" || name == "bitclr" || name == "bittog"
                           ? 2
                           : 1;
   if (args.size() != want) {
@@ -381,8 +398,10 @@ Ty Compiler::builtin(const std::string& raw, size_t at) {
     CodeBuilder::Label second = code_.new_label(), end = code_.new_label();
     code_.emit(Op::LDL, s1);
     code_.emit(Op::LDL, s2);
-    if (f) code_.emit(name == "max" ? Op::GEF : Op::LEF);
-    else code_.emit(name == "max" ? Op::GEI : Op::LEI);
+    if (f)
+      code_.emit(name == "max" ? Op::GEF : Op::LEF);
+    else
+      code_.emit(name == "max" ? Op::GEI : Op::LEI);
     code_.emit_to(Op::JZ, second);
     code_.emit(Op::LDL, s1);
     code_.emit_to(Op::JMP, end);
@@ -494,7 +513,8 @@ void Compiler::cond_atom() {
   const Token& first = peek();
   const size_t first_pos = pos_;
   const Ty a = expr(true);
-  const bool lone_state = pos_ == first_pos + 1 && first.kind == Tok::Name && find_state(first.text) && !find_var(first.text);
+  const bool lone_state = pos_ == first_pos + 1 && first.kind == Tok::Name &&
+                          find_state(first.text) && !find_var(first.text);
   if (at_word("TOUT")) {
     // v1 TOUT v2: fclk - v1 >= v2 (2.2.11), wrapping.
     const size_t at = next().offset;

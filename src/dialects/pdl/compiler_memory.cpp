@@ -32,7 +32,8 @@ const Var* Compiler::find_var(const std::string& name) const {
 }
 
 bool Compiler::has_prefix(const Place& p) const {
-  return p.form == Place::Form::Memory || p.form == Place::Form::SystemX || p.form == Place::Form::StateX;
+  return p.form == Place::Form::Memory || p.form == Place::Form::SystemX ||
+         p.form == Place::Form::StateX;
 }
 
 // A variable's value (its element 0).
@@ -261,8 +262,10 @@ std::optional<Place> Compiler::parse_place(bool for_store) {
     p.form = Place::Form::Memory;
     if (!constant) {
       // An index past a local array may reach any word a pointer may, and no other.
-      if (v->local) emit_word_check(false);
-      else emit_user_check();
+      if (v->local)
+        emit_word_check(false);
+      else
+        emit_user_check();
       return p;
     }
     if (v->local) {
@@ -319,12 +322,24 @@ std::optional<Place> Compiler::parse_place(bool for_store) {
 void Compiler::emit_load(const Place& p, bool keep_prefix) {
   if (keep_prefix && has_prefix(p)) code_.emit(Op::DUP);
   switch (p.form) {
-    case Place::Form::Global: code_.emit(Op::LDG, static_cast<uint32_t>(p.global)); break;
-    case Place::Form::Memory: code_.emit(Op::LDM); break;
-    case Place::Form::System: code_.emit(Op::CMDGET, p.command, static_cast<uint32_t>(p.index)); break;
-    case Place::Form::SystemX: code_.emit(Op::CMDGETX, p.command); break;
-    case Place::Form::State: code_.emit(Op::CMDGET, kStateCommand, static_cast<uint32_t>(p.index)); break;
-    case Place::Form::StateX: code_.emit(Op::CMDGETX, kStateCommand); break;
+    case Place::Form::Global:
+      code_.emit(Op::LDG, static_cast<uint32_t>(p.global));
+      break;
+    case Place::Form::Memory:
+      code_.emit(Op::LDM);
+      break;
+    case Place::Form::System:
+      code_.emit(Op::CMDGET, p.command, static_cast<uint32_t>(p.index));
+      break;
+    case Place::Form::SystemX:
+      code_.emit(Op::CMDGETX, p.command);
+      break;
+    case Place::Form::State:
+      code_.emit(Op::CMDGET, kStateCommand, static_cast<uint32_t>(p.index));
+      break;
+    case Place::Form::StateX:
+      code_.emit(Op::CMDGETX, kStateCommand);
+      break;
   }
   if (!keep_prefix) {
     if (p.slave) ++slave_reads_;
@@ -345,12 +360,24 @@ void Compiler::load_for_update(const Place& p, bool bare_name) {
 
 void Compiler::emit_store(const Place& p) {
   switch (p.form) {
-    case Place::Form::Global: code_.emit(Op::STG, static_cast<uint32_t>(p.global)); break;
-    case Place::Form::Memory: code_.emit(Op::STM); break;
-    case Place::Form::System: code_.emit(Op::CMDSET, p.command, static_cast<uint32_t>(p.index)); break;
-    case Place::Form::SystemX: code_.emit(Op::CMDSETX, p.command); break;
-    case Place::Form::State: code_.emit(Op::CMDSET, kStateCommand, static_cast<uint32_t>(p.index)); break;
-    case Place::Form::StateX: code_.emit(Op::CMDSETX, kStateCommand); break;
+    case Place::Form::Global:
+      code_.emit(Op::STG, static_cast<uint32_t>(p.global));
+      break;
+    case Place::Form::Memory:
+      code_.emit(Op::STM);
+      break;
+    case Place::Form::System:
+      code_.emit(Op::CMDSET, p.command, static_cast<uint32_t>(p.index));
+      break;
+    case Place::Form::SystemX:
+      code_.emit(Op::CMDSETX, p.command);
+      break;
+    case Place::Form::State:
+      code_.emit(Op::CMDSET, kStateCommand, static_cast<uint32_t>(p.index));
+      break;
+    case Place::Form::StateX:
+      code_.emit(Op::CMDSETX, kStateCommand);
+      break;
   }
 }
 
@@ -361,12 +388,14 @@ void Compiler::assignment() {
   int depth = 0;
   for (size_t k = 0; k < 256; ++k) {
     const Token& a = peek(k);
-    if (a.kind == Tok::End || (k > 0 && a.line_start) || (a.kind == Tok::Op && a.text == ";")) break;
+    if (a.kind == Tok::End || (k > 0 && a.line_start) || (a.kind == Tok::Op && a.text == ";"))
+      break;
     if (a.kind != Tok::Op) continue;
     if (a.text == "(" || a.text == "[") ++depth;
     if (a.text == ")" || a.text == "]") --depth;
-    if (depth == 0 && (a.text == "=" || a.text == "++" || a.text == "--" ||
-                       (a.text.size() == 2 && a.text[1] == '=' && a.text[0] != '<' && a.text[0] != '>'))) {
+    if (depth == 0 &&
+        (a.text == "=" || a.text == "++" || a.text == "--" ||
+         (a.text.size() == 2 && a.text[1] == '=' && a.text[0] != '<' && a.text[0] != '>'))) {
       op_at = k;
       break;
     }
@@ -495,7 +524,8 @@ void Compiler::memory_block_assignment(size_t lhs_start) {
       uint32_t word = 0;
       for (size_t b = 0; b < 4; ++b) {
         const size_t i = w * 4 + b;
-        if (i < text.size()) word |= static_cast<uint32_t>(static_cast<unsigned char>(text[i])) << (8 * b);
+        if (i < text.size())
+          word |= static_cast<uint32_t>(static_cast<unsigned char>(text[i])) << (8 * b);
       }
       store_word(static_cast<int32_t>(w));
       push_int(static_cast<int32_t>(word));
@@ -513,7 +543,8 @@ void Compiler::memory_block_assignment(size_t lhs_start) {
       const Ty t = expr();
       check_function_argument(first, pos_, false);
       const bool constant = is_literal(first, pos_);
-      if (is_float(t) != dest_float && !constant) error(Error::ArgumentType, value_at, "memset does not convert");
+      if (is_float(t) != dest_float && !constant)
+        error(Error::ArgumentType, value_at, "memset does not convert");
       convert(t, dest_float ? Ty::Float : Ty::Int, dest_short);
     } else {
       const size_t src_at = peek().offset;
@@ -632,8 +663,10 @@ Ty Compiler::memory_reduction(const std::string& raw, size_t at, CodeBuilder::La
     const uint32_t e = scratch();
     code_.emit(Op::STL, e);
     code_.emit(Op::LDL, e);
-    if (f) code_.emit(max ? Op::LTF : Op::GTF);
-    else code_.emit(max ? Op::LTI : Op::GTI);
+    if (f)
+      code_.emit(max ? Op::LTF : Op::GTF);
+    else
+      code_.emit(max ? Op::LTI : Op::GTI);
     CodeBuilder::Label keep = code_.new_label();
     code_.emit_to(Op::JZ, keep);
     code_.emit(Op::LDL, e);

@@ -35,10 +35,14 @@ FormatInfo read_format(std::string_view f) {
       break;
     }
     const char c = f[k];
-    if (std::string_view("diuxXc").find(c) != std::string_view::npos) out.kinds.push_back('i');
-    else if (std::string_view("feEgG").find(c) != std::string_view::npos) out.kinds.push_back('f');
-    else if (c == 's') out.kinds.push_back('s');
-    else out.bad = true;
+    if (std::string_view("diuxXc").find(c) != std::string_view::npos)
+      out.kinds.push_back('i');
+    else if (std::string_view("feEgG").find(c) != std::string_view::npos)
+      out.kinds.push_back('f');
+    else if (c == 's')
+      out.kinds.push_back('s');
+    else
+      out.bad = true;
     if (k + 1 < f.size() && f[k + 1] != ' ') out.without_space.push_back(i);
     i = k;
   }
@@ -56,7 +60,8 @@ void Compiler::printl_command(bool ret) {
     const Token& t = next();
     uint32_t v = 0;
     const auto [p, e] = std::from_chars(t.text.data(), t.text.data() + t.text.size(), v, 16);
-    if (t.text.empty() || t.text.size() > 8 || e != std::errc() || p != t.text.data() + t.text.size()) {
+    if (t.text.empty() || t.text.size() > 8 || e != std::errc() ||
+        p != t.text.data() + t.text.size()) {
       error(Error::BadMode, t.offset, t.text);
     }
     modes[m] = static_cast<int32_t>(v);
@@ -70,7 +75,8 @@ void Compiler::printl_command(bool ret) {
   next();
   const FormatInfo info = read_format(format.text);
   if (info.bad) error(Error::BadFormat, format.offset, format.text);
-  for (size_t i = 0; i < info.without_space.size(); ++i) error(Error::NoSpaceAfterFormat, format.offset);
+  for (size_t i = 0; i < info.without_space.size(); ++i)
+    error(Error::NoSpaceAfterFormat, format.offset);
   push_int(modes[0]);
   push_int(modes[1]);
   std::vector<Ty> types;
@@ -89,16 +95,20 @@ void Compiler::printl_command(bool ret) {
   const size_t fixed = info.kinds.size() - (s_at < info.kinds.size() ? 1 : 0);
   if (s_at == info.kinds.size() ? k != fixed : k < fixed + 1) {
     error(Error::FormatMismatch, format.offset,
-          std::to_string(k) + " parameters for " + std::to_string(info.kinds.size()) + " conversions");
+          std::to_string(k) + " parameters for " + std::to_string(info.kinds.size()) +
+              " conversions");
   } else {
     const size_t after = info.kinds.size() - s_at - (s_at < info.kinds.size() ? 1 : 0);
     for (size_t i = 0; i < k; ++i) {
       char want = 0;
-      if (i < s_at) want = info.kinds[i];
-      else if (s_at < info.kinds.size() && i >= k - after) want = info.kinds[info.kinds.size() - (k - i)];
+      if (i < s_at)
+        want = info.kinds[i];
+      else if (s_at < info.kinds.size() && i >= k - after)
+        want = info.kinds[info.kinds.size() - (k - i)];
       if (want == 0) continue;
       if ((want == 'f') != is_float(types[i])) {
-        error(Error::FormatMismatch, places[i], want == 'f' ? "%g wants a float" : "an integer format wants an integer");
+        error(Error::FormatMismatch, places[i],
+              want == 'f' ? "%g wants a float" : "an integer format wants an integer");
       }
     }
   }

@@ -16,7 +16,7 @@ namespace uprog::pdl {
 namespace {
 
 constexpr uint64_t kEvaluationInstructionBudget = 100'000;  // ends a runaway expression
-constexpr uint32_t kMaxFrames = kStackWords;                // every frame takes a stack word at least
+constexpr uint32_t kMaxFrames = kStackWords;  // every frame takes a stack word at least
 
 vm::MachineConfig evaluation_config() {
   vm::MachineConfig c;
@@ -69,13 +69,14 @@ std::vector<Firmware::TaskFrame> Firmware::walk_frames(uint32_t task) const {
 
 // One VM frame's frames: its own, then the `call`s to labels inside it. False when a word did
 // not fit (the walk ends).
-bool Firmware::walk_routine_frame(uint32_t pc, uint32_t line_pc, int32_t sp, int32_t fp, int32_t base,
-                                  int32_t limit, std::vector<TaskFrame>& out) const {
+bool Firmware::walk_routine_frame(uint32_t pc, uint32_t line_pc, int32_t sp, int32_t fp,
+                                  int32_t base, int32_t limit, std::vector<TaskFrame>& out) const {
   const vm::Machine* m = machine();
   while (out.size() < kMaxFrames) {
     const ProcInfo* proc = debug_info_.proc_at(pc);
     out.push_back({proc, line_pc, fp});
-    if (sp < base || sp > limit || (proc && (fp < base || fp + proc->frame_words > limit))) return false;
+    if (sp < base || sp > limit || (proc && (fp < base || fp + proc->frame_words > limit)))
+      return false;
     const int32_t bottom = proc ? fp + proc->frame_words : base;
     const int32_t above = sp - static_cast<int32_t>(debug_info_.loops_open(pc));
     if (above == bottom) return true;
@@ -139,7 +140,8 @@ std::optional<uint32_t> Firmware::debug_function_entry(std::string_view name) {
   return std::nullopt;
 }
 
-dialect::Evaluation Firmware::evaluate(uint32_t thread, uint32_t depth, std::string_view expression) {
+dialect::Evaluation Firmware::evaluate(uint32_t thread, uint32_t depth,
+                                       std::string_view expression) {
   dialect::Evaluation out;
   if (!program_) {
     out.error = "no program is loaded";
@@ -148,13 +150,15 @@ dialect::Evaluation Firmware::evaluate(uint32_t thread, uint32_t depth, std::str
   // The frame's procedure and stack registers; in task code, or with no task, none.
   const std::vector<TaskFrame> frames = walk_frames(thread);
   const TaskFrame* frame = depth < frames.size() ? &frames[depth] : nullptr;
-  const EvaluationCode code = compile_evaluation(expression, program_->image(), frame ? frame->proc : nullptr);
+  const EvaluationCode code =
+      compile_evaluation(expression, program_->image(), frame ? frame->proc : nullptr);
   if (!code.ok) {
     out.error = code.error;
     return out;
   }
   std::string why;
-  const auto loaded = dialect::LoadedProgram::load(bytecode::encode(code.image), evaluation_config(), *this, &why, false);
+  const auto loaded = dialect::LoadedProgram::load(bytecode::encode(code.image),
+                                                   evaluation_config(), *this, &why, false);
   if (!loaded) {
     out.error = "the expression's image is unsound: " + why;
     return out;
@@ -182,7 +186,8 @@ dialect::Evaluation Firmware::evaluate(uint32_t thread, uint32_t depth, std::str
     left -= std::min(left, std::max<uint64_t>(s.executed, 1));
   }
   if (s.end != vm::SliceEnd::Finished) {
-    out.error = s.end == vm::SliceEnd::Error ? vm::run_error_text(em.last_error(0)) : "the expression did not finish";
+    out.error = s.end == vm::SliceEnd::Error ? vm::run_error_text(em.last_error(0))
+                                             : "the expression did not finish";
     return out;
   }
   copy(em, pm);  // an assignment stays made
@@ -194,8 +199,8 @@ dialect::Evaluation Firmware::evaluate(uint32_t thread, uint32_t depth, std::str
   return out;
 }
 
-dialect::Evaluation Firmware::set_debug_local(uint32_t thread, uint32_t depth, std::string_view name,
-                                              std::string_view value) {
+dialect::Evaluation Firmware::set_debug_local(uint32_t thread, uint32_t depth,
+                                              std::string_view name, std::string_view value) {
   const std::vector<TaskFrame> frames = walk_frames(thread);
   if (depth >= frames.size() || frames[depth].proc == nullptr)
     return {false, {}, false, "this frame has no locals"};

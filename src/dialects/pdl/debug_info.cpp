@@ -8,11 +8,12 @@ namespace uprog::pdl {
 std::vector<std::string> DebugInfo::info_lines() const {
   std::vector<std::string> out;
   for (const ProcInfo& p : procs) {
-    std::string line = "proc " + p.name + " " + std::to_string(p.first) + " " + std::to_string(p.end) + " " +
-                       std::to_string(p.frame_words) + " " + std::to_string(p.params);
+    std::string line = "proc " + p.name + " " + std::to_string(p.first) + " " +
+                       std::to_string(p.end) + " " + std::to_string(p.frame_words) + " " +
+                       std::to_string(p.params);
     for (const FrameVar& v : p.vars) {
-      line += " " + v.name + ":" + v.kind + ":" + (v.pointer ? "1" : "0") + ":" + std::to_string(v.length) + ":" +
-              std::to_string(v.offset);
+      line += " " + v.name + ":" + v.kind + ":" + (v.pointer ? "1" : "0") + ":" +
+              std::to_string(v.length) + ":" + std::to_string(v.offset);
     }
     out.push_back(std::move(line));
   }
@@ -20,7 +21,8 @@ std::vector<std::string> DebugInfo::info_lines() const {
   for (uint32_t pc : return_sites) rets += " " + std::to_string(pc);
   out.push_back(std::move(rets));
   std::string loop_line = "loops";
-  for (const LoopRange& l : loops) loop_line += " " + std::to_string(l.body) + " " + std::to_string(l.exit);
+  for (const LoopRange& l : loops)
+    loop_line += " " + std::to_string(l.body) + " " + std::to_string(l.exit);
   out.push_back(std::move(loop_line));
   return out;
 }
@@ -30,8 +32,9 @@ namespace {
 bool parse_var(const std::string& text, FrameVar& v) {
   std::istringstream in(text);
   std::string kind, pointer, length, offset;
-  if (!std::getline(in, v.name, ':') || !std::getline(in, kind, ':') || !std::getline(in, pointer, ':') ||
-      !std::getline(in, length, ':') || !std::getline(in, offset))
+  if (!std::getline(in, v.name, ':') || !std::getline(in, kind, ':') ||
+      !std::getline(in, pointer, ':') || !std::getline(in, length, ':') ||
+      !std::getline(in, offset))
     return false;
   if (kind.size() != 1 || (kind[0] != 'l' && kind[0] != 'f' && kind[0] != 's')) return false;
   v.kind = kind[0];
@@ -60,8 +63,10 @@ DebugInfo DebugInfo::read(const std::vector<std::string>& info) {
       bool ok = true;
       while (in >> var) {
         FrameVar v;
-        if (!parse_var(var, v)) ok = false;
-        else p.vars.push_back(std::move(v));
+        if (!parse_var(var, v))
+          ok = false;
+        else
+          p.vars.push_back(std::move(v));
       }
       if (ok && p.frame_words >= 2 && p.frame_words <= 256) d.procs.push_back(std::move(p));
     } else if (kind == "rets") {

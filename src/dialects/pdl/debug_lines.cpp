@@ -13,10 +13,12 @@ namespace {
 
 using dialect::Answer;
 
-constexpr int32_t kNotHeld = 13;  // step/t of a task that is not held
+constexpr int32_t kNotHeld = 13;                   // step/t of a task that is not held
 constexpr uint32_t kMaxGlueInstructions = 10'000;  // a procedure zeroes at most 256 locals
 
-bool held(vm::ThreadStatus s) { return s == vm::ThreadStatus::Halted || s == vm::ThreadStatus::AtBreakpoint; }
+bool held(vm::ThreadStatus s) {
+  return s == vm::ThreadStatus::Halted || s == vm::ThreadStatus::AtBreakpoint;
+}
 
 }  // namespace
 
@@ -33,7 +35,8 @@ bool Firmware::debug_line(std::string_view text, std::vector<Answer>& answers) {
   const bool all_allowed = verb == "hold/" || verb == "cont/";
   if (e != std::errc() || p != number.data() + number.size() || t < (all_allowed ? 0 : 1) ||
       t > static_cast<int32_t>(kTasks)) {
-    answers.push_back({all_allowed ? "the task is 0 (all), 1, 2 or 3" : "the task is 1, 2 or 3", kBadTask});
+    answers.push_back(
+        {all_allowed ? "the task is 0 (all), 1, 2 or 3" : "the task is 1, 2 or 3", kBadTask});
     return true;
   }
   if (!program_) {
@@ -44,13 +47,15 @@ bool Firmware::debug_line(std::string_view text, std::vector<Answer>& answers) {
   const auto task = static_cast<uint32_t>(t);
   if (verb == "stat/") {
     // task_st's number (4 held), then where it stands.
-    const std::string where = m.status(task) != vm::ThreadStatus::Idle ? program_->place(m.pc(task)) : "-";
+    const std::string where =
+        m.status(task) != vm::ThreadStatus::Idle ? program_->place(m.pc(task)) : "-";
     answers.push_back({std::to_string(task_state(task)) + " " + where, 0});
     return true;
   }
   for (uint32_t k = task == 0 ? 1 : task; k <= (task == 0 ? kTasks : task); ++k) {
     const vm::ThreadStatus s = m.status(k);
-    if (verb == "hold/" && (s == vm::ThreadStatus::Running || s == vm::ThreadStatus::Waiting)) m.halt(k);
+    if (verb == "hold/" && (s == vm::ThreadStatus::Running || s == vm::ThreadStatus::Waiting))
+      m.halt(k);
     if (verb == "cont/" && held(s)) m.resume(k);
   }
   if (verb != "step/") return true;
@@ -66,12 +71,13 @@ bool Firmware::debug_line(std::string_view text, std::vector<Answer>& answers) {
   vm::SliceResult r = m.run_slice(task, vm::Budget::of_lines(1));
   const std::vector<bytecode::LineEntry>& lines = program_->image().lines;
   const auto at_line_start = [&] {
-    const auto it = std::lower_bound(lines.begin(), lines.end(), m.pc(task),
-                                     [](const bytecode::LineEntry& l, uint32_t pc) { return l.code < pc; });
+    const auto it =
+        std::lower_bound(lines.begin(), lines.end(), m.pc(task),
+                         [](const bytecode::LineEntry& l, uint32_t pc) { return l.code < pc; });
     return it != lines.end() && it->code == m.pc(task);
   };
   for (uint32_t i = 0; i < kMaxGlueInstructions && !at_line_start() &&
-                     (r.end == vm::SliceEnd::LineEnd || r.end == vm::SliceEnd::BudgetSpent);
+                       (r.end == vm::SliceEnd::LineEnd || r.end == vm::SliceEnd::BudgetSpent);
        ++i)
     r = m.run_slice(task, vm::Budget::of_instructions(1));
   if (r.end == vm::SliceEnd::Error) report_error(task);

@@ -13,12 +13,18 @@ namespace {
 constexpr std::string_view kExtensions[] = {".pdl"};
 
 constexpr dialect::ErrorInfo kHostErrors[] = {
-    {1, "UnknownCommand", "unknown command"},     {2, "NoSuchVariable", "no such variable"},
-    {3, "BadIndex", "bad index"},                 {4, "ReadOnly", "read-only (_ro)"},
-    {5, "BadValue", "bad value"},                 {6, "LevelTooLow", "level too low"},
-    {7, "NoProgram", "no program"},               {8, "NoSuchLabel", "no such _ label"},
-    {9, "BadTask", "task not 1..3"},              {10, "TaskBusy", "task busy or label running"},
-    {11, "ServoNotReady", "servo not ready"},     {12, "EnableRefused", "enable refused"},
+    {1, "UnknownCommand", "unknown command"},
+    {2, "NoSuchVariable", "no such variable"},
+    {3, "BadIndex", "bad index"},
+    {4, "ReadOnly", "read-only (_ro)"},
+    {5, "BadValue", "bad value"},
+    {6, "LevelTooLow", "level too low"},
+    {7, "NoProgram", "no program"},
+    {8, "NoSuchLabel", "no such _ label"},
+    {9, "BadTask", "task not 1..3"},
+    {10, "TaskBusy", "task busy or label running"},
+    {11, "ServoNotReady", "servo not ready"},
+    {12, "EnableRefused", "enable refused"},
 };
 
 std::vector<dialect::ErrorInfo> diagnostic_table() {
@@ -46,11 +52,13 @@ class PdlDialect final : public dialect::Dialect {
  public:
   std::string_view name() const override { return "pdl"; }
   std::string_view description() const override {
-    return "HIWIN D-series PDL: four tasks switched every phase, pointers, procedures, printl events";
+    return "HIWIN D-series PDL: four tasks switched every phase, pointers, procedures, printl "
+           "events";
   }
   std::span<const std::string_view> source_extensions() const override { return kExtensions; }
   std::string_view stored_extension() const override { return ".pdi"; }
-  dialect::CompileOutput compile_file(const std::string& path, const dialect::CompileSettings& settings) const override {
+  dialect::CompileOutput compile_file(const std::string& path,
+                                      const dialect::CompileSettings& settings) const override {
     CompileOptions options;
     options.check_only = settings.check_only;
     options.created_unix_s = settings.created_unix_s;
@@ -68,8 +76,8 @@ class PdlDialect final : public dialect::Dialect {
     return table;
   }
   std::span<const dialect::ErrorInfo> interpreter_errors() const override { return kHostErrors; }
-  std::unique_ptr<dialect::Firmware> make_firmware(dialect::Runtime& runtime,
-                                                   const dialect::FirmwareOptions& options) const override {
+  std::unique_ptr<dialect::Firmware> make_firmware(
+      dialect::Runtime& runtime, const dialect::FirmwareOptions& options) const override {
     return std::make_unique<Firmware>(runtime, options);
   }
   std::vector<std::string> download_lines(const std::vector<uint8_t>& stored_form) const override {
@@ -81,7 +89,9 @@ class PdlDialect final : public dialect::Dialect {
 
 }  // namespace
 
-std::unique_ptr<dialect::Session> Firmware::open_session() { return std::make_unique<Session>(*this); }
+std::unique_ptr<dialect::Session> Firmware::open_session() {
+  return std::make_unique<Session>(*this);
+}
 
 const dialect::Dialect& dialect() {
   static const PdlDialect pdl;

@@ -44,7 +44,9 @@ std::string one_line(std::string text) {
 }  // namespace
 
 Firmware::Firmware(dialect::Runtime& runtime, const dialect::FirmwareOptions&)
-    : runtime_(runtime), wire_(pdl_framing(), "%L "), schedule_(scheduling::PhaseRoundRobinConfig{1, kTasks, 1'000'000}) {}
+    : runtime_(runtime),
+      wire_(pdl_framing(), "%L "),
+      schedule_(scheduling::PhaseRoundRobinConfig{1, kTasks, 1'000'000}) {}
 
 // Power-up and reset: the controller made fresh axes; tasks idle, memory and states 0, fclk 0,
 // then every #task task starts at its place.
@@ -62,17 +64,20 @@ void Firmware::boot(std::vector<std::string>& messages) {
   const int32_t defaults[7] = {0, 9, 11, 17, 7, 7, 7};
   for (int n = 1; n <= 6; ++n) {
     in_func_[n] = defaults[n];
-    for (size_t a = 0; a < runtime_.axis_count(); ++a) runtime_.axis(a).set_input_logic(n, defaults[n]);
+    for (size_t a = 0; a < runtime_.axis_count(); ++a)
+      runtime_.axis(a).set_input_logic(n, defaults[n]);
   }
   if (!flash_read_) {
     flash_read_ = true;
     std::string error;
     if (auto bytes = runtime_.flash().read(kProgramRecord, &error)) {
       std::string why;
-      if (dialect::LoadedProgram::load(*bytes, machine_config(), *this, &why, false, kDialectName)) {
+      if (dialect::LoadedProgram::load(*bytes, machine_config(), *this, &why, false,
+                                       kDialectName)) {
         stored_ = std::move(*bytes);
       } else {
-        messages.push_back("stored program " + runtime_.flash().where(kProgramRecord) + " refused: " + why);
+        messages.push_back("stored program " + runtime_.flash().where(kProgramRecord) +
+                           " refused: " + why);
       }
     }
   }
@@ -91,7 +96,8 @@ bool Firmware::load_stored(std::string* error) {
     return false;
   }
   std::string why;
-  program_ = dialect::LoadedProgram::load(*stored_, machine_config(), *this, &why, true, kDialectName);
+  program_ =
+      dialect::LoadedProgram::load(*stored_, machine_config(), *this, &why, true, kDialectName);
   if (!program_) {
     if (error) *error = "stored program refused: " + why;
     return false;
@@ -105,7 +111,9 @@ bool Firmware::load_stored(std::string* error) {
     char kind[8] = {};
     char name[64] = {};
     int ro = 0;
-    if (std::sscanf(info.c_str(), "var %63s %7s %d %d %d", name, kind, &ro, &v.level_read, &v.level_write) != 5) continue;
+    if (std::sscanf(info.c_str(), "var %63s %7s %d %d %d", name, kind, &ro, &v.level_read,
+                    &v.level_write) != 5)
+      continue;
     v.name = name;
     v.kind = kind[1] == 'p' ? 'p' : kind[0] == 's' ? 's' : kind[0] == 'f' ? 'f' : 'l';
     v.read_only = ro != 0;
@@ -132,7 +140,8 @@ void Firmware::start_reset_tasks() {
 int32_t Firmware::start_task(uint32_t task, uint32_t routine) {
   const int32_t base = stack_base(task);
   const auto args = stack_registers(task, Value::of_int(base), base);
-  if (machine()->start(task, routine, args.data(), kEntryInputs) != vm::RunError::None) return kBadValue;
+  if (machine()->start(task, routine, args.data(), kEntryInputs) != vm::RunError::None)
+    return kBadValue;
   task_error_[task] = 0;
   task_routine_[task] = routine;
   return 0;
@@ -140,7 +149,8 @@ int32_t Firmware::start_task(uint32_t task, uint32_t routine) {
 
 dialect::DownloadResult Firmware::download(const std::vector<uint8_t>& bytes) {
   dialect::DownloadResult r;
-  if (!dialect::LoadedProgram::load(bytes, machine_config(), *this, &r.error, false, kDialectName)) return r;
+  if (!dialect::LoadedProgram::load(bytes, machine_config(), *this, &r.error, false, kDialectName))
+    return r;
   if (!runtime_.flash().write(kProgramRecord, bytes, &r.error)) {
     r.storage_failed = true;
     r.error = "could not store the program: " + r.error;
@@ -163,7 +173,8 @@ std::string Firmware::start(std::string_view entry) {
   if (!entry.empty()) {
     const int r = image.find_routine(std::string(entry));
     // A procedure's routine is no entry: it wants a caller's frame.
-    if (r < 0 || (r > 0 && image.routines[static_cast<size_t>(r)].kind == bytecode::RoutineKind::Function))
+    if (r < 0 ||
+        (r > 0 && image.routines[static_cast<size_t>(r)].kind == bytecode::RoutineKind::Function))
       return fmt::format("no label '{}' in the program", entry);
     return start_task(1, static_cast<uint32_t>(r)) == 0 ? "" : "cannot start task 1";
   }
@@ -185,13 +196,15 @@ bool Firmware::running() const {
 }
 
 std::string Firmware::program_error_text() const {
-  return last_error_ == 0 ? std::string() : vm::run_error_text(static_cast<vm::RunError>(last_error_));
+  return last_error_ == 0 ? std::string()
+                          : vm::run_error_text(static_cast<vm::RunError>(last_error_));
 }
 
 std::string Firmware::state_summary() const {
   drive::Axis& a = runtime_.axis(0);
-  return fmt::format("fclk={} task_st={},{},{} pos={} vel={} enable={} err={}", fclk_, task_state(1), task_state(2),
-                     task_state(3), a.position(), a.velocity(), a.motor_on() ? 1 : 0, a.motor_fault());
+  return fmt::format("fclk={} task_st={},{},{} pos={} vel={} enable={} err={}", fclk_,
+                     task_state(1), task_state(2), task_state(3), a.position(), a.velocity(),
+                     a.motor_on() ? 1 : 0, a.motor_fault());
 }
 
 std::vector<dialect::ThreadInfo> Firmware::threads() const {
@@ -215,12 +228,16 @@ int32_t Firmware::task_state(uint32_t task) const {
   if (!m) return 0;
   if (schedule_.lock_holder() == task) return 3;
   switch (m->status(task)) {
-    case vm::ThreadStatus::Running: return 1;
-    case vm::ThreadStatus::Waiting: return 2;
+    case vm::ThreadStatus::Running:
+      return 1;
+    case vm::ThreadStatus::Waiting:
+      return 2;
     // Held by the debugger or hold/t (docs/dialects/pdl.md, "Debug lines").
     case vm::ThreadStatus::Halted:
-    case vm::ThreadStatus::AtBreakpoint: return 4;
-    default: return 0;
+    case vm::ThreadStatus::AtBreakpoint:
+      return 4;
+    default:
+      return 0;
   }
 }
 
@@ -229,7 +246,8 @@ void Firmware::report_error(uint32_t task) {
   task_error_[task] = static_cast<int32_t>(e);
   last_error_ = static_cast<int32_t>(e);
   std::string text = vm::run_error_text(e);
-  if (e == vm::RunError::CommandRefused) text += fmt::format(" (code {})", machine()->error_detail(task));
+  if (e == vm::RunError::CommandRefused)
+    text += fmt::format(" (code {})", machine()->error_detail(task));
   text += " at " + program_->place(machine()->pc(task));
   runtime_.log(fmt::format("task {}: run-time error {} ({})", task, static_cast<int32_t>(e), text));
   runtime_.output(fmt::format("%E {} {} {}\r\n", task, static_cast<int32_t>(e), one_line(text)));
@@ -269,15 +287,24 @@ bool Firmware::state_value(int32_t number) const {
   if (!a) return false;
   const uint32_t ip = a->input_port();
   switch ((number - 32) % 16) {
-    case 0: return a->profiler_moving();
-    case 1: return a->motor_on();
-    case 2: return a->servo_ready();
-    case 3: return (ip & drive::kIpMainHome) != 0;
-    case 4: return number == 36 && homed_;
-    case 5: return (ip & drive::kIpReverseLimit) != 0;
-    case 6: return (ip & drive::kIpForwardLimit) != 0;
-    case 7: return a->motor_fault() != 0;
-    default: return false;
+    case 0:
+      return a->profiler_moving();
+    case 1:
+      return a->motor_on();
+    case 2:
+      return a->servo_ready();
+    case 3:
+      return (ip & drive::kIpMainHome) != 0;
+    case 4:
+      return number == 36 && homed_;
+    case 5:
+      return (ip & drive::kIpReverseLimit) != 0;
+    case 6:
+      return (ip & drive::kIpForwardLimit) != 0;
+    case 7:
+      return a->motor_fault() != 0;
+    default:
+      return false;
   }
 }
 
@@ -310,25 +337,52 @@ vm::CommandStatus Firmware::read_variable(uint32_t id, int32_t index, int32_t& v
     if (!a) return kBadIndex;
     const drive::Parameters& p = a->parameters();
     switch (id) {
-      case 1: v = p.speed_counts_per_s; return 0;
-      case 2: v = p.accel_counts_per_s2; return 0;
-      case 3: v = p.decel_counts_per_s2; return 0;
-      case 4: v = p.stop_decel_counts_per_s2; return 0;
-      case 5: v = p.smoothing_ms; return 0;
-      case 6: v = a->absolute_target(); return 0;
-      case 7: v = p.jog_velocity_counts_per_s; return 0;
-      case 9: v = a->position(); return 0;
-      case 10: v = a->reference_position(); return 0;
-      case 11: v = a->velocity(); return 0;
-      case 12: v = a->position_error(); return 0;
-      case 13: v = static_cast<int32_t>(a->motor_fault()); return 0;
-      default: return kReadOnly;
+      case 1:
+        v = p.speed_counts_per_s;
+        return 0;
+      case 2:
+        v = p.accel_counts_per_s2;
+        return 0;
+      case 3:
+        v = p.decel_counts_per_s2;
+        return 0;
+      case 4:
+        v = p.stop_decel_counts_per_s2;
+        return 0;
+      case 5:
+        v = p.smoothing_ms;
+        return 0;
+      case 6:
+        v = a->absolute_target();
+        return 0;
+      case 7:
+        v = p.jog_velocity_counts_per_s;
+        return 0;
+      case 9:
+        v = a->position();
+        return 0;
+      case 10:
+        v = a->reference_position();
+        return 0;
+      case 11:
+        v = a->velocity();
+        return 0;
+      case 12:
+        v = a->position_error();
+        return 0;
+      case 13:
+        v = static_cast<int32_t>(a->motor_fault());
+        return 0;
+      default:
+        return kReadOnly;
     }
   }
   if (index < 0 || static_cast<uint32_t>(index) >= s->length) return kBadIndex;
   drive::Axis& a = runtime_.axis(0);
   switch (id) {
-    case 14: v = static_cast<int32_t>(fclk_); return 0;
+    case 14:
+      v = static_cast<int32_t>(fclk_);
+      return 0;
     case 15: {
       uint32_t bits = 0;
       for (int32_t k = 0; k < 32; ++k)
@@ -343,7 +397,9 @@ vm::CommandStatus Firmware::read_variable(uint32_t id, int32_t index, int32_t& v
       v = static_cast<int32_t>(bits);
       return 0;
     }
-    case 17: v = static_cast<int32_t>(a.output_port()); return 0;
+    case 17:
+      v = static_cast<int32_t>(a.output_port());
+      return 0;
     case 18:
       if (index < 1) return kBadIndex;
       v = in_func_[index];
@@ -352,7 +408,8 @@ vm::CommandStatus Firmware::read_variable(uint32_t id, int32_t index, int32_t& v
       if (index < 1) return kBadIndex;
       v = task_state(static_cast<uint32_t>(index));
       return 0;
-    default: return kNoSuchVariable;
+    default:
+      return kNoSuchVariable;
   }
 }
 
@@ -365,10 +422,15 @@ vm::CommandStatus Firmware::write_variable(uint32_t id, int32_t index, int32_t v
     if (!a) return kBadIndex;
     drive::Parameters& p = a->parameters();
     switch (id) {
-      case 1: case 2: case 3: case 4:
+      case 1:
+      case 2:
+      case 3:
+      case 4:
         if (v <= 0) return kBadValue;
-        (id == 1 ? p.speed_counts_per_s : id == 2 ? p.accel_counts_per_s2
-                   : id == 3 ? p.decel_counts_per_s2 : p.stop_decel_counts_per_s2) = v;
+        (id == 1   ? p.speed_counts_per_s
+         : id == 2 ? p.accel_counts_per_s2
+         : id == 3 ? p.decel_counts_per_s2
+                   : p.stop_decel_counts_per_s2) = v;
         return 0;
       case 5:
         if (v < 0) return kBadValue;
@@ -394,20 +456,29 @@ vm::CommandStatus Firmware::write_variable(uint32_t id, int32_t index, int32_t v
         p.stop_decel_counts_per_s2 = keep;
         return 0;
       }
-      case 9: a->set_position(v); return 0;
-      default: return kReadOnly;
+      case 9:
+        a->set_position(v);
+        return 0;
+      default:
+        return kReadOnly;
     }
   }
   if (index < 0 || static_cast<uint32_t>(index) >= s->length) return kBadIndex;
   switch (id) {
-    case 14: fclk_ = static_cast<uint32_t>(v); return 0;
-    case 17: runtime_.axis(0).set_output_port(static_cast<uint32_t>(v)); return 0;
+    case 14:
+      fclk_ = static_cast<uint32_t>(v);
+      return 0;
+    case 17:
+      runtime_.axis(0).set_output_port(static_cast<uint32_t>(v));
+      return 0;
     case 18:
       if (index < 1 || !drive::valid_input_logic(v)) return index < 1 ? kBadIndex : kBadValue;
       in_func_[index] = v;
       for (size_t a = 0; a < runtime_.axis_count(); ++a) runtime_.axis(a).set_input_logic(index, v);
       return 0;
-    default: (void)from_host; return kReadOnly;
+    default:
+      (void)from_host;
+      return kReadOnly;
   }
 }
 
@@ -430,17 +501,23 @@ vm::CommandStatus Firmware::write(uint32_t command, int32_t index, Value value) 
   return write_variable(command, index, value.i, false);
 }
 
-vm::CommandStatus Firmware::execute(uint32_t command, int32_t index, const Value* args, uint32_t count) {
+vm::CommandStatus Firmware::execute(uint32_t command, int32_t index, const Value* args,
+                                    uint32_t count) {
   const uint32_t self = schedule_.running();
   switch (command) {
-    case kLockCommand: schedule_.lock(self); return vm::kCommandOk;
-    case kUnlockCommand: schedule_.unlock(self); return vm::kCommandOk;
+    case kLockCommand:
+      schedule_.lock(self);
+      return vm::kCommandOk;
+    case kUnlockCommand:
+      schedule_.unlock(self);
+      return vm::kCommandOk;
     case kRunCommand: {
       if (index < 1 || index > static_cast<int32_t>(kTasks) || count != 1) return kBadTask;
       const uint32_t t = static_cast<uint32_t>(index);
       const vm::ThreadStatus s = machine()->status(t);
       if (s == vm::ThreadStatus::Running || s == vm::ThreadStatus::Waiting) return kTaskBusy;
-      if (args[0].i < 0 || static_cast<uint32_t>(args[0].i) >= program_->image().routines.size()) return kNoSuchLabel;
+      if (args[0].i < 0 || static_cast<uint32_t>(args[0].i) >= program_->image().routines.size())
+        return kNoSuchLabel;
       return start_task(t, static_cast<uint32_t>(args[0].i));
     }
     case kKillCommand:
@@ -448,16 +525,20 @@ vm::CommandStatus Firmware::execute(uint32_t command, int32_t index, const Value
       kill_pending_[index] = true;
       // Killing itself ends the task's turn now; another task ends after this phase.
       return static_cast<uint32_t>(index) == self ? vm::kCommandEndSlice : vm::kCommandOk;
-    default: return kUnknownCommand;
+    default:
+      return kUnknownCommand;
   }
 }
 
 // printl: `%P t MODE1 MODE2 text` to every host; the modes are the first two words.
-vm::CommandStatus Firmware::message(uint32_t thread, uint32_t text, const Value* args, uint32_t count) {
+vm::CommandStatus Firmware::message(uint32_t thread, uint32_t text, const Value* args,
+                                    uint32_t count) {
   if (count < 2 || !program_) return kBadValue;
-  const std::string body = format_message(program_->machine().image().text(text), args + 2, count - 2);
-  runtime_.output(fmt::format("%P {} {:08X} {:08X} {}\r\n", thread, static_cast<uint32_t>(args[0].i),
-                              static_cast<uint32_t>(args[1].i), one_line(body)));
+  const std::string body =
+      format_message(program_->machine().image().text(text), args + 2, count - 2);
+  runtime_.output(fmt::format("%P {} {:08X} {:08X} {}\r\n", thread,
+                              static_cast<uint32_t>(args[0].i), static_cast<uint32_t>(args[1].i),
+                              one_line(body)));
   return vm::kCommandOk;
 }
 

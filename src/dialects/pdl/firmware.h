@@ -69,7 +69,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
 
   // --- the debugger's hooks (debug_hooks.cpp)
   dialect::LoadedProgram* debug_program() override { return program_.get(); }
-  dialect::Evaluation evaluate(uint32_t thread, uint32_t depth, std::string_view expression) override;
+  dialect::Evaluation evaluate(uint32_t thread, uint32_t depth,
+                               std::string_view expression) override;
   std::optional<std::vector<dialect::DebugFrame>> debug_frames(uint32_t thread) override;
   std::optional<uint32_t> debug_call_depth(uint32_t thread) override;
   std::optional<uint32_t> debug_function_entry(std::string_view name) override;
@@ -79,13 +80,15 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   // --- vm::Host
   vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override;
   vm::CommandStatus write(uint32_t command, int32_t index, Value value) override;
-  vm::CommandStatus execute(uint32_t command, int32_t index, const Value* args, uint32_t count) override;
-  vm::CommandStatus message(uint32_t thread, uint32_t text, const Value* args, uint32_t count) override;
+  vm::CommandStatus execute(uint32_t command, int32_t index, const Value* args,
+                            uint32_t count) override;
+  vm::CommandStatus message(uint32_t thread, uint32_t text, const Value* args,
+                            uint32_t count) override;
   uint32_t now_us() override { return static_cast<uint32_t>(runtime_.now_ns() / 1000); }
 
   // --- the host protocol (host_lines.cpp): one host line with that host's level and download
-  std::vector<dialect::Answer> host_line(std::string_view line, int32_t& level, gold::DownloadReceiver* download,
-                                         bool takes_time);
+  std::vector<dialect::Answer> host_line(std::string_view line, int32_t& level,
+                                         gold::DownloadReceiver* download, bool takes_time);
   uint32_t fclk() const { return fclk_; }
 
  private:
@@ -106,8 +109,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
     int32_t fp = 0;
   };
   std::vector<TaskFrame> walk_frames(uint32_t task) const;
-  bool walk_routine_frame(uint32_t pc, uint32_t line_pc, int32_t sp, int32_t fp, int32_t base, int32_t limit,
-                          std::vector<TaskFrame>& out) const;
+  bool walk_routine_frame(uint32_t pc, uint32_t line_pc, int32_t sp, int32_t fp, int32_t base,
+                          int32_t limit, std::vector<TaskFrame>& out) const;
   std::string frame_name(const TaskFrame& f) const;
 
   bool load_stored(std::string* error);
@@ -132,8 +135,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::unique_ptr<dialect::LoadedProgram> program_;
   std::vector<HostVariable> variables_;
   uint32_t fclk_ = 0;
-  int32_t task_error_[kTasks + 1] = {};      // the run-time error that stopped each task
-  uint32_t task_routine_[kTasks + 1] = {};   // where a host's run started it
+  int32_t task_error_[kTasks + 1] = {};     // the run-time error that stopped each task
+  uint32_t task_routine_[kTasks + 1] = {};  // where a host's run started it
   bool kill_pending_[kTasks + 1] = {};
   bool homed_ = false;
   int32_t in_func_[7] = {0, 9, 11, 17, 7, 7, 7};

@@ -94,11 +94,12 @@ std::vector<Answer> Firmware::query(std::string_view line) {
   return host_line(line, level, nullptr, false);
 }
 
-std::vector<Answer> Firmware::host_line(std::string_view line, int32_t& level, gold::DownloadReceiver* download,
-                                        bool takes_time) {
+std::vector<Answer> Firmware::host_line(std::string_view line, int32_t& level,
+                                        gold::DownloadReceiver* download, bool takes_time) {
   std::vector<Answer> answers;
   for (const dialect::Frame& frame : dialect::frame_text(line, wire_.framing())) {
-    if (frame.kind == dialect::Frame::Kind::kTooLong || frame.kind == dialect::Frame::Kind::kBadCharacter) {
+    if (frame.kind == dialect::Frame::Kind::kTooLong ||
+        frame.kind == dialect::Frame::Kind::kBadCharacter) {
       answers.push_back(error(kUnknownCommand, "unknown command"));
     } else if (frame.kind == dialect::Frame::Kind::kLine) {
       answer_one(frame.text, level, download, answers);
@@ -118,10 +119,14 @@ void Firmware::answer_one(std::string_view text, int32_t& level, gold::DownloadR
     if (auto e = download->handle(text, image)) return answers.push_back(*e);
     if (image.empty()) return;
     const dialect::DownloadResult r = this->download(image);
-    if (!r.ok) answers.push_back(error(r.storage_failed ? gold::kErrorStorage : gold::kErrorDownloadRefused, r.error));
+    if (!r.ok)
+      answers.push_back(
+          error(r.storage_failed ? gold::kErrorStorage : gold::kErrorDownloadRefused, r.error));
     return;
   }
-  auto word = [&](std::string_view w) { return text.size() >= w.size() && equal_ignoring_case(text.substr(0, w.size()), w); };
+  auto word = [&](std::string_view w) {
+    return text.size() >= w.size() && equal_ignoring_case(text.substr(0, w.size()), w);
+  };
   if (equal_ignoring_case(text, "halt")) {
     if (vm::Machine* m = machine())
       for (uint32_t t = 1; t <= kTasks; ++t) m->kill(t);
@@ -132,7 +137,8 @@ void Firmware::answer_one(std::string_view text, int32_t& level, gold::DownloadR
   if (debug_line(text, answers)) return;
   if (word("level/")) {
     int32_t n = 0;
-    if (!parse_int(text.substr(6), n) || n < 0) return answers.push_back(error(kBadValue, "level/n takes n >= 0"));
+    if (!parse_int(text.substr(6), n) || n < 0)
+      return answers.push_back(error(kBadValue, "level/n takes n >= 0"));
     level = n;
     return;
   }
@@ -150,8 +156,10 @@ void Firmware::answer_one(std::string_view text, int32_t& level, gold::DownloadR
       schedule_.unlock(static_cast<uint32_t>(t));
       return;
     }
-    if (space == std::string_view::npos) return answers.push_back(error(kNoSuchLabel, "run/t needs a _label"));
-    if (auto e = run_label(static_cast<uint32_t>(t), trim(rest.substr(space)))) answers.push_back(*e);
+    if (space == std::string_view::npos)
+      return answers.push_back(error(kNoSuchLabel, "run/t needs a _label"));
+    if (auto e = run_label(static_cast<uint32_t>(t), trim(rest.substr(space))))
+      answers.push_back(*e);
     return;
   }
   const size_t eq = text.find('=');
@@ -169,7 +177,8 @@ void Firmware::answer_one(std::string_view text, int32_t& level, gold::DownloadR
     while (true) {
       const size_t comma = rhs.find(',');
       double v = 0;
-      if (!parse_value(rhs.substr(0, comma), v)) return answers.push_back(error(kBadValue, "bad value"));
+      if (!parse_value(rhs.substr(0, comma), v))
+        return answers.push_back(error(kBadValue, "bad value"));
       values.push_back(v);
       if (comma == std::string_view::npos) break;
       rhs = rhs.substr(comma + 1);
@@ -185,14 +194,16 @@ void Firmware::answer_one(std::string_view text, int32_t& level, gold::DownloadR
 std::optional<Answer> Firmware::run_label(uint32_t task, std::string_view label) {
   const bytecode::Image& image = program_->image();
   const int r = image.find_routine(std::string(label));
-  if (label.empty() || label[0] != '_' || r < 0 || image.routines[static_cast<size_t>(r)].kind != bytecode::RoutineKind::Label) {
+  if (label.empty() || label[0] != '_' || r < 0 ||
+      image.routines[static_cast<size_t>(r)].kind != bytecode::RoutineKind::Label) {
     return error(kNoSuchLabel, "no such _label");
   }
   vm::Machine& m = *machine();
   for (uint32_t t = 1; t <= kTasks; ++t) {
     const vm::ThreadStatus s = m.status(t);
     const bool busy = s == vm::ThreadStatus::Running || s == vm::ThreadStatus::Waiting;
-    if (busy && (t == task || task_routine_[t] == static_cast<uint32_t>(r))) return error(kTaskBusy, "task busy or label running");
+    if (busy && (t == task || task_routine_[t] == static_cast<uint32_t>(r)))
+      return error(kTaskBusy, "task busy or label running");
   }
   if (start_task(task, static_cast<uint32_t>(r)) != 0) return error(kBadValue, "cannot start");
   return std::nullopt;
@@ -207,7 +218,8 @@ Answer Firmware::read_name(std::string_view name, std::optional<int32_t> index, 
     const int32_t i = index.value_or(0);
     if (i < 0 || static_cast<uint32_t>(i) >= v.length) return error(kBadIndex, "bad index");
     Value value;
-    if (!machine()->read_memory(static_cast<uint32_t>(v.address + i), value)) return error(kBadIndex, "bad index");
+    if (!machine()->read_memory(static_cast<uint32_t>(v.address + i), value))
+      return error(kBadIndex, "bad index");
     return Answer{v.kind == 'f' ? format_float(value.f) : std::to_string(value.i), 0};
   }
   if (const StateName* s = find_state(name)) {
@@ -216,7 +228,8 @@ Answer Firmware::read_name(std::string_view name, std::optional<int32_t> index, 
   }
   bool axis_zero = false;
   const SystemVariable* s = find_system_variable(name, &axis_zero);
-  if (!s) return program_ ? error(kNoSuchVariable, "no such variable") : error(kNoProgram, "no program");
+  if (!s)
+    return program_ ? error(kNoSuchVariable, "no such variable") : error(kNoProgram, "no program");
   if (!s->readable()) return error(kUnknownCommand, "write-only");
   if (axis_zero && index) return error(kBadIndex, "bad index");
   int32_t v = 0;
@@ -232,7 +245,8 @@ std::optional<Answer> Firmware::write_name(std::string_view name, std::optional<
     if (v.read_only) return error(kReadOnly, "read-only");
     if (level < v.level_write) return error(kLevelTooLow, "level too low");
     const int32_t i = index.value_or(0);
-    if (i < 0 || static_cast<uint64_t>(i) + values.size() > v.length) return error(kBadIndex, "bad index");
+    if (i < 0 || static_cast<uint64_t>(i) + values.size() > v.length)
+      return error(kBadIndex, "bad index");
     for (size_t k = 0; k < values.size(); ++k) {
       Value value;
       if (v.kind == 'f') {
@@ -242,7 +256,8 @@ std::optional<Answer> Firmware::write_name(std::string_view name, std::optional<
         if (v.kind == 's') n = static_cast<int16_t>(static_cast<uint16_t>(n & 0xFFFF));
         value = Value::of_int(n);
       }
-      machine()->write_memory(static_cast<uint32_t>(v.address + i) + static_cast<uint32_t>(k), value);
+      machine()->write_memory(static_cast<uint32_t>(v.address + i) + static_cast<uint32_t>(k),
+                              value);
     }
     return std::nullopt;
   }
@@ -255,7 +270,8 @@ std::optional<Answer> Firmware::write_name(std::string_view name, std::optional<
   }
   bool axis_zero = false;
   const SystemVariable* s = find_system_variable(name, &axis_zero);
-  if (!s) return program_ ? error(kNoSuchVariable, "no such variable") : error(kNoProgram, "no program");
+  if (!s)
+    return program_ ? error(kNoSuchVariable, "no such variable") : error(kNoProgram, "no program");
   if (!s->writable()) return error(kReadOnly, "read-only");
   if (axis_zero && index) return error(kBadIndex, "bad index");
   const int32_t code = write_variable(s->id, index.value_or(0), rounded(values[0]), true);

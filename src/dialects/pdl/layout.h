@@ -18,7 +18,9 @@ constexpr int32_t kTaskAddressUnit = 0x1000;   // &local of task t: 0x1000*t + w
 
 // The first word of task t's stack (t = 1..3): its address as a program sees it, and its word of
 // the data memory, so that a pointer needs no translation, only a check.
-constexpr int32_t stack_base(uint32_t task) { return static_cast<int32_t>(task) * kTaskAddressUnit; }
+constexpr int32_t stack_base(uint32_t task) {
+  return static_cast<int32_t>(task) * kTaskAddressUnit;
+}
 constexpr int32_t kMemoryWords = stack_base(kTasks) + kStackWords;
 
 // Locals of every entry routine; the first kEntryInputs are set by the firmware at start, or
@@ -31,8 +33,8 @@ enum EntryLocal : uint32_t {
   kBase = 2,   // address of its first word
   kFp = 3,     // address of the current procedure's frame (its first reserved word)
   kEntryInputs = 4,
-  kRetId = 4,   // the return site a ret or a procedure's end goes back to
-  kGotoN = 5,   // the slot offset of an indirect goto
+  kRetId = 4,  // the return site a ret or a procedure's end goes back to
+  kGotoN = 5,  // the slot offset of an indirect goto
   kFirstScratch = 6,
   kEntryLocals = 16,
 };

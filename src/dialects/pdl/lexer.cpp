@@ -12,8 +12,8 @@ bool name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || 
 bool name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // Longest first: the two-character operators.
-constexpr std::string_view kTwoChar[] = {"+=", "-=", "*=", "/=", "&=", "|=", "@=", "%=", "<=", ">=",
-                                         "<>", "->", "++", "--"};
+constexpr std::string_view kTwoChar[] = {
+    "+=", "-=", "*=", "/=", "&=", "|=", "@=", "%=", "<=", ">=", "<>", "->", "++", "--"};
 
 class Lexer {
  public:

@@ -27,10 +27,10 @@ struct StateName {
 constexpr uint32_t kStateCommand = 100;
 constexpr uint32_t kLockCommand = 101;
 constexpr uint32_t kUnlockCommand = 102;
-constexpr uint32_t kRunCommand = 103;   // index: the task; argument: the routine
-constexpr uint32_t kKillCommand = 104;  // index: the task
+constexpr uint32_t kRunCommand = 103;       // index: the task; argument: the routine
+constexpr uint32_t kKillCommand = 104;      // index: the task
 constexpr uint32_t kEndPhaseCommand = 105;  // spends the rest of the turn (a yield the host counts)
-constexpr int32_t kStateCount = 32 * 4;      // status[0..3]
+constexpr int32_t kStateCount = 32 * 4;     // status[0..3]
 
 constexpr uint32_t kMaxAxes = 4;
 

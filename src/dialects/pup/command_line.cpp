@@ -12,15 +12,43 @@ namespace uprog::pup {
 namespace {
 
 dialect::Answer refusal(int32_t code) {
-  static constexpr const char* kTexts[] = {
-      "", "unknown keyword", "syntax", "index missing", "index out of range", "no index allowed",
-      "argument wrong format", "argument out of range", "argument not supported", "argument required",
-      "value out of range", "read only", "not assignable", "not over the line", "not from a program",
-      "no user program", "user program running", "thread already running", "thread not running",
-      "thread not halted", "in motion", "motor off", "motor on", "fault", "inhibit", "mode",
-      "expression stack full", "expression stack empty", "call stack full", "return without call",
-      "division by zero", "math domain", "bad line", "no task", "breakpoints"};
-  const char* text = code > 0 && code < static_cast<int32_t>(std::size(kTexts)) ? kTexts[code] : "error";
+  static constexpr const char* kTexts[] = {"",
+                                           "unknown keyword",
+                                           "syntax",
+                                           "index missing",
+                                           "index out of range",
+                                           "no index allowed",
+                                           "argument wrong format",
+                                           "argument out of range",
+                                           "argument not supported",
+                                           "argument required",
+                                           "value out of range",
+                                           "read only",
+                                           "not assignable",
+                                           "not over the line",
+                                           "not from a program",
+                                           "no user program",
+                                           "user program running",
+                                           "thread already running",
+                                           "thread not running",
+                                           "thread not halted",
+                                           "in motion",
+                                           "motor off",
+                                           "motor on",
+                                           "fault",
+                                           "inhibit",
+                                           "mode",
+                                           "expression stack full",
+                                           "expression stack empty",
+                                           "call stack full",
+                                           "return without call",
+                                           "division by zero",
+                                           "math domain",
+                                           "bad line",
+                                           "no task",
+                                           "breakpoints"};
+  const char* text =
+      code > 0 && code < static_cast<int32_t>(std::size(kTexts)) ? kTexts[code] : "error";
   return {text, code};
 }
 
@@ -33,7 +61,9 @@ std::string trim(std::string_view s) {
 class Session final : public dialect::Session {
  public:
   explicit Session(Firmware& f) : firmware_(f) {}
-  std::vector<dialect::Answer> send(std::string_view line) override { return firmware_.send(line, true, &download_); }
+  std::vector<dialect::Answer> send(std::string_view line) override {
+    return firmware_.send(line, true, &download_);
+  }
 
  private:
   Firmware& firmware_;
@@ -41,14 +71,16 @@ class Session final : public dialect::Session {
 };
 
 // "ADownloadUProg[k],arg" (any case, blanks around the tokens) → {k, arg}.
-std::optional<std::pair<int32_t, std::optional<std::string>>> parse_download(std::string_view text) {
+std::optional<std::pair<int32_t, std::optional<std::string>>> parse_download(
+    std::string_view text) {
   constexpr std::string_view kKey = "adownloaduprog";
   if (text.size() < kKey.size()) return std::nullopt;
   for (size_t i = 0; i < kKey.size(); ++i) {
     if (std::tolower(static_cast<unsigned char>(text[i])) != kKey[i]) return std::nullopt;
   }
   std::string rest = trim(text.substr(kKey.size()));
-  if (rest.size() < 3 || rest[0] != '[' || rest[2] != ']' || rest[1] < '1' || rest[1] > '3') return std::nullopt;
+  if (rest.size() < 3 || rest[0] != '[' || rest[2] != ']' || rest[1] < '1' || rest[1] > '3')
+    return std::nullopt;
   const int32_t step = rest[1] - '0';
   rest = trim(std::string_view(rest).substr(3));
   if (rest.empty() || rest[0] != ',') return std::pair{step, std::optional<std::string>()};
@@ -66,9 +98,12 @@ bool is_info_request(std::string_view text) {
 
 }  // namespace
 
-std::unique_ptr<dialect::Session> Firmware::open_session() { return std::make_unique<Session>(*this); }
+std::unique_ptr<dialect::Session> Firmware::open_session() {
+  return std::make_unique<Session>(*this);
+}
 
-std::vector<dialect::Answer> Firmware::send(std::string_view line, bool takes_time, DownloadState* download) {
+std::vector<dialect::Answer> Firmware::send(std::string_view line, bool takes_time,
+                                            DownloadState* download) {
   std::vector<dialect::Answer> answers;
   size_t start = 0;
   while (start <= line.size()) {
@@ -105,7 +140,9 @@ dialect::Answer Firmware::serve_message(std::string_view text, DownloadState* do
   const int32_t index = m->target.index;
   if (k->indexed() && (index < k->index_min || index > k->index_max)) return refusal(4);
   if ((k->attrs & kNeedsProgram) != 0 && !program_) return refusal(15);
-  if ((k->attrs & kNotInMotion) != 0 && axis_->profiler_moving() && m->tail == Message::Tail::Assign) return refusal(20);
+  if ((k->attrs & kNotInMotion) != 0 && axis_->profiler_moving() &&
+      m->tail == Message::Tail::Assign)
+    return refusal(20);
   if (k->kind == KeywordKind::Cup) return line_stack(*m, *k);
   const bool has_arg = m->tail == Message::Tail::Argument;
   if (m->tail == Message::Tail::Assign) {
@@ -154,7 +191,8 @@ dialect::Answer Firmware::line_stack(const Message& m, const Keyword& k) {
   const Keyword* name = m.tail_is_name ? find_keyword(m.name.key) : nullptr;
   if (name != nullptr) {  // the parameter named after `,` has its own index rules
     if (name->indexed() != m.name.has_index) return refusal(name->indexed() ? 3 : 5);
-    if (name->indexed() && (m.name.index < name->index_min || m.name.index > name->index_max)) return refusal(4);
+    if (name->indexed() && (m.name.index < name->index_min || m.name.index > name->index_max))
+      return refusal(4);
     if (name->kind != KeywordKind::Param && name->kind != KeywordKind::ReadOnly) return refusal(12);
   }
   int32_t a = 0, b = 0, code = 0;
@@ -194,7 +232,8 @@ dialect::Answer Firmware::line_stack(const Message& m, const Keyword& k) {
       // Pop i (1..S, else 4) and use AKey[N+i-1]; APopParamIdx then pops the value.
       if (name == nullptr) return refusal(m.tail_is_name ? 1 : 9);
       if (!name->indexed()) return refusal(5);
-      if (static_cast<int64_t>(m.name.index) + m.target.index - 1 > name->index_max) return refusal(4);  // as the loader
+      if (static_cast<int64_t>(m.name.index) + m.target.index - 1 > name->index_max)
+        return refusal(4);  // as the loader
       if (!pop(a)) return refusal(27);
       const int64_t element = static_cast<int64_t>(m.name.index) + a - 1;
       if (a < 1 || a > m.target.index || element > name->index_max) return refusal(4);
@@ -213,7 +252,8 @@ dialect::Answer Firmware::line_stack(const Message& m, const Keyword& k) {
       const int32_t s = status_of(m.target.index, m.value);
       return s < 0 ? refusal(-s) : dialect::Answer{std::to_string(s), 0};
     }
-    default: return refusal(13);
+    default:
+      return refusal(13);
   }
 }
 

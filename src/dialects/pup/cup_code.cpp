@@ -13,9 +13,9 @@ namespace {
 // One opcode for AMath[n] (ADDI for 1 …), or nullopt where it takes several or the firmware.
 std::optional<Op> native_math(int32_t n) {
   static const std::map<int32_t, Op> kNative = {
-      {1, Op::ADDI}, {2, Op::MULI}, {3, Op::SUBI}, {4, Op::DIVI}, {5, Op::REMI}, {6, Op::NEGI},
-      {7, Op::ABSI}, {10, Op::ANDI}, {11, Op::ORI}, {12, Op::XORI}, {13, Op::NOTI}, {14, Op::SHLI},
-      {15, Op::SHRI}, {22, Op::LNOT}};
+      {1, Op::ADDI},  {2, Op::MULI},  {3, Op::SUBI},  {4, Op::DIVI}, {5, Op::REMI},
+      {6, Op::NEGI},  {7, Op::ABSI},  {10, Op::ANDI}, {11, Op::ORI}, {12, Op::XORI},
+      {13, Op::NOTI}, {14, Op::SHLI}, {15, Op::SHRI}, {22, Op::LNOT}};
   if (auto it = kNative.find(n); it != kNative.end()) return it->second;
   return std::nullopt;
 }
@@ -33,7 +33,8 @@ bool emit_math(bytecode::CodeBuilder& b, int32_t n) {
   }
   if (!is_logical(n)) return false;
   // Logical and/or: both operands to 0/1 first.
-  b.emit_imm(Op::PUSHI, 0), b.emit(Op::NEI), b.emit(Op::SWAP), b.emit_imm(Op::PUSHI, 0), b.emit(Op::NEI);
+  b.emit_imm(Op::PUSHI, 0), b.emit(Op::NEI), b.emit(Op::SWAP), b.emit_imm(Op::PUSHI, 0),
+      b.emit(Op::NEI);
   b.emit(n == 20 ? Op::ANDI : Op::ORI);
   return true;
 }

@@ -120,14 +120,16 @@ std::vector<CupTask> task_table(const std::vector<std::string>& lines) {
 std::string write_cup(const CupProgram& program) {
   std::string info, tasks, events, body;
   for (const std::string& s : program.info) info += "%I " + s + "\r";
-  for (const CupTask& t : task_table(program.lines)) tasks += fmt::format("%T {},{}\r", t.task, t.line);
+  for (const CupTask& t : task_table(program.lines))
+    tasks += fmt::format("%T {},{}\r", t.task, t.line);
   for (const CupEvent& e : program.events) events += fmt::format("%E {},{}\r", e.event, e.function);
   for (const std::string& l : program.lines) body += l + "\r";
   std::string head = "% " + program.date + "\r% " + program.name + "\r";
   const size_t info_at = kCrcLineSize + head.size() + 5 * 9;
   const size_t tasks_at = info_at + info.size(), events_at = tasks_at + tasks.size();
   const size_t program_at = events_at + events.size(), end = program_at + body.size();
-  for (size_t offset : {info_at, tasks_at, events_at, program_at, end}) head += fmt::format("% {:06}\r", offset);
+  for (size_t offset : {info_at, tasks_at, events_at, program_at, end})
+    head += fmt::format("% {:06}\r", offset);
   const std::string rest = head + info + tasks + events + body;
   return fmt::format("% {:08X}\r", crc_of(rest)) + rest;
 }
@@ -162,7 +164,8 @@ std::optional<CupProgram> read_cup(const std::string& bytes, CupReadError* error
   if (!clean) return fail(44, "lines must end with CR alone");
   if (lines.size() < 8) return fail(44, "the header has 8 lines");
   for (size_t i = 0; i < 8; ++i) {
-    if (!lines[i].starts_with("% ")) return fail(44, fmt::format("header line {} must start with '% '", i + 1));
+    if (!lines[i].starts_with("% "))
+      return fail(44, fmt::format("header line {} must start with '% '", i + 1));
   }
   CupProgram p;
   p.date = lines[1].substr(2);
@@ -187,8 +190,10 @@ std::optional<CupProgram> read_cup(const std::string& bytes, CupReadError* error
     if (empty ? offsets[part] > offsets[3] : offsets[part] != at) {
       return fail(44, fmt::format("the offset of the %{} table is wrong", kinds[part]));
     }
-    while (i < lines.size() && lines[i].size() >= 2 && lines[i][0] == '%' && lines[i][1] == kinds[part]) {
-      if (!read_table_line(lines[i], p)) return fail(44, fmt::format("bad table line '{}'", lines[i]));
+    while (i < lines.size() && lines[i].size() >= 2 && lines[i][0] == '%' &&
+           lines[i][1] == kinds[part]) {
+      if (!read_table_line(lines[i], p))
+        return fail(44, fmt::format("bad table line '{}'", lines[i]));
       at += lines[i++].size() + 1;
     }
   }
@@ -200,7 +205,8 @@ std::optional<CupProgram> read_cup(const std::string& bytes, CupReadError* error
   }
   if (offsets[4] != at || at != bytes.size()) return fail(44, "the length in the header is wrong");
   std::vector<CupTask> from_markers = task_table(p.lines);
-  if (from_markers.size() != p.tasks.size()) return fail(44, "the task table does not match the markers");
+  if (from_markers.size() != p.tasks.size())
+    return fail(44, "the task table does not match the markers");
   for (size_t k = 0; k < from_markers.size(); ++k) {
     if (from_markers[k].task != p.tasks[k].task || from_markers[k].line != p.tasks[k].line) {
       return fail(44, "the task table does not match the markers");

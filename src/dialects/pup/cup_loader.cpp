@@ -44,8 +44,10 @@ std::optional<std::string> parse_line(const std::string& text, LineOp& op, size_
   op.key = find_keyword(m->target.key);
   if (op.key == nullptr) return "unknown keyword '" + m->target.key + "'";
   const Keyword& k = *op.key;
-  if ((k.attrs & kInProgram) == 0) return fmt::format("'{}' is not allowed in a program (error 14)", k.name);
-  if (k.indexed() != m->target.has_index) return fmt::format("'{}' {}", k.name, k.indexed() ? "needs an index" : "takes no index");
+  if ((k.attrs & kInProgram) == 0)
+    return fmt::format("'{}' is not allowed in a program (error 14)", k.name);
+  if (k.indexed() != m->target.has_index)
+    return fmt::format("'{}' {}", k.name, k.indexed() ? "needs an index" : "takes no index");
   if (k.indexed() && (m->target.index < k.index_min || m->target.index > k.index_max)) {
     return fmt::format("index {} of '{}' out of range", m->target.index, k.name);
   }
@@ -57,7 +59,8 @@ std::optional<std::string> parse_line(const std::string& text, LineOp& op, size_
   if (k.kind == KeywordKind::Param || k.kind == KeywordKind::ReadOnly) {
     return fmt::format("a bare read of '{}'", k.name);
   }
-  if ((k.arg != ArgKind::None) != has_arg) return fmt::format("'{}' {}", k.name, has_arg ? "takes no argument" : "needs an argument");
+  if ((k.arg != ArgKind::None) != has_arg)
+    return fmt::format("'{}' {}", k.name, has_arg ? "takes no argument" : "needs an argument");
   if (k.arg == ArgKind::Name) {
     if (!m->tail_is_name) return fmt::format("'{}' needs a parameter's name", k.name);
     op.name_key = find_keyword(m->name.key);
@@ -65,7 +68,8 @@ std::optional<std::string> parse_line(const std::string& text, LineOp& op, size_
     if (n == nullptr || (n->kind != KeywordKind::Param && n->kind != KeywordKind::ReadOnly)) {
       return "no parameter named '" + m->name.key + "'";
     }
-    if (n->indexed() != m->name.has_index) return fmt::format("'{}' {}", n->name, n->indexed() ? "needs an index" : "takes no index");
+    if (n->indexed() != m->name.has_index)
+      return fmt::format("'{}' {}", n->name, n->indexed() ? "needs an index" : "takes no index");
     if (n->indexed() && (m->name.index < n->index_min || m->name.index > n->index_max)) {
       return fmt::format("index {} of '{}' out of range", m->name.index, n->name);
     }
@@ -81,10 +85,20 @@ std::optional<std::string> parse_line(const std::string& text, LineOp& op, size_
   }
   const int32_t i = m->target.index, v = m->value;
   switch (k.id) {
-    case KeywordId::PushConstant: case KeywordId::PushParam: case KeywordId::GetStatus: op.pushes = 1; break;
-    case KeywordId::PopParam: op.pops = 1; break;
-    case KeywordId::PushParamIdx: op.pops = 1, op.pushes = 1; break;
-    case KeywordId::PopParamIdx: op.pops = 2; break;
+    case KeywordId::PushConstant:
+    case KeywordId::PushParam:
+    case KeywordId::GetStatus:
+      op.pushes = 1;
+      break;
+    case KeywordId::PopParam:
+      op.pops = 1;
+      break;
+    case KeywordId::PushParamIdx:
+      op.pops = 1, op.pushes = 1;
+      break;
+    case KeywordId::PopParamIdx:
+      op.pops = 2;
+      break;
     case KeywordId::Math:
       if (math_arity(i) == 0) return fmt::format("no AMath[{}]", i);
       op.pops = math_arity(i), op.pushes = 1;
@@ -96,14 +110,18 @@ std::optional<std::string> parse_line(const std::string& text, LineOp& op, size_
     case KeywordId::Jump:
       op.pops = condition_arity(i);
       op.falls_through = i != 1;
-      if (v < 1 || static_cast<size_t>(v) > line_count + 1) return fmt::format("jump to line {}, which is not there", v);
+      if (v < 1 || static_cast<size_t>(v) > line_count + 1)
+        return fmt::format("jump to line {}, which is not there", v);
       op.target = static_cast<uint32_t>(v);
       break;
-    case KeywordId::Return: op.falls_through = false; break;
+    case KeywordId::Return:
+      op.falls_through = false;
+      break;
     case KeywordId::WaitTime:
       if (v < 0) return "a negative wait";
       break;
-    default: break;
+    default:
+      break;
   }
   return std::nullopt;
 }
@@ -126,7 +144,8 @@ class Loader {
 
   std::optional<Refusal> parse() {
     for (size_t i = 0; i < count(); ++i) {
-      if (auto why = parse_line(p_.lines[i], ops_[i + 1], count())) return Refusal{static_cast<uint32_t>(i + 1), *why};
+      if (auto why = parse_line(p_.lines[i], ops_[i + 1], count()))
+        return Refusal{static_cast<uint32_t>(i + 1), *why};
     }
     return std::nullopt;
   }
@@ -149,7 +168,8 @@ class Loader {
     }
     for (const CupEvent& e : p_.events) {
       if (e.event < 0 || e.event > 23) return Refusal{0, fmt::format("no event {}", e.event)};
-      if (functions_.count(e.function) == 0) return Refusal{0, fmt::format("event {}: no function {}", e.event, e.function)};
+      if (functions_.count(e.function) == 0)
+        return Refusal{0, fmt::format("event {}: no function {}", e.event, e.function)};
     }
     return std::nullopt;
   }
@@ -173,9 +193,11 @@ class Loader {
         op.fails = d < op.pops ? 27 : 26;  // stack empty, stack full: when the line runs
         continue;
       }
-      if (op.key->id == KeywordId::Return && d != 0) return Refusal{l, "AReturn with values on the stack"};
+      if (op.key->id == KeywordId::Return && d != 0)
+        return Refusal{l, "AReturn with values on the stack"};
       auto flow = [&](uint32_t to) -> std::optional<Refusal> {
-        if (depth_[to] >= 0 && depth_[to] != after) return Refusal{to, "reachable at two stack depths"};
+        if (depth_[to] >= 0 && depth_[to] != after)
+          return Refusal{to, "reachable at two stack depths"};
         if (depth_[to] == after) return std::nullopt;
         depth_[to] = after;
         work.push_back(to);
@@ -212,7 +234,8 @@ class Loader {
     b.emit(Op::CMDGET, kMathResult, 0);
   }
 
-  void line_code(bytecode::CodeBuilder& b, uint32_t l, std::vector<bytecode::CodeBuilder::Label>& at) {
+  void line_code(bytecode::CodeBuilder& b, uint32_t l,
+                 std::vector<bytecode::CodeBuilder::Label>& at) {
     const LineOp& op = ops_[l];
     const Message& m = op.msg;
     const Keyword& k = *op.key;
@@ -229,11 +252,19 @@ class Loader {
       return b.end_line(start);
     }
     switch (k.id) {
-      case KeywordId::ProgTask: return;
-      case KeywordId::ProgFunc: return b.emit(Op::EOL);
-      case KeywordId::PushConstant: push_constant(b, m.value); break;
-      case KeywordId::PushParam: load(b, op.name_key->id, m.name.index); break;
-      case KeywordId::PopParam: store(b, op.name_key->id, m.name.index); break;
+      case KeywordId::ProgTask:
+        return;
+      case KeywordId::ProgFunc:
+        return b.emit(Op::EOL);
+      case KeywordId::PushConstant:
+        push_constant(b, m.value);
+        break;
+      case KeywordId::PushParam:
+        load(b, op.name_key->id, m.name.index);
+        break;
+      case KeywordId::PopParam:
+        store(b, op.name_key->id, m.name.index);
+        break;
       case KeywordId::PushParamIdx:
         if (op.name_key->id == KeywordId::GenData) {
           b.emit(Op::LDGW, gen_data_global(), gen_data_window(op.msg));
@@ -248,8 +279,12 @@ class Loader {
           b.emit(Op::SWAP), b.emit(Op::CMDSETX, indexed(op));
         }
         break;
-      case KeywordId::Math: math(b, i); break;
-      case KeywordId::Compare: emit_condition(b, i); break;
+      case KeywordId::Math:
+        math(b, i);
+        break;
+      case KeywordId::Compare:
+        emit_condition(b, i);
+        break;
       case KeywordId::GetStatus:
         push_constant(b, m.value);
         b.emit(Op::CMDGETX, kStatusBase + static_cast<uint32_t>(i));
@@ -265,7 +300,8 @@ class Loader {
         b.bind(done);
         break;
       }
-      case KeywordId::Jump: return jump(b, i, at[op.target]);
+      case KeywordId::Jump:
+        return jump(b, i, at[op.target]);
       case KeywordId::ProgFuncCall:
       case KeywordId::ProgCallFunc:
         b.emit(Op::CALL, static_cast<uint32_t>(function_routine_.at(m.value)), 0);
@@ -290,11 +326,13 @@ class Loader {
 
   // A keyword's value at an index: AGenData's in the image's global, any other's from the firmware.
   void load(bytecode::CodeBuilder& b, KeywordId key, int32_t index) {
-    if (key == KeywordId::GenData) return b.emit(Op::LDGE, gen_data_global(), static_cast<uint32_t>(index - 1));
+    if (key == KeywordId::GenData)
+      return b.emit(Op::LDGE, gen_data_global(), static_cast<uint32_t>(index - 1));
     b.emit(Op::CMDGET, static_cast<uint32_t>(key), static_cast<uint32_t>(index));
   }
   void store(bytecode::CodeBuilder& b, KeywordId key, int32_t index) {
-    if (key == KeywordId::GenData) return b.emit(Op::STGE, gen_data_global(), static_cast<uint32_t>(index - 1));
+    if (key == KeywordId::GenData)
+      return b.emit(Op::STGE, gen_data_global(), static_cast<uint32_t>(index - 1));
     b.emit(Op::CMDSET, static_cast<uint32_t>(key), static_cast<uint32_t>(index));
   }
   uint32_t gen_data_global() { return pup::gen_data_global(out_.image); }
@@ -305,7 +343,10 @@ class Loader {
     if (c == 1) return b.emit_to(Op::JMPEOL, to);
     const uint32_t start = b.here();
     if (c == 2) b.emit_imm(Op::PUSHI, 0);
-    const Op branch = c >= 3 && c <= 8 ? kCompareJumps[c - 3] : c == 2 ? Op::JGTI : c == 9 ? Op::JZ : Op::JNZ;
+    const Op branch = c >= 3 && c <= 8 ? kCompareJumps[c - 3]
+                      : c == 2         ? Op::JGTI
+                      : c == 9         ? Op::JZ
+                                       : Op::JNZ;
     b.emit_to(branch, to);
     b.end_line(start);
   }
@@ -381,7 +422,8 @@ class Loader {
     b.emit(Op::EXIT);
     b.finish();
     for (size_t r = 0; r < runs.size(); ++r) place_copy(runs[r], run_guard[r]);
-    for (const auto& [n, l] : functions_) add_routine(fmt::format("func {}", n), bytecode::RoutineKind::Function, out_.line_pc[l]);
+    for (const auto& [n, l] : functions_)
+      add_routine(fmt::format("func {}", n), bytecode::RoutineKind::Function, out_.line_pc[l]);
     auto task_entry = [&](uint32_t l) { return out_.line_pc[l]; };
     if (count() == 0 || ops_[1].key->id != KeywordId::ProgTask) {
       out_.task_routine[0] = static_cast<int32_t>(image.routines.size());
@@ -389,15 +431,20 @@ class Loader {
     }
     for (const auto& [n, l] : tasks_) {
       out_.task_routine[static_cast<size_t>(n)] = static_cast<int32_t>(image.routines.size());
-      image.tasks.push_back({static_cast<uint32_t>(image.routines.size()), static_cast<uint32_t>(n), 0, 1, false});
+      image.tasks.push_back(
+          {static_cast<uint32_t>(image.routines.size()), static_cast<uint32_t>(n), 0, 1, false});
       add_routine(fmt::format("task {}", n), bytecode::RoutineKind::Task, task_entry(l));
     }
     for (const CupEvent& e : p_.events) {
       const uint32_t l = functions_.at(e.function);
-      out_.event_routine[static_cast<size_t>(e.event)] = static_cast<int32_t>(image.routines.size());
-      image.events.push_back({static_cast<uint32_t>(e.event), static_cast<uint32_t>(image.routines.size())});
-      // An event enters after the marker's EOL, so that the function's first line runs in the cycle it is taken.
-      add_routine(fmt::format("event {}", e.event), bytecode::RoutineKind::AutoRoutine, out_.line_pc[l] + 1);
+      out_.event_routine[static_cast<size_t>(e.event)] =
+          static_cast<int32_t>(image.routines.size());
+      image.events.push_back(
+          {static_cast<uint32_t>(e.event), static_cast<uint32_t>(image.routines.size())});
+      // An event enters after the marker's EOL, so that the function's first line runs in the cycle
+      // it is taken.
+      add_routine(fmt::format("event {}", e.event), bytecode::RoutineKind::AutoRoutine,
+                  out_.line_pc[l] + 1);
     }
     out_.line_depth = depth_;
     out_.waits.assign(count() + 2, false);
@@ -421,7 +468,8 @@ class Loader {
 std::optional<size_t> gen_data_offset(const std::string& name) {
   const std::string whole = kGenDataGlobal;
   if (name == whole) return 0;
-  if (name.size() < whole.size() + 3 || name.compare(0, whole.size() + 1, whole + "[") != 0 || name.back() != ']') {
+  if (name.size() < whole.size() + 3 || name.compare(0, whole.size() + 1, whole + "[") != 0 ||
+      name.back() != ']') {
     return std::nullopt;
   }
   size_t n = 0;
@@ -443,7 +491,8 @@ uint32_t gen_data_element_global(bytecode::Image& image, int32_t n) {
 
 // The parse checked that the window lies within the 1000 words.
 uint32_t gen_data_window(const Message& m) {
-  return bytecode::pack_window(static_cast<uint32_t>(m.name.index - 1), static_cast<uint32_t>(m.target.index));
+  return bytecode::pack_window(static_cast<uint32_t>(m.name.index - 1),
+                               static_cast<uint32_t>(m.target.index));
 }
 
 uint32_t gen_data_global(bytecode::Image& image) {
@@ -452,7 +501,8 @@ uint32_t gen_data_global(bytecode::Image& image) {
   return static_cast<uint32_t>(image.globals.size() - 1);
 }
 
-bool bind_gen_data(vm::Machine& machine, const LoadedCup& cup, std::array<Value, kGenDataSize>& gen_data) {
+bool bind_gen_data(vm::Machine& machine, const LoadedCup& cup,
+                   std::array<Value, kGenDataSize>& gen_data) {
   const auto& globals = cup.image.globals;
   for (size_t g = 0; g < globals.size(); ++g) {
     const auto offset = gen_data_offset(globals[g].name);
@@ -466,7 +516,8 @@ bool bind_gen_data(vm::Machine& machine, const LoadedCup& cup, std::array<Value,
 
 uint32_t LoadedCup::line_of(uint32_t pc) const {
   if (!copy_lines.empty() && pc >= copy_lines.front().first) {
-    const auto after = std::upper_bound(copy_lines.begin(), copy_lines.end(), std::pair{pc, UINT32_MAX});
+    const auto after =
+        std::upper_bound(copy_lines.begin(), copy_lines.end(), std::pair{pc, UINT32_MAX});
     return std::prev(after)->second;
   }
   uint32_t line = 0;

@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "bytecode/image.h"
-#include "vm/machine.h"
 #include "dialects/pup/cup_file.h"
 #include "dialects/pup/keywords.h"
 #include "dialects/pup/message.h"
+#include "vm/machine.h"
 
 namespace uprog::pup {
 
@@ -40,7 +40,8 @@ struct IndexedAccess {
 
 struct LoadedCup {
   bytecode::Image image;
-  std::vector<uint32_t> line_pc;  // per CUP line from 1 (index 0 unused), its first code word; one more: the end
+  std::vector<uint32_t>
+      line_pc;  // per CUP line from 1 (index 0 unused), its first code word; one more: the end
   std::vector<IndexedAccess> indexed;
   std::vector<int32_t> task_routine;   // by task number 0..64, -1 for none
   std::vector<int32_t> event_routine;  // by event ID 0..23, -1 for none
@@ -66,6 +67,7 @@ uint32_t gen_data_window(const Message& m);
 std::optional<LoadedCup> load_cup(const CupProgram& program, std::string* error);
 
 // Places the image's AGenData (if it has one) on the general data the host keeps.
-bool bind_gen_data(vm::Machine& machine, const LoadedCup& cup, std::array<Value, kGenDataSize>& gen_data);
+bool bind_gen_data(vm::Machine& machine, const LoadedCup& cup,
+                   std::array<Value, kGenDataSize>& gen_data);
 
 }  // namespace uprog::pup

@@ -60,8 +60,9 @@ dialect::Evaluation Firmware::evaluate(uint32_t, uint32_t, std::string_view expr
   ExprTree tree;
   const int node = parse_expression(cursor, cx, tree);
   if (node < 0 || !diagnostics.empty() || !cursor.at_end()) {
-    out.error = !diagnostics.empty() ? diagnostics.front().message
-                                     : "'" + cursor.peek()->text + "' does not continue the expression";
+    out.error = !diagnostics.empty()
+                    ? diagnostics.front().message
+                    : "'" + cursor.peek()->text + "' does not continue the expression";
     return out;
   }
   int32_t error = 0;

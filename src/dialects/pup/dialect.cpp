@@ -4,11 +4,11 @@
 
 #include <filesystem>
 
-#include "dialects/pup/errors.h"
-#include "dialects/pup/firmware.h"
 #include "dialects/pup/cup_loader.h"
 #include "dialects/pup/debug_map.h"
 #include "dialects/pup/download.h"
+#include "dialects/pup/errors.h"
+#include "dialects/pup/firmware.h"
 #include "dialects/pup/pup_compiler.h"
 #include "support/files.h"
 
@@ -66,9 +66,11 @@ class PupDialect final : public dialect::Dialect {
     return std::filesystem::path(source).replace_extension(".cup").string();
   }
 
-  dialect::CompileOutput compile_file(const std::string& path, const dialect::CompileSettings& settings) const override {
+  dialect::CompileOutput compile_file(const std::string& path,
+                                      const dialect::CompileSettings& settings) const override {
     dialect::CompileOutput out;
-    PupOutput r = is_cup(path) ? rebuild_cup(path, settings.created_unix_s) : compile_pup_file(path, settings.created_unix_s);
+    PupOutput r = is_cup(path) ? rebuild_cup(path, settings.created_unix_s)
+                               : compile_pup_file(path, settings.created_unix_s);
     out.diagnostics = std::move(r.diagnostics);
     if (out.ok() && !settings.check_only) {
       const std::string cup = write_cup(r.program);
@@ -78,10 +80,12 @@ class PupDialect final : public dialect::Dialect {
     return out;
   }
 
-  std::span<const dialect::ErrorInfo> diagnostic_codes() const override { return diagnostic_table(); }
+  std::span<const dialect::ErrorInfo> diagnostic_codes() const override {
+    return diagnostic_table();
+  }
   std::span<const dialect::ErrorInfo> interpreter_errors() const override { return {}; }
-  std::unique_ptr<dialect::Firmware> make_firmware(dialect::Runtime& runtime,
-                                                   const dialect::FirmwareOptions& options) const override {
+  std::unique_ptr<dialect::Firmware> make_firmware(
+      dialect::Runtime& runtime, const dialect::FirmwareOptions& options) const override {
     return std::make_unique<Firmware>(runtime, options);
   }
   std::vector<std::string> download_lines(const std::vector<uint8_t>& cup) const override {

@@ -36,7 +36,8 @@ dialect::Answer Firmware::download_message(int32_t step, const std::optional<std
   if (!d.open) return {"download not begun", 40};
   if (step == 2) {
     std::string bytes;
-    if (!from_hex(arg, bytes) || bytes.size() > kMaxChunkBytes || bytes.empty()) return fail(d, 42, "data");
+    if (!from_hex(arg, bytes) || bytes.size() > kMaxChunkBytes || bytes.empty())
+      return fail(d, 42, "data");
     if (d.data.size() + bytes.size() > d.expected) return fail(d, 41, "length");
     d.data += bytes;
     return {};
@@ -59,7 +60,8 @@ dialect::Answer Firmware::download_message(int32_t step, const std::optional<std
 
 dialect::Answer Firmware::upload(int32_t offset) {
   if (!stored_) return {"no user program", 15};
-  if (offset < 0 || static_cast<size_t>(offset) > stored_->size()) return {"argument out of range", 7};
+  if (offset < 0 || static_cast<size_t>(offset) > stored_->size())
+    return {"argument out of range", 7};
   return {to_hex(stored_->substr(static_cast<size_t>(offset), kMaxChunkBytes)), 0};
 }
 

@@ -1,11 +1,12 @@
 // The AG300's events (the spec's IDs 0..23): latched when linked (#event), enabled by
 // AProgEventMask and seen while thread 1 runs or waits; taken lowest first on thread 1, threads
 // 2..8 held until the event function returns. Mask bit 31 lets an event function be interrupted.
+#include "drive/events.h"
+
 #include <fmt/core.h>
 
 #include "dialects/pup/firmware.h"
 #include "drive/axis.h"
-#include "drive/events.h"
 
 namespace uprog::pup {
 namespace {
@@ -56,7 +57,8 @@ void Firmware::take_event() {
   while (((latched_ >> id) & 1u) == 0) ++id;
   latched_ &= ~(1u << id);
   vm::Machine& m = program_->machine();
-  if (m.interrupt(1, static_cast<uint32_t>(cup_.event_routine[static_cast<size_t>(id)])) != vm::RunError::None) {
+  if (m.interrupt(1, static_cast<uint32_t>(cup_.event_routine[static_cast<size_t>(id)])) !=
+      vm::RunError::None) {
     log_error(28, 1, static_cast<int32_t>(cup_.line_of(m.pc(1))));
     return;
   }

@@ -4,9 +4,9 @@
 
 #include <fmt/core.h>
 
+#include "bytecode/opcodes.h"
 #include "dialects/pup/cup_math.h"
 #include "drive/axis.h"
-#include "bytecode/opcodes.h"
 #include "vm/run_error.h"
 
 namespace uprog::pup {
@@ -26,13 +26,19 @@ vm::MachineConfig machine_config() {
 // The controller's code for a VM error (the spec's error list).
 int32_t code_of(vm::RunError e, int32_t detail) {
   switch (e) {
-    case vm::RunError::CommandRefused: return detail;
-    case vm::RunError::DivisionByZero: return 30;
-    case vm::RunError::StackOverflow: return 26;
+    case vm::RunError::CommandRefused:
+      return detail;
+    case vm::RunError::DivisionByZero:
+      return 30;
+    case vm::RunError::StackOverflow:
+      return 26;
     case vm::RunError::CallDepth:
-    case vm::RunError::InterruptDepth: return 28;
-    case vm::RunError::IndexOutOfRange: return 4;
-    default: return 2;
+    case vm::RunError::InterruptDepth:
+      return 28;
+    case vm::RunError::IndexOutOfRange:
+      return 4;
+    default:
+      return 2;
   }
 }
 
@@ -56,7 +62,8 @@ void Firmware::boot(std::vector<std::string>& messages) {
   if (!flash_read_) {
     flash_read_ = true;
     std::string error;
-    if (auto bytes = runtime_.flash().read(kRecord, &error)) stored_ = std::string(bytes->begin(), bytes->end());
+    if (auto bytes = runtime_.flash().read(kRecord, &error))
+      stored_ = std::string(bytes->begin(), bytes->end());
   }
   if (stored_) {
     const std::string why = install(*stored_, false);
@@ -76,10 +83,13 @@ std::string Firmware::install(const std::string& cup, bool store) {
   auto loaded = load_cup(*program, &why);
   if (!loaded) return "error 45: " + why;
   apply_debug_map(cup, loaded->image);
-  auto image = dialect::LoadedProgram::load(bytecode::encode(loaded->image), machine_config(), *this, &why, true, "pup");
+  auto image = dialect::LoadedProgram::load(bytecode::encode(loaded->image), machine_config(),
+                                            *this, &why, true, "pup");
   if (!image) return "error 45: " + why;
-  if (!bind_gen_data(image->machine(), *loaded, gen_data_)) return "error 45: AGenData cannot be placed";
-  if (store && !runtime_.flash().write(kRecord, std::vector<uint8_t>(cup.begin(), cup.end()), &why)) {
+  if (!bind_gen_data(image->machine(), *loaded, gen_data_))
+    return "error 45: AGenData cannot be placed";
+  if (store &&
+      !runtime_.flash().write(kRecord, std::vector<uint8_t>(cup.begin(), cup.end()), &why)) {
     return "error 46: " + why;
   }
   program_ = std::move(image);
@@ -114,7 +124,8 @@ int32_t Firmware::run_task(uint32_t thread, int32_t task) {
   const vm::ThreadStatus s = program_->machine().status(thread);
   if (s == vm::ThreadStatus::Running || s == vm::ThreadStatus::Waiting) return 17;
   program_->machine().kill(thread);
-  program_->machine().start(thread, static_cast<uint32_t>(cup_.task_routine[static_cast<size_t>(task)]));
+  program_->machine().start(thread,
+                            static_cast<uint32_t>(cup_.task_routine[static_cast<size_t>(task)]));
   schedule_.started(thread);
   thread_error_[thread] = 0;
   return 0;
@@ -161,12 +172,15 @@ void Firmware::on_thread_error(uint32_t thread) {
   const vm::Machine& m = program_->machine();
   const int32_t code = code_of(m.last_error(thread), m.error_detail(thread));
   thread_error_[thread] = code;
-  if (thread == 1) reset_events();  // the held threads resume; no event is raised
-  else latch(22);
+  if (thread == 1)
+    reset_events();  // the held threads resume; no event is raised
+  else
+    latch(22);
   log_error(code, static_cast<int32_t>(thread), static_cast<int32_t>(cup_.line_of(m.pc(thread))));
   // The source's place: the PUP line when the build's debug map came with the program, else the
   // CUP line.
-  runtime_.log(fmt::format("thread {}: run-time error {} at {}", thread, code, program_->where(m.pc(thread))));
+  runtime_.log(fmt::format("thread {}: run-time error {} at {}", thread, code,
+                           program_->where(m.pc(thread))));
 }
 
 void Firmware::log_error(int32_t code, int32_t source, int32_t line) {
@@ -186,14 +200,19 @@ bool Firmware::running() const {
 int32_t Firmware::program_status(uint32_t thread) const {
   if (!program_) return 0;
   switch (program_->machine().status(thread)) {
-    case vm::ThreadStatus::Idle: return 0;
+    case vm::ThreadStatus::Idle:
+      return 0;
     case vm::ThreadStatus::Running:
       if (schedule_.held(thread)) return 6;
       return cup_.waits[cup_.line_of(program_->machine().pc(thread))] ? 2 : 1;
-    case vm::ThreadStatus::Waiting: return schedule_.held(thread) ? 6 : 2;
-    case vm::ThreadStatus::Halted: return 3;
-    case vm::ThreadStatus::AtBreakpoint: return 4;
-    case vm::ThreadStatus::Error: return 5;
+    case vm::ThreadStatus::Waiting:
+      return schedule_.held(thread) ? 6 : 2;
+    case vm::ThreadStatus::Halted:
+      return 3;
+    case vm::ThreadStatus::AtBreakpoint:
+      return 4;
+    case vm::ThreadStatus::Error:
+      return 5;
   }
   return 0;
 }
@@ -211,8 +230,9 @@ std::string Firmware::program_error_text() const {
 }
 
 std::string Firmware::state_summary() const {
-  return fmt::format("AProgStatus[1]={} APos={} AVel={} AMotorOn={} AMotorFault={}", program_status(1),
-                     axis_->position(), axis_->velocity(), axis_->motor_on() ? 1 : 0, axis_->motor_fault());
+  return fmt::format("AProgStatus[1]={} APos={} AVel={} AMotorOn={} AMotorFault={}",
+                     program_status(1), axis_->position(), axis_->velocity(),
+                     axis_->motor_on() ? 1 : 0, axis_->motor_fault());
 }
 
 std::vector<dialect::ThreadInfo> Firmware::threads() const {
@@ -224,7 +244,8 @@ std::vector<dialect::ThreadInfo> Firmware::threads() const {
     info.thread = t;
     info.name = fmt::format("thread {}", t);
     info.status = m.status(t);
-    if (info.status != vm::ThreadStatus::Idle) info.where = fmt::format("{}:{}", cup_.image.source_name, cup_.line_of(m.pc(t)));
+    if (info.status != vm::ThreadStatus::Idle)
+      info.where = fmt::format("{}:{}", cup_.image.source_name, cup_.line_of(m.pc(t)));
     info.error = thread_error_[t];
     out.push_back(std::move(info));
   }
@@ -290,18 +311,22 @@ vm::CommandStatus Firmware::write(uint32_t command, int32_t index, Value value) 
   return write_key(static_cast<KeywordId>(command), index, value.i);
 }
 
-vm::CommandStatus Firmware::execute(uint32_t command, int32_t index, const Value* args, uint32_t count) {
+vm::CommandStatus Firmware::execute(uint32_t command, int32_t index, const Value* args,
+                                    uint32_t count) {
   const uint32_t thread = running_thread();
   if (command == kReturnCheck) return program_->machine().frame_count(thread) <= 1 ? 29 : 0;
-  if (command >= kFailBase && command < kReturnCheck) return static_cast<int32_t>(command - kFailBase);
+  if (command >= kFailBase && command < kReturnCheck)
+    return static_cast<int32_t>(command - kFailBase);
   if (command >= kMathBase && command < kMathResult) {
     if (count != 2) return 2;
     int32_t code = 0;
-    math_result_[thread] = apply_math(static_cast<int32_t>(command - kMathBase), args[0].i, args[1].i, &code);
+    math_result_[thread] =
+        apply_math(static_cast<int32_t>(command - kMathBase), args[0].i, args[1].i, &code);
     return code;
   }
   if (command >= static_cast<uint32_t>(KeywordId::kCount)) return 1;
-  return run_key(static_cast<KeywordId>(command), index, count > 0, count > 0 ? args[0].i : 0, thread);
+  return run_key(static_cast<KeywordId>(command), index, count > 0, count > 0 ? args[0].i : 0,
+                 thread);
 }
 
 }  // namespace uprog::pup

@@ -50,17 +50,20 @@ class Firmware final : public dialect::Firmware, public vm::Host {
 
   // --- debug_hooks.cpp: the debugger's hooks (dialect/firmware.h) ---
   dialect::LoadedProgram* debug_program() override { return program_.get(); }
-  dialect::Evaluation evaluate(uint32_t thread, uint32_t depth, std::string_view expression) override;
+  dialect::Evaluation evaluate(uint32_t thread, uint32_t depth,
+                               std::string_view expression) override;
   void set_debug_map(std::string_view map) override;
   std::vector<dialect::DebugVariable> debug_variables() override;
 
   vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override;
   vm::CommandStatus write(uint32_t command, int32_t index, Value value) override;
-  vm::CommandStatus execute(uint32_t command, int32_t index, const Value* args, uint32_t count) override;
+  vm::CommandStatus execute(uint32_t command, int32_t index, const Value* args,
+                            uint32_t count) override;
   uint32_t now_us() override { return static_cast<uint32_t>(runtime_.now_ns() / 1000); }
 
   // One host line: its messages (split at `;`), each answered, each a cycle when `takes_time`.
-  std::vector<dialect::Answer> send(std::string_view line, bool takes_time, DownloadState* download = nullptr);
+  std::vector<dialect::Answer> send(std::string_view line, bool takes_time,
+                                    DownloadState* download = nullptr);
 
  private:
   // --- firmware.cpp: program store, threads ---
@@ -114,10 +117,10 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   }
 
  private:
-
   // --- command_line.cpp ---
   dialect::Answer serve_message(std::string_view text, DownloadState* download);
-  dialect::Answer download_message(int32_t step, const std::optional<std::string>& argument, DownloadState& d);
+  dialect::Answer download_message(int32_t step, const std::optional<std::string>& argument,
+                                   DownloadState& d);
   dialect::Answer upload(int32_t offset);
   std::vector<dialect::Answer> info();
   dialect::Answer line_stack(const Message& m, const Keyword& k);
@@ -140,7 +143,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   uint32_t timer_us_ = 0;
   std::array<int32_t, kThreads + 1> thread_error_{};
   std::array<int32_t, kThreads + 1> math_result_{};
-  std::vector<int32_t> line_stack_;  // thread 0: the CUP keywords sent over the line
+  std::vector<int32_t> line_stack_;              // thread 0: the CUP keywords sent over the line
   std::vector<std::array<int32_t, 3>> err_log_;  // newest first: code, source, line
   struct Single {
     bool over = false;  // Type != 0: until the pointer leaves the line at the same call depth
@@ -150,22 +153,22 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   uint32_t stepping_ = 0;  // the threads an AProgSingle runs, bit t for thread t
   std::array<std::vector<uint32_t>, kThreads + 1> breaks_{};  // lines, ascending
   uint32_t event_mask_ = 0x00FFFFFF;
-  uint32_t latched_ = 0;                 // event IDs latched, one bit each
+  uint32_t latched_ = 0;  // event IDs latched, one bit each
   struct EventEntry {
     uint32_t frames;       // thread 1's frame count inside the event
     uint32_t held_before;  // the threads 2..8 held when it entered (a bit each): held again after
   };
   std::vector<EventEntry> event_frames_;  // each event entered, innermost last
-  uint32_t previous_inputs_ = 0;         // input levels, bit n-1 for input n
+  uint32_t previous_inputs_ = 0;          // input levels, bit n-1 for input n
   bool was_moving_ = false;
   bool above_max_ = false, below_min_ = false;
   int32_t motion_mode_ = 0;
   int32_t speed_ = 10000;
   int32_t ain_factor_ = 1, ain_offset_ = 0;
-  int32_t analog_mv_ = 0;                 // the analog input (the transcript's `analog = MV`)
-  std::array<int32_t, 6> in_func_{};      // AInFunc[1..6]: 0 general purpose
-  int32_t curr_cmd_ = 0;                  // ACurrCmd, mA
-  int32_t abs_trgt_ = 0, rel_trgt_ = 0;   // what the next ABegin moves to, or by
+  int32_t analog_mv_ = 0;                // the analog input (the transcript's `analog = MV`)
+  std::array<int32_t, 6> in_func_{};     // AInFunc[1..6]: 0 general purpose
+  int32_t curr_cmd_ = 0;                 // ACurrCmd, mA
+  int32_t abs_trgt_ = 0, rel_trgt_ = 0;  // what the next ABegin moves to, or by
 };
 
 }  // namespace uprog::pup

@@ -9,8 +9,9 @@ namespace {
 constexpr uint8_t C = kOverLine, P = kInProgram, U = kNeedsProgram, M = kNotInMotion;
 
 constexpr Keyword kKeywords[] = {
-#define PUP_KEYWORD(id, name, kind, attrs, index_min, index_max, arg) \
-  {KeywordId::id, name, KeywordKind::kind, static_cast<uint8_t>(attrs), index_min, index_max, ArgKind::arg},
+#define PUP_KEYWORD(id, name, kind, attrs, index_min, index_max, arg)        \
+  {KeywordId::id, name,      KeywordKind::kind, static_cast<uint8_t>(attrs), \
+   index_min,     index_max, ArgKind::arg},
 #include "dialects/pup/keywords.def"
 #undef PUP_KEYWORD
 };
@@ -18,7 +19,9 @@ constexpr Keyword kKeywords[] = {
 bool same_ignoring_case(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i) {
-    if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i]))) return false;
+    if (std::tolower(static_cast<unsigned char>(a[i])) !=
+        std::tolower(static_cast<unsigned char>(b[i])))
+      return false;
   }
   return true;
 }

@@ -35,17 +35,25 @@ bool may_copy(const LineOp& op, const LineOp* before) {
   if (op.fails != 0) return false;
   if (m.tail == Message::Tail::Assign) return is_gen_data(op.key);
   switch (op.key->id) {
-    case KeywordId::PushConstant: case KeywordId::Compare: case KeywordId::Jump: return true;
-    case KeywordId::PushParam: case KeywordId::PopParam:
-    case KeywordId::PushParamIdx: case KeywordId::PopParamIdx: return is_gen_data(op.name_key);
+    case KeywordId::PushConstant:
+    case KeywordId::Compare:
+    case KeywordId::Jump:
+      return true;
+    case KeywordId::PushParam:
+    case KeywordId::PopParam:
+    case KeywordId::PushParamIdx:
+    case KeywordId::PopParamIdx:
+      return is_gen_data(op.name_key);
     case KeywordId::Math: {
       const int32_t n = m.target.index;
       if (n == 4 || n == 5) {
-        return before != nullptr && before->key->id == KeywordId::PushConstant && before->msg.value != 0;
+        return before != nullptr && before->key->id == KeywordId::PushConstant &&
+               before->msg.value != 0;
       }
       return math_in_vm(n);
     }
-    default: return false;
+    default:
+      return false;
   }
 }
 
@@ -56,7 +64,8 @@ struct PathCost {
   bool lost = false;  // code that does not end in a JMPLN: not a copy this file made
 };
 
-void walk(const std::vector<uint32_t>& code, uint32_t pc, uint32_t instructions, uint32_t ended, PathCost& cost) {
+void walk(const std::vector<uint32_t>& code, uint32_t pc, uint32_t instructions, uint32_t ended,
+          PathCost& cost) {
   while (pc < code.size() && instructions < kMostLines * 4) {
     const uint32_t word = code[pc];
     const Op op = bytecode::word_op(word);
@@ -69,7 +78,8 @@ void walk(const std::vector<uint32_t>& code, uint32_t pc, uint32_t instructions,
       return;
     }
     const bytecode::Flow flow = bytecode::op_info(op).flow;
-    if (flow == bytecode::Flow::Branch) walk(code, bytecode::word_a(word), instructions, ended, cost);
+    if (flow == bytecode::Flow::Branch)
+      walk(code, bytecode::word_a(word), instructions, ended, cost);
     pc = flow == bytecode::Flow::Jump ? bytecode::word_a(word) : pc + bytecode::op_length(op);
   }
   cost.lost = true;
@@ -178,12 +188,15 @@ class Copier {
       return store(b, m.target.index);
     }
     switch (op.key->id) {
-      case KeywordId::PushConstant: push(b, m.value); break;
+      case KeywordId::PushConstant:
+        push(b, m.value);
+        break;
       case KeywordId::PushParam:
         pushed_global_at_ = b.here();
         b.emit(Op::LDG, gen_data_element_global(image_, m.name.index));
         break;
-      case KeywordId::PopParam: return store(b, m.name.index);
+      case KeywordId::PopParam:
+        return store(b, m.name.index);
       case KeywordId::PushParamIdx:
         may_fail(b, l);
         b.emit(Op::LDGW, gen_data_global(image_), gen_data_window(m));
@@ -193,9 +206,14 @@ class Copier {
         b.emit(Op::STGW, gen_data_global(image_), gen_data_window(m));
         b.emit(Op::EOL);
         return true;
-      case KeywordId::Math: emit_math(b, m.target.index); break;
-      case KeywordId::Compare: emit_condition(b, m.target.index); break;
-      default: break;
+      case KeywordId::Math:
+        emit_math(b, m.target.index);
+        break;
+      case KeywordId::Compare:
+        emit_condition(b, m.target.index);
+        break;
+      default:
+        break;
     }
     return false;
   }
@@ -227,7 +245,8 @@ class Copier {
 
 }  // namespace
 
-std::vector<LineRun> fuse_line_runs(const std::vector<LineOp>& ops, const std::vector<int32_t>& depth,
+std::vector<LineRun> fuse_line_runs(const std::vector<LineOp>& ops,
+                                    const std::vector<int32_t>& depth,
                                     const std::vector<bool>& entered, bytecode::Image& image) {
   std::vector<LineRun> runs;
   const auto count = static_cast<uint32_t>(ops.size()) - 1;
@@ -254,9 +273,11 @@ std::vector<LineRun> fuse_line_runs(const std::vector<LineOp>& ops, const std::v
     words += run.code.size();
     runs.push_back(std::move(run));
     for (uint32_t e : exits)
-      if (e <= count && depth[e] >= 0 && copier.may_start(e) && done.count(e) == 0) starts.insert(e);
+      if (e <= count && depth[e] >= 0 && copier.may_start(e) && done.count(e) == 0)
+        starts.insert(e);
   }
-  std::sort(runs.begin(), runs.end(), [](const LineRun& a, const LineRun& b) { return a.first < b.first; });
+  std::sort(runs.begin(), runs.end(),
+            [](const LineRun& a, const LineRun& b) { return a.first < b.first; });
   return runs;
 }
 

@@ -32,7 +32,8 @@ constexpr uint32_t kRunExit = 1u << 22;
 // not reached); `entered[l]`: control may arrive at line l other than from line l - 1. Adds to
 // `image` the constants the copies use and a global "AGenData[n]" for each element they name,
 // which bind_gen_data places on element n of the general data.
-std::vector<LineRun> fuse_line_runs(const std::vector<LineOp>& ops, const std::vector<int32_t>& depth,
+std::vector<LineRun> fuse_line_runs(const std::vector<LineOp>& ops,
+                                    const std::vector<int32_t>& depth,
                                     const std::vector<bool>& entered, bytecode::Image& image);
 
 }  // namespace uprog::pup

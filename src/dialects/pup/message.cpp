@@ -76,8 +76,10 @@ std::optional<int32_t> parse_number(std::string_view text, bool allow_binary) {
     t.remove_prefix(1);
   }
   int base = 10;
-  if (t.size() > 2 && t[0] == '0' && (t[1] == 'x' || t[1] == 'X')) base = 16;
-  else if (allow_binary && t.size() > 2 && t[0] == '0' && (t[1] == 'b' || t[1] == 'B')) base = 2;
+  if (t.size() > 2 && t[0] == '0' && (t[1] == 'x' || t[1] == 'X'))
+    base = 16;
+  else if (allow_binary && t.size() > 2 && t[0] == '0' && (t[1] == 'b' || t[1] == 'B'))
+    base = 2;
   if (base != 10) {
     if (negative || text[0] == '+') return std::nullopt;  // 0x and 0b are unsigned bit patterns
     t.remove_prefix(2);

@@ -51,7 +51,8 @@ void Firmware::after_cycle(const scheduling::Report& report) {
       stepping_ &= ~bit;
       continue;
     }
-    const bool done = s.over ? status != 2 && m.frame_count(t) <= s.depth && next_line(t) != s.line : report.ran(t);
+    const bool done = s.over ? status != 2 && m.frame_count(t) <= s.depth && next_line(t) != s.line
+                             : report.ran(t);
     if (done) {
       m.halt(t);
       stepping_ &= ~bit;

@@ -34,9 +34,9 @@ struct Block {
   Block(BlockKind k, Location at) : kind(k), where(std::move(at)) {}
   BlockKind kind;
   Location where;
-  int next = -1;      // If: where a false condition goes; Switch: the dispatch code
-  int end = -1;       // the line after the block
-  int cont = -1;      // While/For: where `continue` goes
+  int next = -1;  // If: where a false condition goes; Switch: the dispatch code
+  int end = -1;   // the line after the block
+  int cont = -1;  // While/For: where `continue` goes
   bool seen_else = false;
   Code step;  // For: the step's lines; Switch: the selector's lines
   std::vector<std::pair<int32_t, int>> cases;  // Switch: value, label

@@ -21,9 +21,9 @@ struct BinaryOp {
 
 // The manual's precedence, lowest first: || && | ^ & (== !=) (< > <= >=) (<< >>) (+ -) (* / %).
 constexpr BinaryOp kBinaryOps[] = {
-    {"||", 1, 21}, {"&&", 2, 20}, {"|", 3, 11},  {"^", 4, 12},  {"&", 5, 10},  {"==", 6, 0},
-    {"!=", 6, 0},  {"<", 7, 0},   {">", 7, 0},   {"<=", 7, 0},  {">=", 7, 0},  {"<<", 8, 14},
-    {">>", 8, 15}, {"+", 9, 1},   {"-", 9, 3},   {"*", 10, 2},  {"/", 10, 4},  {"%", 10, 5},
+    {"||", 1, 21}, {"&&", 2, 20}, {"|", 3, 11}, {"^", 4, 12}, {"&", 5, 10}, {"==", 6, 0},
+    {"!=", 6, 0},  {"<", 7, 0},   {">", 7, 0},  {"<=", 7, 0}, {">=", 7, 0}, {"<<", 8, 14},
+    {">>", 8, 15}, {"+", 9, 1},   {"-", 9, 3},  {"*", 10, 2}, {"/", 10, 4}, {"%", 10, 5},
 };
 
 struct MathFunction {
@@ -33,9 +33,9 @@ struct MathFunction {
 };
 
 constexpr MathFunction kFunctions[] = {
-    {"log", 40, 1}, {"log10", 41, 1}, {"exp", 42, 1},  {"sin", 30, 1},   {"cos", 31, 1},
-    {"tan", 32, 1}, {"asin", 33, 1},  {"acos", 34, 1}, {"atan", 35, 1},  {"atan2", 36, 2},
-    {"power", 9, 2}, {"abs", 7, 1},   {"sqrt", 8, 1},
+    {"log", 40, 1},  {"log10", 41, 1}, {"exp", 42, 1},  {"sin", 30, 1},  {"cos", 31, 1},
+    {"tan", 32, 1},  {"asin", 33, 1},  {"acos", 34, 1}, {"atan", 35, 1}, {"atan2", 36, 2},
+    {"power", 9, 2}, {"abs", 7, 1},    {"sqrt", 8, 1},
 };
 
 const BinaryOp* binary_op(const Token* t) {
@@ -101,7 +101,8 @@ class Parser {
   }
 
   int place() {
-    if (cur_.at_end() || cur_.peek()->kind != TokenKind::Name) return error(Error::Syntax, "a name is expected");
+    if (cur_.at_end() || cur_.peek()->kind != TokenKind::Name)
+      return error(Error::Syntax, "a name is expected");
     const Token& name = cur_.take();
     return name_ref(name);
   }
@@ -154,8 +155,10 @@ class Parser {
       if (!cur_.take_if(")")) return error(Error::Syntax, "')' is expected");
       return inner;
     }
-    if (t.kind != TokenKind::Name) return error(Error::Syntax, "a value is expected, not '" + t.text + "'", t.where);
-    if (const MathFunction* f = function_named(t.text); f != nullptr && cur_.is("(")) return call(t, *f);
+    if (t.kind != TokenKind::Name)
+      return error(Error::Syntax, "a value is expected, not '" + t.text + "'", t.where);
+    if (const MathFunction* f = function_named(t.text); f != nullptr && cur_.is("("))
+      return call(t, *f);
     return name_ref(t);
   }
 
@@ -175,7 +178,8 @@ class Parser {
     }
     if (!cur_.take_if(")")) return error(Error::Syntax, "')' is expected");
     if (n.args.size() != f.args) {
-      return error(Error::BadArgumentCount, fmt::format("{} takes {}", name.text, f.args), name.where);
+      return error(Error::BadArgumentCount, fmt::format("{} takes {}", name.text, f.args),
+                   name.where);
     }
     return fold(tree_.add(std::move(n)));
   }
@@ -208,8 +212,9 @@ class Parser {
     }
     const Keyword* k = find_keyword(t.text);
     if (k == nullptr) {
-      return error(t.text.size() > 1 && t.text[0] == 'A' ? Error::UnknownKeyword : Error::UnknownName,
-                   "'" + t.text + "'", t.where);
+      return error(
+          t.text.size() > 1 && t.text[0] == 'A' ? Error::UnknownKeyword : Error::UnknownName,
+          "'" + t.text + "'", t.where);
     }
     n.key = std::string(k->name);
     if (!has_value(*k)) return error(Error::NotAValue, "'" + n.key + "'", t.where);
@@ -233,7 +238,8 @@ class Parser {
   int indexed(Node n, int index, int32_t base, int32_t size, const std::string& what) {
     if (auto i = constant_of(tree_, index)) {
       if (*i < 1 || *i > size) {
-        return error(Error::IndexOutOfRange, fmt::format("'{}[{}]'", what, *i), tree_.nodes[static_cast<size_t>(index)].where);
+        return error(Error::IndexOutOfRange, fmt::format("'{}[{}]'", what, *i),
+                     tree_.nodes[static_cast<size_t>(index)].where);
       }
       n.kind = NodeKind::Param;
       n.has_index = true;
@@ -364,8 +370,12 @@ void emit_jump(const ExprTree& tree, int node, bool when_true, int label, Code& 
   out.line(when_true ? "AJump[10]," : "AJump[9],", label);
 }
 
-int parse_expression(TokenCursor& cur, ExprContext& cx, ExprTree& tree) { return Parser(cur, cx, tree).expression(); }
-int parse_place(TokenCursor& cur, ExprContext& cx, ExprTree& tree) { return Parser(cur, cx, tree).place(); }
+int parse_expression(TokenCursor& cur, ExprContext& cx, ExprTree& tree) {
+  return Parser(cur, cx, tree).expression();
+}
+int parse_place(TokenCursor& cur, ExprContext& cx, ExprTree& tree) {
+  return Parser(cur, cx, tree).place();
+}
 
 std::optional<int32_t> constant_of(const ExprTree& tree, int node) {
   if (node < 0) return std::nullopt;
@@ -388,13 +398,20 @@ int condition_of(const std::string& op) {
 
 int opposite_condition(int c) {
   switch (c) {
-    case 3: return 4;
-    case 4: return 3;
-    case 5: return 8;
-    case 6: return 7;
-    case 7: return 6;
-    case 8: return 5;
-    default: return 0;
+    case 3:
+      return 4;
+    case 4:
+      return 3;
+    case 5:
+      return 8;
+    case 6:
+      return 7;
+    case 7:
+      return 6;
+    case 8:
+      return 5;
+    default:
+      return 0;
   }
 }
 
@@ -446,16 +463,19 @@ int stack_need(const ExprTree& tree, int node) {
   const Node& n = tree.nodes[static_cast<size_t>(node)];
   switch (n.kind) {
     case NodeKind::Number:
-    case NodeKind::Param: return 1;
+    case NodeKind::Param:
+      return 1;
     case NodeKind::Indexed:
-    case NodeKind::Unary: return stack_need(tree, n.a);
+    case NodeKind::Unary:
+      return stack_need(tree, n.a);
     case NodeKind::Binary:
       // && and || pop their left side before they compute the right.
       if (is_logical(n)) return std::max(stack_need(tree, n.a), stack_need(tree, n.b));
       return std::max(stack_need(tree, n.a), 1 + stack_need(tree, n.b));
     case NodeKind::Call: {
       int need = 0;
-      for (size_t i = 0; i < n.args.size(); ++i) need = std::max(need, static_cast<int>(i) + stack_need(tree, n.args[i]));
+      for (size_t i = 0; i < n.args.size(); ++i)
+        need = std::max(need, static_cast<int>(i) + stack_need(tree, n.args[i]));
       return need;
     }
   }

@@ -25,12 +25,13 @@ enum class NodeKind { Number, Param, Indexed, Unary, Binary, Call };
 
 struct Node {
   NodeKind kind = NodeKind::Number;
-  int32_t value = 0;    // Number: the value; Param: the index
-  std::string key;      // Param, Indexed: the keyword's spelling ("AGenData"); Unary/Binary/Call: the operator
+  int32_t value = 0;  // Number: the value; Param: the index
+  std::string
+      key;  // Param, Indexed: the keyword's spelling ("AGenData"); Unary/Binary/Call: the operator
   bool has_index = false;
   int32_t base = 0, size = 0;  // Indexed: key[base + i - 1] for i in 1..size
-  int a = -1, b = -1;           // operands (Indexed: a is the index)
-  std::vector<int> args;        // Call
+  int a = -1, b = -1;          // operands (Indexed: a is the index)
+  std::vector<int> args;       // Call
   Location where;
 };
 
@@ -44,7 +45,8 @@ struct ExprTree {
 
 class TokenCursor {
  public:
-  TokenCursor(const std::vector<Token>& tokens, Location end) : tokens_(tokens), end_(std::move(end)) {}
+  TokenCursor(const std::vector<Token>& tokens, Location end)
+      : tokens_(tokens), end_(std::move(end)) {}
   bool at_end() const { return pos_ >= tokens_.size(); }
   const Token* peek(size_t ahead = 0) const {
     return pos_ + ahead < tokens_.size() ? &tokens_[pos_ + ahead] : nullptr;

@@ -41,7 +41,8 @@ std::optional<std::vector<Token>> tokenize(const std::string& text, const Locati
       }
       if (j == i && kOneCharOps.find(c) != std::string_view::npos) j = i + 1;
       if (j == i) {
-        diagnostics.push_back(make_error(Error::Syntax, at, std::string("unexpected character '") + c + "'"));
+        diagnostics.push_back(
+            make_error(Error::Syntax, at, std::string("unexpected character '") + c + "'"));
         return std::nullopt;
       }
     }

@@ -24,7 +24,8 @@ std::string trim(const std::string& s) {
 bool ends_with_ignoring_case(const std::string& s, std::string_view suffix) {
   if (s.size() < suffix.size()) return false;
   for (size_t i = 0; i < suffix.size(); ++i) {
-    if (std::tolower(static_cast<unsigned char>(s[s.size() - suffix.size() + i])) != suffix[i]) return false;
+    if (std::tolower(static_cast<unsigned char>(s[s.size() - suffix.size() + i])) != suffix[i])
+      return false;
   }
   return true;
 }
@@ -70,7 +71,8 @@ void PupCompiler::read_text(const std::string& path, const std::string& text, bo
   }
 }
 
-void PupCompiler::line(const std::string& raw, const Location& at, bool header, const std::string& path) {
+void PupCompiler::line(const std::string& raw, const Location& at, bool header,
+                       const std::string& path) {
   std::string text = raw.substr(0, raw.find("//"));
   const size_t first = text.find_first_not_of(" \t");
   if (first == std::string::npos) return;
@@ -89,7 +91,8 @@ void PupCompiler::line(const std::string& raw, const Location& at, bool header, 
   if (tokens) statement(*tokens, where);
 }
 
-std::optional<std::vector<Token>> PupCompiler::tokens_of(const std::string& text, const Location& at) {
+std::optional<std::vector<Token>> PupCompiler::tokens_of(const std::string& text,
+                                                         const Location& at) {
   auto tokens = tokenize(text, at, out_.diagnostics);
   if (tokens) expand(*tokens, 0);
   return tokens;
@@ -126,20 +129,29 @@ void PupCompiler::directive(const std::string& text, const Location& at, const s
   const std::string rest = space == std::string::npos ? "" : trim(text.substr(space));
   Location rest_at = at;
   rest_at.column = at.column + static_cast<int>(text.size() - rest.size());
-  if (word == "#include") include(rest, rest_at, path);
-  else if (word == "#define") define(rest, rest_at);
-  else if (word == "#definevar") definevar(rest, rest_at);
-  else if (word == "#information") out_.program.info.push_back(rest);
-  else if (word == "#event") event(rest, rest_at);
-  else error(Error::BadDirective, at, "'" + word + "'");
+  if (word == "#include")
+    include(rest, rest_at, path);
+  else if (word == "#define")
+    define(rest, rest_at);
+  else if (word == "#definevar")
+    definevar(rest, rest_at);
+  else if (word == "#information")
+    out_.program.info.push_back(rest);
+  else if (word == "#event")
+    event(rest, rest_at);
+  else
+    error(Error::BadDirective, at, "'" + word + "'");
 }
 
 void PupCompiler::include(const std::string& raw, const Location& at, const std::string& path) {
   std::string name = raw;
-  if (name.size() >= 2 && name.front() == '"' && name.back() == '"') name = name.substr(1, name.size() - 2);
+  if (name.size() >= 2 && name.front() == '"' && name.back() == '"')
+    name = name.substr(1, name.size() - 2);
   if (name.empty()) return error(Error::BadDirective, at, "#include needs a file name");
-  if (!ends_with_ignoring_case(name, ".puh")) return error(Error::IncludeNotHeader, at, "'" + name + "'");
-  if (include_stack_.size() >= kMaxIncludeDepth) return error(Error::IncludeLoop, at, "'" + name + "'");
+  if (!ends_with_ignoring_case(name, ".puh"))
+    return error(Error::IncludeNotHeader, at, "'" + name + "'");
+  if (include_stack_.size() >= kMaxIncludeDepth)
+    return error(Error::IncludeLoop, at, "'" + name + "'");
   // Beside the includer, then (a header's #include without a path) beside the .pup.
   std::filesystem::path full = std::filesystem::path(path).parent_path() / name;
   std::string why;
@@ -166,7 +178,8 @@ void PupCompiler::define(const std::string& rest, const Location& at) {
   const size_t space = rest.find_first_of(" \t");
   const std::string name = rest.substr(0, space);
   const std::string value = space == std::string::npos ? "" : trim(rest.substr(space));
-  bool valid = !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
+  bool valid =
+      !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
   for (char c : name) valid = valid && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
   if (!valid) return error(Error::BadDirective, at, "#define needs a name");
   if (auto old = defines_.find(name); old != defines_.end()) {
@@ -190,13 +203,15 @@ void PupCompiler::definevar(const std::string& rest, const Location& at) {
     v = n.value_or(0);
     return n.has_value();
   };
-  if (cur.at_end() || cur.peek()->kind != TokenKind::Name) return error(Error::BadDirective, at, "#definevar needs a name");
+  if (cur.at_end() || cur.peek()->kind != TokenKind::Name)
+    return error(Error::BadDirective, at, "#definevar needs a name");
   const Token name = cur.take();
   Var var;
   var.defined_at = name.where;
   if (cur.take_if("[")) {
     var.array = true;
-    if (!number(var.size) || !cur.take_if("]") || var.size < 1) return error(Error::BadDirective, at, "bad array size");
+    if (!number(var.size) || !cur.take_if("]") || var.size < 1)
+      return error(Error::BadDirective, at, "bad array size");
   }
   const Token* place = cur.peek();
   if (place == nullptr || (place->text != "AGenData" && place->text != "GenData")) {
@@ -209,8 +224,10 @@ void PupCompiler::definevar(const std::string& rest, const Location& at) {
   if (var.base < 1 || var.base + var.size - 1 > 1000) {
     return error(Error::OverlappingVariable, name.where, "'" + name.text + "'");
   }
-  if (find_keyword(name.text) != nullptr) return error(Error::Redefined, name.where, "'" + name.text + "' is a keyword");
-  if (vars_.count(name.text) != 0) return error(Error::Redefined, name.where, "'" + name.text + "'");
+  if (find_keyword(name.text) != nullptr)
+    return error(Error::Redefined, name.where, "'" + name.text + "' is a keyword");
+  if (vars_.count(name.text) != 0)
+    return error(Error::Redefined, name.where, "'" + name.text + "'");
   vars_[name.text] = var;
 }
 

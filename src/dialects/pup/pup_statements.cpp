@@ -8,8 +8,9 @@
 namespace uprog::pup {
 namespace {
 
-constexpr const char* kFlowWords[] = {"if",     "else",  "end",      "while", "for",    "switch",
-                                      "case",   "default", "break",  "continue", "return", "Return", "GoTo"};
+constexpr const char* kFlowWords[] = {"if",     "else",   "end",     "while", "for",
+                                      "switch", "case",   "default", "break", "continue",
+                                      "return", "Return", "GoTo"};
 
 bool is_flow_word(const std::string& s) {
   for (const char* w : kFlowWords) {
@@ -60,7 +61,9 @@ int PupCompiler::new_label() {
   return static_cast<int>(labels_.size()) - 1;
 }
 
-void PupCompiler::bind(int label) { labels_[static_cast<size_t>(label)] = static_cast<uint32_t>(lines_.size() + 1); }
+void PupCompiler::bind(int label) {
+  labels_[static_cast<size_t>(label)] = static_cast<uint32_t>(lines_.size() + 1);
+}
 
 Block* PupCompiler::innermost(bool loops_only) {
   for (auto b = blocks_.rbegin(); b != blocks_.rend(); ++b) {
@@ -106,12 +109,14 @@ void PupCompiler::statement(std::vector<Token>& tokens, const Location& at) {
     flow(first.text, cur, first.where);
     return;
   }
-  if (first.kind != TokenKind::Name) return error(Error::Syntax, first.where, "a statement starts with a name");
+  if (first.kind != TokenKind::Name)
+    return error(Error::Syntax, first.where, "a statement starts with a name");
   message(cur, first.where);
 }
 
 // The false side of a condition: jumps to `label` when it does not hold (pup_expr.h's emit_jump).
-void PupCompiler::condition_false_jump(const ExprTree& tree, int node, int label, const Location& at) {
+void PupCompiler::condition_false_jump(const ExprTree& tree, int node, int label,
+                                       const Location& at) {
   Code code;
   emit_jump(tree, node, false, code.new_label(), code);  // the code's label 0 is `label`
   place_code(code, at, label);
@@ -174,7 +179,8 @@ void PupCompiler::flow(const std::string& word, TokenCursor& cur, const Location
     const size_t before = lines_.size(), labels_before = labels_.size();
     assignment(cur, at);  // the step, compiled now and moved to the end of the loop
     b.step = take_code(before, labels_before);
-    if (!cur.take_if(")") || !needs_end()) return error(Error::Syntax, cur.where(), "')' is expected");
+    if (!cur.take_if(")") || !needs_end())
+      return error(Error::Syntax, cur.where(), "')' is expected");
     open(std::move(b));
   } else if (word == "switch") {
     if (!expression(cur, tree, node, true)) return;
@@ -185,7 +191,8 @@ void PupCompiler::flow(const std::string& word, TokenCursor& cur, const Location
     emit("AJump[1],", at, b.next);
     open(std::move(b));
   } else if (word == "case" || word == "default") {
-    if (blocks_.empty() || blocks_.back().kind != BlockKind::Switch) return error(Error::MisplacedCase, at);
+    if (blocks_.empty() || blocks_.back().kind != BlockKind::Switch)
+      return error(Error::MisplacedCase, at);
     Block& b = blocks_.back();
     const int label = new_label();
     bind(label);
@@ -203,7 +210,8 @@ void PupCompiler::flow(const std::string& word, TokenCursor& cur, const Location
     b.cases.push_back({*v, label});
   } else if (word == "break" || word == "continue") {
     Block* b = innermost(word == "continue");
-    if (b == nullptr) return error(word == "break" ? Error::MisplacedBreak : Error::MisplacedContinue, at);
+    if (b == nullptr)
+      return error(word == "break" ? Error::MisplacedBreak : Error::MisplacedContinue, at);
     if (needs_end()) emit("AJump[1],", at, word == "break" ? b->end : b->cont);
   } else if (word == "return" || word == "Return") {
     if (!needs_end()) return;
@@ -259,7 +267,8 @@ void PupCompiler::assignment(TokenCursor& cur, const Location& at) {
   if (place < 0) return;
   const Node& p = tree.nodes[static_cast<size_t>(place)];
   const Keyword* k = find_keyword(p.key);
-  if (k != nullptr && k->kind != KeywordKind::Param) return error(Error::NotAssignable, p.where, "'" + p.key + "'");
+  if (k != nullptr && k->kind != KeywordKind::Param)
+    return error(Error::NotAssignable, p.where, "'" + p.key + "'");
   if (!cur.take_if("=")) {
     if (cur.at_end()) return error(Error::BareRead, p.where, "'" + p.key + "'");
     return error(Error::Syntax, cur.where(), "'=' is expected");
@@ -300,7 +309,8 @@ void PupCompiler::marker(const Keyword& k, int32_t index, const Location& at) {
 
 void PupCompiler::close_function() {
   if (open_function_ && !function_returned_) {
-    error(Error::NoReturn, open_function_->second, fmt::format("AProgFunc[{}]", open_function_->first));
+    error(Error::NoReturn, open_function_->second,
+          fmt::format("AProgFunc[{}]", open_function_->first));
   }
   open_function_.reset();
 }
@@ -319,7 +329,8 @@ void PupCompiler::message(TokenCursor& cur, const Location& at) {
     return;
   }
   cur.take();
-  if ((k->attrs & kInProgram) == 0) return error(Error::NotInProgram, name.where, "'" + std::string(k->name) + "'");
+  if ((k->attrs & kInProgram) == 0)
+    return error(Error::NotInProgram, name.where, "'" + std::string(k->name) + "'");
   std::string text(k->name);
   int32_t index = 0;
   if (cur.take_if("[")) {
@@ -328,41 +339,48 @@ void PupCompiler::message(TokenCursor& cur, const Location& at) {
     const auto i = constant(cur, "an index", false);
     if (!i) return;
     if (!cur.take_if("]")) return error(Error::Syntax, cur.where(), "']' is expected");
-    if (*i < k->index_min || *i > k->index_max) return error(Error::IndexOutOfRange, index_at, std::to_string(*i));
+    if (*i < k->index_min || *i > k->index_max)
+      return error(Error::IndexOutOfRange, index_at, std::to_string(*i));
     index = *i;
     text += fmt::format("[{}]", index);
   } else if (k->indexed()) {
     return error(Error::IndexMissing, name.where, "'" + text + "'");
   }
   if (k->kind == KeywordKind::Marker) {
-    if (!cur.at_end()) return error(Error::Syntax, cur.where(), "unexpected '" + cur.peek()->text + "'");
+    if (!cur.at_end())
+      return error(Error::Syntax, cur.where(), "unexpected '" + cur.peek()->text + "'");
     return marker(*k, index, at);
   }
   if (!cur.take_if(",")) {
-    if (!cur.at_end()) return error(Error::Syntax, cur.where(), "unexpected '" + cur.peek()->text + "'");
+    if (!cur.at_end())
+      return error(Error::Syntax, cur.where(), "unexpected '" + cur.peek()->text + "'");
     if (k->arg != ArgKind::None) return error(Error::ArgumentMissing, name.where, "'" + text + "'");
     if (k->id == KeywordId::Return) function_returned_ = true;
     return emit(text, at);
   }
-  if (k->arg == ArgKind::None) return error(Error::ArgumentNotAllowed, name.where, "'" + text + "'");
+  if (k->arg == ArgKind::None)
+    return error(Error::ArgumentNotAllowed, name.where, "'" + text + "'");
   if (k->arg == ArgKind::Name) {
     ExprContext cx{vars_, out_.diagnostics};
     ExprTree tree;
     const int place = parse_place(cur, cx, tree);
     if (place < 0) return;
     const Node& p = tree.nodes[static_cast<size_t>(place)];
-    if (p.kind != NodeKind::Param) return error(Error::NotConstant, p.where, "the parameter's index");
+    if (p.kind != NodeKind::Param)
+      return error(Error::NotConstant, p.where, "the parameter's index");
     const bool pop = k->id == KeywordId::PopParam || k->id == KeywordId::PopParamIdx;
     if (pop && find_keyword(p.key)->kind != KeywordKind::Param) {
       return error(Error::NotAssignable, p.where, "'" + p.key + "'");
     }
-    if (!cur.at_end()) return error(Error::Syntax, cur.where(), "unexpected '" + cur.peek()->text + "'");
+    if (!cur.at_end())
+      return error(Error::Syntax, cur.where(), "unexpected '" + cur.peek()->text + "'");
     return emit(text + "," + param_text(p), at);
   }
   const Location arg_at = cur.where();
   const auto v = constant(cur, "the argument", true);
   if (!v) return;
-  if (k->id == KeywordId::ProgFuncCall || k->id == KeywordId::ProgCallFunc) calls_.push_back({*v, arg_at});
+  if (k->id == KeywordId::ProgFuncCall || k->id == KeywordId::ProgCallFunc)
+    calls_.push_back({*v, arg_at});
   emit(fmt::format("{},{}", text, *v), at);
 }
 
@@ -371,7 +389,8 @@ void PupCompiler::finish() {
   for (const Block& b : blocks_) error(Error::UnclosedBlock, b.where);
   for (const auto& [f, where] : calls_) {
     if (f >= 0 && functions_.count(f) == 0) error(Error::UnknownFunction, where, std::to_string(f));
-    if (f < 0 && tasks_.count(-1 - f) == 0) error(Error::UnknownTask, where, std::to_string(-1 - f));
+    if (f < 0 && tasks_.count(-1 - f) == 0)
+      error(Error::UnknownTask, where, std::to_string(-1 - f));
   }
   for (const auto& [f, where] : events_) {
     if (functions_.count(f) == 0) error(Error::UnknownFunction, where, std::to_string(f));
@@ -380,7 +399,8 @@ void PupCompiler::finish() {
   std::map<int32_t, uint32_t> task_lines;
   for (size_t i = 0; i < lines_.size(); ++i) {
     for (const auto& [n, where] : tasks_) {
-      if (lines_[i].text == fmt::format("AProgTask[{}]", n)) task_lines[n] = static_cast<uint32_t>(i + 1);
+      if (lines_[i].text == fmt::format("AProgTask[{}]", n))
+        task_lines[n] = static_cast<uint32_t>(i + 1);
     }
   }
   for (const OutLine& l : lines_) {

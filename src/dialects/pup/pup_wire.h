@@ -14,10 +14,14 @@ class PupWire final : public dialect::WireForm {
   PupWire(dialect::FramerOptions framing, std::function<void(int32_t)> on_framing_error)
       : wire_(framing), on_framing_error_(std::move(on_framing_error)) {}
   dialect::FramerOptions framing() const override { return wire_.framing(); }
-  void write_answer(const dialect::Answer& answer, std::string& out) const override { wire_.write_answer(answer, out); }
+  void write_answer(const dialect::Answer& answer, std::string& out) const override {
+    wire_.write_answer(answer, out);
+  }
   void write_silent_line(std::string& out) const override { wire_.write_silent_line(out); }
   void write_line_end(std::string& out) const override { wire_.write_line_end(out); }
-  void write_output(std::string_view text, std::string& out) const override { wire_.write_output(text, out); }
+  void write_output(std::string_view text, std::string& out) const override {
+    wire_.write_output(text, out);
+  }
   dialect::Answer framing_error(const dialect::Answer& standard) const override {
     on_framing_error_(standard.error);
     return standard;

@@ -4,7 +4,6 @@
 #include <cctype>
 #include <charconv>
 
-
 namespace uprog::st {
 namespace {
 
@@ -89,7 +88,9 @@ constexpr AsciiEntry kTable[] = {
 bool same_ignoring_case(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i)
-    if (std::toupper(static_cast<unsigned char>(a[i])) != std::toupper(static_cast<unsigned char>(b[i]))) return false;
+    if (std::toupper(static_cast<unsigned char>(a[i])) !=
+        std::toupper(static_cast<unsigned char>(b[i])))
+      return false;
   return true;
 }
 
@@ -117,12 +118,16 @@ std::span<const AsciiEntry> ascii_table() { return kTable; }
 std::optional<int> user_variable_number(std::string_view name) {
   std::string_view digits;
   int low = 0, high = 0;
-  if (name.size() > 6 && same_ignoring_case(name.substr(0, 6), "DPRVAR")) digits = name.substr(6), low = 1, high = 16;
-  else if (name.size() > 3 && same_ignoring_case(name.substr(0, 3), "DPV")) digits = name.substr(3), low = 17, high = 32;
-  else return std::nullopt;
+  if (name.size() > 6 && same_ignoring_case(name.substr(0, 6), "DPRVAR"))
+    digits = name.substr(6), low = 1, high = 16;
+  else if (name.size() > 3 && same_ignoring_case(name.substr(0, 3), "DPV"))
+    digits = name.substr(3), low = 17, high = 32;
+  else
+    return std::nullopt;
   int n = 0;
   const auto [p, e] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
-  if (e != std::errc() || p != digits.data() + digits.size() || digits[0] == '0' || n < low || n > high)
+  if (e != std::errc() || p != digits.data() + digits.size() || digits[0] == '0' || n < low ||
+      n > high)
     return std::nullopt;
   return n;
 }

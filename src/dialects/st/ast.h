@@ -17,16 +17,36 @@ struct GlobalVar {
 };
 
 enum class Op : uint8_t {
-  Neg, Not, Bnot,                // unary
-  Mul, Div, Mod, Add, Sub, Shr, Shl, Gt, Ge, Lt, Le, Eq, Ne, BAnd, BXor, BOr, Xor, And, Or,
+  Neg,
+  Not,
+  Bnot,  // unary
+  Mul,
+  Div,
+  Mod,
+  Add,
+  Sub,
+  Shr,
+  Shl,
+  Gt,
+  Ge,
+  Lt,
+  Le,
+  Eq,
+  Ne,
+  BAnd,
+  BXor,
+  BOr,
+  Xor,
+  And,
+  Or,
 };
 
 struct Expr {
   enum class Kind : uint8_t { Const, Var, Unary, Binary } kind = Kind::Const;
   Op op = Op::Add;
-  int32_t value = 0;     // Const
-  uint32_t global = 0;   // Var
-  int a = -1, b = -1;    // operands (Unary: a)
+  int32_t value = 0;    // Const
+  uint32_t global = 0;  // Var
+  int a = -1, b = -1;   // operands (Unary: a)
   size_t offset = 0;
 };
 
@@ -39,21 +59,43 @@ struct Arg {
   size_t offset = 0;
 };
 
-enum class Builtin : uint8_t { Clrdlong, Setdlong, Adddlong, Subdlong, Muldiv, Limitw, Xread, Xwrite, Command, Printf };
+enum class Builtin : uint8_t {
+  Clrdlong,
+  Setdlong,
+  Adddlong,
+  Subdlong,
+  Muldiv,
+  Limitw,
+  Xread,
+  Xwrite,
+  Command,
+  Printf
+};
 
 struct Stmt {
-  enum class Kind : uint8_t { Assign, If, While, Repeat, For, Goto, Label, Return, Call, Builtin } kind = Kind::Assign;
+  enum class Kind : uint8_t {
+    Assign,
+    If,
+    While,
+    Repeat,
+    For,
+    Goto,
+    Label,
+    Return,
+    Call,
+    Builtin
+  } kind = Kind::Assign;
   size_t offset = 0;
-  int line = 0;       // the line of the statement (for If/While/For: of its condition)
-  int cond_line = 0;  // Repeat: the UNTIL line
-  uint32_t target = 0;         // Assign, For: the variable
-  int expr = -1, expr2 = -1;   // Assign: value; If/While/Repeat: condition; For: from, to
-  int32_t step = 1;            // For
+  int line = 0;               // the line of the statement (for If/While/For: of its condition)
+  int cond_line = 0;          // Repeat: the UNTIL line
+  uint32_t target = 0;        // Assign, For: the variable
+  int expr = -1, expr2 = -1;  // Assign: value; If/While/Repeat: condition; For: from, to
+  int32_t step = 1;           // For
   std::vector<int> body, else_body;
-  std::string name;            // Goto/Label: the label; Call: the function
+  std::string name;  // Goto/Label: the label; Call: the function
   st::Builtin builtin = st::Builtin::Clrdlong;
   std::vector<Arg> args;
-  int scratch = -1;            // For: the local that keeps the bound
+  int scratch = -1;  // For: the local that keeps the bound
 };
 
 enum class ProgramKind : uint8_t { Init, Main, Plc62, Plc250, Plc1, Plc4, Plc16, Function };

@@ -11,8 +11,9 @@
 namespace uprog::st {
 namespace {
 
-constexpr ProgramKind kReportOrder[] = {ProgramKind::Init, ProgramKind::Plc62, ProgramKind::Plc250, ProgramKind::Plc1,
-                                        ProgramKind::Plc4, ProgramKind::Plc16, ProgramKind::Main};
+constexpr ProgramKind kReportOrder[] = {ProgramKind::Init, ProgramKind::Plc62, ProgramKind::Plc250,
+                                        ProgramKind::Plc1, ProgramKind::Plc4,  ProgramKind::Plc16,
+                                        ProgramKind::Main};
 
 class Checker {
  public:
@@ -57,7 +58,8 @@ class Checker {
   void resolve_calls() {
     for (const Routine& r : p_.routines)
       for (const auto& [name, at] : r.calls)
-        if (functions_.count(name) == 0) r_.error(Error::FunctionUnknown, at, "no function '" + name + "'");
+        if (functions_.count(name) == 0)
+          r_.error(Error::FunctionUnknown, at, "no function '" + name + "'");
     // Recursion: a call that closes a cycle.
     std::vector<int> state(p_.routines.size(), 0);
     for (size_t i = 0; i < p_.routines.size(); ++i) visit(i, state);
@@ -68,8 +70,10 @@ class Checker {
     for (const auto& [name, at] : p_.routines[i].calls) {
       auto it = functions_.find(name);
       if (it == functions_.end()) continue;
-      if (state[it->second] == 1) r_.error(Error::Recursion, at, "'" + name + "' calls itself");
-      else if (state[it->second] == 0) visit(it->second, state);
+      if (state[it->second] == 1)
+        r_.error(Error::Recursion, at, "'" + name + "' calls itself");
+      else if (state[it->second] == 0)
+        visit(it->second, state);
     }
     state[i] = 2;
   }
@@ -92,11 +96,14 @@ class Checker {
     const bool init = program.kind == ProgramKind::Init;
     for (size_t k : reach) {
       const Routine& r = p_.routines[k];
-      const std::string via = &r == &program ? std::string() : " (called from " + program.name + ")";
-      if (!main && r.loop_at >= 0) once(Error::LoopMisplaced, static_cast<size_t>(r.loop_at), program.name + via);
+      const std::string via =
+          &r == &program ? std::string() : " (called from " + program.name + ")";
+      if (!main && r.loop_at >= 0)
+        once(Error::LoopMisplaced, static_cast<size_t>(r.loop_at), program.name + via);
       if (!main && !init && r.access_at >= 0)
         once(Error::AccessMisplaced, static_cast<size_t>(r.access_at), program.name + via);
-      if (!main && r.printf_at >= 0) once(Error::PrintfMisplaced, static_cast<size_t>(r.printf_at), program.name + via);
+      if (!main && r.printf_at >= 0)
+        once(Error::PrintfMisplaced, static_cast<size_t>(r.printf_at), program.name + via);
     }
   }
 
@@ -115,7 +122,8 @@ class Checker {
   }
   bool dlong_variable(const Arg& a) {
     if (a.kind != Arg::Kind::Var) return r_.error(Error::NotAVariable, a.offset), false;
-    if (type_of(a) != VarType::Dlong) return r_.error(Error::DlongMisuse, a.offset, "a DLONG is needed here"), false;
+    if (type_of(a) != VarType::Dlong)
+      return r_.error(Error::DlongMisuse, a.offset, "a DLONG is needed here"), false;
     return true;
   }
   bool string_arg(const Arg& a) {
@@ -164,7 +172,9 @@ class Checker {
         if (!count(1) || !string_arg(a[0])) return;
         command(a[0]);
         return;
-      case Builtin::Printf: printf_args(s); return;
+      case Builtin::Printf:
+        printf_args(s);
+        return;
     }
   }
 
@@ -172,8 +182,10 @@ class Checker {
     const std::string& t = a.text;
     const size_t b = t.find_first_not_of(" \t");
     const size_t e = t.find_first_of(" \t", b);
-    const std::string name = b == std::string::npos ? std::string() : t.substr(b, e == std::string::npos ? e : e - b);
-    if (name.empty() || find_ascii(name) == nullptr) r_.error(Error::UnknownParameter, a.offset, "'" + name + "'");
+    const std::string name =
+        b == std::string::npos ? std::string() : t.substr(b, e == std::string::npos ? e : e - b);
+    if (name.empty() || find_ascii(name) == nullptr)
+      r_.error(Error::UnknownParameter, a.offset, "'" + name + "'");
   }
 
   void printf_args(const Stmt& s) {
@@ -191,7 +203,8 @@ class Checker {
     const int n = format_conversions(a[0].text);
     if (ok && n != static_cast<int>(a.size()) - 1)
       r_.error(Error::BadFormat, a[0].offset,
-               n < 0 ? "only %d %u %x %X %% are known" : "the format has " + std::to_string(n) + " conversions");
+               n < 0 ? "only %d %u %x %X %% are known"
+                     : "the format has " + std::to_string(n) + " conversions");
   }
 
   const Program& p_;
@@ -216,6 +229,8 @@ int format_conversions(const std::string& f) {
   return n;
 }
 
-CheckResult check(const Program& program, Reporter& reporter) { return Checker(program, reporter).run(); }
+CheckResult check(const Program& program, Reporter& reporter) {
+  return Checker(program, reporter).run();
+}
 
 }  // namespace uprog::st

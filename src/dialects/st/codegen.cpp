@@ -28,8 +28,10 @@ class Generator {
     image_.source_name = source_name;
     for (const GlobalVar& g : p_.globals)
       image_.globals.push_back({g.name, ValueType::Int, g.type == VarType::Dlong ? 2u : 1u});
-    for (size_t i = 0; i < p_.routines.size(); ++i) routine_index_[p_.routines[i].name] = static_cast<uint32_t>(i);
-    for (size_t i = 0; i < p_.routines.size(); ++i) routine(p_.routines[i], static_cast<uint32_t>(i));
+    for (size_t i = 0; i < p_.routines.size(); ++i)
+      routine_index_[p_.routines[i].name] = static_cast<uint32_t>(i);
+    for (size_t i = 0; i < p_.routines.size(); ++i)
+      routine(p_.routines[i], static_cast<uint32_t>(i));
     // A file of declarations only still makes a loadable image: the loader wants code.
     if (image_.code.empty()) b_.emit(bytecode::Op::RET);
     b_.finish();
@@ -40,11 +42,13 @@ class Generator {
   void routine(const Routine& r, uint32_t index) {
     bytecode::Routine out;
     out.name = r.name;
-    out.kind = r.kind == ProgramKind::Function ? bytecode::RoutineKind::Function : bytecode::RoutineKind::Task;
+    out.kind = r.kind == ProgramKind::Function ? bytecode::RoutineKind::Function
+                                               : bytecode::RoutineKind::Task;
     out.entry = b_.here();
     out.locals.push_back({"$A", ValueType::Int});
     out.locals.push_back({"$B", ValueType::Int});
-    for (int k = 0; k < r.for_count; ++k) out.locals.push_back({"$FOR" + std::to_string(k + 1), ValueType::Int});
+    for (int k = 0; k < r.for_count; ++k)
+      out.locals.push_back({"$FOR" + std::to_string(k + 1), ValueType::Int});
     image_.routines.push_back(std::move(out));
     if (r.kind != ProgramKind::Function) {
       bytecode::Task t;
@@ -125,12 +129,24 @@ class Generator {
     expression(e.a);
     expression(e.b);
     switch (e.op) {
-      case Op::Gt: b_.emit(bytecode::Op::GTI); break;
-      case Op::Ge: b_.emit(bytecode::Op::GEI); break;
-      case Op::Lt: b_.emit(bytecode::Op::LTI); break;
-      case Op::Le: b_.emit(bytecode::Op::LEI); break;
-      case Op::Eq: b_.emit(bytecode::Op::EQI); break;
-      default: b_.emit(bytecode::Op::NEI); break;
+      case Op::Gt:
+        b_.emit(bytecode::Op::GTI);
+        break;
+      case Op::Ge:
+        b_.emit(bytecode::Op::GEI);
+        break;
+      case Op::Lt:
+        b_.emit(bytecode::Op::LTI);
+        break;
+      case Op::Le:
+        b_.emit(bytecode::Op::LEI);
+        break;
+      case Op::Eq:
+        b_.emit(bytecode::Op::EQI);
+        break;
+      default:
+        b_.emit(bytecode::Op::NEI);
+        break;
     }
   }
 
@@ -162,8 +178,12 @@ class Generator {
   void expression(int i) {
     const Expr& e = ex(i);
     switch (e.kind) {
-      case Expr::Kind::Const: push(e.value); return;
-      case Expr::Kind::Var: b_.emit(bytecode::Op::LDG, e.global); return;
+      case Expr::Kind::Const:
+        push(e.value);
+        return;
+      case Expr::Kind::Var:
+        b_.emit(bytecode::Op::LDG, e.global);
+        return;
       case Expr::Kind::Unary:
         if (e.op == Op::Neg) {
           push(0);
@@ -178,7 +198,9 @@ class Generator {
           b_.emit(bytecode::Op::NOTI);
         }
         return;
-      case Expr::Kind::Binary: binary(e); return;
+      case Expr::Kind::Binary:
+        binary(e);
+        return;
     }
   }
 
@@ -191,7 +213,9 @@ class Generator {
     if (e.op == Op::And || e.op == Op::Or || e.op == Op::Xor) {
       truth(e.a);
       truth(e.b);
-      b_.emit(e.op == Op::And ? bytecode::Op::ANDI : e.op == Op::Or ? bytecode::Op::ORI : bytecode::Op::XORI);
+      b_.emit(e.op == Op::And  ? bytecode::Op::ANDI
+              : e.op == Op::Or ? bytecode::Op::ORI
+                               : bytecode::Op::XORI);
       b_.emit(bytecode::Op::NEGI);
       return;
     }
@@ -231,16 +255,27 @@ class Generator {
         push(ex(e.b).value);
         b_.emit(e.op == Op::Shl ? bytecode::Op::SHLI : bytecode::Op::SHRI);
         return;
-      default: break;
+      default:
+        break;
     }
     expression(e.a);
     expression(e.b);
     switch (e.op) {
-      case Op::Add: b_.emit(bytecode::Op::ADDI); break;
-      case Op::Sub: b_.emit(bytecode::Op::SUBI); break;
-      case Op::BAnd: b_.emit(bytecode::Op::ANDI); break;
-      case Op::BOr: b_.emit(bytecode::Op::ORI); break;
-      default: b_.emit(bytecode::Op::XORI); break;
+      case Op::Add:
+        b_.emit(bytecode::Op::ADDI);
+        break;
+      case Op::Sub:
+        b_.emit(bytecode::Op::SUBI);
+        break;
+      case Op::BAnd:
+        b_.emit(bytecode::Op::ANDI);
+        break;
+      case Op::BOr:
+        b_.emit(bytecode::Op::ORI);
+        break;
+      default:
+        b_.emit(bytecode::Op::XORI);
+        break;
     }
   }
 
@@ -259,16 +294,22 @@ class Generator {
         store(s.target);
         eol();
         return;
-      case Stmt::Kind::If: return if_statement(s);
-      case Stmt::Kind::While: return while_loop(s);
-      case Stmt::Kind::Repeat: return repeat_loop(s);
-      case Stmt::Kind::For: return for_loop(s);
+      case Stmt::Kind::If:
+        return if_statement(s);
+      case Stmt::Kind::While:
+        return while_loop(s);
+      case Stmt::Kind::Repeat:
+        return repeat_loop(s);
+      case Stmt::Kind::For:
+        return for_loop(s);
       case Stmt::Kind::Goto:
         line(s.offset);
         eol();
         b_.emit_to(bytecode::Op::JMP, label_of(s.name));
         return;
-      case Stmt::Kind::Label: b_.bind(label_of(s.name)); return;
+      case Stmt::Kind::Label:
+        b_.bind(label_of(s.name));
+        return;
       case Stmt::Kind::Return:
         line(s.offset);
         eol();
@@ -420,7 +461,8 @@ class Generator {
         b_.emit(bytecode::Op::MULDIV);
         store(a[3].global);
         return;
-      case Builtin::Limitw: return limitw(a[0].global, a[1].global, a[2].global);
+      case Builtin::Limitw:
+        return limitw(a[0].global, a[1].global, a[2].global);
       case Builtin::Xread:
         b_.emit(bytecode::Op::CMDGET, ascii_id(*find_ascii(a[0].text)), 0);
         store(a[1].global);
@@ -477,7 +519,8 @@ class Generator {
 
 }  // namespace
 
-bytecode::Image generate(const Program& program, const Locator& locator, const std::string& source_name) {
+bytecode::Image generate(const Program& program, const Locator& locator,
+                         const std::string& source_name) {
   return Generator(program, locator).run(source_name);
 }
 

@@ -16,6 +16,7 @@ namespace uprog::st {
 // PLCMAIN's last local: the passes it has begun (the top of a pass adds one).
 constexpr std::string_view kMainPassesLocal = "$PASSES";
 
-bytecode::Image generate(const Program& program, const Locator& locator, const std::string& source_name);
+bytecode::Image generate(const Program& program, const Locator& locator,
+                         const std::string& source_name);
 
 }  // namespace uprog::st

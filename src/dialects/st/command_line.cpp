@@ -32,7 +32,8 @@ bool to_number(const std::string& s, int64_t& out, double& real) {
   if (ec == std::errc() && p == e) return real = static_cast<double>(out), true;
   char* end = nullptr;
   const double d = std::strtod(s.c_str(), &end);
-  if (end != s.c_str() + s.size() || s.empty() || !std::isfinite(d) || std::fabs(d) > 9.2e18) return false;
+  if (end != s.c_str() + s.size() || s.empty() || !std::isfinite(d) || std::fabs(d) > 9.2e18)
+    return false;
   out = static_cast<int64_t>(d);
   real = d;
   return true;
@@ -71,7 +72,8 @@ std::pair<int64_t, int64_t> range_of(const std::string& name) {
 bool has_bits(uint32_t mf, uint32_t bits) {
   // Power-stage faults are codes in bits 13..15 (with bit 12), the rest single bits.
   if ((bits & drive::kFaultPowerStage) != 0) {
-    const uint32_t code_bits = bits & ~(drive::kFaultVelocityError | drive::kFaultSpeedLimit | drive::kFaultOvercurrent);
+    const uint32_t code_bits =
+        bits & ~(drive::kFaultVelocityError | drive::kFaultSpeedLimit | drive::kFaultOvercurrent);
     if ((mf & 0xF000u) == (code_bits & 0xF000u) && (code_bits & 0xF000u) != 0) return true;
     return (mf & bits & ~0xF000u) != 0;
   }
@@ -123,7 +125,8 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
                                           : static_cast<int32_t>(low);
       m.write_global(id, 0, Value::of_int(stored));
       if (globals_[g].length == 2)
-        m.write_global(id, 1, Value::of_int(static_cast<int32_t>(static_cast<uint64_t>(args[0]) >> 32)));
+        m.write_global(id, 1,
+                       Value::of_int(static_cast<int32_t>(static_cast<uint64_t>(args[0]) >> 32)));
       return {};
     }
   }
@@ -131,8 +134,8 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   const AsciiEntry* e = find_ascii(name);
   if (e == nullptr) return {err(kErrUnknown, "unknown command")};
   // A program cannot stop, replace or reboot itself from inside its own run.
-  if (in_program_ && (name == "PLCSTOP" || name == "PLCRUN" || name == "PLCSTART" || name == "COLDSTART" ||
-                      name == "PLCDL" || is_debug_command(name)))
+  if (in_program_ && (name == "PLCSTOP" || name == "PLCRUN" || name == "PLCSTART" ||
+                      name == "COLDSTART" || name == "PLCDL" || is_debug_command(name)))
     return {err(kErrSyntax, "not from a PLC program")};
   if (argc > 0 && e->access == AsciiAccess::Read) return {err(kErrReadOnly, "read only")};
   if (is_debug_command(name)) return debug_command(name, w);
@@ -141,7 +144,9 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     const auto i = static_cast<size_t>(*n - 1);
     if (program_) {
       Value v;
-      if (argc == 0) return program_->machine().read_global(static_cast<uint32_t>(i), 0, v), std::vector{value(v.i)};
+      if (argc == 0)
+        return program_->machine().read_global(static_cast<uint32_t>(i), 0, v),
+               std::vector{value(v.i)};
       program_->machine().write_global(static_cast<uint32_t>(i), 0, Value::of_int(arg32(0)));
     }
     if (argc == 0) return {value(user_vars_[i])};
@@ -179,7 +184,8 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   if (name == "J") {
     if (argc < 1 || argc > 2) return {err(kErrSyntax, "syntax error")};
     const int32_t code = jog(arg32(0), argc == 2 ? arg32(1) : 0);
-    return code == 0 ? std::vector<Answer>{} : std::vector{err(code, code == kErrOpmode ? "OPMODE" : "needs enabled")};
+    return code == 0 ? std::vector<Answer>{}
+                     : std::vector{err(code, code == kErrOpmode ? "OPMODE" : "needs enabled")};
   }
   if (name == "T") {
     if (argc != 1) return {err(kErrSyntax, "syntax error")};
@@ -191,22 +197,30 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   if (name == "ORDER") {
     if (argc == 0) return {err(kErrSyntax, "syntax error")};
     const int32_t nr = arg32(0);
-    if (!(nr == 0 || (nr >= 1 && nr <= 180) || (nr >= 192 && nr <= 255))) return {err(kErrRange, "out of range")};
+    if (!(nr == 0 || (nr >= 1 && nr <= 180) || (nr >= 192 && nr <= 255)))
+      return {err(kErrRange, "out of range")};
     if (argc == 1) {
       auto it = tasks_.find(nr);
       const MotionTask t = it == tasks_.end() ? MotionTask{} : it->second;
-      return {Answer{fmt::format("{} {} {} {} {} {} {} {} {} {}", nr, t.p, t.v, t.c, t.acc, t.dec, t.a2, t.d2, t.fn, t.ft), 0}};
+      return {Answer{fmt::format("{} {} {} {} {} {} {} {} {} {}", nr, t.p, t.v, t.c, t.acc, t.dec,
+                                 t.a2, t.d2, t.fn, t.ft),
+                     0}};
     }
     if (argc != 10) return {err(kErrSyntax, "syntax error")};
-    if (nr >= 1 && nr <= 180 && axis_->motor_on()) return {err(kErrNeedsDisabled, "needs disabled")};
-    MotionTask t{arg32(1), arg32(2), arg32(3), arg32(4), arg32(5), arg32(6), arg32(7), arg32(8), arg32(9), true};
+    if (nr >= 1 && nr <= 180 && axis_->motor_on())
+      return {err(kErrNeedsDisabled, "needs disabled")};
+    MotionTask t{arg32(1), arg32(2), arg32(3), arg32(4), arg32(5),
+                 arg32(6), arg32(7), arg32(8), arg32(9), true};
     tasks_[nr] = t;
     return {};
   }
   if (name == "MOVE") {
     if (argc == 0) return {value(last_move_)};
     const int32_t code = start_task(arg32(0));
-    return code == 0 ? std::vector<Answer>{} : std::vector{err(code, code == kErrTask ? "no such task" : code == kErrOpmode ? "OPMODE" : "needs enabled")};
+    return code == 0 ? std::vector<Answer>{}
+                     : std::vector{err(code, code == kErrTask     ? "no such task"
+                                             : code == kErrOpmode ? "OPMODE"
+                                                                  : "needs enabled")};
   }
   if (name == "STOP") {
     next_pending_ = false;
@@ -216,15 +230,21 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   }
   if (name == "MTMUX") {
     if (argc == 0) return {value(mtmux_)};
-    if (!(args[0] == 0 || (args[0] >= 192 && args[0] <= 255))) return {err(kErrRange, "out of range")};
+    if (!(args[0] == 0 || (args[0] >= 192 && args[0] <= 255)))
+      return {err(kErrRange, "out of range")};
     mtmux_ = arg32(0);
     return {};
   }
   if (name.starts_with("O_")) {
     MotionTask& t = tasks_[mtmux_];
     t.defined = true;
-    int32_t* field = name == "O_P" ? &t.p : name == "O_V" ? &t.v : name == "O_C" ? &t.c : name == "O_ACC1" ? &t.acc
-                   : name == "O_DEC1" ? &t.dec : name == "O_FN" ? &t.fn : &t.ft;
+    int32_t* field = name == "O_P"      ? &t.p
+                     : name == "O_V"    ? &t.v
+                     : name == "O_C"    ? &t.c
+                     : name == "O_ACC1" ? &t.acc
+                     : name == "O_DEC1" ? &t.dec
+                     : name == "O_FN"   ? &t.fn
+                                        : &t.ft;
     if (argc == 0) return {value(*field)};
     *field = arg32(0);
     return {};
@@ -255,7 +275,8 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     const bool waiting = deferred_.kind != Deferred::kNone;
     return {value(off <= values_.at("PEINPOS") && !axis_->profiler_moving() && !waiting ? 1 : 0)};
   }
-  if (name.size() == 3 && name.starts_with("IN")) return {value(axis_->input_active(name[2] - '0') ? 1 : 0)};
+  if (name.size() == 3 && name.starts_with("IN"))
+    return {value(axis_->input_active(name[2] - '0') ? 1 : 0)};
   if (name == "O1" || name == "O2") {
     const int n = name[1] - '0';
     if (argc == 0) return {value(axis_->output(n) ? 1 : 0)};
@@ -334,7 +355,8 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     }
     bool has_main = false;
     for (const auto& [thread, n] : threads_) has_main |= n == "PLCMAIN";
-    if (has_main) out += fmt::format("PLC {}", plc_started_ ? schedule_.background_loops_last_second() : 0);
+    if (has_main)
+      out += fmt::format("PLC {}", plc_started_ ? schedule_.background_loops_last_second() : 0);
     while (!out.empty() && out.back() == ' ') out.pop_back();
     return {Answer{out, 0}};
   }

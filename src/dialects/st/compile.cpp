@@ -30,13 +30,21 @@ std::string c_condition(std::string_view line) {
     if (c == '<' && next == '>') {
       out += "!=";
       ++i;
-    } else if (c == '=' && prev != '<' && prev != '>' && prev != '=' && prev != '!' && next != '=') {
+    } else if (c == '=' && prev != '<' && prev != '>' && prev != '=' && prev != '!' &&
+               next != '=') {
       out += "==";
-    } else if (std::isalpha(static_cast<unsigned char>(c)) && !std::isalnum(static_cast<unsigned char>(prev)) && prev != '_') {
+    } else if (std::isalpha(static_cast<unsigned char>(c)) &&
+               !std::isalnum(static_cast<unsigned char>(prev)) && prev != '_') {
       size_t e = i;
-      while (e < line.size() && (std::isalnum(static_cast<unsigned char>(line[e])) || line[e] == '_')) ++e;
+      while (e < line.size() &&
+             (std::isalnum(static_cast<unsigned char>(line[e])) || line[e] == '_'))
+        ++e;
       const std::string w = upper(line.substr(i, e - i));
-      out += w == "AND" ? "&& " : w == "OR" ? "||" : w == "NOT" ? "!  " : w == "MOD" ? "%  " : std::string(line.substr(i, e - i));
+      out += w == "AND"   ? "&& "
+             : w == "OR"  ? "||"
+             : w == "NOT" ? "!  "
+             : w == "MOD" ? "%  "
+                          : std::string(line.substr(i, e - i));
       i = e - 1;
     } else {
       out.push_back(c);
@@ -60,7 +68,8 @@ std::string lower_directives(const std::string& text) {
       for (; k < line.size() && std::isalpha(static_cast<unsigned char>(line[k])); ++k)
         line[k] = static_cast<char>(std::tolower(static_cast<unsigned char>(line[k])));
       const std::string word = line.substr(hash + 1, k - hash - 1);
-      if (word == "if" || word == "elseif") line = line.substr(0, k) + c_condition(std::string_view(line).substr(k));
+      if (word == "if" || word == "elseif")
+        line = line.substr(0, k) + c_condition(std::string_view(line).substr(k));
     }
     out += line;
     if (end == text.size()) break;
@@ -82,10 +91,13 @@ std::map<std::string, int> declared_names(const std::string& text) {
     const char c = text[i];
     if (std::isalpha(static_cast<unsigned char>(c))) {
       size_t e = i;
-      while (e < text.size() && (std::isalnum(static_cast<unsigned char>(text[e])) || text[e] == '_')) ++e;
+      while (e < text.size() &&
+             (std::isalnum(static_cast<unsigned char>(text[e])) || text[e] == '_'))
+        ++e;
       const std::string w = text.substr(i, e - i);
       const std::string u = upper(w);
-      if (u == "BYTE" || u == "WORD" || u == "LONG" || u == "DLONG") in_declaration = true;
+      if (u == "BYTE" || u == "WORD" || u == "LONG" || u == "DLONG")
+        in_declaration = true;
       else if (in_declaration)
         out.emplace(w, line);
       i = e;
@@ -110,7 +122,8 @@ void check_limits(const SourceFile& source, Reporter& reporter) {
     size_t length = end - start;
     if (length > 0 && t[end - 1] == '\r') --length;
     if (length > kMaxLineLength)
-      reporter.add(Error::LineTooLong, Location{source.name, line, static_cast<int>(kMaxLineLength) + 1});
+      reporter.add(Error::LineTooLong,
+                   Location{source.name, line, static_cast<int>(kMaxLineLength) + 1});
     start = end + 1;
   }
 }
@@ -152,7 +165,8 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
       if (!value) value = e->default_value;
       return true;
     };
-    pre = preproc::preprocess(SourceFile{source.name, lower_directives(source.text)}, po, pre_diags);
+    pre =
+        preproc::preprocess(SourceFile{source.name, lower_directives(source.text)}, po, pre_diags);
   }
   const std::string& text = preprocess ? pre.text : source.text;
   Locator locator(source.name, text, preprocess ? &pre.map : nullptr);
@@ -176,12 +190,14 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   }
   result.diagnostics = reporter.take();
   // In the order of their places, as the drive lists them; "too many" stays last.
-  std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
-    const bool a_last = a.code == static_cast<int>(Error::TooManyErrors);
-    const bool b_last = b.code == static_cast<int>(Error::TooManyErrors);
-    if (a_last != b_last) return b_last;
-    return std::pair(a.where.line, a.where.column) < std::pair(b.where.line, b.where.column);
-  });
+  std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
+                   [](const Diagnostic& a, const Diagnostic& b) {
+                     const bool a_last = a.code == static_cast<int>(Error::TooManyErrors);
+                     const bool b_last = b.code == static_cast<int>(Error::TooManyErrors);
+                     if (a_last != b_last) return b_last;
+                     return std::pair(a.where.line, a.where.column) <
+                            std::pair(b.where.line, b.where.column);
+                   });
   attach_source_lines(result.diagnostics, source);
   return result;
 }

@@ -35,7 +35,7 @@ struct CompileOptions {
 struct CompileResult {
   bytecode::Image image;  // empty on errors or with check_only
   std::vector<Diagnostic> diagnostics;
-  CheckResult sizes;      // the programs present and the load factor (also with errors after parsing)
+  CheckResult sizes;  // the programs present and the load factor (also with errors after parsing)
   // Each image global's width in bits (8 BYTE, 16 WORD, 32 LONG, 64 DLONG): a host's write
   // into a variable is cut to its type as the program's own store is.
   std::vector<uint8_t> global_bits;

@@ -3,9 +3,8 @@
 // conditions, watches, hovers), compiled by the drive's own compiler.
 #include <fmt/core.h>
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
@@ -48,7 +47,8 @@ std::string evaluation_source(const std::string& source, std::string_view expres
   } else {
     body = fmt::format("  {} := {};\n", kResult, expression);
   }
-  return fmt::format("{}\nLONG {};\nFUNCTION {}\n{}END_FUNCTION\n", source, kResult, kFunction, body);
+  return fmt::format("{}\nLONG {};\nFUNCTION {}\n{}END_FUNCTION\n", source, kResult, kFunction,
+                     body);
 }
 
 }  // namespace
@@ -86,7 +86,8 @@ dialect::Evaluation Firmware::evaluate(uint32_t, uint32_t, std::string_view expr
     pm.read_global(static_cast<uint32_t>(g), 0, low);
     int64_t v = low.i;
     if (global.length == 2 && pm.read_global(static_cast<uint32_t>(g), 1, high))
-      v = static_cast<int64_t>((static_cast<uint64_t>(static_cast<uint32_t>(high.i)) << 32) | static_cast<uint32_t>(low.i));
+      v = static_cast<int64_t>((static_cast<uint64_t>(static_cast<uint32_t>(high.i)) << 32) |
+                               static_cast<uint32_t>(low.i));
     out.ok = true;
     out.value = std::to_string(v);
     out.is_true = v != 0;
@@ -94,7 +95,8 @@ dialect::Evaluation Firmware::evaluate(uint32_t, uint32_t, std::string_view expr
   }
   CompileOptions options;
   options.parameter = [this](std::string_view name) { return parameter_value(name); };
-  const CompileResult r = compile(SourceFile{source_name(), evaluation_source(*source_, trimmed)}, options);
+  const CompileResult r =
+      compile(SourceFile{source_name(), evaluation_source(*source_, trimmed)}, options);
   if (!r.ok()) {
     out.error = r.diagnostics.empty() ? "syntax error" : r.diagnostics.back().message;
     return out;
@@ -106,7 +108,8 @@ dialect::Evaluation Firmware::evaluate(uint32_t, uint32_t, std::string_view expr
     return out;
   }
   std::string why;
-  const auto loaded = dialect::LoadedProgram::load(bytecode::encode(r.image), evaluation_config(), *this, &why, false);
+  const auto loaded = dialect::LoadedProgram::load(bytecode::encode(r.image), evaluation_config(),
+                                                   *this, &why, false);
   if (!loaded) {
     out.error = "the expression's image is unsound: " + why;
     return out;
@@ -131,7 +134,8 @@ dialect::Evaluation Firmware::evaluate(uint32_t, uint32_t, std::string_view expr
     left -= std::min(left, std::max<uint64_t>(s.executed, 1));
   }
   if (s.end != vm::SliceEnd::Finished) {
-    out.error = s.end == vm::SliceEnd::Error ? vm::run_error_text(m.last_error(0)) : "the expression did not finish";
+    out.error = s.end == vm::SliceEnd::Error ? vm::run_error_text(m.last_error(0))
+                                             : "the expression did not finish";
     return out;
   }
   exchange(m, pm);

@@ -47,16 +47,18 @@ std::vector<dialect::ErrorInfo> diagnostic_table() {
 
 // `-D NAME=value` into the compiler's defines: a capital name (as #IF sees it) and a whole
 // number; anything else is error 30 at the file, and nothing is compiled.
-bool take_defines(const std::string& path, const dialect::CompileSettings& settings, CompileOptions& options,
-                  std::vector<Diagnostic>& diagnostics) {
+bool take_defines(const std::string& path, const dialect::CompileSettings& settings,
+                  CompileOptions& options, std::vector<Diagnostic>& diagnostics) {
   for (const auto& [name, text] : settings.defines) {
     char* end = nullptr;
     errno = 0;
     const long long v = std::strtoll(text.c_str(), &end, 10);
-    const bool number = !text.empty() && end != nullptr && *end == '\0' && errno == 0 && v >= INT32_MIN && v <= INT32_MAX;
+    const bool number = !text.empty() && end != nullptr && *end == '\0' && errno == 0 &&
+                        v >= INT32_MIN && v <= INT32_MAX;
     if (!number) {
-      diagnostics.push_back(make_error(Error::BadDirective, Location{path, 0, 0},
-                                       fmt::format("-D {}={}: the value must be a whole number", name, text)));
+      diagnostics.push_back(
+          make_error(Error::BadDirective, Location{path, 0, 0},
+                     fmt::format("-D {}={}: the value must be a whole number", name, text)));
       continue;
     }
     options.defines[upper(name)] = static_cast<int32_t>(v);
@@ -68,12 +70,14 @@ class StDialect final : public dialect::Dialect {
  public:
   std::string_view name() const override { return "st"; }
   std::string_view description() const override {
-    return "Kollmorgen S300/S700 macros (.st): structured text stored as source, compiled by the drive";
+    return "Kollmorgen S300/S700 macros (.st): structured text stored as source, compiled by the "
+           "drive";
   }
   std::span<const std::string_view> source_extensions() const override { return kExtensions; }
   std::string_view stored_extension() const override { return ".st"; }
 
-  dialect::CompileOutput compile_file(const std::string& path, const dialect::CompileSettings& settings) const override {
+  dialect::CompileOutput compile_file(const std::string& path,
+                                      const dialect::CompileSettings& settings) const override {
     CompileOptions options;
     options.check_only = settings.check_only;
     options.created_unix_s = settings.created_unix_s;
@@ -92,7 +96,8 @@ class StDialect final : public dialect::Dialect {
       out.image = std::move(r.image);
       // The download carries the source alone: its file name goes to the drive beside it, so
       // that the drive compiles it under that name and breakpoints in it resolve.
-      out.debug_map = nlohmann::json{{"source", path}}.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+      out.debug_map = nlohmann::json{{"source", path}}.dump(
+          -1, ' ', false, nlohmann::json::error_handler_t::replace);
     }
     return out;
   }
@@ -101,10 +106,12 @@ class StDialect final : public dialect::Dialect {
     static const std::vector<dialect::ErrorInfo> table = diagnostic_table();
     return table;
   }
-  std::span<const dialect::ErrorInfo> interpreter_errors() const override { return kInterpreterErrors; }
+  std::span<const dialect::ErrorInfo> interpreter_errors() const override {
+    return kInterpreterErrors;
+  }
 
-  std::unique_ptr<dialect::Firmware> make_firmware(dialect::Runtime& runtime,
-                                                   const dialect::FirmwareOptions& options) const override {
+  std::unique_ptr<dialect::Firmware> make_firmware(
+      dialect::Runtime& runtime, const dialect::FirmwareOptions& options) const override {
     return std::make_unique<Firmware>(runtime, options.wire_style);
   }
 
@@ -117,7 +124,8 @@ class StDialect final : public dialect::Dialect {
     std::vector<std::string> out{fmt::format("PLCDL BEGIN {}", source.size())};
     for (size_t i = 0; i < source.size(); i += kHexBytesPerLine) {
       std::string line = "PLCDL ";
-      for (size_t k = i; k < source.size() && k < i + kHexBytesPerLine; ++k) line += fmt::format("{:02X}", source[k]);
+      for (size_t k = i; k < source.size() && k < i + kHexBytesPerLine; ++k)
+        line += fmt::format("{:02X}", source[k]);
       out.push_back(std::move(line));
     }
     out.push_back("PLCDL END");

@@ -19,8 +19,8 @@ constexpr uint64_t kCostlyCallLines = 625;  // XREAD, XWRITE, COMMAND, PRINTF
 
 vm::MachineConfig machine_config() {
   vm::MachineConfig c;
-  c.threads = 7;    // one per program
-  c.stack = 512;    // an expression may nest 200 deep (parser.cpp)
+  c.threads = 7;  // one per program
+  c.stack = 512;  // an expression may nest 200 deep (parser.cpp)
   return c;
 }
 
@@ -29,7 +29,8 @@ uint32_t passes_local_of(const bytecode::ImageView& image, uint32_t routine) {
   const bytecode::RoutineRecord r = image.routines[routine];
   if (r.locals == 0) return scheduling::CyclicTasks::kNoLocal;
   const bytecode::LocalRecord l = image.locals[r.first_local + r.locals - 1];
-  return image.string(l.name) == kMainPassesLocal ? r.locals - 1 : scheduling::CyclicTasks::kNoLocal;
+  return image.string(l.name) == kMainPassesLocal ? r.locals - 1
+                                                  : scheduling::CyclicTasks::kNoLocal;
 }
 
 }  // namespace
@@ -59,7 +60,8 @@ void Firmware::boot(std::vector<std::string>& messages) {
   if (auto bytes = runtime_.flash().read(kSourceRecord, &error)) {
     source_ = std::string(bytes->begin(), bytes->end());
   } else if (!error.empty()) {
-    messages.push_back("stored PLC source " + runtime_.flash().where(kSourceRecord) + " unreadable: " + error);
+    messages.push_back("stored PLC source " + runtime_.flash().where(kSourceRecord) +
+                       " unreadable: " + error);
   }
   compile_and_start();
 }
@@ -89,7 +91,8 @@ dialect::DownloadResult Firmware::download(const std::vector<uint8_t>& source) {
 std::string Firmware::start(std::string_view) {
   const int32_t code = compile_and_start();
   if (code == 0) return "";
-  return code == kErrCompileFailed ? "the PLC program did not compile" : "PLCRUN refused (ERR " + std::to_string(code) + ")";
+  return code == kErrCompileFailed ? "the PLC program did not compile"
+                                   : "PLCRUN refused (ERR " + std::to_string(code) + ")";
 }
 
 int32_t Firmware::plc_state() const {
@@ -125,7 +128,8 @@ int32_t Firmware::compile_and_start() {
     return kErrCompileFailed;
   }
   std::string error;
-  program_ = dialect::LoadedProgram::load(bytecode::encode(r.image), machine_config(), *this, &error, true, "st");
+  program_ = dialect::LoadedProgram::load(bytecode::encode(r.image), machine_config(), *this,
+                                          &error, true, "st");
   if (!program_) {
     compile_failed_ = true;
     runtime_.log("compiled PLC program refused: " + error);
@@ -145,9 +149,12 @@ int32_t Firmware::compile_and_start() {
   uint32_t thread = 0;
   for (const bytecode::Task& t : program_->image().tasks) {
     const auto kind = static_cast<ProgramKind>(t.number);
-    if (kind == ProgramKind::Init) schedule_.set_init(thread, t.routine);
-    else if (kind == ProgramKind::Main) schedule_.set_background(thread, t.routine, passes_local_of(m.image(), t.routine));
-    else schedule_.add_task(thread, t.routine, t.period_ns);
+    if (kind == ProgramKind::Init)
+      schedule_.set_init(thread, t.routine);
+    else if (kind == ProgramKind::Main)
+      schedule_.set_background(thread, t.routine, passes_local_of(m.image(), t.routine));
+    else
+      schedule_.add_task(thread, t.routine, t.period_ns);
     threads_.push_back({thread, std::string(program_name(kind))});
     ++thread;
   }
@@ -169,8 +176,10 @@ void Firmware::report_compile(const CompileResult& r) {
   bool load_error = false;
   bool other_errors = false;
   for (const Diagnostic& d : r.diagnostics) {
-    if (d.code == static_cast<int>(Error::LoadTooHigh)) load_error = true;
-    else other_errors = true;
+    if (d.code == static_cast<int>(Error::LoadTooHigh))
+      load_error = true;
+    else
+      other_errors = true;
   }
   if (all && !other_errors) {
     for (const ProgramSize& s : r.sizes.sizes) say(fmt::format("{} (size={})", s.name, s.size));
@@ -233,8 +242,9 @@ void Firmware::on_report(const scheduling::Report& report) {
     }
     if (report.has(thread, scheduling::ThreadEvent::Error)) {
       run_error_ = program_->machine().last_error(thread);
-      runtime_.log(fmt::format("{}: run-time error {} ({}) at {}: F31", name, static_cast<int>(run_error_),
-                               vm::run_error_text(run_error_), program_->where(program_->machine().pc(thread))));
+      runtime_.log(fmt::format("{}: run-time error {} ({}) at {}: F31", name,
+                               static_cast<int>(run_error_), vm::run_error_text(run_error_),
+                               program_->where(program_->machine().pc(thread))));
       stop_plc(thread);
       latch(31);
       return;
@@ -294,9 +304,12 @@ vm::CommandStatus Firmware::read(uint32_t command, int32_t, Value& out) {
   in_program_ = false;
   if (!a.empty() && !a[0].is_error()) {
     const double v = std::strtod(a[0].text.c_str(), nullptr);
-    out = Value::of_int(v >= 2147483647.0 ? INT32_MAX : v <= -2147483648.0 ? INT32_MIN : static_cast<int32_t>(v));
+    out = Value::of_int(v >= 2147483647.0    ? INT32_MAX
+                        : v <= -2147483648.0 ? INT32_MIN
+                                             : static_cast<int32_t>(v));
   } else if (!a.empty() && msg_ >= 1) {
-    say(running_place(*program_, schedule_.running(), threads_) + ": " + answer_text(a[0]).substr(1));
+    say(running_place(*program_, schedule_.running(), threads_) + ": " +
+        answer_text(a[0]).substr(1));
   }
   return vm::kCommandEndSlice;
 }
@@ -306,10 +319,12 @@ vm::CommandStatus Firmware::write(uint32_t command, int32_t, Value value) {
   const AsciiEntry* e = ascii_by_id(command);
   if (e == nullptr) return vm::kCommandEndSlice;
   in_program_ = true;
-  const std::vector<dialect::Answer> a = command_line(std::string(e->name) + " " + std::to_string(value.i));
+  const std::vector<dialect::Answer> a =
+      command_line(std::string(e->name) + " " + std::to_string(value.i));
   in_program_ = false;
   if (!a.empty() && a[0].is_error() && msg_ >= 1)
-    say(running_place(*program_, schedule_.running(), threads_) + ": " + answer_text(a[0]).substr(1));
+    say(running_place(*program_, schedule_.running(), threads_) + ": " +
+        answer_text(a[0]).substr(1));
   return vm::kCommandEndSlice;
 }
 
@@ -321,7 +336,9 @@ vm::CommandStatus Firmware::execute(uint32_t command, int32_t, const Value* args
   const std::vector<dialect::Answer> answers = command_line(text);
   in_program_ = false;
   for (const dialect::Answer& a : answers) {
-    if (a.is_error() && msg_ >= 1) say(running_place(*program_, schedule_.running(), threads_) + ": " + answer_text(a).substr(1));
+    if (a.is_error() && msg_ >= 1)
+      say(running_place(*program_, schedule_.running(), threads_) + ": " +
+          answer_text(a).substr(1));
   }
   return vm::kCommandEndSlice;
 }

@@ -82,13 +82,16 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   void set_debug_map(std::string_view map) override;
   // The name the stored source compiles under: its file's, when the controller said it.
   std::string source_name() const;
-  dialect::Evaluation evaluate(uint32_t thread, uint32_t depth, std::string_view expression) override;  // debug_hooks.cpp
+  dialect::Evaluation evaluate(uint32_t thread, uint32_t depth,
+                               std::string_view expression) override;  // debug_hooks.cpp
 
   // --- vm::Host ---
   vm::CommandStatus read(uint32_t command, int32_t index, Value& out) override;
   vm::CommandStatus write(uint32_t command, int32_t index, Value value) override;
-  vm::CommandStatus execute(uint32_t command, int32_t index, const Value* args, uint32_t count) override;
-  vm::CommandStatus message(uint32_t thread, uint32_t text, const Value* args, uint32_t count) override;
+  vm::CommandStatus execute(uint32_t command, int32_t index, const Value* args,
+                            uint32_t count) override;
+  vm::CommandStatus message(uint32_t thread, uint32_t text, const Value* args,
+                            uint32_t count) override;
   uint32_t now_us() override { return static_cast<uint32_t>(runtime_.now_ns() / 1000); }
 
   // One host line: its answers (command_line.cpp); a session also lets one axis step pass.
@@ -98,7 +101,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
  private:
   friend class CommandLine;
   // --- the PLC (firmware.cpp) ---
-  int32_t plc_state() const;  // PLC: 1 running, 0 stopped, -1 failed, -2 no source
+  int32_t plc_state() const;    // PLC: 1 running, 0 stopped, -1 failed, -2 no source
   int32_t compile_and_start();  // 0, or the ASCII error (11 compile failed)
   void report_compile(const CompileResult& r);
   void stop_plc(uint32_t failed = scheduling::kNoThread);  // a failed program stays where it failed
@@ -110,7 +113,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   void say(const std::string& line) { runtime_.output(line + "\n"); }
 
   // --- the debug commands (debug_commands.cpp) ---
-  std::vector<dialect::Answer> debug_command(const std::string& name, const std::vector<std::string>& words);
+  std::vector<dialect::Answer> debug_command(const std::string& name,
+                                             const std::vector<std::string>& words);
   std::string program_state(uint32_t thread) const;
 
   // --- parameters (settings.cpp) ---

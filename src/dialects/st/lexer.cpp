@@ -77,29 +77,71 @@ class Lexer {
     ++i_;
     const char n = at(i_);
     switch (c) {
-      case ':': if (n == '=') { ++i_; push(Tok::Assign, start); } else push(Tok::Colon, start); return;
-      case ';': push(Tok::Semi, start); return;
-      case ',': push(Tok::Comma, start); return;
-      case '(': push(Tok::LParen, start); return;
-      case ')': push(Tok::RParen, start); return;
-      case '+': push(Tok::Plus, start); return;
-      case '-': push(Tok::Minus, start); return;
-      case '*': push(Tok::Star, start); return;
-      case '/': push(Tok::Slash, start); return;
-      case '&': push(Tok::Amp, start); return;
-      case '|': push(Tok::Bar, start); return;
-      case '^': push(Tok::Caret, start); return;
-      case '=': push(Tok::Eq, start); return;
+      case ':':
+        if (n == '=') {
+          ++i_;
+          push(Tok::Assign, start);
+        } else
+          push(Tok::Colon, start);
+        return;
+      case ';':
+        push(Tok::Semi, start);
+        return;
+      case ',':
+        push(Tok::Comma, start);
+        return;
+      case '(':
+        push(Tok::LParen, start);
+        return;
+      case ')':
+        push(Tok::RParen, start);
+        return;
+      case '+':
+        push(Tok::Plus, start);
+        return;
+      case '-':
+        push(Tok::Minus, start);
+        return;
+      case '*':
+        push(Tok::Star, start);
+        return;
+      case '/':
+        push(Tok::Slash, start);
+        return;
+      case '&':
+        push(Tok::Amp, start);
+        return;
+      case '|':
+        push(Tok::Bar, start);
+        return;
+      case '^':
+        push(Tok::Caret, start);
+        return;
+      case '=':
+        push(Tok::Eq, start);
+        return;
       case '<':
-        if (n == '=') { ++i_; push(Tok::Le, start); }
-        else if (n == '>') { ++i_; push(Tok::Ne, start); }
-        else if (n == '<') { ++i_; push(Tok::Shl, start); }
-        else push(Tok::Lt, start);
+        if (n == '=') {
+          ++i_;
+          push(Tok::Le, start);
+        } else if (n == '>') {
+          ++i_;
+          push(Tok::Ne, start);
+        } else if (n == '<') {
+          ++i_;
+          push(Tok::Shl, start);
+        } else
+          push(Tok::Lt, start);
         return;
       case '>':
-        if (n == '=') { ++i_; push(Tok::Ge, start); }
-        else if (n == '>') { ++i_; push(Tok::Shr, start); }
-        else push(Tok::Gt, start);
+        if (n == '=') {
+          ++i_;
+          push(Tok::Ge, start);
+        } else if (n == '>') {
+          ++i_;
+          push(Tok::Shr, start);
+        } else
+          push(Tok::Gt, start);
         return;
       case '[':
         reporter_.error(Error::Unsupported, start, "arrays are not implemented");
@@ -139,7 +181,10 @@ class Lexer {
     while (is_name_char(at(i_))) {
       const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(t_[i_])));
       const int d = is_digit(c) ? c - '0' : (c >= 'A' && c <= 'F') ? c - 'A' + 10 : 99;
-      if (c == '_') { ++i_; continue; }
+      if (c == '_') {
+        ++i_;
+        continue;
+      }
       if (d >= base) {
         while (is_name_char(at(i_))) ++i_;
         reporter_.error(Error::Syntax, start, "not a digit of this number");
@@ -200,6 +245,8 @@ class Lexer {
 
 }  // namespace
 
-std::vector<Token> lex(const std::string& text, Reporter& reporter) { return Lexer(text, reporter).run(); }
+std::vector<Token> lex(const std::string& text, Reporter& reporter) {
+  return Lexer(text, reporter).run();
+}
 
 }  // namespace uprog::st

@@ -20,7 +20,8 @@ Location Locator::at(size_t offset) const {
   }
   const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
   const size_t line = static_cast<size_t>(it - line_starts_.begin());
-  return Location{file_, static_cast<int>(line), static_cast<int>(offset - line_starts_[line - 1]) + 1};
+  return Location{file_, static_cast<int>(line),
+                  static_cast<int>(offset - line_starts_[line - 1]) + 1};
 }
 
 }  // namespace uprog::st

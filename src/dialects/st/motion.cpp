@@ -40,7 +40,9 @@ int32_t Firmware::user_of(double counts) const {
   return out == 0 ? 0 : saturate(std::round(counts * in / out));
 }
 
-double Firmware::rpm_to_counts(double rpm) const { return rpm * axis_->parameters().counts_per_revolution() / 60.0; }
+double Firmware::rpm_to_counts(double rpm) const {
+  return rpm * axis_->parameters().counts_per_revolution() / 60.0;
+}
 
 // A ramp of `ms` from 0 to VLIM as an acceleration in counts/s².
 double Firmware::ramp_counts_per_s2(int32_t ms) const {

@@ -9,24 +9,25 @@ namespace uprog::st {
 namespace {
 
 constexpr std::string_view kKeywords[] = {
-    "IF", "THEN", "ELSE", "END_IF", "WHILE", "DO", "END_WHILE", "REPEAT", "UNTIL", "END_REPEAT",
-    "FOR", "TO", "BY", "END_FOR", "GOTO", "RETURN", "PROGRAM", "END_PROGRAM", "FUNCTION",
-    "END_FUNCTION", "BYTE", "WORD", "LONG", "DLONG", "MOD", "AND", "OR", "XOR", "NOT", "BNOT",
-    "TRUE", "FALSE",
+    "IF",      "THEN",        "ELSE",     "END_IF",       "WHILE", "DO",      "END_WHILE", "REPEAT",
+    "UNTIL",   "END_REPEAT",  "FOR",      "TO",           "BY",    "END_FOR", "GOTO",      "RETURN",
+    "PROGRAM", "END_PROGRAM", "FUNCTION", "END_FUNCTION", "BYTE",  "WORD",    "LONG",      "DLONG",
+    "MOD",     "AND",         "OR",       "XOR",          "NOT",   "BNOT",    "TRUE",      "FALSE",
 };
 constexpr std::string_view kUnsupported[] = {
-    "ELSIF", "CASE", "OF", "END_CASE", "EXIT", "ARRAY", "REAL", "LREAL", "INT", "DINT", "BOOL",
-    "CONTINUE",
+    "ELSIF", "CASE",  "OF",  "END_CASE", "EXIT", "ARRAY",
+    "REAL",  "LREAL", "INT", "DINT",     "BOOL", "CONTINUE",
 };
 struct BuiltinName {
   std::string_view name;
   Builtin builtin;
 };
 constexpr BuiltinName kBuiltins[] = {
-    {"CLRDLONG", Builtin::Clrdlong}, {"SETDLONG", Builtin::Setdlong}, {"ADDDLONG", Builtin::Adddlong},
-    {"SUBDLONG", Builtin::Subdlong}, {"MULDIV", Builtin::Muldiv},     {"LIMITW", Builtin::Limitw},
-    {"XREAD", Builtin::Xread},       {"XWRITE", Builtin::Xwrite},     {"COMMAND", Builtin::Command},
-    {"PRINTF", Builtin::Printf},
+    {"CLRDLONG", Builtin::Clrdlong}, {"SETDLONG", Builtin::Setdlong},
+    {"ADDDLONG", Builtin::Adddlong}, {"SUBDLONG", Builtin::Subdlong},
+    {"MULDIV", Builtin::Muldiv},     {"LIMITW", Builtin::Limitw},
+    {"XREAD", Builtin::Xread},       {"XWRITE", Builtin::Xwrite},
+    {"COMMAND", Builtin::Command},   {"PRINTF", Builtin::Printf},
 };
 struct ProgramInfo {
   std::string_view name;
@@ -99,8 +100,10 @@ std::optional<Error> name_problem(std::string_view name) {
   for (char c : name)
     if (c == '_') return Error::BadCharacter;
   const std::string u = upper(name);
-  if (is_keyword(u) || is_unsupported_word(u) || builtin_of(u) || program_of(u)) return Error::ReservedName;
-  if (const AsciiEntry* e = find_ascii(u); e != nullptr && !user_variable_number(u)) return Error::ReservedName;
+  if (is_keyword(u) || is_unsupported_word(u) || builtin_of(u) || program_of(u))
+    return Error::ReservedName;
+  if (const AsciiEntry* e = find_ascii(u); e != nullptr && !user_variable_number(u))
+    return Error::ReservedName;
   return std::nullopt;
 }
 

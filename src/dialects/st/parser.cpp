@@ -25,7 +25,10 @@ const std::vector<std::vector<Level>> kLevels = {
     {{Tok::Caret, nullptr, Op::BXor}},
     {{Tok::Amp, nullptr, Op::BAnd}},
     {{Tok::Eq, nullptr, Op::Eq}, {Tok::Ne, nullptr, Op::Ne}},
-    {{Tok::Gt, nullptr, Op::Gt}, {Tok::Ge, nullptr, Op::Ge}, {Tok::Lt, nullptr, Op::Lt}, {Tok::Le, nullptr, Op::Le}},
+    {{Tok::Gt, nullptr, Op::Gt},
+     {Tok::Ge, nullptr, Op::Ge},
+     {Tok::Lt, nullptr, Op::Lt},
+     {Tok::Le, nullptr, Op::Le}},
     {{Tok::Shr, nullptr, Op::Shr}, {Tok::Shl, nullptr, Op::Shl}},
     {{Tok::Plus, nullptr, Op::Add}, {Tok::Minus, nullptr, Op::Sub}},
     {{Tok::Star, nullptr, Op::Mul}, {Tok::Slash, nullptr, Op::Div}, {Tok::Ident, "MOD", Op::Mod}},
@@ -52,7 +55,9 @@ class Parser {
     if (i_ < t_.size() - 1) ++i_;
     return t;
   }
-  std::string word(size_t k = 0) const { return peek(k).kind == Tok::Ident ? upper(peek(k).text) : std::string(); }
+  std::string word(size_t k = 0) const {
+    return peek(k).kind == Tok::Ident ? upper(peek(k).text) : std::string();
+  }
   bool at_word(const char* w) const { return word() == w; }
   bool accept(Tok k) {
     if (peek().kind != k) return false;
@@ -67,12 +72,14 @@ class Parser {
   // A syntax error right after a line that has an error already is its consequence: not
   // reported again.
   [[noreturn]] void fail(Error e, size_t offset, const std::string& note = {}) {
-    if (!(e == Error::Syntax && i_ > 0 && reporter_.line_has_error(t_[i_ - 1].line))) reporter_.error(e, offset, note);
+    if (!(e == Error::Syntax && i_ > 0 && reporter_.line_has_error(t_[i_ - 1].line)))
+      reporter_.error(e, offset, note);
     throw Failed{};
   }
   // A missing THEN or DO: reported, and the body parsed as if it were there.
   void want_word(const char* w) {
-    if (!accept_word(w)) reporter_.error(Error::Syntax, peek().offset, std::string("expected ") + w);
+    if (!accept_word(w))
+      reporter_.error(Error::Syntax, peek().offset, std::string("expected ") + w);
   }
   void expect(Tok k, const char* what) {
     if (!accept(k)) fail(Error::Syntax, peek().offset, std::string("expected ") + what);
@@ -97,11 +104,14 @@ class Parser {
   }
   uint32_t variable(const Token& t) {
     const std::string u = upper(t.text);
-    if (is_unsupported_word(u)) fail(Error::Unsupported, t.offset, "'" + t.text + "' is not implemented");
-    if (is_keyword(u) || builtin_of(u)) fail(Error::Syntax, t.offset, "'" + t.text + "' is a keyword");
+    if (is_unsupported_word(u))
+      fail(Error::Unsupported, t.offset, "'" + t.text + "' is not implemented");
+    if (is_keyword(u) || builtin_of(u))
+      fail(Error::Syntax, t.offset, "'" + t.text + "' is a keyword");
     auto it = globals_.find(t.text);
     if (it == globals_.end()) {
-      if (auto e = name_problem(t.text); e && *e != Error::ReservedName) fail(*e, t.offset, "'" + t.text + "'");
+      if (auto e = name_problem(t.text); e && *e != Error::ReservedName)
+        fail(*e, t.offset, "'" + t.text + "'");
       fail(Error::Undeclared, t.offset, "'" + t.text + "'");
     }
     return it->second;
@@ -116,7 +126,8 @@ class Parser {
       if (w == "BYTE" || w == "WORD" || w == "LONG" || w == "DLONG") return declaration();
       if (w == "PROGRAM") return routine(true);
       if (w == "FUNCTION" && peek(1).kind != Tok::LParen) return routine(false);
-      if (is_unsupported_word(w)) fail(Error::Unsupported, first.offset, "'" + first.text + "' is not implemented");
+      if (is_unsupported_word(w))
+        fail(Error::Unsupported, first.offset, "'" + first.text + "' is not implemented");
       fail(Error::CodeOutsideProgram, first.offset);
     } catch (Failed&) {
       recover(line);
@@ -126,8 +137,10 @@ class Parser {
   void declaration() {
     const std::string w = word();
     next();
-    const VarType type = w == "BYTE" ? VarType::Byte : w == "WORD" ? VarType::Word : w == "LONG" ? VarType::Long
-                                                                                                  : VarType::Dlong;
+    const VarType type = w == "BYTE"   ? VarType::Byte
+                         : w == "WORD" ? VarType::Word
+                         : w == "LONG" ? VarType::Long
+                                       : VarType::Dlong;
     // A bad name is reported and declared all the same, so its uses give no more errors.
     do {
       const Token& t = next();
@@ -136,8 +149,10 @@ class Parser {
         reporter_.error(Error::DeclaredTwice, t.offset, "'" + t.text + "'");
         continue;
       }
-      if (functions_.count(t.text) != 0) reporter_.error(Error::DeclaredTwice, t.offset, "'" + t.text + "' is a function");
-      else if (auto e = name_problem(t.text)) reporter_.error(*e, t.offset, "'" + t.text + "'");
+      if (functions_.count(t.text) != 0)
+        reporter_.error(Error::DeclaredTwice, t.offset, "'" + t.text + "' is a function");
+      else if (auto e = name_problem(t.text))
+        reporter_.error(*e, t.offset, "'" + t.text + "'");
       globals_[t.text] = static_cast<uint32_t>(p_.globals.size());
       p_.globals.push_back({t.text, type, false});
     } while (accept(Tok::Comma));
@@ -166,10 +181,14 @@ class Parser {
       r.name = name_token.text;
     } else {
       r.name = name_token.text;
-      if (auto e = name_problem(r.name)) refuse(*e, "'" + r.name + "'");
-      else if (functions_.count(r.name) != 0) refuse(Error::FunctionUnknown, "'" + r.name + "' defined twice");
-      else if (globals_.count(r.name) != 0) refuse(Error::DeclaredTwice, "'" + r.name + "' is a variable");
-      else functions_.insert(r.name);
+      if (auto e = name_problem(r.name))
+        refuse(*e, "'" + r.name + "'");
+      else if (functions_.count(r.name) != 0)
+        refuse(Error::FunctionUnknown, "'" + r.name + "' defined twice");
+      else if (globals_.count(r.name) != 0)
+        refuse(Error::DeclaredTwice, "'" + r.name + "' is a variable");
+      else
+        functions_.insert(r.name);
     }
     const char* end = is_program ? "END_PROGRAM" : "END_FUNCTION";
     current_ = &r;
@@ -177,7 +196,8 @@ class Parser {
     gotos_.clear();
     statement_count_ = 0;
     r.body = block({end});
-    if (!accept_word(end)) reporter_.error(Error::Syntax, peek().offset, std::string("expected ") + end);
+    if (!accept_word(end))
+      reporter_.error(Error::Syntax, peek().offset, std::string("expected ") + end);
     accept(Tok::Semi);
     resolve_gotos(r);
     current_ = nullptr;
@@ -204,8 +224,8 @@ class Parser {
       for (const char* e : ends)
         if (w == e) return out;
       if (w == "END_PROGRAM" || w == "END_FUNCTION" || w == "PROGRAM" ||
-          (w == "FUNCTION" && peek(1).kind != Tok::LParen) || w == "BYTE" || w == "WORD" || w == "LONG" ||
-          w == "DLONG") {
+          (w == "FUNCTION" && peek(1).kind != Tok::LParen) || w == "BYTE" || w == "WORD" ||
+          w == "LONG" || w == "DLONG") {
         return out;  // the caller reports what is missing
       }
       const int line = peek().line;
@@ -264,7 +284,8 @@ class Parser {
     }
     if (w == "FUNCTION") return call_statement();
     if (auto b = builtin_of(w)) return builtin_statement(*b);
-    if (is_unsupported_word(w)) fail(Error::Unsupported, t.offset, "'" + t.text + "' is not implemented");
+    if (is_unsupported_word(w))
+      fail(Error::Unsupported, t.offset, "'" + t.text + "' is not implemented");
     if (is_keyword(w)) fail(Error::Syntax, t.offset, "'" + t.text + "' cannot start a statement");
     return assignment();
   }
@@ -278,8 +299,10 @@ class Parser {
     s.name = t.text;
     if (!first_on_line)
       fail(Error::BadLabel, t.offset, "'" + t.text + "' is not at the start of its line");
-    if (labels_.count(t.text) != 0) fail(Error::BadLabel, t.offset, "'" + t.text + "' defined twice");
-    if (auto e = name_problem(t.text); e && *e != Error::ReservedName) fail(*e, t.offset, "'" + t.text + "'");
+    if (labels_.count(t.text) != 0)
+      fail(Error::BadLabel, t.offset, "'" + t.text + "' defined twice");
+    if (auto e = name_problem(t.text); e && *e != Error::ReservedName)
+      fail(*e, t.offset, "'" + t.text + "'");
     labels_[t.text] = statement_count_;
     return add(std::move(s));
   }
@@ -299,7 +322,8 @@ class Parser {
     const Token& t = next();
     Stmt s = begin(Stmt::Kind::Assign, t);
     s.target = variable(t);
-    if (p_.globals[s.target].type == VarType::Dlong) fail(Error::DlongMisuse, t.offset, "'" + t.text + "'");
+    if (p_.globals[s.target].type == VarType::Dlong)
+      fail(Error::DlongMisuse, t.offset, "'" + t.text + "'");
     expect(Tok::Assign, "':='");
     s.expr = expression();
     check_store(s.target, s.expr);
@@ -316,7 +340,8 @@ class Parser {
     const int32_t lo = type == VarType::Byte ? -128 : type == VarType::Word ? -32768 : INT32_MIN;
     const int32_t hi = type == VarType::Byte ? 127 : type == VarType::Word ? 32767 : INT32_MAX;
     if (e.value < lo || e.value > hi)
-      fail(Error::ConstantRange, e.offset, std::to_string(e.value) + " does not fit " + p_.globals[target].name);
+      fail(Error::ConstantRange, e.offset,
+           std::to_string(e.value) + " does not fit " + p_.globals[target].name);
   }
 
   // A condition that fails is reported and skipped up to `until` on its line, so the block
@@ -379,7 +404,8 @@ class Parser {
     const Token& v = next();
     if (v.kind != Tok::Ident) fail(Error::Syntax, v.offset, "expected the loop variable");
     s.target = variable(v);
-    if (p_.globals[s.target].type == VarType::Dlong) fail(Error::DlongMisuse, v.offset, "'" + v.text + "'");
+    if (p_.globals[s.target].type == VarType::Dlong)
+      fail(Error::DlongMisuse, v.offset, "'" + v.text + "'");
     expect(Tok::Assign, "':='");
     s.expr = expression();
     expect_word("TO");
@@ -388,7 +414,8 @@ class Parser {
       const int e = expression();
       const Expr& step = p_.exprs[static_cast<size_t>(e)];
       if (step.kind != Expr::Kind::Const) fail(Error::Syntax, step.offset, "BY takes a constant");
-      if (step.value == 0) reporter_.error(Error::ConstantRange, step.offset, "the step of FOR must not be 0");
+      if (step.value == 0)
+        reporter_.error(Error::ConstantRange, step.offset, "the step of FOR must not be 0");
       s.step = step.value == 0 ? 1 : step.value;
     }
     code_line(s.line);
@@ -454,7 +481,8 @@ class Parser {
     if (b == Builtin::Xread || b == Builtin::Xwrite || b == Builtin::Command) {
       if (current_->access_at < 0) current_->access_at = static_cast<long>(s.offset);
     }
-    if (b == Builtin::Printf && current_->printf_at < 0) current_->printf_at = static_cast<long>(s.offset);
+    if (b == Builtin::Printf && current_->printf_at < 0)
+      current_->printf_at = static_cast<long>(s.offset);
     return add(std::move(s));
   }
 
@@ -473,7 +501,9 @@ class Parser {
 
   const Level* match(size_t level) const {
     for (const Level& l : kLevels[level]) {
-      if (l.word != nullptr ? (peek().kind == Tok::Ident && word() == l.word) : peek().kind == l.tok) return &l;
+      if (l.word != nullptr ? (peek().kind == Tok::Ident && word() == l.word)
+                            : peek().kind == l.tok)
+        return &l;
     }
     return nullptr;
   }
@@ -510,10 +540,14 @@ class Parser {
   int unary() {
     const Token& t = peek();
     Op op;
-    if (t.kind == Tok::Minus) op = Op::Neg;
-    else if (word() == "NOT") op = Op::Not;
-    else if (word() == "BNOT") op = Op::Bnot;
-    else return primary();
+    if (t.kind == Tok::Minus)
+      op = Op::Neg;
+    else if (word() == "NOT")
+      op = Op::Not;
+    else if (word() == "BNOT")
+      op = Op::Bnot;
+    else
+      return primary();
     next();
     if (op == Op::Neg && peek().kind == Tok::Number) {
       const Token& n = next();
@@ -560,11 +594,14 @@ class Parser {
         }
         e.kind = Expr::Kind::Var;
         e.global = variable(t);
-        if (p_.globals[e.global].type == VarType::Dlong) fail(Error::DlongMisuse, t.offset, "'" + t.text + "'");
+        if (p_.globals[e.global].type == VarType::Dlong)
+          fail(Error::DlongMisuse, t.offset, "'" + t.text + "'");
         return make(e);
       }
-      case Tok::String: fail(Error::Syntax, t.offset, "a string is no value");
-      default: fail(Error::Syntax, t.offset, "expected a value");
+      case Tok::String:
+        fail(Error::Syntax, t.offset, "a string is no value");
+      default:
+        fail(Error::Syntax, t.offset, "expected a value");
     }
   }
 
@@ -590,6 +627,8 @@ class Parser {
 
 }  // namespace
 
-Program parse(const std::vector<Token>& tokens, Reporter& reporter) { return Parser(tokens, reporter).run(); }
+Program parse(const std::vector<Token>& tokens, Reporter& reporter) {
+  return Parser(tokens, reporter).run();
+}
 
 }  // namespace uprog::st

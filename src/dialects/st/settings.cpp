@@ -27,16 +27,21 @@ void Firmware::defaults() {
 std::string Firmware::saved_text() const {
   std::ostringstream out;
   for (const auto& [name, value] : values_) {
-    if (name == "MSG") out << name << ' ' << msg_ << '\n';
-    else if (name == "PROMPT") out << name << ' ' << prompt_ << '\n';
-    else if (name == "OPMODE") out << name << ' ' << opmode_ << '\n';
-    else out << name << ' ' << value << '\n';
+    if (name == "MSG")
+      out << name << ' ' << msg_ << '\n';
+    else if (name == "PROMPT")
+      out << name << ' ' << prompt_ << '\n';
+    else if (name == "OPMODE")
+      out << name << ' ' << opmode_ << '\n';
+    else
+      out << name << ' ' << value << '\n';
   }
-  for (int n = 1; n <= kUserVariables; ++n) out << user_variable_name(n) << ' ' << user_vars_[static_cast<size_t>(n - 1)] << '\n';
+  for (int n = 1; n <= kUserVariables; ++n)
+    out << user_variable_name(n) << ' ' << user_vars_[static_cast<size_t>(n - 1)] << '\n';
   for (const auto& [nr, t] : tasks_) {
     if (nr >= 1 && nr <= 180)
-      out << "ORDER " << nr << ' ' << t.p << ' ' << t.v << ' ' << t.c << ' ' << t.acc << ' ' << t.dec << ' ' << t.a2 << ' '
-          << t.d2 << ' ' << t.fn << ' ' << t.ft << '\n';
+      out << "ORDER " << nr << ' ' << t.p << ' ' << t.v << ' ' << t.c << ' ' << t.acc << ' '
+          << t.dec << ' ' << t.a2 << ' ' << t.d2 << ' ' << t.fn << ' ' << t.ft << '\n';
   }
   return out.str();
 }
@@ -50,7 +55,8 @@ void Firmware::apply_saved(const std::string& text) {
     if (name == "ORDER") {
       int32_t nr = 0;
       MotionTask t;
-      if (words >> nr >> t.p >> t.v >> t.c >> t.acc >> t.dec >> t.a2 >> t.d2 >> t.fn >> t.ft && nr >= 1 && nr <= 180) {
+      if (words >> nr >> t.p >> t.v >> t.c >> t.acc >> t.dec >> t.a2 >> t.d2 >> t.fn >> t.ft &&
+          nr >= 1 && nr <= 180) {
         t.defined = true;
         tasks_[nr] = t;
       }
@@ -58,11 +64,16 @@ void Firmware::apply_saved(const std::string& text) {
     }
     int32_t value = 0;
     if (!(words >> value)) continue;
-    if (name == "MSG") msg_ = value >= 0 && value <= 2 ? value : 0;
-    else if (name == "PROMPT") prompt_ = value != 0 ? 1 : 0;
-    else if (name == "OPMODE") opmode_ = value;
-    else if (auto n = user_variable_number(name)) user_vars_[static_cast<size_t>(*n - 1)] = value;
-    else if (values_.count(name) != 0) values_[name] = value;
+    if (name == "MSG")
+      msg_ = value >= 0 && value <= 2 ? value : 0;
+    else if (name == "PROMPT")
+      prompt_ = value != 0 ? 1 : 0;
+    else if (name == "OPMODE")
+      opmode_ = value;
+    else if (auto n = user_variable_number(name))
+      user_vars_[static_cast<size_t>(*n - 1)] = value;
+    else if (values_.count(name) != 0)
+      values_[name] = value;
   }
 }
 
@@ -70,7 +81,8 @@ int32_t Firmware::save() {
   sync_user_variables_out();
   const std::string text = saved_text();
   std::string error;
-  if (!runtime_.flash().write(kSettingsRecord, std::span(reinterpret_cast<const uint8_t*>(text.data()), text.size()),
+  if (!runtime_.flash().write(kSettingsRecord,
+                              std::span(reinterpret_cast<const uint8_t*>(text.data()), text.size()),
                               &error)) {
     return kErrStorage;
   }

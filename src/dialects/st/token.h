@@ -8,9 +8,31 @@
 namespace uprog::st {
 
 enum class Tok : uint8_t {
-  End, Ident, Number, String,
-  Assign, Colon, Semi, Comma, LParen, RParen,
-  Plus, Minus, Star, Slash, Lt, Le, Gt, Ge, Eq, Ne, Amp, Bar, Caret, Shl, Shr,
+  End,
+  Ident,
+  Number,
+  String,
+  Assign,
+  Colon,
+  Semi,
+  Comma,
+  LParen,
+  RParen,
+  Plus,
+  Minus,
+  Star,
+  Slash,
+  Lt,
+  Le,
+  Gt,
+  Ge,
+  Eq,
+  Ne,
+  Amp,
+  Bar,
+  Caret,
+  Shl,
+  Shr,
 };
 
 struct Token {

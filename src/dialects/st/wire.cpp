@@ -39,15 +39,19 @@ void S300Wire::write_line_end(std::string& out) const {
 void S300Wire::write_echo(std::string_view bytes, std::string& out) const {
   if (!echoes()) return;
   for (char c : bytes) {
-    if (c == '\r') out += "\r\n";
-    else if (c != '\n') out.push_back(c);
+    if (c == '\r')
+      out += "\r\n";
+    else if (c != '\n')
+      out.push_back(c);
   }
 }
 
 void S300Wire::write_output(std::string_view text, std::string& out) const {
   for (char c : text) {
-    if (c == '\n') out += "\r\n";
-    else out.push_back(c);
+    if (c == '\n')
+      out += "\r\n";
+    else
+      out.push_back(c);
   }
 }
 
