@@ -11,6 +11,7 @@
 
 #include "dialect/line_framer.h"
 #include "dialect/semicolon_wire.h"
+#include "echo_service.h"
 #include "transport/answer_reader.h"
 #include "transport/echo_filter.h"
 #include "transport/host_session.h"
@@ -36,22 +37,6 @@ class EchoingWire final : public uprog::dialect::WireForm {
  private:
   uprog::dialect::SemicolonWire plain_;
   bool echo_;
-};
-
-// Answers every line with its own text, and an error for lines starting with '!'; its wire is
-// the semicolon wire with the framing the input chose.
-class EchoService final : public uprog::transport::LineService {
- public:
-  EchoService(uprog::dialect::FramerOptions options, bool echo) : wire_(options, echo) {}
-  std::vector<uprog::transport::Reply> handle_line(std::string_view line) override {
-    if (!line.empty() && line[0] == '!') return {{std::string(line.substr(1)), 19}};
-    return {{std::string(line), 0}};
-  }
-  void advance(std::uint32_t) override {}
-  const uprog::dialect::WireForm& wire() const override { return wire_; }
-
- private:
-  EchoingWire wire_;
 };
 
 }  // namespace
@@ -82,7 +67,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (const Frame& f : a)
     if (f.kind == Frame::Kind::kLine && f.text.size() > options.max_line_length) abort();
 
-  EchoService service(options, echo);
+  EchoService<EchoingWire> service(options, echo);
   HostSession session(service);
   std::string wire;
   for (size_t at = 0; at < bytes.size(); at += chunk)

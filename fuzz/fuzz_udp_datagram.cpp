@@ -11,26 +11,8 @@
 #include <vector>
 
 #include "dialect/semicolon_wire.h"
+#include "echo_service.h"
 #include "transport/udp_server.h"
-
-namespace {
-
-// Answers every line with its own text, and an error for lines starting with '!'.
-class EchoService final : public uprog::transport::LineService {
- public:
-  explicit EchoService(uprog::dialect::FramerOptions options) : wire_(options) {}
-  std::vector<uprog::transport::Reply> handle_line(std::string_view line) override {
-    if (!line.empty() && line[0] == '!') return {{std::string(line.substr(1)), 19}};
-    return {{std::string(line), 0}};
-  }
-  void advance(std::uint32_t) override {}
-  const uprog::dialect::WireForm& wire() const override { return wire_; }
-
- private:
-  uprog::dialect::SemicolonWire wire_;
-};
-
-}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace uprog::transport;
@@ -40,7 +22,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   options.max_line_length = 1 + (data[0] & 0x3f) * 8;
   options.semicolon_ends_line = (data[0] & 0x40) == 0;
   options.answer_empty_expressions = (data[0] & 0x80) != 0;
-  EchoService service(options);
+  EchoService<uprog::dialect::SemicolonWire> service(options);
   DatagramHost peer(service);
   size_t at = 1;
   while (at < size) {
