@@ -37,9 +37,6 @@ namespace {
 constexpr size_t kMaxLocals = 92;
 constexpr int64_t kMaxGlobalWords = 2040;
 
-Kind kind_of(VarType t) { return t == VarType::Int ? Kind::Int : Kind::Float; }
-Kind kind_of(ValueType t) { return t == ValueType::Int ? Kind::Int : Kind::Float; }
-
 // Where an expression begins (a binary expression's own offset is its operator's).
 uint32_t start_of(const Expr& e) {
   const Expr* x = &e;
@@ -74,6 +71,18 @@ const CommandInfo* command_named(std::string_view name) {
   return it == index.by_name.end() ? nullptr : it->second;
 }
 
+bool const_index(const Expr& e, int32_t& out) {
+  if (e.kind == ExprKind::IntLit) {
+    out = e.int_value;
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+namespace detail {
+
 // A function's own names (locals, local labels): few, looked up often, cleared for every function.
 // A short list searched in order beats a hash table that allocates a node per name.
 class NameList {
@@ -96,18 +105,6 @@ class NameList {
  private:
   std::vector<std::pair<std::string_view, int>> items_;
 };
-
-bool const_index(const Expr& e, int32_t& out) {
-  if (e.kind == ExprKind::IntLit) {
-    out = e.int_value;
-    return true;
-  }
-  return false;
-}
-
-}  // namespace
-
-namespace detail {
 
 class Checker {
  public:

@@ -23,8 +23,6 @@ constexpr uint32_t kZeroForStep = 5;
 constexpr uint32_t kMicrosecondsPerMs = 1000;
 
 ValueType value_type(VarType t) { return t == VarType::Int ? ValueType::Int : ValueType::Float; }
-Kind kind_of(VarType t) { return t == VarType::Int ? Kind::Int : Kind::Float; }
-Kind kind_of(ValueType t) { return t == ValueType::Int ? Kind::Int : Kind::Float; }
 Kind operand_kind(Kind k) { return k == Kind::None ? Kind::Int : k; }
 
 class Gen {
