@@ -624,10 +624,14 @@ class Checker {
     if (!is_array) {
       int32_t k = 0;
       const bool constant = const_index(index, k);
-      // Manual 1.11: a scalar global indexed [0] is the scalar; other constant indices are
-      // error 58 (as in the table's example); a computed index is checked when it runs.
-      if ((constant && k != 0) || (!constant && e.ref == RefKind::Local))
-        error(Error::VariableIsNotArray, e.offset, e.name);
+      // A scalar global indexed [0] is the scalar. Inside a function any other index of a
+      // global scalar is checked when it runs: manual 1.11's note and example 2 ("the compiler
+      // will not report about any error. The program will be terminated"). In global code a
+      // constant one is error 58, the table's example (`##START a1[1] = 0`); a local scalar
+      // takes no other index (docs/dialects/gold.md, decision 8).
+      const bool run_time = e.ref == RefKind::Global && (!constant || current_ >= 0);
+      if (constant && k != 0 && !run_time) error(Error::VariableIsNotArray, e.offset, e.name);
+      if (!constant && e.ref == RefKind::Local) error(Error::VariableIsNotArray, e.offset, e.name);
     }
   }
 
