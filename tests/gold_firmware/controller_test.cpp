@@ -187,6 +187,7 @@ TEST(controller, CorruptStoredImageIsRefusedAtBoot) {
 TEST(controller, UnlimitedBudgetRunsUntilAWait) {
   ControllerOptions o = gold_options();
   o.timing.unlimited = true;
+  o.timing.background_us = 50;  // a background pass per servo cycle: one slice per advance(50)
   Controller c(o);
   ASSERT_TRUE(c.download(compile_bytes("int i, done\nfunction main()\nfor i = 1:1000\nend\ndone = "
                                        "1\nwait(100)\ndone = 2\nreturn\n"))
@@ -205,6 +206,7 @@ TEST(controller, UnlimitedBudgetCapsABusyLoopPerCycle) {
   ControllerOptions o = gold_options();
   o.timing.unlimited = true;
   o.timing.unlimited_line_cap = 3000;
+  o.timing.background_us = 50;  // a background pass per servo cycle: one slice per advance(50)
   Controller c(o);
   ASSERT_TRUE(
       c.download(compile_bytes("int i\nfunction main()\nwhile (1)\ni = i + 1\nend\nreturn\n")).ok);
@@ -230,6 +232,7 @@ TEST(controller, ALoopWithoutALineEndDoesNotHangTheDrive) {
                          "spin.s", image, errors));
   ControllerOptions o = gold_options();
   o.timing.back_jump_cap = 5000;
+  o.timing.background_us = 50;  // a background pass per servo cycle: one slice per advance(50)
   Controller c(o);
   ASSERT_TRUE(c.download(bytecode::encode(image)).ok);
   ASSERT_TRUE(load(c));
