@@ -47,14 +47,16 @@ struct FaultName {
   const char* text;
   uint32_t bits;
 };
+// ERRCODE's texts are the reference's (Kollmorgen's S300/S700 PROFIBUS manual, PNU 1001, the
+// manufacturer's error register: "Error F08: Overspeed", ...; docs/dialects/st.md, "Faults").
 constexpr FaultName kAxisFaults[] = {
-    {1, "temperature", drive::kFaultTemperature},
-    {2, "overvoltage", drive::kFaultOvervoltage},
-    {3, "following error", drive::kFaultFollowingError},
-    {4, "feedback", drive::kFaultFeedback},
-    {5, "undervoltage", drive::kFaultUndervoltage},
-    {8, "speed limit", drive::kFaultSpeedLimit | drive::kFaultVelocityError},
-    {14, "overcurrent", drive::kFaultOvercurrent | drive::kFaultShort},
+    {1, "Heatsink temperature", drive::kFaultTemperature},
+    {2, "Overvoltage", drive::kFaultOvervoltage},
+    {3, "Following error", drive::kFaultFollowingError},
+    {4, "Feedback", drive::kFaultFeedback},
+    {5, "Undervoltage", drive::kFaultUndervoltage},
+    {8, "Overspeed", drive::kFaultSpeedLimit | drive::kFaultVelocityError},
+    {14, "Output stage", drive::kFaultOvercurrent | drive::kFaultShort},
 };
 
 // The values a plain parameter takes: the SERVOSTAR-family reference's ranges where uprog
@@ -290,7 +292,7 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     std::vector<Answer> out;
     record_axis_faults();
     for (int f : faults_) {
-      const char* text = f == 31 ? "run-time error" : f == 32 ? "compile/load/overrun" : "fault";
+      const char* text = f == 31 ? "run-time error" : f == 32 ? "System error" : "fault";
       for (const FaultName& n : kAxisFaults)
         if (n.number == f) text = n.text;
       out.push_back(Answer{fmt::format("F{:02} {}", f, text), 0});
