@@ -83,6 +83,12 @@ constexpr AsciiEntry kTable[] = {
     {"ERND", K::Int, A::ReadWrite, INT32_MAX, false, true},
     {"PRD", K::Int, A::Read, 0, false, false},
     {"VUNIT", K::Int, A::ReadWrite, 0, false, true},
+    // The digital inputs' functions (reference, "IN1MODE"…: written disabled, taken at the next
+    // boot): 2 PSTOP, 3 NSTOP, 12 the reference switch, for MH's switch types.
+    {"IN1MODE", K::Int, A::ReadWrite, 0, true, true},
+    {"IN2MODE", K::Int, A::ReadWrite, 0, true, true},
+    {"IN3MODE", K::Int, A::ReadWrite, 0, true, true},
+    {"IN4MODE", K::Int, A::ReadWrite, 0, true, true},
 };
 
 bool same_ignoring_case(std::string_view a, std::string_view b) {

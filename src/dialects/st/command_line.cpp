@@ -68,6 +68,7 @@ std::pair<int64_t, int64_t> range_of(const std::string& name) {
   if (name == "NREF") return {0, 20};
   if (name == "DREF") return {0, 2};
   if (name == "VUNIT") return {0, 1};
+  if (name.starts_with("IN") && name.ends_with("MODE")) return {0, 50};
   return {0, INT32_MAX};
 }
 
@@ -171,6 +172,7 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     enabled_ = false;
     next_pending_ = false;
     deferred_ = Deferred{};
+    end_homing();
     return {};
   }
   if (name == "ACTIVE") return {value(axis_->motor_on() ? 1 : 0)};
@@ -226,6 +228,7 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   }
   if (name == "STOP") {
     next_pending_ = false;
+    end_homing();
     jog_until_ns_ = 0;
     axis_->stop();
     return {};
@@ -254,7 +257,7 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   if (name == "MH") {
     const int32_t code = start_homing();
     return code == 0 ? std::vector<Answer>{}
-                     : std::vector{err(code, code == kErrRange    ? "homing type"
+                     : std::vector{err(code, code == kErrRange    ? "homing type or input"
                                              : code == kErrOpmode ? "OPMODE"
                                                                   : "needs enabled")};
   }
