@@ -69,6 +69,8 @@ std::pair<int64_t, int64_t> range_of(const std::string& name) {
   if (name == "DREF") return {0, 2};
   if (name == "VUNIT") return {0, 1};
   if (name.starts_with("IN") && name.ends_with("MODE")) return {0, 50};
+  if (name == "ANOFF1" || name == "ANOFF2") return {-10000, 10000};
+  if (name == "VSCALE1" || name == "VSCALE2") return {-15000, 15000};
   return {0, INT32_MAX};
 }
 
@@ -263,6 +265,12 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   }
   if (name == "SETREF") {
     set_reference();
+    return {};
+  }
+  if (name == "ANIN1" || name == "ANIN2") return {value(analog_input_mv(name[4] - '0'))};
+  if (name == "ANZERO1" || name == "ANZERO2") {
+    // The reference's ANZERO1: with the input short-circuited, the offset found goes to ANOFF1.
+    values_.at(name == "ANZERO1" ? "ANOFF1" : "ANOFF2") = -analog_input_mv(name[6] - '0');
     return {};
   }
   if (name == "PRD") return {value(feedback_within_turn())};

@@ -146,6 +146,11 @@ class Firmware final : public dialect::Firmware, public vm::Host {
     double last_motor = 0.0;   // the motor's position a cycle ago, for the zero mark
   };
   int32_t start_switch_homing(int32_t nref);
+  // --- the analog inputs (analog.cpp) ---
+  bool world_directive(std::string_view name, std::string_view arg,
+                       std::string& failure) override;
+  int32_t analog_input_mv(int n) const;  // ANIN1/ANIN2: the level, within ±10 V
+  void step_analog_speed();              // OPMODE 1: SW1 × VSCALE1 as the speed command
   void step_switch_homing();
   void head_for(double motor_counts);  // a move at the homing speed to a motor position
   bool homing_input_active() const;
@@ -197,6 +202,9 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   double homing_mark_ = 0;    // that mark, in motor counts
   SwitchHoming switch_homing_;
   std::array<int32_t, 4> input_modes_{};  // IN1MODE…IN4MODE as the last boot took them
+  int32_t ancnfg_ = 0;                     // ANCNFG as the last boot took it
+  std::array<int32_t, 2> analog_mv_{};     // SW1, SW2: the world's levels (a reboot keeps them)
+  std::optional<double> analog_rpm_;       // the speed OPMODE 1 last commanded
   Deferred deferred_;         // a J or MOVE waiting for the end of EN's enable delay
   bool next_pending_ = false;
   int32_t next_task_ = 0;

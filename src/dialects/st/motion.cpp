@@ -201,6 +201,7 @@ void Firmware::step_motion() {
     axis_->stop();
   }
   step_switch_homing();
+  step_analog_speed();
   if (homing_ && !axis_->profiler_moving()) {
     if (axis_->motor_on()) set_reference(homing_mark_);
     homing_ = false;
