@@ -271,6 +271,16 @@ void CyclicTasks::accrue(uint64_t now_ns) {
 }
 
 void CyclicTasks::run_background(vm::Machine& machine, uint64_t now_ns, Report& report) {
+  if (init_done_ && !main_.set()) {
+    // No background to give lines to: the CPU idles after the real-time tasks, every cycle
+    // (the credit would be dropped below; counting it cost a division a cycle).
+    rt_lines_ = 0;
+    credit_lines_ = 0;
+    accrued_ns_ = now_ns;
+    accrued_remainder_ns_ = 0;
+    latch_seconds(machine, now_ns);
+    return;
+  }
   accrue(now_ns);
   if (!init_done_) {
     run_init(machine, report);
