@@ -23,8 +23,7 @@ std::string_view trimmed(std::string_view s) {
 }  // namespace
 
 // `analog N = MV` (N 1 for SW1, 2 for SW2; `analog = MV` is SW1): the input's level in mV.
-bool Firmware::world_directive(std::string_view name, std::string_view arg,
-                               std::string& failure) {
+bool Firmware::world_directive(std::string_view name, std::string_view arg, std::string& failure) {
   if (name != "analog") return false;
   const size_t eq = arg.find('=');
   const std::string_view which = trimmed(arg.substr(0, std::min(eq, arg.size())));
@@ -58,10 +57,10 @@ void Firmware::step_analog_speed() {
   analog_rpm_ = rpm;
   apply_limits();
   drive::Parameters& p = axis_->parameters();
-  p.accel_counts_per_s2 = static_cast<int32_t>(
-      std::clamp(ramp_counts_per_s2(values_.at("ACC")), 1.0, 2147483647.0));
-  p.decel_counts_per_s2 = static_cast<int32_t>(
-      std::clamp(ramp_counts_per_s2(values_.at("DEC")), 1.0, 2147483647.0));
+  p.accel_counts_per_s2 =
+      static_cast<int32_t>(std::clamp(ramp_counts_per_s2(values_.at("ACC")), 1.0, 2147483647.0));
+  p.decel_counts_per_s2 =
+      static_cast<int32_t>(std::clamp(ramp_counts_per_s2(values_.at("DEC")), 1.0, 2147483647.0));
   axis_->set_jog_velocity(static_cast<int32_t>(std::round(rpm_to_counts(rpm))));
   axis_->begin();
 }

@@ -3,12 +3,13 @@
 // hardware limit switch (NREF 4), the zero mark after the switch (NREF 1), and the move back to
 // the reference point found, which then reads ROFFS. The inputs are those IN1MODE…IN4MODE gave
 // a function at the last boot (2 PSTOP, 3 NSTOP, 12 reference).
+#include "drive/homing.h"
+
 #include <algorithm>
 #include <cmath>
 
 #include "dialects/st/firmware.h"
 #include "drive/axis.h"
-#include "drive/homing.h"
 
 namespace uprog::st {
 namespace {
@@ -45,8 +46,8 @@ int32_t Firmware::start_switch_homing(int32_t nref) {
   SwitchHoming h;
   h.direction = dref == 0 ? -1.0 : 1.0;
   h.zero_mark = nref == 1;
-  const int32_t wanted = nref == 4 ? (dref == 0 ? kModeNegativeStop : kModePositiveStop)
-                                   : kModeReference;
+  const int32_t wanted =
+      nref == 4 ? (dref == 0 ? kModeNegativeStop : kModePositiveStop) : kModeReference;
   h.active_low = nref == 4;
   const auto it = std::find(input_modes_.begin(), input_modes_.end(), wanted);
   if (it == input_modes_.end()) return kErrRange;
