@@ -46,6 +46,16 @@ try:
     talk(b"COLDSTART\r", b"COLDSTART\r\nPLC compile\r\nPLCMAIN (size=4)\r\nload factor 0\r\nPLC start\r\n"
                          b"Hello world in the year 2011\r\n-->")
     talk(b"MSG\r", b"MSG\r\n2\r\n-->")
+    # A real host's first jog (issue 39, item 1) on the drive's own wire: CLRFAULT, OPMODE 0,
+    # EN, J 500 back to back; the jog waits for the loops and nothing faults (VLIM 3000,
+    # VOSPD 3600). A download's END without BEGIN is the spec's 12.
+    for command in (b"CLRFAULT", b"OPMODE 0", b"EN", b"J 500"):
+        talk(command + b"\r", command + b"\r\n-->")
+    time.sleep(0.5)
+    talk(b"ERRCODE\r", b"ERRCODE\r\nno error\r\n-->")
+    talk(b"ACTIVE\r", b"ACTIVE\r\n1\r\n-->")
+    talk(b"DIS\r", b"DIS\r\n-->")
+    talk(b"PLCDL END\r", b"PLCDL END\r\n\aERR 12 no download in progress (PLCDL BEGIN first)\r\n-->")
     # `uprog download` on the drive's own wire (issue 39): it reads the echo, BEL ERR and `-->`.
     size = len(open(program, "rb").read())
     r = subprocess.run([uprog, "download", f"127.0.0.1:{port}", program], capture_output=True,

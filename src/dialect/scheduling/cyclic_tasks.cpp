@@ -120,7 +120,7 @@ bool CyclicTasks::start(vm::Machine& machine, uint64_t now_ns) {
   init_done_ = !init_.set();
   start_ns_ = now_ns;
   next_tick_ = 1;
-  first_rt_tick_ = 1;
+  begin_real_time(1);
   accrued_ns_ = now_ns;
   accrued_remainder_ns_ = 0;
   credit_lines_ = 0;
@@ -192,7 +192,11 @@ CyclicTasks::Step CyclicTasks::slice(vm::Machine& machine, uint32_t thread, uint
 CyclicTasks::Flow CyclicTasks::run_tick(vm::Machine& machine, uint64_t tick, Report& report) {
   for (uint32_t i = 0; i < task_count_; ++i) {
     Task& task = tasks_[i];
-    if ((tick - first_rt_tick_) % task.period_ticks != 0) continue;
+    // A tick whose call ended early skipped the tasks after the one that ended it: they wait
+    // for their next period, as (tick - first_rt_tick_) % period_ticks says.
+    while (task.due_tick < tick) task.due_tick += task.period_ticks;
+    if (task.due_tick != tick) continue;
+    task.due_tick += task.period_ticks;
     if (run_task(machine, task, report) == Flow::EndCall) return Flow::EndCall;
   }
   return Flow::Continue;
@@ -267,6 +271,16 @@ void CyclicTasks::accrue(uint64_t now_ns) {
 }
 
 void CyclicTasks::run_background(vm::Machine& machine, uint64_t now_ns, Report& report) {
+  if (init_done_ && !main_.set()) {
+    // No background to give lines to: the CPU idles after the real-time tasks, every cycle
+    // (the credit would be dropped below; counting it cost a division a cycle).
+    rt_lines_ = 0;
+    credit_lines_ = 0;
+    accrued_ns_ = now_ns;
+    accrued_remainder_ns_ = 0;
+    latch_seconds(machine, now_ns);
+    return;
+  }
   accrue(now_ns);
   if (!init_done_) {
     run_init(machine, report);
@@ -291,7 +305,7 @@ void CyclicTasks::end_init(vm::Machine& machine, Report& report) {
   report.add(init_.thread, ThreadEvent::Finished);
   init_done_ = true;
   // The real-time tasks and the background begin together; the rest of this slice is lost.
-  first_rt_tick_ = next_tick_;
+  begin_real_time(next_tick_);
   if (main_.set()) machine.start(main_.thread, main_.routine);
 }
 
@@ -312,6 +326,12 @@ void CyclicTasks::run_main(vm::Machine& machine, Report& report) {
         return;  // a wait, a yield, a breakpoint, an error, not running: the slice ends
     }
   }
+}
+
+// Every task is due at the first real-time tick, then every period after it.
+void CyclicTasks::begin_real_time(uint64_t first_tick) {
+  first_rt_tick_ = first_tick;
+  for (uint32_t i = 0; i < task_count_; ++i) tasks_[i].due_tick = first_tick;
 }
 
 void CyclicTasks::end_pass(vm::Machine& machine) {

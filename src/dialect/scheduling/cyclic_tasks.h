@@ -111,6 +111,7 @@ class CyclicTasks {
   struct Task {
     uint32_t routine = 0;
     uint64_t period_ticks = 0;
+    uint64_t due_tick = 0;  // its next period's tick (counted, not divided: run_tick is hot)
     RunState state = RunState::Ready;
     uint64_t run_lines = 0;
     CyclicTaskStats stats;
@@ -136,6 +137,7 @@ class CyclicTasks {
   void begin_run(vm::Machine& machine, Task& task);
   void end_run(Task& task);
   void end_init(vm::Machine& machine, Report& report);
+  void begin_real_time(uint64_t first_tick);
   void end_pass(vm::Machine& machine);
   bool threads_valid(const vm::Machine& machine) const;
   bool routines_start(vm::Machine& machine) const;

@@ -83,6 +83,22 @@ constexpr AsciiEntry kTable[] = {
     {"ERND", K::Int, A::ReadWrite, INT32_MAX, false, true},
     {"PRD", K::Int, A::Read, 0, false, false},
     {"VUNIT", K::Int, A::ReadWrite, 0, false, true},
+    // The digital inputs' functions (reference, "IN1MODE"…: written disabled, taken at the next
+    // boot): 2 PSTOP, 3 NSTOP, 12 the reference switch, for MH's switch types.
+    {"IN1MODE", K::Int, A::ReadWrite, 0, true, true},
+    {"IN2MODE", K::Int, A::ReadWrite, 0, true, true},
+    {"IN3MODE", K::Int, A::ReadWrite, 0, true, true},
+    {"IN4MODE", K::Int, A::ReadWrite, 0, true, true},
+    // The analog inputs SW1 and SW2 (reference, "ANIN1", "ANOFF1", "ANZERO1", "VSCALE1"): the
+    // level in mV, its offset, the offset's zeroing, OPMODE 1's rpm at 10 V.
+    {"ANIN1", K::Int, A::Read, 0, false, false},
+    {"ANIN2", K::Int, A::Read, 0, false, false},
+    {"ANOFF1", K::Int, A::ReadWrite, 0, false, true},
+    {"ANOFF2", K::Int, A::ReadWrite, 0, false, true},
+    {"ANZERO1", K::Command, A::Write, 0, false, false},
+    {"ANZERO2", K::Command, A::Write, 0, false, false},
+    {"VSCALE1", K::Int, A::ReadWrite, 3000, false, true},
+    {"VSCALE2", K::Int, A::ReadWrite, 3000, false, true},
 };
 
 bool same_ignoring_case(std::string_view a, std::string_view b) {

@@ -47,14 +47,16 @@ struct FaultName {
   const char* text;
   uint32_t bits;
 };
+// ERRCODE's texts are the reference's (Kollmorgen's S300/S700 PROFIBUS manual, PNU 1001, the
+// manufacturer's error register: "Error F08: Overspeed", ...; docs/dialects/st.md, "Faults").
 constexpr FaultName kAxisFaults[] = {
-    {1, "temperature", drive::kFaultTemperature},
-    {2, "overvoltage", drive::kFaultOvervoltage},
-    {3, "following error", drive::kFaultFollowingError},
-    {4, "feedback", drive::kFaultFeedback},
-    {5, "undervoltage", drive::kFaultUndervoltage},
-    {8, "speed limit", drive::kFaultSpeedLimit | drive::kFaultVelocityError},
-    {14, "overcurrent", drive::kFaultOvercurrent | drive::kFaultShort},
+    {1, "Heatsink temperature", drive::kFaultTemperature},
+    {2, "Overvoltage", drive::kFaultOvervoltage},
+    {3, "Following error", drive::kFaultFollowingError},
+    {4, "Feedback", drive::kFaultFeedback},
+    {5, "Undervoltage", drive::kFaultUndervoltage},
+    {8, "Overspeed", drive::kFaultSpeedLimit | drive::kFaultVelocityError},
+    {14, "Output stage", drive::kFaultOvercurrent | drive::kFaultShort},
 };
 
 // The values a plain parameter takes: the SERVOSTAR-family reference's ranges where uprog
@@ -66,6 +68,9 @@ std::pair<int64_t, int64_t> range_of(const std::string& name) {
   if (name == "NREF") return {0, 20};
   if (name == "DREF") return {0, 2};
   if (name == "VUNIT") return {0, 1};
+  if (name.starts_with("IN") && name.ends_with("MODE")) return {0, 50};
+  if (name == "ANOFF1" || name == "ANOFF2") return {-10000, 10000};
+  if (name == "VSCALE1" || name == "VSCALE2") return {-15000, 15000};
   return {0, INT32_MAX};
 }
 
@@ -169,6 +174,7 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     enabled_ = false;
     next_pending_ = false;
     deferred_ = Deferred{};
+    end_homing();
     return {};
   }
   if (name == "ACTIVE") return {value(axis_->motor_on() ? 1 : 0)};
@@ -224,6 +230,7 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   }
   if (name == "STOP") {
     next_pending_ = false;
+    end_homing();
     jog_until_ns_ = 0;
     axis_->stop();
     return {};
@@ -252,12 +259,18 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   if (name == "MH") {
     const int32_t code = start_homing();
     return code == 0 ? std::vector<Answer>{}
-                     : std::vector{err(code, code == kErrRange    ? "homing type"
+                     : std::vector{err(code, code == kErrRange    ? "homing type or input"
                                              : code == kErrOpmode ? "OPMODE"
                                                                   : "needs enabled")};
   }
   if (name == "SETREF") {
     set_reference();
+    return {};
+  }
+  if (name == "ANIN1" || name == "ANIN2") return {value(analog_input_mv(name[4] - '0'))};
+  if (name == "ANZERO1" || name == "ANZERO2") {
+    // The reference's ANZERO1: with the input short-circuited, the offset found goes to ANOFF1.
+    values_.at(name == "ANZERO1" ? "ANOFF1" : "ANOFF2") = -analog_input_mv(name[6] - '0');
     return {};
   }
   if (name == "PRD") return {value(feedback_within_turn())};
@@ -290,7 +303,7 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     std::vector<Answer> out;
     record_axis_faults();
     for (int f : faults_) {
-      const char* text = f == 31 ? "run-time error" : f == 32 ? "compile/load/overrun" : "fault";
+      const char* text = f == 31 ? "run-time error" : f == 32 ? "System error" : "fault";
       for (const FaultName& n : kAxisFaults)
         if (n.number == f) text = n.text;
       out.push_back(Answer{fmt::format("F{:02} {}", f, text), 0});

@@ -55,6 +55,13 @@ void Firmware::boot(std::vector<std::string>& messages) {
   defaults();
   load();
   apply_limits();
+  end_homing();
+  // The inputs' functions are read at boot only (the reference's IN1MODE: "switched off and
+  // then on again after an alteration").
+  for (size_t n = 0; n < input_modes_.size(); ++n)
+    input_modes_[n] = values_.at("IN" + std::to_string(n + 1) + "MODE");
+  ancnfg_ = values_.at("ANCNFG");  // also a configuration the reference takes at boot
+  analog_rpm_.reset();
   std::string error;
   source_.reset();
   if (auto bytes = runtime_.flash().read(kSourceRecord, &error)) {

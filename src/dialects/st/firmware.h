@@ -135,6 +135,25 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   void apply_limits();
   bool defer_until_ready(Deferred::Kind kind, int32_t a, int32_t b);
   int32_t start_homing();
+  // MH's switch types (homing.cpp): 1 and 3 to the reference switch, 4 to a limit switch.
+  struct SwitchHoming {
+    enum Phase : uint8_t { kIdle, kLeave, kSearch, kMark, kStop, kReturn } phase = kIdle;
+    int input = 0;            // 1..4
+    bool active_low = false;  // PSTOP and NSTOP are active low, the reference switch high
+    bool zero_mark = false;   // NREF 1: the first zero mark after the switch
+    double direction = -1.0;  // DREF 0 negative, 1 positive
+    double capture = 0.0;     // the reference point (motor counts) once found
+    double last_motor = 0.0;  // the motor's position a cycle ago, for the zero mark
+  };
+  int32_t start_switch_homing(int32_t nref);
+  // --- the analog inputs (analog.cpp) ---
+  bool world_directive(std::string_view name, std::string_view arg, std::string& failure) override;
+  int32_t analog_input_mv(int n) const;  // ANIN1/ANIN2: the level, within ±10 V
+  void step_analog_speed();              // OPMODE 1: SW1 × VSCALE1 as the speed command
+  void step_switch_homing();
+  void head_for(double motor_counts);  // a move at the homing speed to a motor position
+  bool homing_input_active() const;
+  void end_homing();
   void set_reference();
   void set_reference(double at_motor);
   int32_t feedback_within_turn() const;
@@ -180,7 +199,12 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   double target_counts_ = 0;  // the last task's target, exact (between counts in user units)
   bool homing_ = false;       // MH's move to a zero mark is under way
   double homing_mark_ = 0;    // that mark, in motor counts
-  Deferred deferred_;         // a J or MOVE waiting for the end of EN's enable delay
+  SwitchHoming switch_homing_;
+  std::array<int32_t, 4> input_modes_{};  // IN1MODE…IN4MODE as the last boot took them
+  int32_t ancnfg_ = 0;                    // ANCNFG as the last boot took it
+  std::array<int32_t, 2> analog_mv_{};    // SW1, SW2: the world's levels (a reboot keeps them)
+  std::optional<double> analog_rpm_;      // the speed OPMODE 1 last commanded
+  Deferred deferred_;                     // a J or MOVE waiting for the end of EN's enable delay
   bool next_pending_ = false;
   int32_t next_task_ = 0;
   uint64_t next_at_ns_ = 0;

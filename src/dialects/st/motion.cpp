@@ -124,13 +124,16 @@ int32_t Firmware::start_task(int32_t nr) {
 // MH (SERVOSTAR-family reference, "MH", "NREF", "DREF", "VREF"): NREF 0 takes the position
 // where the axis stands as the reference point; NREF 5 moves at VREF (user units/s) in DREF's
 // direction (0 negative, 1 positive, 2 the nearer) to the feedback's next zero mark and takes
-// it. The reference point reads ROFFS. The switch types (1–4) and the others need inputs or a
-// mechanical stop the simulated S300 does not have: MH refuses them (3).
+// it. The reference point reads ROFFS. The switch types 1, 3 and 4 are homing.cpp's; 2 (a zero
+// mark beyond a limit switch), 6 and 7 and above (a mechanical stop, an absolute encoder): MH
+// refuses them (3), docs/dialects/st.md.
 int32_t Firmware::start_homing() {
   if (opmode_ != 8) return kErrOpmode;
   if (!axis_->motor_on()) return kErrNeedsEnabled;
   const int32_t nref = values_.at("NREF");
+  if (nref == 1 || nref == 3 || nref == 4) return start_switch_homing(nref);
   if (nref != 0 && nref != 5) return kErrRange;
+  end_homing();
   next_pending_ = false;
   if (nref == 0) {
     set_reference();
@@ -177,7 +180,10 @@ int32_t Firmware::feedback_within_turn() const {
   const double cpr = axis_->parameters().counts_per_revolution();
   const double motor = axis_->motor_state().position_counts;
   const double within = motor - std::floor(motor / cpr) * cpr;
-  return std::min(1048575, static_cast<int32_t>(within * 1048576.0 / cpr));
+  // A position a whole step of the 20 bits up to the arithmetic's noise (a target reached by
+  // way of an offset, 66535.99999999 for 66536) reads that step.
+  const double steps = std::floor(within * 1048576.0 / cpr + 1e-6);
+  return std::clamp(static_cast<int32_t>(steps), 0, 1048575);
 }
 
 // Each axis step: a jog's time ends; a finished task with a next one starts it after FT ms.
@@ -194,6 +200,8 @@ void Firmware::step_motion() {
     jog_until_ns_ = 0;
     axis_->stop();
   }
+  step_switch_homing();
+  step_analog_speed();
   if (homing_ && !axis_->profiler_moving()) {
     if (axis_->motor_on()) set_reference(homing_mark_);
     homing_ = false;
