@@ -17,8 +17,9 @@ constexpr uint8_t kMagic[4] = {'U', 'P', 'R', 'G'};
 //   3  the line-end mark (EOL's place in every line)
 //   4  CALLFEOL; JCMPMKEOL and ADDMLK in the numbers of DIVU and REMU; the six JNxxFEOL as
 //      JNCMPFEOL (the numbers after it moved: images made before that commit are not format 4)
+//   5  INCMLKEOL (252), a frame's word stepped by a constant; format 4 images mean the same
 constexpr uint16_t kMinFormatVersion = 4;
-constexpr uint16_t kMaxFormatVersion = 4;
+constexpr uint16_t kMaxFormatVersion = 5;
 constexpr uint16_t kFormatVersion = kMaxFormatVersion;  // the version the image writer makes
 constexpr uint32_t kHeaderSize = 36;
 constexpr uint32_t kCrcStart = 16;  // the CRC covers every byte from here to total_size

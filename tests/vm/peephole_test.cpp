@@ -1075,6 +1075,40 @@ big:
   expect_same_line_ends(text, image);
 }
 
+// `n--;` of a parameter kept in the data memory: the word read, stepped and stored at the same
+// address, then the line's end, is one instruction that ends the line.
+TEST(Peephole, StepsAFrameWordInItsLine) {
+  const char* text = R"(
+.global int "frame" 4
+.routine function "main" in=0 out=0 entry=main
+.local int "fp"
+main:
+  PUSHI 1
+  STL 0
+  EOL
+  ADDLK 0 2
+  ADDLK 0 2
+  LDM
+  PUSHI 1
+  SUBI
+  STM
+  EOL
+  RET
+)";
+  const bytecode::Image image = expect_listing(text, {
+      {{"L0:", "PUSHI 1", "STL.eol 0"}, {"L0:", "PUSHI 1", "STL 0", "EOL"}},
+      {{with_b("INCMLKEOL 0", bytecode::pack_local_imm(2, -1))},
+       {"ADDLK 0 2", "ADDLK 0 2", "LDM", "PUSHI 1", "SUBI", "STM", "EOL"}},
+      {{"RET"}, {"RET"}},
+  });
+  LoadedProgram fused;
+  ASSERT_TRUE(fused.load(bytecode::disassemble(image)));
+  fused.machine.start(0, 0);
+  fused.run_to_end();
+  EXPECT_EQ(fused.global("frame", 3).i, -1);  // the word at fp + 2: 0 - 1
+  expect_same_line_ends(text, image);
+}
+
 // An `if` without `else` as PDL and ST compile it: the condition's line ends on both paths
 // ("JZ f; EOL" and an EOL at f), the body jumps past f's EOL. Once the branch ends its line
 // and jumps past that EOL too, nothing reaches it: it is dropped, the body's jump then goes
