@@ -211,6 +211,25 @@ TEST(Peephole, FusesTheLoop) {
   const auto stats = bytecode::optimize(image);
   EXPECT_GT(stats.fused, 0u);
   EXPECT_LT(stats.words_after, stats.words_before);
+  // The same line by line: top moves from 5 to 4, next from 22 to 12, skip from 38 to 22, done
+  // from 40 to 23.
+  expect_listing(kLoop, {
+      {{"L0:", "PUSHI 1", "STL 0", "PUSHI 100", "STL.eol 1"},
+       {"L0:", "PUSHI 1", "STL 0", "PUSHI 100", "STL 1", "EOL"}},
+      {{"L4:", with_b("JGTLL L23", bytecode::pack_locals(0, 1))},
+       {"L5:", "LDL 0", "LDL 1", "LEI", "JZ L40"}},
+      {{"REMLK 0 3", "JZ L12"}, {"LDL 0", "PUSHI 3", "REMI", "PUSHI 0", "NEI", "JZ L22"}},
+      {{"REMLK 0 7", "ADDIGEOL 0"}, {"LDG 0", "LDL 0", "PUSHI 7", "REMI", "ADDI", "STG 0", "EOL"}},
+      {{"L12:", "ADDLK 0 1", "STL 0"}, {"L22:", "LDL 0", "PUSHI -1", "SUBI", "STL 0"}},
+      {{with_b("JGTLK L22", bytecode::pack_local_imm(0, 50))},
+       {"LDL 0", "PUSHI 50", "GTI", "JNZ L38"}},
+      {{with_b("JNLTFGK L22", bytecode::pack_locals(1, 0))},
+       {"LDG 1", "PUSHK 0", "LTF", "JZ L38"}},
+      {{with_b("ADDFGK", bytecode::pack_locals(1, 0)), "STG 1"},
+       {"LDG 1", "PUSHK 0", "ADDF", "STG 1"}},
+      {{"L22:", "JMPEOL L4"}, {"L38:", "EOL", "JMP L5"}},
+      {{"L23:", "RET"}, {"L40:", "RET"}},
+  });
   const std::vector<Op> expected = {
       Op::PUSHI,   Op::STL,      Op::PUSHI, Op::STL,  // the EOL after the STL is its line-end mark
       Op::JGTLL,                                      // LDL i; LDL n; LEI; JZ done
