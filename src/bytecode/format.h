@@ -6,8 +6,21 @@
 namespace uprog::bytecode {
 
 constexpr uint8_t kMagic[4] = {'U', 'P', 'R', 'G'};
-constexpr uint16_t kFormatVersion = 4;  // 2: the dialect, texts and tasks; 3: the line-end mark;
-                                        // 4: CALLFEOL, and JCMPMKEOL and ADDMLK for DIVU and REMU
+// The format's history. An image stored in a drive's flash must outlive a firmware update, so
+// a version's meaning never changes once released: its opcode numbers (opcodes.def, pinned by
+// tests/bytecode/opcode_numbers_test.cpp), its header and its records. A change to any of them
+// is a new version, added at the end of this list; the loader reads every version in
+// [kMinFormatVersion, kMaxFormatVersion] and refuses the others, naming both (LoadError
+// BadVersion, image_format_version()).
+//   1  the header, the sections and the first 90 opcodes
+//   2  the dialect's name, texts (MSG) and tasks
+//   3  the line-end mark (EOL's place in every line)
+//   4  CALLFEOL; JCMPMKEOL and ADDMLK in the numbers of DIVU and REMU; the six JNxxFEOL as
+//      JNCMPFEOL (the numbers after it moved: images made before that commit are not format 4)
+//   5  INCMLKEOL (252), a frame's word stepped by a constant; format 4 images mean the same
+constexpr uint16_t kMinFormatVersion = 4;
+constexpr uint16_t kMaxFormatVersion = 5;
+constexpr uint16_t kFormatVersion = kMaxFormatVersion;  // the version the image writer makes
 constexpr uint32_t kHeaderSize = 36;
 constexpr uint32_t kCrcStart = 16;  // the CRC covers every byte from here to total_size
 constexpr uint32_t kSectionEntrySize = 16;

@@ -75,6 +75,11 @@ const char* load_error_text(LoadError e) {
   return "unknown load error";
 }
 
+uint16_t image_format_version(const uint8_t* bytes, size_t size) {
+  if (bytes == nullptr || size < 6 || std::memcmp(bytes, kMagic, 4) != 0) return 0;
+  return read_u16(bytes + 4);
+}
+
 LoadError load_image(const uint8_t* bytes, size_t size, ImageView& out) {
   out = ImageView{};
   // Records are read field by field as little-endian words by memcpy; a big-endian host
@@ -82,7 +87,9 @@ LoadError load_image(const uint8_t* bytes, size_t size, ImageView& out) {
   if (!host_is_little_endian()) return LoadError::BadVersion;
   if (bytes == nullptr || size < kHeaderSize) return LoadError::TooShort;
   if (std::memcmp(bytes, kMagic, 4) != 0) return LoadError::BadMagic;
-  if (read_u16(bytes + 4) != kFormatVersion || read_u16(bytes + 6) != kHeaderSize)
+  const uint16_t version = read_u16(bytes + 4);
+  if (version < kMinFormatVersion || version > kMaxFormatVersion ||
+      read_u16(bytes + 6) != kHeaderSize)
     return LoadError::BadVersion;
   const uint32_t total = read_u32(bytes + 8);
   if (total != size) return LoadError::BadSize;

@@ -69,6 +69,11 @@ struct ImageView {
   const char* text(uint32_t i) const { return i < texts.size() ? string(texts[i]) : ""; }
 };
 
+// The format version an image's header names, whether this loader reads it or not (the
+// message of a BadVersion refusal names it beside [kMinFormatVersion, kMaxFormatVersion]);
+// 0 when the bytes are no uprog image's header.
+uint16_t image_format_version(const uint8_t* bytes, size_t size);
+
 // Checks and maps `size` bytes. The bytes must outlive the view.
 LoadError load_image(const uint8_t* bytes, size_t size, ImageView& out);
 

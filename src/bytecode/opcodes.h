@@ -209,7 +209,7 @@ constexpr bool ends_line_itself(Op op) {
 constexpr bool is_superinstruction(Op op) {
   const auto in = [op](Op first, Op last) { return op >= first && op <= last; };
   return (in(Op::ADDLK, Op::MULFLLS) && !in(Op::JEQI, Op::JGEI)) || in(Op::STGEOL, Op::JULTLK) ||
-         in(Op::MULIK, Op::INCGJMPLN) || op == Op::ADDMLK;
+         in(Op::MULIK, Op::INCGJMPLN) || op == Op::ADDMLK || op == Op::INCMLKEOL;
 }
 // The instructions that may carry the line-end mark: those that run to completion and go on in
 // the same slice. Not a call or a return (the line would end in another frame), nor one that

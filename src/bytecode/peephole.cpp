@@ -751,6 +751,25 @@ void fuse_pointer_tests(std::vector<Instr>& code, const std::vector<bool>& bound
   code = std::move(fused);
 }
 
+// A frame's word stepped by a constant, ending its line: "ADDMLK l (k, c); STMLK l k; EOL" is
+// INCMLKEOL l (k, c) (`n--;` of a parameter kept in the data memory).
+void fuse_frame_steps(std::vector<Instr>& code, const std::vector<bool>& boundary) {
+  std::vector<Instr> fused;
+  fused.reserve(code.size());
+  for (size_t k = 0; k < code.size(); ++k) {
+    const Instr& add = code[k];
+    if (add.op == Op::ADDMLK && unentered(code, k, 2, boundary) && code[k + 1].op == Op::STMLK &&
+        code[k + 1].a == add.a && code[k + 1].b == packed_first(add.b) &&
+        code[k + 2].op == Op::EOL) {
+      fused.push_back(Instr{add.pc, Op::INCMLKEOL, add.a, add.b});
+      k += 2;
+      continue;
+    }
+    fused.push_back(add);
+  }
+  code = std::move(fused);
+}
+
 // An address of a frame in the data memory and its use: "ADDLK l k; LDM" is LDMLK, and
 // "ADDLK l k; <pure pushes of one value>; STM" is the pushes and STMLK (the address computed
 // after the value, which changes nothing, since the pushes write nothing). An address's
@@ -805,6 +824,7 @@ void fuse_memory_frames(std::vector<Instr>& code, const std::vector<bool>& bound
     k = store;
   }
   fuse_pointer_tests(code, boundary);
+  fuse_frame_steps(code, boundary);
 }
 
 // The old code words control may arrive at other than from the instruction before: jump

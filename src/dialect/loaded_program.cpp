@@ -4,6 +4,21 @@
 #include "bytecode/image_view.h"
 
 namespace uprog::dialect {
+namespace {
+
+// Why the loader refused the bytes; a version outside the range names both (format.h).
+std::string load_refusal(const std::vector<uint8_t>& bytes, bytecode::LoadError e) {
+  std::string why = std::string("not a valid image: ") + bytecode::load_error_text(e);
+  if (e != bytecode::LoadError::BadVersion) return why;
+  const uint16_t version = bytecode::image_format_version(bytes.data(), bytes.size());
+  if (version >= bytecode::kMinFormatVersion && version <= bytecode::kMaxFormatVersion)
+    return why + " " + std::to_string(version) + " (its header has another size)";
+  return why + " " + std::to_string(version) + "; this firmware reads versions " +
+         std::to_string(bytecode::kMinFormatVersion) + " to " +
+         std::to_string(bytecode::kMaxFormatVersion);
+}
+
+}  // namespace
 
 std::unique_ptr<LoadedProgram> LoadedProgram::load(std::vector<uint8_t> bytes,
                                                    const vm::MachineConfig& config, vm::Host& host,
@@ -18,7 +33,7 @@ std::unique_ptr<LoadedProgram> LoadedProgram::load(std::vector<uint8_t> bytes,
   bytecode::ImageView view;
   if (const auto le = bytecode::load_image(p->bytes_.data(), p->bytes_.size(), view);
       le != bytecode::LoadError::Ok) {
-    return fail(std::string("not a valid image: ") + bytecode::load_error_text(le));
+    return fail(load_refusal(p->bytes_, le));
   }
   const std::string_view made_for = view.dialect_name();
   if (!dialect.empty() && !made_for.empty() && made_for != dialect) {
@@ -30,7 +45,7 @@ std::unique_ptr<LoadedProgram> LoadedProgram::load(std::vector<uint8_t> bytes,
                                             p->memory_.data(), p->memory_.size() * 8, host);
   if (!s.ok()) {
     if (s.load != bytecode::LoadError::Ok)
-      return fail(std::string("not a valid image: ") + bytecode::load_error_text(s.load));
+      return fail(load_refusal(p->bytes_, s.load));
     if (s.verify != bytecode::VerifyError::Ok) {
       return fail(std::string("the verifier refused it: ") + bytecode::verify_error_text(s.verify) +
                   " at code word " + std::to_string(s.pc));

@@ -1483,6 +1483,15 @@ op_ADDMLK : {
   ip += 2;
   DISPATCH();
 }
+// A frame's word stepped by a constant, ending the line: `n--;`.
+op_INCMLKEOL : {
+  const uint32_t pair = B();
+  FRAME_WORD(at, A(), bytecode::packed_first(pair));
+  at.i = arith::wrap_add(at.i, bytecode::packed_imm(pair));
+  ip += 2;
+  if (--lines.now == 0) goto out_of_lines;
+  DISPATCH();
+}
 op_MULIK:
   sp[-1].i = arith::wrap_mul(sp[-1].i, IMM());
   ++ip;

@@ -82,6 +82,68 @@ void expect_same_behaviour(const std::string& text, const std::string& name) {
   }
 }
 
+// The code lines of `image`'s disassembly (labels and instructions, without comments).
+std::vector<std::string> code_lines(const bytecode::Image& image) {
+  std::istringstream in(bytecode::disassemble(image));
+  std::vector<std::string> lines;
+  bool in_code = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty()) {
+      in_code = true;
+      continue;
+    }
+    if (!in_code || line.rfind(".line", 0) == 0) continue;
+    if (const size_t comment = line.find("  ;"); comment != std::string::npos) line.erase(comment);
+    if (line.rfind("  ", 0) == 0) line.erase(0, 2);
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+// One step of a fusion's listing: the lines the pass makes of the base lines before them.
+struct Rewrite {
+  std::vector<std::string> fused;
+  std::vector<std::string> base;
+};
+
+// Compares the listing of `text` before and after the peephole pass line by line: the base
+// code is the rewrites' base lines in order, the fused code their fused lines, and the first
+// line that differs is named with the rewrite it belongs to. Then the fused code must behave
+// as the base code does. Returns the fused image.
+bytecode::Image expect_listing(const std::string& text, const std::vector<Rewrite>& rewrites) {
+  LoadedProgram plain;
+  EXPECT_TRUE(plain.load(text));
+  bytecode::Image image = plain.image;
+  bytecode::optimize(image);
+  const std::vector<std::string> base = code_lines(plain.image);
+  const std::vector<std::string> fused = code_lines(image);
+  size_t at_base = 0;
+  size_t at_fused = 0;
+  for (size_t r = 0; r < rewrites.size(); ++r) {
+    const auto where = [&](const char* side, size_t line) {
+      return "rewrite " + std::to_string(r) + ", " + side + " line " + std::to_string(line + 1);
+    };
+    for (const std::string& want : rewrites[r].base) {
+      EXPECT_EQ(at_base < base.size() ? base[at_base] : "<end>", want) << where("base", at_base);
+      ++at_base;
+    }
+    for (const std::string& want : rewrites[r].fused) {
+      EXPECT_EQ(at_fused < fused.size() ? fused[at_fused] : "<end>", want)
+          << where("fused", at_fused) << "\n"
+          << bytecode::disassemble(image);
+      ++at_fused;
+    }
+  }
+  EXPECT_EQ(at_base, base.size()) << "base lines no rewrite names";
+  EXPECT_EQ(at_fused, fused.size()) << "fused lines no rewrite names";
+  expect_same_behaviour(text, "listing");
+  return image;
+}
+
+std::string with_b(const std::string& instruction, uint32_t b) {
+  return instruction + " " + std::to_string(b);
+}
+
 TEST(Peephole, EveryCaseBehavesTheSame) {
   for (const auto& e : fs::directory_iterator(fs::path(UPROG_SOURCE_DIR) / "tests/vm/cases"))
     expect_same_behaviour(read(e.path()), e.path().stem().string());
@@ -149,6 +211,25 @@ TEST(Peephole, FusesTheLoop) {
   const auto stats = bytecode::optimize(image);
   EXPECT_GT(stats.fused, 0u);
   EXPECT_LT(stats.words_after, stats.words_before);
+  // The same line by line: top moves from 5 to 4, next from 22 to 12, skip from 38 to 22, done
+  // from 40 to 23.
+  expect_listing(kLoop, {
+      {{"L0:", "PUSHI 1", "STL 0", "PUSHI 100", "STL.eol 1"},
+       {"L0:", "PUSHI 1", "STL 0", "PUSHI 100", "STL 1", "EOL"}},
+      {{"L4:", with_b("JGTLL L23", bytecode::pack_locals(0, 1))},
+       {"L5:", "LDL 0", "LDL 1", "LEI", "JZ L40"}},
+      {{"REMLK 0 3", "JZ L12"}, {"LDL 0", "PUSHI 3", "REMI", "PUSHI 0", "NEI", "JZ L22"}},
+      {{"REMLK 0 7", "ADDIGEOL 0"}, {"LDG 0", "LDL 0", "PUSHI 7", "REMI", "ADDI", "STG 0", "EOL"}},
+      {{"L12:", "ADDLK 0 1", "STL 0"}, {"L22:", "LDL 0", "PUSHI -1", "SUBI", "STL 0"}},
+      {{with_b("JGTLK L22", bytecode::pack_local_imm(0, 50))},
+       {"LDL 0", "PUSHI 50", "GTI", "JNZ L38"}},
+      {{with_b("JNLTFGK L22", bytecode::pack_locals(1, 0))},
+       {"LDG 1", "PUSHK 0", "LTF", "JZ L38"}},
+      {{with_b("ADDFGK", bytecode::pack_locals(1, 0)), "STG 1"},
+       {"LDG 1", "PUSHK 0", "ADDF", "STG 1"}},
+      {{"L22:", "JMPEOL L4"}, {"L38:", "EOL", "JMP L5"}},
+      {{"L23:", "RET"}, {"L40:", "RET"}},
+  });
   const std::vector<Op> expected = {
       Op::PUSHI,   Op::STL,      Op::PUSHI, Op::STL,  // the EOL after the STL is its line-end mark
       Op::JGTLL,                                      // LDL i; LDL n; LEI; JZ done
@@ -192,12 +273,22 @@ main:
 )";
 
 TEST(Peephole, FusesTheStacksIntWithAnImmediateOrAGlobal) {
-  const bytecode::Image image = optimized(kStackImmediates);
-  const std::vector<Op> expected = {Op::STGK,  Op::STGK,  Op::ADDGK, Op::MULIK,
-                                    Op::ADDIG, Op::REMIK, Op::STG,   Op::RET};
-  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  // A constant's store takes the constant's index; the pass adds 7 and 3 as k0 and k1.
+  const bytecode::Image image = expect_listing(kStackImmediates, {
+      {{"L0:"}, {"L0:"}},
+      {{"STGK 0 0"}, {"PUSHI 7", "STG 0"}},
+      {{"STGK 1 1"}, {"PUSHI 3", "STG 1"}},
+      {{"ADDGK 0 -1"}, {"LDG 0", "PUSHI 1", "SUBI"}},
+      {{"MULIK 7919"}, {"PUSHI 7919", "MULI"}},
+      {{"ADDIG 1"}, {"LDG 1", "ADDI"}},
+      {{"REMIK 960"}, {"PUSHI 960", "REMI"}},
+      {{"STG 2"}, {"STG 2"}},
+      {{"RET"}, {"RET"}},
+  });
+  ASSERT_EQ(image.constants.size(), 2u);
+  EXPECT_EQ(static_cast<int32_t>(image.constants[0].bits), 7);
+  EXPECT_EQ(static_cast<int32_t>(image.constants[1].bits), 3);
   EXPECT_EQ(run_and_read(image, "v"), (6 * 7919 + 3) % 960);
-  expect_same_behaviour(kStackImmediates, "stack immediates");
 }
 
 // Two int globals compared, as a condition (JZ: the comparison negated) and as a fused jump.
@@ -226,12 +317,22 @@ done:
 )";
 
 TEST(Peephole, FusesTwoIntGlobalsCompared) {
-  const bytecode::Image image = optimized(kIntGlobalCompares);
-  const std::vector<Op> expected = {Op::STGK,   Op::STGK, Op::JCMPGG, Op::INCG,
-                                    Op::JCMPGG, Op::INCG, Op::RET};
-  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
+  constexpr uint32_t kGreaterOrEqual = 5;  // == != < <= > >=
+  // "LTI; JZ" jumps when v >= lo; the code words move: skip from 10 to 8, done from 15 to 12.
+  const bytecode::Image image = expect_listing(kIntGlobalCompares, {
+      {{"L0:"}, {"L0:"}},
+      {{"STGK 0 0"}, {"PUSHI 4", "STG 0"}},
+      {{"STGK 1 1"}, {"PUSHI 9", "STG 1"}},
+      {{with_b("JCMPGG L8", bytecode::pack_globals_test(0, 1, kGreaterOrEqual))},
+       {"LDG 0", "LDG 1", "LTI", "JZ L10"}},
+      {{"INCG 2 1"}, {"INCG 2 1"}},
+      {{"L8:"}, {"L10:"}},
+      {{with_b("JCMPGG L12", bytecode::pack_globals_test(1, 0, kGreaterOrEqual))},
+       {"LDG 1", "LDG 0", "JGEI L15"}},
+      {{"INCG 2 10"}, {"INCG 2 10"}},
+      {{"L12:", "RET"}, {"L15:", "RET"}},
+  });
   EXPECT_EQ(run_and_read(image, "hits"), 1);  // 4 < 9 holds; 9 >= 4 jumps over the 10
-  expect_same_behaviour(kIntGlobalCompares, "int global compares");
 }
 
 // A loop's step on the way out of fused code: the increment that ends its line and the JMPLN
@@ -958,23 +1059,72 @@ big:
   EOL
   RET
 )";
-  const bytecode::Image image = optimized(text);
-  const std::vector<Op> expected = {
-      Op::PUSHI,     Op::STL,   Op::PUSHI, Op::STL, Op::PUSHI, Op::STMLK, Op::EOL,  // frame[1] = 7
-      Op::ADDLK,     Op::STMLK, Op::EOL,  // frame[2] = base + 2 (a pointer: 6)
-      Op::LDPMLK,    Op::RAISE,           // r = frame[2], in the user memory or the frame
-      Op::ADDMLK,    Op::STM,             // flat: *r = frame[1] - 1 (STM's mark)
-      Op::LDMLK,     Op::STMLK,           // frame[0] = frame[3]
-      Op::PUSHI,     Op::LDMLK, Op::STM,  // seen = frame[1]: the address first
-      Op::JCMPMKEOL,                      // if (frame[1] < 7), ending its line
-      Op::PUSHI,     Op::PUSHI, Op::STM,  // seen = 1 (not run: frame[1] is 7)
-      Op::EOL,                            // big's, after the body: it falls into it
-      Op::RET};
-  EXPECT_EQ(ops_of(image), expected) << bytecode::disassemble(image);
-  EXPECT_EQ(marked_ops(image), (std::vector<Op>{Op::STM, Op::STM, Op::STM}))
-      << bytecode::disassemble(image);
-  expect_same_behaviour(text, "frames in the data memory");
+  constexpr uint32_t kGreaterOrEqual = 5;  // == != < <= > >=
+  // The code words move: flat from 30 to 16; "JZ big; EOL" with big's EOL ends the line on
+  // both paths, so the fused branch goes past big's EOL, to the RET (61, then 33).
+  const bytecode::Image image = expect_listing(text, {
+      {{"L0:", "PUSHI 4", "STL 0", "PUSHI 4", "STL 1"},
+       {"L0:", "PUSHI 4", "STL 0", "PUSHI 4", "STL 1"}},
+      // frame[1] = 7: the value first, then the store at the frame's word
+      {{"PUSHI 7", "STMLK 0 1", "EOL"}, {"ADDLK 0 1", "PUSHI 7", "STM", "EOL"}},
+      // frame[2] = base + 2 (a pointer: 6)
+      {{"ADDLK 1 2", "STMLK 0 2", "EOL"}, {"ADDLK 0 2", "LDL 1", "PUSHI 2", "ADDI", "STM", "EOL"}},
+      // r = frame[2], in the user memory (below 4) or the frame (base + 0..3)
+      {{with_b("LDPMLK L16", bytecode::pack_pointer_test(0, 2, 4, 1, 2))},
+       {"ADDLK 0 2", "LDM", "DUP", "PUSHI 4", "CMPU 2", "JNZ L30", "DUP", "LDL 1", "SUBI",
+        "PUSHI 4", "CMPU 2", "JNZ L30"}},
+      {{"RAISE 15"}, {"RAISE 15"}},
+      // flat: *r = frame[1] - 1, the STM carrying the line's end
+      {{"L16:", with_b("ADDMLK 0", bytecode::pack_local_imm(1, -1)), "STM.eol"},
+       {"L30:", "ADDLK 0 1", "LDM", "PUSHI 1", "SUBI", "STM", "EOL"}},
+      // frame[0] = frame[3]
+      {{"LDMLK 0 3", "STMLK 0 0"}, {"ADDLK 0 0", "ADDLK 0 3", "LDM", "STM"}},
+      // seen = frame[1]: the address first
+      {{"PUSHI 8", "LDMLK 0 1", "STM.eol"}, {"PUSHI 8", "ADDLK 0 1", "LDM", "STM", "EOL"}},
+      // if (frame[1] < 7), ending its line either way
+      {{with_b("JCMPMKEOL L33", bytecode::pack_frame_test(0, 1, kGreaterOrEqual, 7))},
+       {"ADDLK 0 1", "LDM", "PUSHI 7", "LTI", "JZ L60", "EOL"}},
+      // seen = 1 (not run: frame[1] is 7)
+      {{"PUSHI 8", "PUSHI 1", "STM.eol"}, {"PUSHI 8", "PUSHI 1", "STM", "EOL"}},
+      // big's EOL, after the body: it falls into it
+      {{"EOL"}, {"L60:", "EOL"}},
+      {{"L33:", "RET"}, {"RET"}},
+  });
   EXPECT_EQ(run_and_read(image, "seen"), 7);
+  expect_same_line_ends(text, image);
+}
+
+// `n--;` of a parameter kept in the data memory: the word read, stepped and stored at the same
+// address, then the line's end, is one instruction that ends the line.
+TEST(Peephole, StepsAFrameWordInItsLine) {
+  const char* text = R"(
+.global int "frame" 4
+.routine function "main" in=0 out=0 entry=main
+.local int "fp"
+main:
+  PUSHI 1
+  STL 0
+  EOL
+  ADDLK 0 2
+  ADDLK 0 2
+  LDM
+  PUSHI 1
+  SUBI
+  STM
+  EOL
+  RET
+)";
+  const bytecode::Image image = expect_listing(text, {
+      {{"L0:", "PUSHI 1", "STL.eol 0"}, {"L0:", "PUSHI 1", "STL 0", "EOL"}},
+      {{with_b("INCMLKEOL 0", bytecode::pack_local_imm(2, -1))},
+       {"ADDLK 0 2", "ADDLK 0 2", "LDM", "PUSHI 1", "SUBI", "STM", "EOL"}},
+      {{"RET"}, {"RET"}},
+  });
+  LoadedProgram fused;
+  ASSERT_TRUE(fused.load(bytecode::disassemble(image)));
+  fused.machine.start(0, 0);
+  fused.run_to_end();
+  EXPECT_EQ(fused.global("frame", 3).i, -1);  // the word at fp + 2: 0 - 1
   expect_same_line_ends(text, image);
 }
 

@@ -1,4 +1,4 @@
-; an opcode number that does not exist (255: 0..251 are taken)
+; an opcode number that does not exist (255: 0..252 are taken)
 .routine function "main" in=0 out=0 entry=main
 main:
   .word 0x000000ff
