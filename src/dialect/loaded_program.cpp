@@ -44,8 +44,7 @@ std::unique_ptr<LoadedProgram> LoadedProgram::load(std::vector<uint8_t> bytes,
   const vm::LoadStatus s = p->machine_.load(p->bytes_.data(), p->bytes_.size(), config,
                                             p->memory_.data(), p->memory_.size() * 8, host);
   if (!s.ok()) {
-    if (s.load != bytecode::LoadError::Ok)
-      return fail(load_refusal(p->bytes_, s.load));
+    if (s.load != bytecode::LoadError::Ok) return fail(load_refusal(p->bytes_, s.load));
     if (s.verify != bytecode::VerifyError::Ok) {
       return fail(std::string("the verifier refused it: ") + bytecode::verify_error_text(s.verify) +
                   " at code word " + std::to_string(s.pc));

@@ -213,6 +213,8 @@ TEST(Peephole, FusesTheLoop) {
   EXPECT_LT(stats.words_after, stats.words_before);
   // The same line by line: top moves from 5 to 4, next from 22 to 12, skip from 38 to 22, done
   // from 40 to 23.
+  // Each rewrite beside the base lines it replaces, as a table.
+  // clang-format off
   expect_listing(kLoop, {
       {{"L0:", "PUSHI 1", "STL 0", "PUSHI 100", "STL.eol 1"},
        {"L0:", "PUSHI 1", "STL 0", "PUSHI 100", "STL 1", "EOL"}},
@@ -230,6 +232,7 @@ TEST(Peephole, FusesTheLoop) {
       {{"L22:", "JMPEOL L4"}, {"L38:", "EOL", "JMP L5"}},
       {{"L23:", "RET"}, {"L40:", "RET"}},
   });
+  // clang-format on
   const std::vector<Op> expected = {
       Op::PUSHI,   Op::STL,      Op::PUSHI, Op::STL,  // the EOL after the STL is its line-end mark
       Op::JGTLL,                                      // LDL i; LDL n; LEI; JZ done
@@ -274,6 +277,8 @@ main:
 
 TEST(Peephole, FusesTheStacksIntWithAnImmediateOrAGlobal) {
   // A constant's store takes the constant's index; the pass adds 7 and 3 as k0 and k1.
+  // Each rewrite beside the base lines it replaces, as a table.
+  // clang-format off
   const bytecode::Image image = expect_listing(kStackImmediates, {
       {{"L0:"}, {"L0:"}},
       {{"STGK 0 0"}, {"PUSHI 7", "STG 0"}},
@@ -285,6 +290,7 @@ TEST(Peephole, FusesTheStacksIntWithAnImmediateOrAGlobal) {
       {{"STG 2"}, {"STG 2"}},
       {{"RET"}, {"RET"}},
   });
+  // clang-format on
   ASSERT_EQ(image.constants.size(), 2u);
   EXPECT_EQ(static_cast<int32_t>(image.constants[0].bits), 7);
   EXPECT_EQ(static_cast<int32_t>(image.constants[1].bits), 3);
@@ -319,6 +325,8 @@ done:
 TEST(Peephole, FusesTwoIntGlobalsCompared) {
   constexpr uint32_t kGreaterOrEqual = 5;  // == != < <= > >=
   // "LTI; JZ" jumps when v >= lo; the code words move: skip from 10 to 8, done from 15 to 12.
+  // Each rewrite beside the base lines it replaces, as a table.
+  // clang-format off
   const bytecode::Image image = expect_listing(kIntGlobalCompares, {
       {{"L0:"}, {"L0:"}},
       {{"STGK 0 0"}, {"PUSHI 4", "STG 0"}},
@@ -332,6 +340,7 @@ TEST(Peephole, FusesTwoIntGlobalsCompared) {
       {{"INCG 2 10"}, {"INCG 2 10"}},
       {{"L12:", "RET"}, {"L15:", "RET"}},
   });
+  // clang-format on
   EXPECT_EQ(run_and_read(image, "hits"), 1);  // 4 < 9 holds; 9 >= 4 jumps over the 10
 }
 
@@ -1062,6 +1071,8 @@ big:
   constexpr uint32_t kGreaterOrEqual = 5;  // == != < <= > >=
   // The code words move: flat from 30 to 16; "JZ big; EOL" with big's EOL ends the line on
   // both paths, so the fused branch goes past big's EOL, to the RET (61, then 33).
+  // Each rewrite beside the base lines it replaces, as a table.
+  // clang-format off
   const bytecode::Image image = expect_listing(text, {
       {{"L0:", "PUSHI 4", "STL 0", "PUSHI 4", "STL 1"},
        {"L0:", "PUSHI 4", "STL 0", "PUSHI 4", "STL 1"}},
@@ -1090,6 +1101,7 @@ big:
       {{"EOL"}, {"L60:", "EOL"}},
       {{"L33:", "RET"}, {"RET"}},
   });
+  // clang-format on
   EXPECT_EQ(run_and_read(image, "seen"), 7);
   expect_same_line_ends(text, image);
 }
@@ -1114,12 +1126,15 @@ main:
   EOL
   RET
 )";
+  // Each rewrite beside the base lines it replaces, as a table.
+  // clang-format off
   const bytecode::Image image = expect_listing(text, {
       {{"L0:", "PUSHI 1", "STL.eol 0"}, {"L0:", "PUSHI 1", "STL 0", "EOL"}},
       {{with_b("INCMLKEOL 0", bytecode::pack_local_imm(2, -1))},
        {"ADDLK 0 2", "ADDLK 0 2", "LDM", "PUSHI 1", "SUBI", "STM", "EOL"}},
       {{"RET"}, {"RET"}},
   });
+  // clang-format on
   LoadedProgram fused;
   ASSERT_TRUE(fused.load(bytecode::disassemble(image)));
   fused.machine.start(0, 0);
