@@ -94,8 +94,18 @@ struct Held {
   int parameters = -1;
 };
 
+// The state directory holds no temporary of an interrupted write (a `NAME.tmp.PID`): a kill
+// leaves none, and a drive's start-up removes any (support/files.h).
+void expect_no_temporary(const std::string& dir) {
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    EXPECT_EQ(entry.path().filename().string().find(".tmp."), std::string::npos)
+        << "left behind: " << entry.path();
+  }
+}
+
 Held inspect(SimProcess& sim, const std::string& dir, const std::vector<uint8_t> images[2]) {
   Held held;
+  expect_no_temporary(dir);
   const auto file = read_binary_file(dir + "/program.upi");
   if (!file) {
     ADD_FAILURE() << "no stored program in " << dir;
