@@ -33,7 +33,8 @@ std::string parent_dir(const std::string& path) {
 std::optional<std::string> read_text_file(const std::string& path, std::string* error) {
   // A directory opens as a stream and reads as nothing (or, measured, as a huge file).
   struct stat st {};
-  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+  const bool known = ::stat(path.c_str(), &st) == 0;
+  if (known && S_ISDIR(st.st_mode)) {
     errno = EISDIR;
     set_error(error, "cannot open " + path);
     return std::nullopt;
@@ -42,6 +43,18 @@ std::optional<std::string> read_text_file(const std::string& path, std::string* 
   if (!in) {
     set_error(error, "cannot open " + path);
     return std::nullopt;
+  }
+  // A regular file is read into a string of its size at once: a string stream copies a large
+  // file several times. Other files (a pipe) and a file that changes size meanwhile take the
+  // stream.
+  if (known && S_ISREG(st.st_mode) && st.st_size > 0) {
+    std::string text(static_cast<size_t>(st.st_size), '\0');
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    if (static_cast<size_t>(in.gcount()) == text.size() &&
+        in.peek() == std::ifstream::traits_type::eof())
+      return text;
+    in.clear();
+    in.seekg(0);
   }
   std::ostringstream text;
   text << in.rdbuf();
