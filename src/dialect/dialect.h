@@ -1,6 +1,6 @@
 // What a dialect offers: its name and file extensions, its compiler (source file → the stored
 // form the drive keeps, with diagnostics), its registered error tables, and its firmware. The
-// one list of dialects is src/dialects/registry.cpp; nothing registers itself.
+// one list of dialects is src/dialects/registry.def; nothing registers itself.
 #pragma once
 #include <cstdint>
 #include <memory>

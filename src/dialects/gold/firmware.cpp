@@ -109,7 +109,10 @@ void Firmware::forget_recorder_variables() {
 }
 
 void Firmware::unload() {
-  program_.reset();
+  if (bound_line_running_)
+    retired_program_ = std::move(program_);
+  else
+    program_.reset();
   known_globals_.clear();
   autos_.clear();
   ever_run_ = false;
