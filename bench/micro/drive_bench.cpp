@@ -73,7 +73,7 @@ void report(benchmark::State& state, double wall_s, Controller& drive) {
 }
 
 void BM_DriveProgram(benchmark::State& state) {
-  Controller drive(gold_drive());  // no state dir, one line per servo cycle
+  Controller drive(gold_drive());  // no state dir, one line per background pass
   const uprog::gold::CompileResult compiled =
       uprog::gold::compile(uprog::SourceFile{"drive_bench.ehl", kMotionProgram});
   if (!compiled.ok()) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "preproc/line_scanner.h"
 #include "support/arith.h"
 
 namespace uprog::preproc {
@@ -13,9 +14,6 @@ namespace {
 
 constexpr double kFloatLimit = 1e37;  // manual 1.3: -1e37 < N < 1e37
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
-bool is_ident_char(char c) { return is_alpha(c) || is_digit(c) || c == '_'; }
 bool is_hex_digit(char c) {
   return is_digit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
 }
@@ -169,7 +167,7 @@ class Evaluator {
       return v;
     }
     if (is_digit(c) || (c == '.' && is_digit(peek(1)))) return parse_number();
-    if (is_alpha(c) || c == '_') return parse_identifier();
+    if (is_ident_start(c)) return parse_identifier();
     if (pos_ >= text_.size())
       fail(EvalStatus::Syntax, "an operand is missing at the end");
     else

@@ -4,8 +4,6 @@
 namespace uprog::preproc {
 namespace {
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-
 void push(std::vector<Span>& out, SpanKind kind, size_t begin, size_t end) {
   if (begin == end) return;
   if (!out.empty() && out.back().kind == kind && kind == SpanKind::Code &&

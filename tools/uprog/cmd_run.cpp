@@ -194,7 +194,7 @@ int run(const RunOptions& o) {
     const long n = std::strtol(o.budget.c_str(), nullptr, 10);
     if (n <= 0 || std::to_string(n) != o.budget) {
       fmt::print(stderr,
-                 "uprog run: --budget takes a positive number of lines per cycle or 'unlimited'\n");
+                 "uprog run: --budget takes a positive number of lines per pass or 'unlimited'\n");
       return 2;
     }
     copts.timing.lines_per_cycle = static_cast<uint32_t>(n);
@@ -307,7 +307,7 @@ void add_run(Options& cmd, Action& action) {
              "virtual time to run (default: until the program has ended and the axis is still)");
   cmd.option("--limit", o->limit, "without --for, the longest virtual time to run").show_default();
   add_drive_shape_options(cmd, o->shape);
-  cmd.option("--budget", o->budget, "source lines per servo cycle, or 'unlimited' (default 1)");
+  cmd.option("--budget", o->budget, "source lines per background pass, or 'unlimited' (default 1)");
   cmd.option("--input", o->inputs, "N=LEVEL@TIME: set digital input N at TIME");
   cmd.option("--switch", o->switches,
              "N=FROM:TO: input N is high while the motor lies in [FROM, TO] counts (a cam)");

@@ -1,5 +1,6 @@
 // The simulated drive's shape for `uprog run` and `uprog sim`: how many axes, and their servo
-// period (PDL's phase), as a transcript's `drive axes=N phase_us=N` sets them.
+// period (PDL's phase), as a transcript's `drive axes=N phase_us=N` sets them; Gold's background
+// pass, as its `background N` does.
 #pragma once
 #include <cstdint>
 
@@ -10,10 +11,11 @@ namespace uprog::cli {
 
 struct DriveShape {
   uint32_t axes = 1;
-  uint32_t servo_us = 0;  // 0: the saved period, else the axis's default
+  uint32_t servo_us = 0;       // 0: the saved period, else the axis's default
+  uint32_t background_us = 0;  // 0: the dialect's own pace (Gold: from TS, manual 2.2)
 };
 
-// Adds `--axes N` and `--servo-us N` to `cmd`, stored in `shape`.
+// Adds `--axes N`, `--servo-us N` and `--background-us N` to `cmd`, stored in `shape`.
 void add_drive_shape_options(Options& cmd, DriveShape& shape);
 void apply(const DriveShape& shape, controller::ControllerOptions& options);
 

@@ -1,5 +1,6 @@
-// Whole source lines per background slice: one program thread runs N lines each servo cycle,
-// or, unlimited, until it waits, yields or ends (capped). Gold's schedule (manual 2.2).
+// Whole source lines per background slice: one program thread runs N lines each slice (Gold: a
+// background pass), or, unlimited, until it waits, yields or ends (capped). Gold's schedule
+// (manual 2.2).
 #pragma once
 #include <cstdint>
 
@@ -19,6 +20,9 @@ struct LineTiming {
   // Every slice also stops after this many jumps back, so that an image whose loop never ends
   // a line (hand-made) cannot stop the drive answering.
   uint64_t back_jump_cap = 1'000'000;
+  // A background slice every this many µs, fixed; 0: the dialect's own pace (Gold: from TS,
+  // manual 2.2; docs/dialects/gold-firmware.md).
+  uint32_t background_us = 0;
 };
 
 class WholeLines {

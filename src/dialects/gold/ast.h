@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "dialects/gold/token.h"
+#include "support/value.h"
 
 namespace uprog::gold {
 
@@ -18,6 +19,9 @@ struct CommandInfo;
 enum class Kind : uint8_t { Int, Float, Dynamic, None };
 
 enum class VarType : uint8_t { Int, Float };
+
+inline Kind kind_of(VarType t) { return t == VarType::Int ? Kind::Int : Kind::Float; }
+inline Kind kind_of(ValueType t) { return t == ValueType::Int ? Kind::Int : Kind::Float; }
 
 struct Expr;
 // Nodes belong to an AstArena (below); these pointers never own.

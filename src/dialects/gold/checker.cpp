@@ -37,9 +37,6 @@ namespace {
 constexpr size_t kMaxLocals = 92;
 constexpr int64_t kMaxGlobalWords = 2040;
 
-Kind kind_of(VarType t) { return t == VarType::Int ? Kind::Int : Kind::Float; }
-Kind kind_of(ValueType t) { return t == ValueType::Int ? Kind::Int : Kind::Float; }
-
 // Where an expression begins (a binary expression's own offset is its operator's).
 uint32_t start_of(const Expr& e) {
   const Expr* x = &e;
@@ -74,6 +71,18 @@ const CommandInfo* command_named(std::string_view name) {
   return it == index.by_name.end() ? nullptr : it->second;
 }
 
+bool const_index(const Expr& e, int32_t& out) {
+  if (e.kind == ExprKind::IntLit) {
+    out = e.int_value;
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+namespace detail {
+
 // A function's own names (locals, local labels): few, looked up often, cleared for every function.
 // A short list searched in order beats a hash table that allocates a node per name.
 class NameList {
@@ -96,18 +105,6 @@ class NameList {
  private:
   std::vector<std::pair<std::string_view, int>> items_;
 };
-
-bool const_index(const Expr& e, int32_t& out) {
-  if (e.kind == ExprKind::IntLit) {
-    out = e.int_value;
-    return true;
-  }
-  return false;
-}
-
-}  // namespace
-
-namespace detail {
 
 class Checker {
  public:
@@ -627,10 +624,14 @@ class Checker {
     if (!is_array) {
       int32_t k = 0;
       const bool constant = const_index(index, k);
-      // Manual 1.11: a scalar global indexed [0] is the scalar; other constant indices are
-      // error 58 (as in the table's example); a computed index is checked when it runs.
-      if ((constant && k != 0) || (!constant && e.ref == RefKind::Local))
-        error(Error::VariableIsNotArray, e.offset, e.name);
+      // A scalar global indexed [0] is the scalar. Inside a function any other index of a
+      // global scalar is checked when it runs: manual 1.11's note and example 2 ("the compiler
+      // will not report about any error. The program will be terminated"). In global code a
+      // constant one is error 58, the table's example (`##START a1[1] = 0`); a local scalar
+      // takes no other index (docs/dialects/gold.md, decision 8).
+      const bool run_time = e.ref == RefKind::Global && (!constant || current_ >= 0);
+      if (constant && k != 0 && !run_time) error(Error::VariableIsNotArray, e.offset, e.name);
+      if (!constant && e.ref == RefKind::Local) error(Error::VariableIsNotArray, e.offset, e.name);
     }
   }
 

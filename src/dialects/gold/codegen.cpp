@@ -20,11 +20,10 @@ using bytecode::Op;
 
 // run_errors.def: "for loop step is zero" (the manual's INFINITE_LOOP, 2.12.2).
 constexpr uint32_t kZeroForStep = 5;
+constexpr uint32_t kOverflow = 16;  // vm/run_errors.def: "result out of range"
 constexpr uint32_t kMicrosecondsPerMs = 1000;
 
 ValueType value_type(VarType t) { return t == VarType::Int ? ValueType::Int : ValueType::Float; }
-Kind kind_of(VarType t) { return t == VarType::Int ? Kind::Int : Kind::Float; }
-Kind kind_of(ValueType t) { return t == ValueType::Int ? Kind::Int : Kind::Float; }
 Kind operand_kind(Kind k) { return k == Kind::None ? Kind::Int : k; }
 
 class Gen {
@@ -552,8 +551,39 @@ class Gen {
 
   void assign(const Expr& target, const Expr& v) {
     const StoreHow how = store_prefix(target);
-    value(v, target_kind(target));
+    const Kind want = target_kind(target);
+    const Kind have = operand_kind(v.type);
+    if (may_leave_float_range(v) && (have == Kind::Float || want == Kind::Float)) {
+      value(v, have == Kind::Float ? Kind::Float : want);
+      check_float_range();
+      convert(Kind::Float, want);
+    } else {
+      value(v, want);
+    }
     store(target, how);
+  }
+
+  // Float arithmetic at the top of a value (through unary minus): what can leave the float
+  // range. Everything else that is stored was checked when it was stored, is a literal (the
+  // lexer refuses 1e37), a drive command or a bounded built-in.
+  static bool may_leave_float_range(const Expr& e) {
+    if (e.kind == ExprKind::Unary) return e.op == Tok::Minus && may_leave_float_range(*e.lhs);
+    if (e.kind != ExprKind::Binary || operand_kind(e.type) == Kind::Int) return false;
+    return e.op == Tok::Plus || e.op == Tok::Minus || e.op == Tok::Star || e.op == Tok::Slash;
+  }
+
+  // 1.3.2: "If a floating-point number exceeds the floating-point range [-1e37 < N < 1e37], it
+  // is also interpreted as an error": the float on top must lie inside, or the thread stops with
+  // "result out of range" before the store (NaN, from an inf inside the expression, too).
+  void check_float_range() {
+    const auto ok = cb_.new_label();
+    emit(Op::DUP);
+    emit(Op::ABSF);
+    push_float(1e37f);
+    emit(Op::LTF);
+    cb_.emit_to(Op::JNZ, ok);
+    emit(Op::RAISE, kOverflow);
+    cb_.bind(ok);
   }
 
   uint32_t temp(ValueType type) {

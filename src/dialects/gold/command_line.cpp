@@ -63,7 +63,7 @@ Answer Firmware::error_answer(int32_t code, std::string why) {
   return Answer{std::move(why), code};
 }
 
-void Firmware::spend_expression_time() { runtime_.advance_ns(cycle_ns()); }
+void Firmware::spend_expression_time() { runtime_.advance_ns(servo_cycle_ns()); }
 
 std::vector<Answer> Firmware::send(std::string_view text, bool takes_time) {
   return send_line(text, takes_time, nullptr);

@@ -38,7 +38,7 @@ std::span<const CommandInfo> all_commands();
 // The table's rows, row i holding id i + 1 (commands.cpp checks it).
 extern const std::span<const CommandInfo> kCommandRows;
 // Inline: every drive command a program reads or writes comes through here (MS in
-// `until (MS == 0)` once per servo cycle), a direct index.
+// `until (MS == 0)` once per background pass), a direct index.
 inline const CommandInfo* find_command(uint16_t id) {
   return id >= 1 && id <= kCommandRows.size() ? &kCommandRows[id - 1u] : nullptr;
 }

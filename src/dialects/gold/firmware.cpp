@@ -5,6 +5,9 @@
 
 #include <fmt/core.h>
 
+#include <charconv>
+
+#include "dialects/gold/background_cycle.h"
 #include "dialects/gold/commands.h"
 #include "dialects/gold/recorder_signals.h"
 #include "dialect/program_store.h"
@@ -40,11 +43,37 @@ Firmware::Firmware(dialect::Runtime& runtime, const dialect::FirmwareOptions& op
       wire_(options.wire_style, command_line_framing(),
             [this] { return drive_commands_ && drive_commands_->echo(); }),
       schedule_(options.timing),
-      slice_budget_(schedule_.budget()) {}
+      slice_budget_(schedule_.budget()),
+      background_us_(options.timing.background_us) {}
 
+// The firmware's cycle is a background pass (manual 2.2, background_cycle.h); the servo cycle
+// is the axis's.
 uint64_t Firmware::cycle_ns() const {
+  return background_pass_ns(axis_->period_us(), background_us_);
+}
+
+uint64_t Firmware::servo_cycle_ns() const {
   const uint32_t period_us = axis_->period_us();
   return uint64_t{period_us == 0 ? 50u : period_us} * 1000;
+}
+
+// `background 500us` fixes the pass, `background auto` returns to the model's (a transcript's
+// directive, docs/transcripts.md).
+bool Firmware::world_directive(std::string_view name, std::string_view arg, std::string& failure) {
+  if (name != "background") return false;
+  if (arg == "auto") {
+    background_us_ = 0;
+    return true;
+  }
+  if (arg.ends_with("us")) arg.remove_suffix(2);
+  uint32_t us = 0;
+  const auto [end, ec] = std::from_chars(arg.data(), arg.data() + arg.size(), us);
+  if (ec != std::errc() || end != arg.data() + arg.size() || us < 1 || us > kMaxBackgroundUs) {
+    failure = fmt::format("background takes 'auto' or 1..{}us", kMaxBackgroundUs);
+    return true;
+  }
+  background_us_ = us;
+  return true;
 }
 
 // Power-up and RS: the controller has made a fresh axis with the saved parameters; the stored

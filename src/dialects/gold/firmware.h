@@ -24,6 +24,7 @@
 namespace uprog::gold {
 
 constexpr uint32_t kProgramThread = 0;
+constexpr uint32_t kMaxBackgroundUs = 1'000'000;  // the longest background pass one may fix
 
 // How the Gold command line splits a host line into expressions (manual 1.1): at `;`, CR and LF,
 // `**` to the end of the line a comment, 511 characters an expression. The wire's framing too.
@@ -36,7 +37,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   // --- dialect::Firmware ---
   const dialect::WireForm& wire() const override { return wire_; }
   void boot(std::vector<std::string>& messages) override;
-  uint64_t cycle_ns() const override;
+  uint64_t cycle_ns() const override;  // a background pass (background_cycle.h)
+  bool world_directive(std::string_view name, std::string_view arg, std::string& failure) override;
   void cycle(const std::vector<uint32_t>& drive_events) override;
   std::unique_ptr<dialect::Session> open_session() override;
   std::vector<dialect::Answer> query(std::string_view line) override { return send(line, false); }
@@ -70,8 +72,9 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   // As send(), with the DL commands of one host's download (a Session's).
   std::vector<dialect::Answer> send_line(std::string_view line, bool takes_time,
                                          DownloadReceiver* download);
-  // Lets one servo cycle pass: the time the drive's background loop takes for an expression.
+  // Lets one servo cycle pass: an expression's time (docs/dialects/gold-command-line.md).
   void spend_expression_time();
+  uint64_t servo_cycle_ns() const;  // TS
 
  private:
   // --- the program store and RAM (firmware.cpp) ---
@@ -121,6 +124,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   ElmoWire wire_;
   scheduling::WholeLines schedule_;
   vm::Budget slice_budget_;      // the whole-lines policy's, worked out once
+  uint32_t background_us_ = 0;   // a fixed background pass, µs; 0: from TS (background_cycle.h)
   drive::Axis* axis_ = nullptr;  // the runtime's axis since the last boot
   std::unique_ptr<DriveCommands> drive_commands_;
 

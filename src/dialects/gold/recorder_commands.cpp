@@ -11,14 +11,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "dialects/gold/drive_commands.h"
 #include "dialects/gold/recorder_signals.h"
 
 namespace uprog::gold {
 namespace {
 
-using enum RecorderCommands::Id;
-
-constexpr int32_t kErrorOutOfRange = 21;  // as drive_commands.h's
 constexpr int32_t kErrorNoSuchVariable =
     209;  // as interpreter_errors.h's: DB##RV[n]'s name is gone
 constexpr int32_t kErrorOk = 0;

@@ -4,10 +4,10 @@
 #include <cctype>
 #include <charconv>
 
+#include "dialects/pup/pup_lexer.h"
+
 namespace uprog::pup {
 namespace {
-
-bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 class Reader {
  public:

@@ -11,8 +11,6 @@ namespace {
 constexpr const char* kTwoCharOps[] = {"==", "!=", "<=", ">=", "<<", ">>", "&&", "||"};
 constexpr std::string_view kOneCharOps = "()[],=<>+-*/%&|^~!";
 
-bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
 }  // namespace
 
 std::optional<std::vector<Token>> tokenize(const std::string& text, const Location& line_start,

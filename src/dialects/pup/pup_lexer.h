@@ -1,5 +1,6 @@
 // PUP's tokens: one source line into names, numbers and operators, each with its place.
 #pragma once
+#include <cctype>
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,6 +10,9 @@
 namespace uprog::pup {
 
 enum class TokenKind { Name, Number, Op };
+
+// A letter, a digit or '_': what names (and the names inside messages) are made of.
+inline bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 struct Token {
   TokenKind kind = TokenKind::Op;
