@@ -1,7 +1,7 @@
 # uprog_dialect_fuzzers(DEF REGISTRY MAKER PREFIX): for every dialect the registry list DEF names
 # (src/dialects/registry.def's form), the targets PREFIXfuzz_compile_NAME, …fuzz_command_line_NAME
-# and …fuzz_download_NAME, from the one source of each (fuzz/fuzz_dialect_<kind>.cpp) built for that
-# dialect. uprog_dialect_own_fuzzers(DEF MAKER): each listed dialect's own targets,
+# and …fuzz_download_NAME, from the one source of each (fuzz/fuzz_dialect_<kind>.cpp) built for
+# that dialect. uprog_dialect_own_fuzzers(DEF MAKER): each listed dialect's own targets,
 # fuzz/fuzz_NAME_*.cpp, over its library uprog_dialect_NAME. MAKER(TARGET SOURCES … DEPS …)
 # makes each: a libFuzzer executable (fuzz/CMakeLists.txt) or a replay of inputs
 # (tests/dialect/CMakeLists.txt). No dialect is named here or by the callers.
