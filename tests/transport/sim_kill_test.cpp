@@ -357,7 +357,11 @@ TEST(transport_sim_kill, EveryDialectsKilledDownloadLeavesItsProgramWholeAndNoTe
     expect_no_temporary(dir);
     EXPECT_EQ(read_binary_file(record), out.stored_form);
     TestClient client(sim.port);
-    client.send(lines);  // a last whole download, then a clean stop
+    // A last whole download, answered: the drive's loop runs, so its SIGTERM handler is set
+    // (cmd_sim.cpp sets it after printing that it listens), and it stops cleanly.
+    client.send(lines + std::string(sample.query) + "\n");
+    pollfd answer{client.fd(), POLLIN, 0};
+    EXPECT_EQ(::poll(&answer, 1, 20'000), 1) << "no answer from the drive";
     std::this_thread::sleep_for(std::chrono::microseconds(2 * download_us));
     EXPECT_EQ(sim.stop(), 0);
     EXPECT_EQ(read_binary_file(record), out.stored_form);
