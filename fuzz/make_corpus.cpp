@@ -12,7 +12,7 @@
 
 #include "bytecode/assembly.h"
 #include "bytecode/image.h"
-#include "dialects/gold/compile.h"
+#include "dialects/registry.h"
 
 namespace fs = std::filesystem;
 
@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
 
   Corpus preproc(out / "fuzz_preproc"), compile(out / "fuzz_gold_compile"),
       line(out / "fuzz_gold_line"), image(out / "fuzz_image"),
-      command_line(out / "fuzz_command_line"), transcript(out / "fuzz_transcript"),
+      command_line(out / "fuzz_gold_command_line"), transcript(out / "fuzz_transcript"),
       transport(out / "fuzz_transport");
   for (const auto& p : preproc_cases) preproc.add(read(p));
   for (const auto& p : gold_examples) {
@@ -101,13 +101,14 @@ int main(int argc, char** argv) {
       image.add(as_string(uprog::bytecode::encode(img)));
   }
   for (const auto& p : gold_examples) {
-    const uprog::gold::CompileResult r =
-        uprog::gold::compile(uprog::SourceFile{p.filename().string(), read(p)});
-    if (r.ok()) image.add(as_string(uprog::bytecode::encode(r.image)));
+    // Gold's stored form is the encoded image; Gold is the registry's default dialect.
+    const uprog::dialect::CompileOutput r = uprog::dialects::default_dialect().compile_source(
+        uprog::SourceFile{p.filename().string(), read(p)}, {});
+    if (r.ok()) image.add(as_string(r.stored_form));
   }
   std::printf(
       "seeds: fuzz_preproc %zu, fuzz_gold_compile %zu, fuzz_gold_line %zu, fuzz_image %zu, "
-      "fuzz_command_line %zu, fuzz_transcript %zu, fuzz_transport %zu\n",
+      "fuzz_gold_command_line %zu, fuzz_transcript %zu, fuzz_transport %zu\n",
       preproc.size(), compile.size(), line.size(), image.size(), command_line.size(),
       transcript.size(), transport.size());
   return 0;

@@ -11,6 +11,8 @@ StateFlash::StateFlash(std::string state_dir) : dir_(std::move(state_dir)) {
   if (dir_.empty()) return;
   std::error_code ignored;  // a directory that cannot be made shows up as a failing read or write
   std::filesystem::create_directories(dir_, ignored);
+  // What a kill during an earlier write left (a power loss on a real drive): never kept.
+  remove_stale_temporaries(dir_);
 }
 
 std::optional<std::vector<uint8_t>> StateFlash::read(std::string_view name, std::string* error) {

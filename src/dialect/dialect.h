@@ -1,6 +1,6 @@
 // What a dialect offers: its name and file extensions, its compiler (source file → the stored
 // form the drive keeps, with diagnostics), its registered error tables, and its firmware. The
-// one list of dialects is src/dialects/registry.cpp; nothing registers itself.
+// one list of dialects is src/dialects/registry.def; nothing registers itself.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -15,6 +15,7 @@
 #include "dialect/firmware.h"
 #include "dialect/runtime.h"
 #include "support/diagnostic.h"
+#include "support/source.h"
 
 namespace uprog::dialect {
 
@@ -48,6 +49,22 @@ struct CompileOutput {
   }
 };
 
+// A small program of the dialect and what a drive does with it: every registered dialect gives
+// one, and every registered dialect passes the same checks with it (tests/dialect/
+// conformance_test.cpp: compile, download as a host does, run, step cycle by cycle, refusals);
+// its fuzzers start from it.
+struct SampleProgram {
+  std::string_view file_name;  // "sample.ehl": a name with one of the dialect's extensions
+  std::string_view source;     // compiles clean; started, it makes `query` answer `answer`
+  std::string_view entry;      // what Firmware::start() takes ("" for the dialect's own start)
+  std::string_view query;      // a host line that reads what the program did
+  std::string_view answer;     // its one answer once the program did it, and not before
+  uint32_t max_cycles;         // the firmware cycles the program may take to do it
+  std::string_view bad_source;      // a program the compiler refuses
+  uint32_t bad_source_line;         // the line its first error names
+  std::string_view bad_host_line;   // a line the command line refuses with a registered error
+};
+
 class Dialect {
  public:
   virtual ~Dialect() = default;
@@ -62,8 +79,15 @@ class Dialect {
   virtual std::string stored_path(const std::string& source) const {
     return source + std::string(stored_extension());
   }
-  virtual CompileOutput compile_file(const std::string& path,
-                                     const CompileSettings& settings) const = 0;
+  // The front end over a source in memory: preprocess, compile, build the stored form.
+  // `source.name` places the diagnostics and resolves includes (relative to its folder).
+  virtual CompileOutput compile_source(const SourceFile& source,
+                                       const CompileSettings& settings) const = 0;
+  // The same from a file: the one compile driver (dialect/compile_driver.h) reads it and calls
+  // compile_source(); a file that cannot be read gets unreadable_source()'s diagnostic.
+  CompileOutput compile_file(const std::string& path, const CompileSettings& settings) const;
+  // The dialect's diagnostic for a source file that cannot be read (its own scheme and code).
+  virtual Diagnostic unreadable_source(const std::string& path, const std::string& why) const = 0;
   virtual std::span<const ErrorInfo> diagnostic_codes() const = 0;
   virtual std::span<const ErrorInfo> interpreter_errors() const = 0;
   virtual std::unique_ptr<Firmware> make_firmware(Runtime& runtime,
@@ -83,6 +107,8 @@ class Dialect {
   virtual std::optional<PromptWire> host_prompt() const { return std::nullopt; }
   // The largest stored form a drive takes over the wire.
   virtual std::size_t max_download_bytes() const = 0;
+  // The dialect's sample program (SampleProgram above).
+  virtual const SampleProgram& sample_program() const = 0;
 };
 
 }  // namespace uprog::dialect

@@ -1,21 +1,28 @@
-// The registry: every dialect of this build, one line each.
+// The registry: every dialect of this build, one line each in registry.def (or, for a test's
+// registry, the list UPROG_REGISTRY_DEF names).
 #include "dialects/registry.h"
 
 #include <cctype>
 
-#include "dialects/gold/dialect.h"
-#include "dialects/pdl/dialect.h"
-#include "dialects/pup/dialect.h"
-#include "dialects/st/dialect.h"
+#ifndef UPROG_REGISTRY_DEF
+#define UPROG_REGISTRY_DEF "dialects/registry.def"
+#endif
+
+// Each dialect's entry, as its dialects/NAME/dialect.h declares it.
+#define UPROG_DIALECT(NAME)                  \
+  namespace uprog::NAME {                    \
+  const ::uprog::dialect::Dialect& dialect(); \
+  }
+#include UPROG_REGISTRY_DEF
+#undef UPROG_DIALECT
 
 namespace uprog::dialects {
 namespace {
 
 const dialect::Dialect* const kDialects[] = {
-    &gold::dialect(),
-    &pdl::dialect(),
-    &pup::dialect(),
-    &st::dialect(),
+#define UPROG_DIALECT(NAME) &::uprog::NAME::dialect(),
+#include UPROG_REGISTRY_DEF
+#undef UPROG_DIALECT
 };
 
 bool ends_with_ignoring_case(std::string_view text, std::string_view suffix) {

@@ -1,4 +1,4 @@
-// The dialects this build of uprog knows, in one explicit list (registry.cpp): the tools choose
+// The dialects this build of uprog knows, in one explicit list (registry.def): the tools choose
 // one by name or by a file's extension; the controller and the transports never name one.
 #pragma once
 #include <span>

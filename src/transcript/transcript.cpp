@@ -1,5 +1,5 @@
-// The transcript runner; the directives are those of shared/spec/transcript.md and
-// docs/transcripts.md (output, quiet, program-error, record, expect).
+// The transcript runner; docs/transcripts.md is the format's specification, every directive
+// and option of it.
 #include "transcript/transcript.h"
 
 #include <fmt/core.h>

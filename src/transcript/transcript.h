@@ -1,4 +1,4 @@
-// Replays a transcript (shared/spec/transcript.md, docs/transcripts.md) on a fresh simulated
+// Replays a transcript (docs/transcripts.md) on a fresh simulated
 // drive of its dialect: lines sent to the command line, answers and output expected, time and the
 // world changed between them.
 #pragma once

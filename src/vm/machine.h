@@ -149,6 +149,12 @@ class Machine {
   // from now on. `data` must stay valid while this image is loaded; LDM and STM still reach the
   // words set aside at load. False when the index is out of range or `length` too short.
   bool bind_global(uint32_t global, Value* data, uint32_t length);
+  // A global's words (where it is bound, else its place in the data memory), for binding it into
+  // another machine that shares it (a host line's over the program's); empty when out of range.
+  std::span<Value> global_words(uint32_t global) {
+    if (global >= global_count_) return {};
+    return {global_data_[global], global_length_[global]};
+  }
   // The data memory: every global's words in table order, global 0's element 0 at address 0,
   // as LDM and STM see it. Checked: false when the address is past the last word.
   uint32_t memory_words() const { return memory_words_; }

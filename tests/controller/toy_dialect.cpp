@@ -12,6 +12,8 @@ namespace {
 
 constexpr std::string_view kRecord = "program.toy";
 constexpr uint64_t kCycleNs = 62'500;  // the S300's tick: not a whole number of microseconds
+constexpr std::size_t kMaxProgram = 64;  // the largest program its flash takes
+constexpr std::string_view kDownload = "program ";  // the host's download line: `program TEXT`
 
 // "every N" → N; 0 for anything else.
 uint32_t every_of(const std::vector<uint8_t>& form) {
@@ -46,7 +48,7 @@ class ToyFirmware final : public dialect::Firmware {
   std::vector<dialect::Answer> query(std::string_view line) override { return answer(line, 0); }
   dialect::DownloadResult download(const std::vector<uint8_t>& form) override {
     dialect::DownloadResult r;
-    if (every_of(form) == 0) {
+    if (every_of(form) == 0 || form.size() > kMaxProgram) {
       r.error = "a toy program is `every N`";
       return r;
     }
@@ -73,6 +75,11 @@ class ToyFirmware final : public dialect::Firmware {
     if (line == "events") return {{std::to_string(events_seen_), 0}};
     if (line == "ticks") return {{std::to_string(runtime_.now_ns()), 0}};
     if (line == "hello") return {{"session " + std::to_string(session), 0}};
+    if (line.starts_with(kDownload)) {
+      line.remove_prefix(kDownload.size());
+      const dialect::DownloadResult r = download(std::vector<uint8_t>(line.begin(), line.end()));
+      return {{r.ok ? "" : r.error, r.ok ? 0 : 2}};
+    }
     if (line.starts_with("say ")) {
       runtime_.output(std::string(line.substr(4)) + "\n");
       return {};
@@ -111,15 +118,19 @@ class ToyDialect final : public dialect::Dialect {
   std::string_view description() const override { return "a test dialect"; }
   std::span<const std::string_view> source_extensions() const override { return kExtensions; }
   std::string_view stored_extension() const override { return ".toy"; }
-  dialect::CompileOutput compile_file(const std::string& path,
-                                      const dialect::CompileSettings&) const override {
+  dialect::CompileOutput compile_source(const SourceFile& source,
+                                        const dialect::CompileSettings&) const override {
     dialect::CompileOutput out;
-    std::string error;
-    if (auto text = read_text_file(path, &error))
-      out.stored_form.assign(text->begin(), text->end());
-    else
-      out.diagnostics.push_back(Diagnostic{Severity::Error, "toy", 1, error, {}, {}});
+    out.stored_form.assign(source.text.begin(), source.text.end());
+    if (every_of(out.stored_form) == 0) {
+      out.stored_form.clear();
+      out.diagnostics.push_back(
+          Diagnostic{Severity::Error, "toy", 2, "not `every N`", {source.name, 1, 1}, {}});
+    }
     return out;
+  }
+  Diagnostic unreadable_source(const std::string& path, const std::string& why) const override {
+    return Diagnostic{Severity::Error, "toy", 1, why, {path, 0, 0}, {}};
   }
   std::span<const dialect::ErrorInfo> diagnostic_codes() const override { return kErrors; }
   std::span<const dialect::ErrorInfo> interpreter_errors() const override { return kErrors; }
@@ -127,13 +138,20 @@ class ToyDialect final : public dialect::Dialect {
                                                    const dialect::FirmwareOptions&) const override {
     return std::make_unique<ToyFirmware>(runtime);
   }
-  std::vector<std::string> download_lines(const std::vector<uint8_t>&) const override { return {}; }
+  std::vector<std::string> download_lines(const std::vector<uint8_t>& form) const override {
+    return {std::string(kDownload) + std::string(form.begin(), form.end())};
+  }
   std::string load_line() const override { return ""; }
-  std::size_t max_download_bytes() const override { return 0; }
+  std::size_t max_download_bytes() const override { return kMaxProgram; }
+  const dialect::SampleProgram& sample_program() const override { return kSample; }
 
  private:
   static constexpr std::string_view kExtensions[] = {".toysrc"};
-  static constexpr dialect::ErrorInfo kErrors[] = {{1, "Unknown", "unknown"}};
+  static constexpr dialect::ErrorInfo kErrors[] = {{1, "Unknown", "unknown"},
+                                                   {2, "Refused", "download refused"}};
+  // Counting every 4th cycle, the counter is 1 after 4 cycles.
+  static constexpr dialect::SampleProgram kSample{
+      "sample.toysrc", "every 4", "", "count", "1", 4, "every x", 1, "bogus"};
 };
 
 }  // namespace

@@ -3,7 +3,8 @@
 // "program" is text: the line `every N` makes the firmware count every N-th cycle. Its command
 // line: `count` (the counter), `cycles`, `events` (the axis events it was given), `say TEXT` (sent
 // as the drive's own output), `ticks` (the virtual time in ns), `hello` (one answer per session:
-// which session).
+// which session), `program TEXT` (a download). tests/dialect registers it as a fifth dialect in
+// one line (toy_registry.def) to prove that it then passes the conformance suite and is fuzzed.
 #pragma once
 #include "dialect/dialect.h"
 

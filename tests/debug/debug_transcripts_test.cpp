@@ -1,28 +1,30 @@
-// Every transcript in tests/transcripts/debug, replayed with the debugger's directives.
+// Every transcript in tests/transcripts/debug, replayed with the debugger's directives, one
+// case (and ctest) per file.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "debug/transcript_debugger.h"
+#include "testlib/test_files.h"
 
 namespace uprog::debug {
 namespace {
 
-TEST(DebugTranscripts, EveryOnePasses) {
-  const std::filesystem::path dir = UPROG_SOURCE_DIR "/tests/transcripts/debug";
-  int files = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.path().extension() != ".txt") continue;
-    ++files;
-    TranscriptDebugger extension;
-    const transcript::TranscriptResult r =
-        transcript::run_transcript_file(entry.path().string(), {}, nullptr, &extension);
-    EXPECT_TRUE(r.ok) << entry.path();
-    EXPECT_GT(r.checks, 0) << entry.path();
-    for (const std::string& f : r.failures) ADD_FAILURE() << f;
-  }
-  EXPECT_GT(files, 0);
+// One case per file, so that a failure names its transcript.
+class DebugTranscript : public ::testing::TestWithParam<std::filesystem::path> {};
+
+TEST_P(DebugTranscript, Passes) {
+  TranscriptDebugger extension;
+  const transcript::TranscriptResult r =
+      transcript::run_transcript_file(GetParam().string(), {}, nullptr, &extension);
+  EXPECT_TRUE(r.ok);
+  EXPECT_GT(r.checks, 0);
+  for (const std::string& f : r.failures) ADD_FAILURE() << f;
 }
+
+INSTANTIATE_TEST_SUITE_P(Every, DebugTranscript,
+                         ::testing::ValuesIn(test::source_files("tests/transcripts/debug", ".txt")),
+                         [](const auto& param_info) { return param_info.param.stem().string(); });
 
 TEST(DebugTranscripts, WithoutTheDebuggerTheDirectiveIsUnknown) {
   const auto r = transcript::run_transcript_text("debug attach\n", "t", ".");

@@ -41,7 +41,7 @@ const EnumValue kEnumValues[] = {
     ENUM_VALUE(NoStoredProgram), ENUM_VALUE(LineDidNotFinish), ENUM_VALUE(NoSuchVariable),
     ENUM_VALUE(NoDownload),      ENUM_VALUE(DownloadSize),     ENUM_VALUE(DownloadChunk),
     ENUM_VALUE(DownloadRefused), ENUM_VALUE(RecorderBusy),     ENUM_VALUE(RecorderNoSignals),
-    ENUM_VALUE(RecorderNoData),
+    ENUM_VALUE(RecorderNoData),  ENUM_VALUE(BadStartData),
 };
 #undef ENUM_VALUE
 

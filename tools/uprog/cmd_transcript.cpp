@@ -18,7 +18,7 @@ void add_transcript(Options& cmd, Action& action) {
   auto files = std::make_shared<std::vector<std::string>>();
   auto quiet = std::make_shared<bool>(false);
   auto dialect_name = std::make_shared<std::string>();
-  cmd.option("FILE", *files, "transcript files (shared/spec/transcript.md)").required();
+  cmd.option("FILE", *files, "transcript files (docs/transcripts.md)").required();
   cmd.flag("-q,--quiet", *quiet, "print only mismatches");
   cmd.option("--dialect", *dialect_name,
              "the dialect of transcripts without a `dialect` line (default: `uprog dialects` lists "

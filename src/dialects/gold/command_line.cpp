@@ -136,6 +136,24 @@ void Firmware::expression(std::string_view text, std::vector<Answer>& answers) {
   run_line(std::string(text), answers);
 }
 
+void Firmware::bind_program_globals(vm::Machine& line) {
+  if (!program_) return;
+  vm::Machine& program = program_->machine();
+  for (uint32_t g = 0; g < known_globals_.size(); ++g) {
+    const std::span<Value> words = program.global_words(g);
+    line.bind_global(g, words.data(), static_cast<uint32_t>(words.size()));
+  }
+}
+
+vm::SliceResult Firmware::run_bound(vm::Machine& line, uint64_t budget) {
+  bound_line_running_ = true;
+  line.start(0, 0);
+  const vm::SliceResult r = line.run_slice(0, vm::Budget::of_instructions(budget));
+  bound_line_running_ = false;
+  retired_program_.reset();
+  return r;
+}
+
 void Firmware::run_line(const std::string& text, std::vector<Answer>& answers) {
   const gold::CompiledLine line = compile_line(text, known_globals_);
   if (!line.ok()) {
@@ -156,23 +174,10 @@ void Firmware::run_line(const std::string& text, std::vector<Answer>& answers) {
     return;
   }
   vm::Machine& m = loaded->machine();
-  // The program's globals come first in the line's image, in the same order.
-  const uint32_t shared = static_cast<uint32_t>(known_globals_.size());
-  auto copy_globals = [&](const vm::Machine& from, vm::Machine& to) {
-    for (uint32_t g = 0; g < shared; ++g) {
-      const uint32_t length = std::max<int32_t>(known_globals_[g].length, 1);
-      for (uint32_t i = 0; i < length; ++i) {
-        Value v;
-        if (from.read_global(g, i, v)) to.write_global(g, i, v);
-      }
-    }
-  };
-  const uint32_t generation = program_generation_;
-  if (program_) copy_globals(program_->machine(), m);
-  m.start(0, 0);
-  const vm::SliceResult r = m.run_slice(0, vm::Budget::of_instructions(kLineInstructionBudget));
-  // Whatever the line assigned before it ended stays assigned, unless the program was replaced.
-  if (program_ && generation == program_generation_) copy_globals(m, program_->machine());
+  // Whatever the line assigns is assigned in the program at once, and stays assigned when the
+  // line ends in an error; a program replaced meanwhile keeps it (and is then dropped).
+  bind_program_globals(m);
+  const vm::SliceResult r = run_bound(m, kLineInstructionBudget);
   if (r.end == vm::SliceEnd::Error) {
     const vm::RunError e = m.last_error(0);
     if (e == vm::RunError::CommandRefused) {

@@ -66,17 +66,10 @@ dialect::Evaluation Firmware::evaluate(uint32_t thread, uint32_t depth,
   vm::Machine& m = loaded->machine();
   const uint32_t shared = static_cast<uint32_t>(known_globals_.size());
   const uint32_t local_count = routine ? static_cast<uint32_t>(routine->locals.size()) : 0;
-  // In: the globals, then the frame's locals; out again afterwards, since a watch may assign.
+  // The globals are the program's own words (bound); the frame's locals are copied in, and out
+  // again afterwards, since a watch may assign.
+  bind_program_globals(m);
   auto exchange = [&](bool into_line) {
-    for (uint32_t g = 0; g < shared; ++g) {
-      const uint32_t length = static_cast<uint32_t>(std::max<int32_t>(known_globals_[g].length, 1));
-      for (uint32_t i = 0; i < length; ++i) {
-        Value v;
-        if (into_line ? pm.read_global(g, i, v) : m.read_global(g, i, v)) {
-          into_line ? m.write_global(g, i, v) : pm.write_global(g, i, v);
-        }
-      }
-    }
     for (uint32_t l = 0; l < local_count; ++l) {
       Value v;
       if (into_line ? pm.read_local(thread, depth, l, v) : m.read_global(shared + l, 0, v)) {
@@ -85,15 +78,14 @@ dialect::Evaluation Firmware::evaluate(uint32_t thread, uint32_t depth,
     }
   };
   exchange(true);
-  m.start(0, 0);
-  const vm::SliceResult r =
-      m.run_slice(0, vm::Budget::of_instructions(kEvaluationInstructionBudget));
+  const uint32_t generation = program_generation_;
+  const vm::SliceResult r = run_bound(m, kEvaluationInstructionBudget);
   if (r.end != vm::SliceEnd::Finished) {
     out.error = r.end == vm::SliceEnd::Error ? vm::run_error_text(m.last_error(0))
                                              : "the expression did not finish";
     return out;
   }
-  exchange(false);
+  if (generation == program_generation_) exchange(false);  // else `pm` was another program's
   out.ok = true;
   for (const LineValue& v : line.values) {
     Value value;

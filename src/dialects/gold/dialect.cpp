@@ -34,12 +34,12 @@ class GoldDialect final : public dialect::Dialect {
   std::span<const std::string_view> source_extensions() const override { return kExtensions; }
   std::string_view stored_extension() const override { return ".upi"; }
 
-  dialect::CompileOutput compile_file(const std::string& path,
-                                      const dialect::CompileSettings& settings) const override {
+  dialect::CompileOutput compile_source(const SourceFile& source,
+                                        const dialect::CompileSettings& settings) const override {
     CompileOptions options;
     options.check_only = settings.check_only;
     options.created_unix_s = settings.created_unix_s;
-    CompileResult r = gold::compile_file(path, options);
+    CompileResult r = gold::compile(source, options);
     dialect::CompileOutput out;
     out.diagnostics = std::move(r.diagnostics);
     if (out.ok() && !settings.check_only) {
@@ -47,6 +47,9 @@ class GoldDialect final : public dialect::Dialect {
       out.image = std::move(r.image);
     }
     return out;
+  }
+  Diagnostic unreadable_source(const std::string& path, const std::string& why) const override {
+    return make_error(Error::OpenFileFailure, Location{path, 0, 0}, why);
   }
 
   std::span<const dialect::ErrorInfo> diagnostic_codes() const override {
@@ -72,6 +75,13 @@ class GoldDialect final : public dialect::Dialect {
     return framing;
   }
   std::size_t max_download_bytes() const override { return kDownloadMaxBytes; }
+  const dialect::SampleProgram& sample_program() const override { return kSample; }
+
+ private:
+  // AC must be positive (EC 21, the Elmo reference's "out of range").
+  static constexpr dialect::SampleProgram kSample{
+      "sample.ehl", "int done\nfunction main()\ndone = 6 * 7\nreturn\n", "main", "done", "42", 100,
+      "int done\nfunction main()\ndone = 6 *\nreturn\n", 3, "AC=-5"};
 };
 
 }  // namespace

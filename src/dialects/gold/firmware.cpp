@@ -10,6 +10,7 @@
 #include "dialects/gold/background_cycle.h"
 #include "dialects/gold/commands.h"
 #include "dialects/gold/recorder_signals.h"
+#include "dialect/program_store.h"
 #include "drive/axis.h"
 #include "vm/run_error.h"
 
@@ -23,7 +24,7 @@ uint16_t command_id(std::string_view name) { return find_command(name)->id; }
 const uint16_t kMi = command_id("MI"), kPs = command_id("PS"), kEc = command_id("EC");
 
 const vm::MachineConfig kProgramConfig{};
-constexpr std::string_view kProgramRecord = "program.upi";
+const dialect::ProgramStore kProgramStore{"program.upi", "program"};
 constexpr std::string_view kDialectName = "gold";  // what the Gold compiler writes into its images
 
 }  // namespace
@@ -88,16 +89,9 @@ void Firmware::boot(std::vector<std::string>& messages) {
   ec_ = 0;
   if (!flash_read_) {
     flash_read_ = true;  // once, at power-up: RS keeps what is stored
-    std::string error;
-    if (auto bytes = runtime_.flash().read(kProgramRecord, &error)) {
-      const dialect::DownloadResult r = verify(*bytes);
-      if (r.ok) {
-        stored_ = std::move(*bytes);
-      } else {
-        messages.push_back("stored program " + runtime_.flash().where(kProgramRecord) +
-                           " refused: " + r.error + "; the drive starts without a program");
-      }
-    }
+    stored_ = kProgramStore.read(
+        runtime_.flash(), [this](const std::vector<uint8_t>& b) { return verify(b).error; },
+        messages, "; the drive starts without a program");
   }
   unload();
   std::string error;
@@ -123,13 +117,8 @@ dialect::DownloadResult Firmware::verify(const std::vector<uint8_t>& bytes) {
 dialect::DownloadResult Firmware::download(const std::vector<uint8_t>& bytes) {
   dialect::DownloadResult r = verify(bytes);
   if (!r.ok) return r;
-  std::string error;
-  if (!runtime_.flash().write(kProgramRecord, bytes, &error)) {
-    r.ok = false;
-    r.storage_failed = true;
-    r.error = "could not store the program: " + error;
-    return r;
-  }
+  r = kProgramStore.store(runtime_.flash(), bytes);
+  if (!r.ok) return r;
   stored_ = bytes;
   forget_recorder_variables();
   log("program downloaded (" + std::to_string(bytes.size()) + " bytes)");
@@ -149,7 +138,10 @@ void Firmware::forget_recorder_variables() {
 }
 
 void Firmware::unload() {
-  program_.reset();
+  if (bound_line_running_)
+    retired_program_ = std::move(program_);
+  else
+    program_.reset();
   known_globals_.clear();
   autos_.clear();
   ever_run_ = false;

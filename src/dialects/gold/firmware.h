@@ -105,6 +105,13 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   void recorder_upload(std::string_view argument, std::vector<dialect::Answer>& answers);  // BH=n
   bool program_control(const std::string& text, std::vector<dialect::Answer>& answers);
   void run_line(const std::string& text, std::vector<dialect::Answer>& answers);
+  // Binds the machine of a host line or a debugger expression, whose first globals are the
+  // program's in the same order, to the program's own words (Machine::bind_global): it reads and
+  // assigns them in place, without copying every global in and out. A program unloaded while
+  // such a machine runs is kept until it ends (retire_running_program).
+  void bind_program_globals(vm::Machine& line);
+  // Runs `line` for at most `budget` instructions with the program's globals bound.
+  vm::SliceResult run_bound(vm::Machine& line, uint64_t budget);
   dialect::Answer error_answer(int32_t code, std::string why);
   int32_t save_parameters();
   int32_t load_parameters();
@@ -128,6 +135,10 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::vector<KnownGlobal> known_globals_;
   bool ever_run_ = false;
   uint32_t program_generation_ = 0;  // bumped whenever RAM gets another program
+  // The program unloaded while a host line or an expression bound to its globals ran: kept until
+  // that machine ends, so that its stores never reach freed words.
+  std::unique_ptr<dialect::LoadedProgram> retired_program_;
+  bool bound_line_running_ = false;
   vm::RunError program_error_ = vm::RunError::None;
   int32_t program_error_detail_ = 0;
   AutoRoutines autos_;

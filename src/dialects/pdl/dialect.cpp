@@ -13,18 +13,9 @@ namespace {
 constexpr std::string_view kExtensions[] = {".pdl"};
 
 constexpr dialect::ErrorInfo kHostErrors[] = {
-    {1, "UnknownCommand", "unknown command"},
-    {2, "NoSuchVariable", "no such variable"},
-    {3, "BadIndex", "bad index"},
-    {4, "ReadOnly", "read-only (_ro)"},
-    {5, "BadValue", "bad value"},
-    {6, "LevelTooLow", "level too low"},
-    {7, "NoProgram", "no program"},
-    {8, "NoSuchLabel", "no such _ label"},
-    {9, "BadTask", "task not 1..3"},
-    {10, "TaskBusy", "task busy or label running"},
-    {11, "ServoNotReady", "servo not ready"},
-    {12, "EnableRefused", "enable refused"},
+#define EC(code, name, text) {code, #name, text},
+#include "dialects/pdl/interpreter_errors.def"
+#undef EC
 };
 
 std::vector<dialect::ErrorInfo> diagnostic_table() {
@@ -57,12 +48,12 @@ class PdlDialect final : public dialect::Dialect {
   }
   std::span<const std::string_view> source_extensions() const override { return kExtensions; }
   std::string_view stored_extension() const override { return ".pdi"; }
-  dialect::CompileOutput compile_file(const std::string& path,
-                                      const dialect::CompileSettings& settings) const override {
+  dialect::CompileOutput compile_source(const SourceFile& source,
+                                        const dialect::CompileSettings& settings) const override {
     CompileOptions options;
     options.check_only = settings.check_only;
     options.created_unix_s = settings.created_unix_s;
-    CompileResult r = pdl::compile_file(path, options);
+    CompileResult r = pdl::compile(source, options);
     dialect::CompileOutput out;
     out.diagnostics = std::move(r.diagnostics);
     if (out.ok() && !settings.check_only) {
@@ -70,6 +61,9 @@ class PdlDialect final : public dialect::Dialect {
       out.image = std::move(r.image);
     }
     return out;
+  }
+  Diagnostic unreadable_source(const std::string& path, const std::string& why) const override {
+    return make_diagnostic(Error::Syntax, Location{path, 0, 0}, "cannot read: " + why);
   }
   std::span<const dialect::ErrorInfo> diagnostic_codes() const override {
     static const std::vector<dialect::ErrorInfo> table = diagnostic_table();
@@ -85,6 +79,13 @@ class PdlDialect final : public dialect::Dialect {
   }
   std::string load_line() const override { return "reset"; }
   std::size_t max_download_bytes() const override { return gold::kDownloadMaxBytes; }
+  const dialect::SampleProgram& sample_program() const override { return kSample; }
+
+ private:
+  // A command the host protocol does not know is 1 (tests/transcripts/pdl/host_protocol.txt).
+  static constexpr dialect::SampleProgram kSample{
+      "sample.pdl", "#long done\n#task/1;\ndone = 6 * 7;\nhalt;\n", "", "done", "42", 100,
+      "#long done\n#task/1;\ndone = 6 *;\nhalt;\n", 3, "frobnicate now"};
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <fmt/core.h>
 
+#include "dialect/program_store.h"
 #include "dialects/pdl/system_names.h"
 #include "drive/axis.h"
 #include "drive/events.h"
@@ -13,7 +14,7 @@
 namespace uprog::pdl {
 namespace {
 
-constexpr std::string_view kProgramRecord = "program.pdi";
+const dialect::ProgramStore kProgramStore{"program.pdi", "program"};
 constexpr std::string_view kDialectName = "pdl";
 
 // A procedure is a VM routine whose frame takes 2 words of the task's stack at least, so a task
@@ -69,22 +70,21 @@ void Firmware::boot(std::vector<std::string>& messages) {
   }
   if (!flash_read_) {
     flash_read_ = true;
-    std::string error;
-    if (auto bytes = runtime_.flash().read(kProgramRecord, &error)) {
-      std::string why;
-      if (dialect::LoadedProgram::load(*bytes, machine_config(), *this, &why, false,
-                                       kDialectName)) {
-        stored_ = std::move(*bytes);
-      } else {
-        messages.push_back("stored program " + runtime_.flash().where(kProgramRecord) +
-                           " refused: " + why);
-      }
-    }
+    stored_ = kProgramStore.read(
+        runtime_.flash(), [this](const std::vector<uint8_t>& b) { return verify(b); }, messages);
   }
   program_.reset();
   std::string error;
   if (stored_ && !load_stored(&error)) messages.push_back(error);
   if (program_) start_reset_tasks();
+}
+
+// "" when `bytes` load into a verified image; else the loader's or the verifier's finding.
+std::string Firmware::verify(const std::vector<uint8_t>& bytes) {
+  std::string why;
+  if (dialect::LoadedProgram::load(bytes, machine_config(), *this, &why, false, kDialectName))
+    return "";
+  return why.empty() ? "the image is refused" : why;
 }
 
 bool Firmware::load_stored(std::string* error) {
@@ -148,16 +148,10 @@ int32_t Firmware::start_task(uint32_t task, uint32_t routine) {
 }
 
 dialect::DownloadResult Firmware::download(const std::vector<uint8_t>& bytes) {
-  dialect::DownloadResult r;
-  if (!dialect::LoadedProgram::load(bytes, machine_config(), *this, &r.error, false, kDialectName))
-    return r;
-  if (!runtime_.flash().write(kProgramRecord, bytes, &r.error)) {
-    r.storage_failed = true;
-    r.error = "could not store the program: " + r.error;
-    return r;
-  }
+  const dialect::DownloadResult r = kProgramStore.store(
+      runtime_.flash(), bytes, [this](const std::vector<uint8_t>& b) { return verify(b); });
+  if (!r.ok) return r;
   stored_ = bytes;
-  r.ok = true;
   runtime_.log("program downloaded (" + std::to_string(bytes.size()) + " bytes)");
   return r;
 }

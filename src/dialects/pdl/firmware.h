@@ -113,6 +113,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
                           int32_t limit, std::vector<TaskFrame>& out) const;
   std::string frame_name(const TaskFrame& f) const;
 
+  std::string verify(const std::vector<uint8_t>& bytes);
   bool load_stored(std::string* error);
   void start_reset_tasks();
   int32_t start_task(uint32_t task, uint32_t routine);

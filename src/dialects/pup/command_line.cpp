@@ -5,6 +5,7 @@
 
 #include "dialects/pup/cup_math.h"
 #include "dialects/pup/download.h"
+#include "dialects/pup/errors.h"
 #include "dialects/pup/firmware.h"
 #include "drive/axis.h"
 
@@ -12,44 +13,9 @@ namespace uprog::pup {
 namespace {
 
 dialect::Answer refusal(int32_t code) {
-  static constexpr const char* kTexts[] = {"",
-                                           "unknown keyword",
-                                           "syntax",
-                                           "index missing",
-                                           "index out of range",
-                                           "no index allowed",
-                                           "argument wrong format",
-                                           "argument out of range",
-                                           "argument not supported",
-                                           "argument required",
-                                           "value out of range",
-                                           "read only",
-                                           "not assignable",
-                                           "not over the line",
-                                           "not from a program",
-                                           "no user program",
-                                           "user program running",
-                                           "thread already running",
-                                           "thread not running",
-                                           "thread not halted",
-                                           "in motion",
-                                           "motor off",
-                                           "motor on",
-                                           "fault",
-                                           "inhibit",
-                                           "mode",
-                                           "expression stack full",
-                                           "expression stack empty",
-                                           "call stack full",
-                                           "return without call",
-                                           "division by zero",
-                                           "math domain",
-                                           "bad line",
-                                           "no task",
-                                           "breakpoints"};
-  const char* text =
-      code > 0 && code < static_cast<int32_t>(std::size(kTexts)) ? kTexts[code] : "error";
-  return {text, code};
+  for (const dialect::ErrorInfo& e : interpreter_error_table())
+    if (e.code == code) return {std::string(e.text), code};
+  return {"error", code};
 }
 
 std::string trim(std::string_view s) {

@@ -34,15 +34,10 @@ Diagnostic cup_diagnostic(int32_t code, const std::string& why, const std::strin
 
 // A hand-written .cup: read leniently, checked by the loader (a refusal names its line), and
 // written again with CR line ends and a fresh header.
-PupOutput rebuild_cup(const std::string& path, uint64_t created_unix_s) {
+PupOutput rebuild_cup(const std::string& path, const std::string& text, uint64_t created_unix_s) {
   PupOutput out;
   std::string why;
-  const auto text = read_text_file(path, &why);
-  if (!text) {
-    out.diagnostics.push_back(make_error(Error::IncludeNotFound, Location{path, 0, 0}, why));
-    return out;
-  }
-  out.program = read_cup_text(*text, std::filesystem::path(path).stem().string());
+  out.program = read_cup_text(text, std::filesystem::path(path).stem().string());
   out.program.date = cup_date(created_unix_s);
   if (!load_cup(out.program, &why)) out.diagnostics.push_back(cup_diagnostic(45, why, path));
   // The flash sector (ADownloadUProg[1]'s 262 144 characters); 41 is the download's "length".
@@ -66,24 +61,30 @@ class PupDialect final : public dialect::Dialect {
     return std::filesystem::path(source).replace_extension(".cup").string();
   }
 
-  dialect::CompileOutput compile_file(const std::string& path,
-                                      const dialect::CompileSettings& settings) const override {
+  dialect::CompileOutput compile_source(const SourceFile& source,
+                                        const dialect::CompileSettings& settings) const override {
     dialect::CompileOutput out;
-    PupOutput r = is_cup(path) ? rebuild_cup(path, settings.created_unix_s)
-                               : compile_pup_file(path, settings.created_unix_s);
+    const bool cup = is_cup(source.name);
+    PupOutput r = cup ? rebuild_cup(source.name, source.text, settings.created_unix_s)
+                      : compile_pup(source.name, source.text, settings.created_unix_s);
     out.diagnostics = std::move(r.diagnostics);
     if (out.ok() && !settings.check_only) {
-      const std::string cup = write_cup(r.program);
-      out.stored_form.assign(cup.begin(), cup.end());
-      if (!is_cup(path)) out.debug_map = write_debug_map(r.places, r.vars);
+      const std::string text = write_cup(r.program);
+      out.stored_form.assign(text.begin(), text.end());
+      if (!cup) out.debug_map = write_debug_map(r.places, r.vars);
     }
     return out;
+  }
+  Diagnostic unreadable_source(const std::string& path, const std::string& why) const override {
+    return make_error(Error::IncludeNotFound, Location{path, 0, 0}, why);
   }
 
   std::span<const dialect::ErrorInfo> diagnostic_codes() const override {
     return diagnostic_table();
   }
-  std::span<const dialect::ErrorInfo> interpreter_errors() const override { return {}; }
+  std::span<const dialect::ErrorInfo> interpreter_errors() const override {
+    return interpreter_error_table();
+  }
   std::unique_ptr<dialect::Firmware> make_firmware(
       dialect::Runtime& runtime, const dialect::FirmwareOptions& options) const override {
     return std::make_unique<Firmware>(runtime, options);
@@ -93,6 +94,14 @@ class PupDialect final : public dialect::Dialect {
   }
   std::string load_line() const override { return ""; }  // ADownloadUProg[3] stores and loads
   std::size_t max_download_bytes() const override { return kMaxProgramBytes; }
+  const dialect::SampleProgram& sample_program() const override { return kSample; }
+
+ private:
+  // An unknown keyword is 1 (akribis-drive.md, "Errors"; tests/transcripts/pup/command_line.txt).
+  static constexpr dialect::SampleProgram kSample{
+      "sample.pup", "#definevar Done AGenData[1]\nAProgTask[1]\nDone = 6 * 7\nAProgHalt[1]\n", "",
+      "AGenData[1]", "42", 100,
+      "#definevar Done AGenData[1]\nAProgTask[1]\nDone = 6 *\nAProgHalt[1]\n", 3, "ANoSuchThing"};
 };
 
 }  // namespace

@@ -10,9 +10,16 @@ constexpr dialect::ErrorInfo kTable[] = {
 #undef PUP_ERROR
 };
 
+constexpr dialect::ErrorInfo kInterpreterErrors[] = {
+#define EC(code, name, text) {code, #name, text},
+#include "dialects/pup/interpreter_errors.def"
+#undef EC
+};
+
 }  // namespace
 
 std::span<const dialect::ErrorInfo> diagnostic_table() { return kTable; }
+std::span<const dialect::ErrorInfo> interpreter_error_table() { return kInterpreterErrors; }
 
 Diagnostic make_error(Error e, Location where, const std::string& detail) {
   Diagnostic d;

@@ -1,5 +1,5 @@
 // The PUP compiler's registered diagnostics (pup_errors.def) and the one constructor of them,
-// so every message reads "<text>: <detail> [pup N]".
+// so every message reads "<text>: <detail> [pup N]"; the command line's error codes.
 #pragma once
 #include <span>
 #include <string>
@@ -16,6 +16,8 @@ enum class Error : int {
 };
 
 std::span<const dialect::ErrorInfo> diagnostic_table();
+// The command line's error codes (interpreter_errors.def), what `?code` answers carry.
+std::span<const dialect::ErrorInfo> interpreter_error_table();
 Diagnostic make_error(Error e, Location where, const std::string& detail = {});
 
 }  // namespace uprog::pup

@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "bytecode/opcodes.h"
+#include "dialect/program_store.h"
 #include "dialects/pup/cup_math.h"
 #include "drive/axis.h"
 #include "vm/run_error.h"
@@ -12,7 +13,7 @@
 namespace uprog::pup {
 namespace {
 
-constexpr std::string_view kRecord = "program.cup";
+const dialect::ProgramStore kProgramStore{"program.cup", "program"};
 
 vm::MachineConfig machine_config() {
   vm::MachineConfig c;
@@ -61,14 +62,15 @@ void Firmware::boot(std::vector<std::string>& messages) {
   in_func_.fill(0);
   if (!flash_read_) {
     flash_read_ = true;
-    std::string error;
-    if (auto bytes = runtime_.flash().read(kRecord, &error))
+    // Checked just below, by the install that loads it.
+    if (auto bytes = kProgramStore.read(runtime_.flash(), nullptr, messages))
       stored_ = std::string(bytes->begin(), bytes->end());
   }
   if (stored_) {
     const std::string why = install(*stored_, false);
     if (!why.empty()) {
-      messages.push_back("stored program " + runtime_.flash().where(kRecord) + " refused: " + why);
+      messages.push_back("stored program " + runtime_.flash().where(kProgramStore.record()) +
+                         " refused: " + why);
       stored_.reset();
     }
   }
@@ -88,9 +90,10 @@ std::string Firmware::install(const std::string& cup, bool store) {
   if (!image) return "error 45: " + why;
   if (!bind_gen_data(image->machine(), *loaded, gen_data_))
     return "error 45: AGenData cannot be placed";
-  if (store &&
-      !runtime_.flash().write(kRecord, std::vector<uint8_t>(cup.begin(), cup.end()), &why)) {
-    return "error 46: " + why;
+  if (store) {
+    const dialect::DownloadResult stored =
+        kProgramStore.store(runtime_.flash(), std::vector<uint8_t>(cup.begin(), cup.end()));
+    if (!stored.ok) return "error 46: " + stored.error;
   }
   program_ = std::move(image);
   cup_ = std::move(*loaded);

@@ -21,20 +21,9 @@ constexpr std::string_view kExtensions[] = {".st"};
 constexpr size_t kHexBytesPerLine = 100;
 
 constexpr dialect::ErrorInfo kInterpreterErrors[] = {
-    {kErrUnknown, "Unknown", "unknown command"},
-    {kErrSyntax, "Syntax", "syntax error"},
-    {kErrRange, "Range", "out of range"},
-    {kErrReadOnly, "ReadOnly", "read only"},
-    {kErrNeedsDisabled, "NeedsDisabled", "needs disabled"},
-    {kErrNeedsEnabled, "NeedsEnabled", "needs enabled"},
-    {kErrOpmode, "Opmode", "OPMODE"},
-    {kErrFault, "Fault", "fault"},
-    {kErrTask, "Task", "no such task"},
-    {kErrStorage, "Storage", "storage"},
-    {kErrCompileFailed, "CompileFailed", "compile failed"},
-    {kErrNoDownload, "NoDownload", "no download in progress (PLCDL BEGIN first)"},
-    {kErrDownloadSize, "DownloadSize", "bad download size"},
-    {kErrDownloadData, "DownloadData", "bad download data (PLCDL takes hex digit pairs)"},
+#define EC(code, name, text) {code, #name, text},
+#include "dialects/st/interpreter_errors.def"
+#undef EC
 };
 
 std::vector<dialect::ErrorInfo> diagnostic_table() {
@@ -76,30 +65,30 @@ class StDialect final : public dialect::Dialect {
   std::span<const std::string_view> source_extensions() const override { return kExtensions; }
   std::string_view stored_extension() const override { return ".st"; }
 
-  dialect::CompileOutput compile_file(const std::string& path,
-                                      const dialect::CompileSettings& settings) const override {
+  dialect::CompileOutput compile_source(const SourceFile& source,
+                                        const dialect::CompileSettings& settings) const override {
     CompileOptions options;
     options.check_only = settings.check_only;
     options.created_unix_s = settings.created_unix_s;
     dialect::CompileOutput out;
-    if (!take_defines(path, settings, options, out.diagnostics)) return out;
-    CompileResult r = st::compile_file(path, options);
+    if (!take_defines(source.name, settings, options, out.diagnostics)) return out;
+    CompileResult r = st::compile(source, options);
     out.diagnostics = std::move(r.diagnostics);
     if (out.ok() && !settings.check_only) {
-      std::string error;
       // The stored form is the source: the drive compiles it itself.
-      std::FILE* f = std::fopen(path.c_str(), "rb");
-      if (f != nullptr) {
-        for (int c; (c = std::fgetc(f)) != EOF;) out.stored_form.push_back(static_cast<uint8_t>(c));
-        std::fclose(f);
-      }
+      out.stored_form.assign(source.text.begin(), source.text.end());
       out.image = std::move(r.image);
       // The download carries the source alone: its file name goes to the drive beside it, so
       // that the drive compiles it under that name and breakpoints in it resolve.
-      out.debug_map = nlohmann::json{{"source", path}}.dump(
+      out.debug_map = nlohmann::json{{"source", source.name}}.dump(
           -1, ' ', false, nlohmann::json::error_handler_t::replace);
     }
     return out;
+  }
+  Diagnostic unreadable_source(const std::string& path, const std::string& why) const override {
+    Diagnostic d = make_error(Error::Syntax, Location{path, 0, 0});
+    d.message = "cannot read the file: " + why;
+    return d;
   }
 
   std::span<const dialect::ErrorInfo> diagnostic_codes() const override {
@@ -133,6 +122,13 @@ class StDialect final : public dialect::Dialect {
   }
   std::string load_line() const override { return "PLCRUN"; }
   std::size_t max_download_bytes() const override { return kMaxStoredSource; }
+  const dialect::SampleProgram& sample_program() const override { return kSample; }
+
+ private:
+  // An unknown command is ERR 1 (tests/transcripts/st/interface.txt).
+  static constexpr dialect::SampleProgram kSample{
+      "sample.st", "LONG DONE ;\nPROGRAM PLCMAIN\n   DONE := 6 * 7;\nEND_PROGRAM\n", "", "DONE", "42",
+      100, "LONG DONE ;\nPROGRAM PLCMAIN\n   DONE := 6 *;\nEND_PROGRAM\n", 3, "NOSUCH"};
 };
 
 }  // namespace

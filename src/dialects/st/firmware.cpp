@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "bytecode/image.h"
+#include "dialect/program_store.h"
 #include "dialects/st/codegen.h"
 #include "dialects/st/names.h"
 #include "drive/axis.h"
@@ -14,7 +15,7 @@
 namespace uprog::st {
 namespace {
 
-constexpr std::string_view kSourceRecord = "program.st";
+const dialect::ProgramStore kSourceStore{"program.st", "PLC source"};
 constexpr uint64_t kCostlyCallLines = 625;  // XREAD, XWRITE, COMMAND, PRINTF
 
 vm::MachineConfig machine_config() {
@@ -62,20 +63,16 @@ void Firmware::boot(std::vector<std::string>& messages) {
     input_modes_[n] = values_.at("IN" + std::to_string(n + 1) + "MODE");
   ancnfg_ = values_.at("ANCNFG");  // also a configuration the reference takes at boot
   analog_rpm_.reset();
-  std::string error;
   source_.reset();
-  if (auto bytes = runtime_.flash().read(kSourceRecord, &error)) {
+  // Checked when it compiles (compile_and_start), as the drive compiles it at every boot.
+  if (auto bytes = kSourceStore.read(runtime_.flash(), nullptr, messages))
     source_ = std::string(bytes->begin(), bytes->end());
-  } else if (!error.empty()) {
-    messages.push_back("stored PLC source " + runtime_.flash().where(kSourceRecord) +
-                       " unreadable: " + error);
-  }
   compile_and_start();
 }
 
 std::string Firmware::source_name() const {
   if (source_ && !source_name_.empty() && *source_ == named_source_) return source_name_;
-  return std::string(kSourceRecord);
+  return std::string(kSourceStore.record());
 }
 
 dialect::DownloadResult Firmware::download(const std::vector<uint8_t>& source) {
@@ -84,11 +81,8 @@ dialect::DownloadResult Firmware::download(const std::vector<uint8_t>& source) {
     r.error = "the source is over 61440 bytes";
     return r;
   }
-  if (!runtime_.flash().write(kSourceRecord, source, &r.error)) {
-    r.storage_failed = true;
-    r.error = "could not store the source: " + r.error;
-    return r;
-  }
+  r = kSourceStore.store(runtime_.flash(), source);
+  if (!r.ok) return r;
   source_ = std::string(source.begin(), source.end());
   r.ok = true;
   runtime_.log("PLC source stored (" + std::to_string(source.size()) + " bytes)");
