@@ -54,15 +54,15 @@ struct CompileOutput {
 // conformance_test.cpp: compile, download as a host does, run, step cycle by cycle, refusals);
 // its fuzzers start from it.
 struct SampleProgram {
-  std::string_view file_name;  // "sample.ehl": a name with one of the dialect's extensions
-  std::string_view source;     // compiles clean; started, it makes `query` answer `answer`
-  std::string_view entry;      // what Firmware::start() takes ("" for the dialect's own start)
-  std::string_view query;      // a host line that reads what the program did
-  std::string_view answer;     // its one answer once the program did it, and not before
-  uint32_t max_cycles;         // the firmware cycles the program may take to do it
-  std::string_view bad_source;      // a program the compiler refuses
-  uint32_t bad_source_line;         // the line its first error names
-  std::string_view bad_host_line;   // a line the command line refuses with a registered error
+  std::string_view file_name;      // "sample.ehl": a name with one of the dialect's extensions
+  std::string_view source;         // compiles clean; started, it makes `query` answer `answer`
+  std::string_view entry;          // what Firmware::start() takes ("" for the dialect's own start)
+  std::string_view query;          // a host line that reads what the program did
+  std::string_view answer;         // its one answer once the program did it, and not before
+  uint32_t max_cycles;             // the firmware cycles the program may take to do it
+  std::string_view bad_source;     // a program the compiler refuses
+  uint32_t bad_source_line;        // the line its first error names
+  std::string_view bad_host_line;  // a line the command line refuses with a registered error
 };
 
 class Dialect {

@@ -9,8 +9,8 @@
 #endif
 
 // Each dialect's entry, as its dialects/NAME/dialect.h declares it.
-#define UPROG_DIALECT(NAME)                  \
-  namespace uprog::NAME {                    \
+#define UPROG_DIALECT(NAME)                   \
+  namespace uprog::NAME {                     \
   const ::uprog::dialect::Dialect& dialect(); \
   }
 #include UPROG_REGISTRY_DEF

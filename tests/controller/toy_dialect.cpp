@@ -11,7 +11,7 @@ namespace uprog::toy {
 namespace {
 
 constexpr std::string_view kRecord = "program.toy";
-constexpr uint64_t kCycleNs = 62'500;  // the S300's tick: not a whole number of microseconds
+constexpr uint64_t kCycleNs = 62'500;    // the S300's tick: not a whole number of microseconds
 constexpr std::size_t kMaxProgram = 64;  // the largest program its flash takes
 constexpr std::string_view kDownload = "program ";  // the host's download line: `program TEXT`
 

@@ -34,9 +34,8 @@ class Conformance : public ::testing::TestWithParam<std::string> {
   const SampleProgram& sample() const { return dialect().sample_program(); }
 
   CompileOutput compile_sample() const {
-    return dialect().compile_source(SourceFile{std::string(sample().file_name),
-                                               std::string(sample().source)},
-                                    {});
+    return dialect().compile_source(
+        SourceFile{std::string(sample().file_name), std::string(sample().source)}, {});
   }
 
   // A drive of the dialect with the sample downloaded and loaded by a host's lines.
@@ -52,8 +51,8 @@ class Conformance : public ::testing::TestWithParam<std::string> {
     if (!dialect().load_line().empty()) lines.push_back(dialect().load_line());
     for (const std::string& line : lines) {
       for (const Answer& a : host->send(line)) {
-        EXPECT_FALSE(a.is_error()) << line.substr(0, 40) << " answered " << a.error << " "
-                                   << a.text;
+        EXPECT_FALSE(a.is_error())
+            << line.substr(0, 40) << " answered " << a.error << " " << a.text;
       }
     }
     return drive;
@@ -81,7 +80,8 @@ class Conformance : public ::testing::TestWithParam<std::string> {
 
   bool registered_interpreter_error(int32_t code) const {
     const auto list = dialect().interpreter_errors();
-    return std::any_of(list.begin(), list.end(), [&](const ErrorInfo& e) { return e.code == code; });
+    return std::any_of(list.begin(), list.end(),
+                       [&](const ErrorInfo& e) { return e.code == code; });
   }
 };
 
@@ -111,8 +111,9 @@ TEST_P(Conformance, ABadSourceIsRefusedAtItsLine) {
       SourceFile{std::string(sample().file_name), std::string(sample().bad_source)}, {});
   ASSERT_FALSE(out.ok());
   EXPECT_TRUE(out.stored_form.empty());
-  const auto first = std::find_if(out.diagnostics.begin(), out.diagnostics.end(),
-                                  [](const Diagnostic& d) { return d.severity == Severity::Error; });
+  const auto first =
+      std::find_if(out.diagnostics.begin(), out.diagnostics.end(),
+                   [](const Diagnostic& d) { return d.severity == Severity::Error; });
   ASSERT_NE(first, out.diagnostics.end());
   EXPECT_EQ(first->where.line, static_cast<int>(sample().bad_source_line)) << first->message;
   EXPECT_EQ(first->where.file, sample().file_name);

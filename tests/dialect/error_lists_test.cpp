@@ -38,20 +38,24 @@ const std::map<std::string, std::map<int32_t, std::string>> kNotFromATranscript 
       {114, "no Gold statement raises an error"},
       {115, "Gold has no pointers"}}},
     {"pdl",
-     {{12, "no host line makes the simulated axis refuse an enable today: with `fault feedback` "
-           "latched, X_enable=1 is still accepted"}}},
+     {{12,
+       "no host line makes the simulated axis refuse an enable today: with `fault feedback` "
+       "latched, X_enable=1 is still accepted"}}},
     {"pup",
-     {{14, "only the loader's refusal of a CUP that uses such a keyword in a program (cup_loader.cpp, "
-           "a download's 45) says it; the compiler refuses it first"},
-      {26, "a program thread's error, checked as AProgError's value "
-           "(pup/stack_errors_at_run_time.txt); no transcript fills thread 0's stack from the host"},
+     {{14,
+       "only the loader's refusal of a CUP that uses such a keyword in a program (cup_loader.cpp, "
+       "a download's 45) says it; the compiler refuses it first"},
+      {26,
+       "a program thread's error, checked as AProgError's value "
+       "(pup/stack_errors_at_run_time.txt); no transcript fills thread 0's stack from the host"},
       {28, "a program thread's error (AProgError, AErrLog), not a host line's answer"},
       {29, "a program thread's error (AProgError, AErrLog), not a host line's answer"},
       {34, "no transcript sets a 17th breakpoint yet (program_control.cpp keeps 16)"},
       {46, "only a flash write that fails, which a transcript cannot make"}}},
     {"st",
-     {{10, "only a flash write that fails (PLCDL END, SAVE), which a transcript cannot make: an "
-           "oversized source is refused at PLCDL BEGIN (13)"}}},
+     {{10,
+       "only a flash write that fails (PLCDL END, SAVE), which a transcript cannot make: an "
+       "oversized source is refused at PLCDL BEGIN (13)"}}},
 };
 
 // The dialect a transcript runs on: its `dialect NAME` line, else the registry's default.
@@ -125,7 +129,8 @@ TEST(ErrorLists, EveryRegisteredCodeIsProducedByATranscriptOrExempt) {
     const auto exempt = kNotFromATranscript.find(name);
     for (const ErrorInfo& e : d->interpreter_errors()) {
       const bool is_produced = produced != expected.end() && produced->second.count(e.code) != 0;
-      const bool is_exempt = exempt != kNotFromATranscript.end() && exempt->second.count(e.code) != 0;
+      const bool is_exempt =
+          exempt != kNotFromATranscript.end() && exempt->second.count(e.code) != 0;
       EXPECT_TRUE(is_produced || is_exempt)
           << name << " " << e.code << " (" << e.name << "): no transcript expects it";
       EXPECT_FALSE(is_produced && is_exempt)

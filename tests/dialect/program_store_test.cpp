@@ -2,6 +2,8 @@
 // (support/files.h): a writer killed while it writes leaves the old file whole and no temporary;
 // a drive's flash removes the temporaries of dead writers at start-up and keeps a living one's;
 // a refused or unstorable download leaves the stored form as it was.
+#include "dialect/program_store.h"
+
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <stdlib.h>
@@ -14,7 +16,6 @@
 #include <thread>
 
 #include "controller/flash.h"
-#include "dialect/program_store.h"
 #include "support/files.h"
 
 namespace uprog::dialect {
@@ -137,9 +138,8 @@ TEST(program_store, APowerUpReadRefusesAStoredFormItsCheckRefusesAndSaysWhy) {
 
   flash.records["program.x"] = {'q'};
   EXPECT_FALSE(store.read(flash, starts_with_p, messages, "; starting without").has_value());
-  EXPECT_EQ(messages,
-            std::vector<std::string>{"stored program program.x refused: not a p program; "
-                                     "starting without"});
+  EXPECT_EQ(messages, std::vector<std::string>{"stored program program.x refused: not a p program; "
+                                               "starting without"});
 
   flash.records["program.x"] = {'p'};
   messages.clear();

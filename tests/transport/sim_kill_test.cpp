@@ -320,8 +320,9 @@ TEST(transport_sim_kill, EveryDialectsKilledDownloadLeavesItsProgramWholeAndNoTe
     const std::string record = dir + "/program" + std::string(d->stored_extension());
     // A temporary a killed writer left before this drive ever started: removed at start-up.
     ASSERT_TRUE(write_file_atomically(record + ".tmp.999999999", "x", 1));
-    const std::vector<std::string> args = {"--listen", "127.0.0.1:0", "--safe-boot", "--state",
-                                           dir, "--dialect", std::string(d->name())};
+    const std::vector<std::string> args = {
+        "--listen", "127.0.0.1:0", "--safe-boot",         "--state",
+        dir,        "--dialect",   std::string(d->name())};
     // One clean download, timed until the record holds the program.
     long long download_us = 0;
     {
@@ -332,7 +333,8 @@ TEST(transport_sim_kill, EveryDialectsKilledDownloadLeavesItsProgramWholeAndNoTe
       ASSERT_TRUE(client.send(lines));
       while (read_binary_file(record) != out.stored_form && Clock::now() - t0 < 20s)
         std::this_thread::sleep_for(100us);
-      download_us = std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - t0).count();
+      download_us =
+          std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - t0).count();
       ASSERT_EQ(read_binary_file(record), out.stored_form) << "the download did not store";
       ASSERT_EQ(sim.stop(), 0);
     }
@@ -342,9 +344,9 @@ TEST(transport_sim_kill, EveryDialectsKilledDownloadLeavesItsProgramWholeAndNoTe
       EXPECT_EQ(read_binary_file(record), out.stored_form) << "round " << round;
       TestClient client(sim.port);
       const pid_t pid = sim.pid();
-      const auto kill_at = Clock::now() + std::chrono::microseconds(
-                                              std::uniform_int_distribution<long long>(
-                                                  0, download_us * 6 / 5)(rng));
+      const auto kill_at =
+          Clock::now() + std::chrono::microseconds(
+                             std::uniform_int_distribution<long long>(0, download_us * 6 / 5)(rng));
       std::thread killer([pid, kill_at] {
         std::this_thread::sleep_until(kill_at);
         ::kill(pid, SIGKILL);

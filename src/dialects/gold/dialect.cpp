@@ -80,8 +80,8 @@ class GoldDialect final : public dialect::Dialect {
  private:
   // AC must be positive (EC 21, the Elmo reference's "out of range").
   static constexpr dialect::SampleProgram kSample{
-      "sample.ehl", "int done\nfunction main()\ndone = 6 * 7\nreturn\n", "main", "done", "42", 100,
-      "int done\nfunction main()\ndone = 6 *\nreturn\n", 3, "AC=-5"};
+      "sample.ehl", "int done\nfunction main()\ndone = 6 * 7\nreturn\n", "main", "done", "42",
+      100,          "int done\nfunction main()\ndone = 6 *\nreturn\n",   3,      "AC=-5"};
 };
 
 }  // namespace

@@ -7,10 +7,10 @@
 
 #include <charconv>
 
+#include "dialect/program_store.h"
 #include "dialects/gold/background_cycle.h"
 #include "dialects/gold/commands.h"
 #include "dialects/gold/recorder_signals.h"
-#include "dialect/program_store.h"
 #include "drive/axis.h"
 #include "vm/run_error.h"
 

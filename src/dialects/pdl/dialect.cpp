@@ -84,8 +84,8 @@ class PdlDialect final : public dialect::Dialect {
  private:
   // A command the host protocol does not know is 1 (tests/transcripts/pdl/host_protocol.txt).
   static constexpr dialect::SampleProgram kSample{
-      "sample.pdl", "#long done\n#task/1;\ndone = 6 * 7;\nhalt;\n", "", "done", "42", 100,
-      "#long done\n#task/1;\ndone = 6 *;\nhalt;\n", 3, "frobnicate now"};
+      "sample.pdl", "#long done\n#task/1;\ndone = 6 * 7;\nhalt;\n", "", "done",          "42",
+      100,          "#long done\n#task/1;\ndone = 6 *;\nhalt;\n",   3,  "frobnicate now"};
 };
 
 }  // namespace

@@ -99,9 +99,15 @@ class PupDialect final : public dialect::Dialect {
  private:
   // An unknown keyword is 1 (akribis-drive.md, "Errors"; tests/transcripts/pup/command_line.txt).
   static constexpr dialect::SampleProgram kSample{
-      "sample.pup", "#definevar Done AGenData[1]\nAProgTask[1]\nDone = 6 * 7\nAProgHalt[1]\n", "",
-      "AGenData[1]", "42", 100,
-      "#definevar Done AGenData[1]\nAProgTask[1]\nDone = 6 *\nAProgHalt[1]\n", 3, "ANoSuchThing"};
+      "sample.pup",
+      "#definevar Done AGenData[1]\nAProgTask[1]\nDone = 6 * 7\nAProgHalt[1]\n",
+      "",
+      "AGenData[1]",
+      "42",
+      100,
+      "#definevar Done AGenData[1]\nAProgTask[1]\nDone = 6 *\nAProgHalt[1]\n",
+      3,
+      "ANoSuchThing"};
 };
 
 }  // namespace

@@ -127,8 +127,15 @@ class StDialect final : public dialect::Dialect {
  private:
   // An unknown command is ERR 1 (tests/transcripts/st/interface.txt).
   static constexpr dialect::SampleProgram kSample{
-      "sample.st", "LONG DONE ;\nPROGRAM PLCMAIN\n   DONE := 6 * 7;\nEND_PROGRAM\n", "", "DONE", "42",
-      100, "LONG DONE ;\nPROGRAM PLCMAIN\n   DONE := 6 *;\nEND_PROGRAM\n", 3, "NOSUCH"};
+      "sample.st",
+      "LONG DONE ;\nPROGRAM PLCMAIN\n   DONE := 6 * 7;\nEND_PROGRAM\n",
+      "",
+      "DONE",
+      "42",
+      100,
+      "LONG DONE ;\nPROGRAM PLCMAIN\n   DONE := 6 *;\nEND_PROGRAM\n",
+      3,
+      "NOSUCH"};
 };
 
 }  // namespace
