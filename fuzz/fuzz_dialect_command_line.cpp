@@ -6,19 +6,13 @@
 #include <string_view>
 
 #include "fuzz_dialect.h"
+#include "host_lines.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   auto drive = uprog::fuzz::drive_with_sample();
   auto host = drive->open_session();
-  std::string_view input(reinterpret_cast<const char*>(data), size);
-  while (!input.empty()) {
-    const size_t end = input.find('\n');
-    (void)host->send(input.substr(0, end));
-    if (end == std::string_view::npos) break;
-    input.remove_prefix(end + 1);
-  }
-  drive->advance(20'000);
-  (void)drive->take_log();
-  (void)drive->take_output();
+  uprog::fuzz::send_lines_then_run(*drive,
+                                   std::string_view(reinterpret_cast<const char*>(data), size),
+                                   [&](std::string_view line) { return host->send(line); });
   return 0;
 }

@@ -12,6 +12,7 @@
 #include "controller/controller.h"
 #include "dialects/gold/compile.h"
 #include "dialects/gold/dialect.h"
+#include "host_lines.h"
 
 namespace {
 
@@ -39,16 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   options.dialect = &gold::dialect();
   controller::Controller drive(options);
   if (!drive.download(program_image()).ok || !drive.query("CC").empty()) abort();
-  std::string_view input(reinterpret_cast<const char*>(data), size);
-  // One host line per input line, as a terminal sends them.
-  while (!input.empty()) {
-    const size_t end = input.find('\n');
-    const std::string_view line = input.substr(0, end);
-    (void)drive.send(line);
-    if (end == std::string_view::npos) break;
-    input.remove_prefix(end + 1);
-  }
-  drive.advance(20'000);  // 20 ms of virtual time
-  (void)drive.take_log();
+  fuzz::send_lines_then_run(drive, std::string_view(reinterpret_cast<const char*>(data), size),
+                            [&](std::string_view line) { return drive.send(line); });
   return 0;
 }

@@ -12,6 +12,7 @@
 #include "controller/controller.h"
 #include "dialects/pdl/compile.h"
 #include "dialects/pdl/dialect.h"
+#include "host_lines.h"
 
 namespace {
 
@@ -43,15 +44,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (!drive.download(program_image()).ok) abort();
   (void)drive.query("reset");
   auto host = drive.open_session();
-  std::string_view input(reinterpret_cast<const char*>(data), size);
-  while (!input.empty()) {
-    const size_t end = input.find('\n');
-    (void)host->send(input.substr(0, end));
-    if (end == std::string_view::npos) break;
-    input.remove_prefix(end + 1);
-  }
-  drive.advance(20'000);  // 20 ms of virtual time
-  (void)drive.take_output();
-  (void)drive.take_log();
+  fuzz::send_lines_then_run(drive, std::string_view(reinterpret_cast<const char*>(data), size),
+                            [&](std::string_view line) { return host->send(line); });
   return 0;
 }

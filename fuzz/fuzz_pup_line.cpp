@@ -10,6 +10,7 @@
 #include "controller/controller.h"
 #include "dialects/pup/dialect.h"
 #include "dialects/pup/pup_compiler.h"
+#include "host_lines.h"
 
 namespace {
 
@@ -36,14 +37,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   options.dialect = &pup::dialect();
   controller::Controller drive(options);
   if (!drive.download(program_cup()).ok) abort();
-  std::string_view input(reinterpret_cast<const char*>(data), size);
-  while (!input.empty()) {
-    const size_t end = input.find('\n');
-    (void)drive.send(input.substr(0, end));
-    if (end == std::string_view::npos) break;
-    input.remove_prefix(end + 1);
-  }
-  drive.advance(20'000);
-  (void)drive.take_log();
+  fuzz::send_lines_then_run(drive, std::string_view(reinterpret_cast<const char*>(data), size),
+                            [&](std::string_view line) { return drive.send(line); });
   return 0;
 }

@@ -9,6 +9,7 @@
 
 #include "controller/controller.h"
 #include "dialects/st/dialect.h"
+#include "host_lines.h"
 
 namespace {
 
@@ -29,16 +30,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (const auto& a : drive.query("PLCRUN"))
     if (a.is_error()) abort();
   std::unique_ptr<dialect::Session> host = drive.open_session();
-  std::string_view input(reinterpret_cast<const char*>(data), size);
-  // One host line per input line, as a terminal sends them; COLDSTART reboots inside.
-  while (!input.empty()) {
-    const size_t end = input.find('\n');
-    (void)host->send(input.substr(0, end));
-    if (end == std::string_view::npos) break;
-    input.remove_prefix(end + 1);
-  }
-  drive.advance(20'000);
-  (void)drive.take_log();
-  (void)drive.take_output();
+  fuzz::send_lines_then_run(drive, std::string_view(reinterpret_cast<const char*>(data), size),
+                            [&](std::string_view line) { return host->send(line); });
   return 0;
 }
