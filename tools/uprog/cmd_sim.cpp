@@ -132,6 +132,9 @@ int run_sim(const SimOptions& options) {
     return 2;
   }
   asio::io_context io;
+  // Taken before "listening" is printed: a host that reads that line and at once sends SIGTERM
+  // gets a clean stop (the signal waits in the set until the loop below runs).
+  asio::signal_set signals(io, SIGINT, SIGTERM);
   std::unique_ptr<transport::TcpServer> tcp;
   std::unique_ptr<transport::UdpServer> udp;
   std::unique_ptr<transport::PtyServer> pty;
@@ -170,7 +173,6 @@ int run_sim(const SimOptions& options) {
 
   transport::Pacer pacer(io, service);
   pacer.start();
-  asio::signal_set signals(io, SIGINT, SIGTERM);
   signals.async_wait([&](const boost::system::error_code& ec, int) {
     if (ec) return;
     pacer.stop();
