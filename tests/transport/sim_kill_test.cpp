@@ -359,8 +359,8 @@ TEST(transport_sim_kill, EveryDialectsKilledDownloadLeavesItsProgramWholeAndNoTe
     expect_no_temporary(dir);
     EXPECT_EQ(read_binary_file(record), out.stored_form);
     TestClient client(sim.port);
-    // A last whole download, answered: the drive's loop runs, so its SIGTERM handler is set
-    // (cmd_sim.cpp sets it after printing that it listens), and it stops cleanly.
+    // A last whole download, answered, on the drive that booted from what the kills left; then a
+    // clean stop, which keeps the new program whole and leaves no temporary either.
     client.send(lines + std::string(sample.query) + "\n");
     pollfd answer{client.fd(), POLLIN, 0};
     EXPECT_EQ(::poll(&answer, 1, 20'000), 1) << "no answer from the drive";
