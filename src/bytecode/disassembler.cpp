@@ -59,7 +59,7 @@ bool is_instruction_start(const std::vector<bool>& starts, uint32_t pc) {
 
 }  // namespace
 
-std::string disassemble(const Image& image) {
+std::string disassemble(const Image& image, std::span<const std::string> notes) {
   const auto size = static_cast<uint32_t>(image.code.size());
   std::vector<bool> starts(size, false);
   std::vector<bool> printed(size + 1, false);  // where the listing can attach a .line
@@ -175,6 +175,8 @@ std::string disassemble(const Image& image) {
       if (info.b != Operand::None) text += fmt::format("\n  .word 0x{:08x}", image.code[pc + 1]);
       comment.clear();
     }
+    if (pc < notes.size() && !notes[pc].empty())
+      comment = comment.empty() ? notes[pc] : comment + "; " + notes[pc];
     out += text;
     if (!comment.empty()) out += "  ; " + comment;
     out += "\n";

@@ -6,20 +6,24 @@
 namespace uprog::bytecode {
 
 constexpr uint8_t kMagic[4] = {'U', 'P', 'R', 'G'};
-// The format's history. An image stored in a drive's flash must outlive a firmware update, so
-// a version's meaning never changes once released: its opcode numbers (opcodes.def, pinned by
-// tests/bytecode/opcode_numbers_test.cpp), its header and its records. A change to any of them
-// is a new version, added at the end of this list; the loader reads every version in
+// The format's history. Images are durable from format 6, the first format of a release: a drive's
+// flash keeps an image across firmware updates, so a released version's meaning never changes
+// (its opcode numbers, opcodes.def, pinned by tests/bytecode/opcode_numbers_test.cpp; its header
+// and its records). Base opcodes are only ever added, at the end of the base set; anything else
+// is a new version, added at the end of this list, and the loader reads every version in
 // [kMinFormatVersion, kMaxFormatVersion] and refuses the others, naming both (LoadError
-// BadVersion, image_format_version()).
+// BadVersion, image_format_version()). Versions 1 to 5 were made only by development builds
+// (no release was ever made of them) and are not read.
 //   1  the header, the sections and the first 90 opcodes
 //   2  the dialect's name, texts (MSG) and tasks
 //   3  the line-end mark (EOL's place in every line)
 //   4  CALLFEOL; JCMPMKEOL and ADDMLK in the numbers of DIVU and REMU; the six JNxxFEOL as
 //      JNCMPFEOL (the numbers after it moved: images made before that commit are not format 4)
 //   5  INCMLKEOL (252), a frame's word stepped by a constant; format 4 images mean the same
-constexpr uint16_t kMinFormatVersion = 4;
-constexpr uint16_t kMaxFormatVersion = 5;
+//   6  the base instruction set only (122 opcodes, renumbered): the fused instructions left the
+//      stored format for the VM, which forms them when it loads an image (vm/fused.def)
+constexpr uint16_t kMinFormatVersion = 6;
+constexpr uint16_t kMaxFormatVersion = 6;
 constexpr uint16_t kFormatVersion = kMaxFormatVersion;  // the version the image writer makes
 constexpr uint32_t kHeaderSize = 36;
 constexpr uint32_t kCrcStart = 16;  // the CRC covers every byte from here to total_size

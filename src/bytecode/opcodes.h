@@ -17,74 +17,18 @@ enum class Operand : uint8_t {
   Count,
   Command,
   Unit,
-  LocalPair,
-  LocalImm,
-  LocalConst,
   Width,
   Text,
-  GlobalPair,
-  GlobalConst,
-  GlobalImm,
   Element,
   Lines,
   Window,
-  GlobalsTest,
-  LoopStep,
-  GlobalWindow,
-  MemoryFrame,
-  FrameTest,
-  OffsetImm,
-  Comparison,
-  PointerTest
+  MemoryFrame
 };
 
-// The packed B operands of the fused comparisons and arithmetic (LocalConst, GlobalPair,
-// GlobalConst pack like LocalPair: 16 bits each; GlobalImm like LocalImm).
-constexpr uint32_t pack_locals(uint32_t first, uint32_t second) { return first | (second << 16); }
-constexpr uint32_t pack_local_imm(uint32_t local, int32_t imm) {
-  return local | (static_cast<uint32_t>(imm) << 16);
-}
-constexpr uint32_t packed_first(uint32_t b) { return b & 0xFFFFu; }
-constexpr uint32_t packed_second(uint32_t b) { return b >> 16; }
-constexpr int32_t packed_imm(uint32_t b) { return static_cast<int32_t>(b) >> 16; }
 // LDGW's and STGW's B: the window's first element and its size, 16 bits each.
 constexpr uint32_t pack_window(uint32_t first, uint32_t size) { return first | (size << 16); }
 constexpr uint32_t window_first(uint32_t b) { return b & 0xFFFFu; }
 constexpr uint32_t window_size(uint32_t b) { return b >> 16; }
-// UNTILCK's B: the command's index (0..255) in bits 0-7, the comparison (0..5: == != < <= > >=)
-// in bits 8-11, the immediate (-2^19..2^19-1) in bits 12-31.
-constexpr uint32_t pack_command_test(uint32_t index, uint32_t how, int32_t imm) {
-  return index | (how << 8) | (static_cast<uint32_t>(imm) << 12);
-}
-constexpr uint32_t command_test_index(uint32_t b) { return b & 0xFFu; }
-constexpr uint32_t command_test_how(uint32_t b) { return (b >> 8) & 0xFu; }
-constexpr int32_t command_test_imm(uint32_t b) { return static_cast<int32_t>(b) >> 12; }
-// JCMPGG's B: two globals below 2^13 in bits 0-12 and 13-25, the comparison (0..5: == != < <=
-// > >=) in bits 26-28.
-constexpr uint32_t kGlobalsTestMax = (1u << 13) - 1;
-constexpr uint32_t pack_globals_test(uint32_t first, uint32_t second, uint32_t how) {
-  return first | (second << 13) | (how << 26);
-}
-constexpr uint32_t globals_test_first(uint32_t b) { return b & kGlobalsTestMax; }
-constexpr uint32_t globals_test_second(uint32_t b) { return (b >> 13) & kGlobalsTestMax; }
-constexpr uint32_t globals_test_how(uint32_t b) { return b >> 26; }
-// INCGJMPLN's B: the global in bits 0-15, the step (-128..127) in bits 16-23, the line ends it
-// counts (0..255) in bits 24-31.
-constexpr uint32_t pack_loop_step(uint32_t global, int32_t step, uint32_t lines) {
-  return global | ((static_cast<uint32_t>(step) & 0xFFu) << 16) | (lines << 24);
-}
-constexpr uint32_t loop_step_global(uint32_t b) { return b & 0xFFFFu; }
-constexpr int32_t loop_step_step(uint32_t b) { return static_cast<int8_t>((b >> 16) & 0xFFu); }
-constexpr uint32_t loop_step_lines(uint32_t b) { return b >> 24; }
-// LDGWG's and STGWG's B: the window's first element in bits 0-11, its size in bits 12-23, the
-// global holding the index (below 256) in bits 24-31.
-constexpr uint32_t kGlobalWindowMax = (1u << 12) - 1;
-constexpr uint32_t pack_global_window(uint32_t first, uint32_t size, uint32_t index_global) {
-  return first | (size << 12) | (index_global << 24);
-}
-constexpr uint32_t global_window_first(uint32_t b) { return b & kGlobalWindowMax; }
-constexpr uint32_t global_window_size(uint32_t b) { return (b >> 12) & kGlobalWindowMax; }
-constexpr uint32_t global_window_index(uint32_t b) { return b >> 24; }
 enum class Flow : uint8_t { Next, Jump, Branch, Call, Stop };
 
 constexpr int kVar = -1;  // a stack effect that the operands decide
@@ -120,40 +64,13 @@ inline constexpr const char* kOpMeanings[] = {
 #undef OP
 };
 
+// Every opcode of this table: the base set and BREAK, its last. The base set is [0, kBaseOpCount):
+// what an image may hold. The VM's fused instructions are numbered from kOpCount (vm/fused.def).
 inline constexpr uint32_t kOpCount = sizeof(kOpInfo) / sizeof(kOpInfo[0]);
+inline constexpr uint32_t kBaseOpCount = static_cast<uint32_t>(Op::BREAK);
+static_assert(kBaseOpCount + 1 == kOpCount, "BREAK follows the base set");
 static_assert(kOpCount <= 256, "an opcode is one byte");
 
-// ADDMLK's B packs like LocalImm, an offset (0..65535) in place of the local.
-// JCMPMKEOL's B: the local holding the frame's address (0..15) in bits 0-3, the word's offset
-// (0..4095) in bits 4-15, the comparison (0..5: == != < <= > >=) in bits 16-18, the immediate
-// (-8192..8191) in bits 19-31.
-constexpr uint32_t kFrameTestLocalMax = 15;
-constexpr uint32_t kFrameTestOffsetMax = 4095;
-constexpr int32_t kFrameTestImmMin = -8192;
-constexpr int32_t kFrameTestImmMax = 8191;
-constexpr uint32_t pack_frame_test(uint32_t local, uint32_t offset, uint32_t how, int32_t imm) {
-  return local | (offset << 4) | (how << 16) | (static_cast<uint32_t>(imm) << 19);
-}
-constexpr uint32_t frame_test_local(uint32_t b) { return b & 0xFu; }
-constexpr uint32_t frame_test_offset(uint32_t b) { return (b >> 4) & kFrameTestOffsetMax; }
-constexpr uint32_t frame_test_how(uint32_t b) { return (b >> 16) & 0x7u; }
-constexpr int32_t frame_test_imm(uint32_t b) { return static_cast<int32_t>(b) >> 19; }
-// LDPMLK's B: the local holding the frame's address (0..15) in bits 0-3, the word's offset
-// (0..255) in bits 4-11, the bound below which an address passes (0..4095) in bits 12-23, the
-// window's local (0..15) in bits 24-27 and its size's power of two (0..15) in bits 28-31.
-constexpr uint32_t kPointerTestLocalMax = 15;
-constexpr uint32_t kPointerTestOffsetMax = 255;
-constexpr uint32_t kPointerTestBoundMax = 4095;
-constexpr uint32_t kPointerTestSizeMax = 15;
-constexpr uint32_t pack_pointer_test(uint32_t local, uint32_t offset, uint32_t bound,
-                                     uint32_t window_local, uint32_t size_power) {
-  return local | (offset << 4) | (bound << 12) | (window_local << 24) | (size_power << 28);
-}
-constexpr uint32_t pointer_test_local(uint32_t b) { return b & 0xFu; }
-constexpr uint32_t pointer_test_offset(uint32_t b) { return (b >> 4) & kPointerTestOffsetMax; }
-constexpr uint32_t pointer_test_bound(uint32_t b) { return (b >> 12) & kPointerTestBoundMax; }
-constexpr uint32_t pointer_test_window_local(uint32_t b) { return (b >> 24) & 0xFu; }
-constexpr uint32_t pointer_test_window(uint32_t b) { return 1u << (b >> 28); }
 // CALLFEOL's B: the frame's words (1..4095) in bits 0-11, the arguments in bits 12-19, the
 // frame word the first goes to in bits 20-27.
 constexpr uint32_t kMemoryFrameMax = (1u << 12) - 1;
@@ -196,25 +113,15 @@ constexpr uint32_t with_a(uint32_t word, uint32_t a) {
   return (word & ~a_field(kOperandMax)) | a_field(a);
 }
 
-// The instructions that end their line themselves: EOL and the fused forms named ...EOL.
+// The instructions that end their line themselves, so carry no mark: EOL, RETEOL and CALLFEOL.
 constexpr bool ends_line_itself(Op op) {
-  const char* name = op_name(op);
-  uint32_t n = 0;
-  while (name[n] != '\0') ++n;
-  return n >= 3 && name[n - 3] == 'E' && name[n - 2] == 'O' && name[n - 1] == 'L';
-}
-// The superinstructions of the peephole pass, whose dispatch does not look for the mark (it would
-// cost the dialects that fuse most, PDL above all, without a line to end), but the compare-and-
-// jumps on the stack, which the CUP loader makes of AJump[c].
-constexpr bool is_superinstruction(Op op) {
-  const auto in = [op](Op first, Op last) { return op >= first && op <= last; };
-  return (in(Op::ADDLK, Op::MULFLLS) && !in(Op::JEQI, Op::JGEI)) || in(Op::STGEOL, Op::JULTLK) ||
-         in(Op::MULIK, Op::INCGJMPLN) || op == Op::ADDMLK || op == Op::INCMLKEOL;
+  return op == Op::EOL || op == Op::RETEOL || op == Op::CALLFEOL;
 }
 // The instructions that may carry the line-end mark: those that run to completion and go on in
 // the same slice. Not a call or a return (the line would end in another frame), nor one that
-// ends its line itself, stops the slice (YIELD, WAIT) or runs apart from the loop (UNTILCK),
-// nor a superinstruction. A table made at compile time, so that firmware carries no names.
+// ends its line itself or stops the slice (YIELD, WAIT), nor the copies' JLINES and JMPLN (the
+// way out counts its lines itself). A table made at compile time, so that firmware carries no
+// names.
 struct LineEndTable {
   bool may[256];
 };
@@ -224,17 +131,15 @@ constexpr LineEndTable make_line_end_table() {
     const Op op = static_cast<Op>(i);
     const Flow flow = op_info(op).flow;
     t.may[i] = (flow == Flow::Next || flow == Flow::Jump || flow == Flow::Branch) &&
-               !ends_line_itself(op) && !is_superinstruction(op) && op != Op::YIELD &&
-               op != Op::WAIT && op != Op::UNTILCK && op != Op::BREAK && op != Op::JLINES &&
-               op != Op::JMPLN;
+               !ends_line_itself(op) && op != Op::YIELD && op != Op::WAIT && op != Op::BREAK &&
+               op != Op::JLINES && op != Op::JMPLN;
   }
   return t;
 }
 inline constexpr LineEndTable kLineEndTable = make_line_end_table();
 constexpr bool may_end_line(Op op) { return kLineEndTable.may[static_cast<uint8_t>(op)]; }
-static_assert(ends_line_itself(Op::EOL) && ends_line_itself(Op::JMPEOL) &&
-              !ends_line_itself(Op::JMP) && may_end_line(Op::JZ) && !may_end_line(Op::RETEOL) &&
-              may_end_line(Op::JGTI) && may_end_line(Op::LDGE) && !may_end_line(Op::REMLK) &&
-              !may_end_line(Op::STMLK) && !may_end_line(Op::MULIK) && !may_end_line(Op::JCMPGG));
+static_assert(ends_line_itself(Op::EOL) && !ends_line_itself(Op::JMP) && may_end_line(Op::JZ) &&
+              may_end_line(Op::JMP) && !may_end_line(Op::RETEOL) && may_end_line(Op::JGTI) &&
+              may_end_line(Op::LDGE) && !may_end_line(Op::CALL) && !may_end_line(Op::YIELD));
 
 }  // namespace uprog::bytecode

@@ -109,21 +109,12 @@ class Verifier {
       }
       if ((word_op(word) == Op::CMPD || word_op(word) == Op::CMPU) && a > 5)
         return fail(VerifyError::BadOperand, pc);
-      if (word_op(word) == Op::UNTILCK && command_test_how(image_.code[pc + 1]) > 5)
-        return fail(VerifyError::BadOperand, pc);
       if (info.b == Operand::Const && image_.code[pc + 1] >= image_.constants.size())
-        return fail(VerifyError::BadConstant, pc);
-      if (info.b == Operand::LocalConst &&
-          bytecode::packed_second(image_.code[pc + 1]) >= image_.constants.size())
         return fail(VerifyError::BadConstant, pc);
       if (info.b != Operand::None) {
         if (VerifyResult r = check_global_b(info.b, image_.code[pc + 1], pc); !r.ok()) return r;
       }
       if (info.b == Operand::Element && image_.code[pc + 1] >= image_.globals[a].length)
-        return fail(VerifyError::BadOperand, pc);
-      if (info.b == Operand::GlobalWindow &&
-          global_window_first(image_.code[pc + 1]) + global_window_size(image_.code[pc + 1]) >
-              image_.globals[a].length)
         return fail(VerifyError::BadOperand, pc);
       if (info.b == Operand::Window &&
           window_first(image_.code[pc + 1]) + window_size(image_.code[pc + 1]) >
@@ -135,22 +126,12 @@ class Verifier {
         const RoutineRecord callee = image_.routines[a];
         if (image_.code[pc + 1] > callee.outputs) return fail(VerifyError::BadOperand, pc);
       }
-      if (word_op(word) == Op::JCMPMKEOL && frame_test_how(image_.code[pc + 1]) > 5)
-        return fail(VerifyError::BadOperand, pc);
-      if (info.b == Operand::Comparison && image_.code[pc + 1] > 5)
-        return fail(VerifyError::BadOperand, pc);
       if (word_op(word) == Op::CALLFEOL) {
         const uint32_t b = image_.code[pc + 1];
         if (image_.routines[a].inputs < 2 || b > pack_memory_frame(kMemoryFrameMax, 0xFF, 0xFF) ||
             memory_frame_first(b) + memory_frame_arguments(b) > memory_frame_words(b))
           return fail(VerifyError::BadOperand, pc);
       }
-      if ((word_op(word) == Op::REMLK || word_op(word) == Op::REMGK) && image_.code[pc + 1] == 0)
-        return fail(VerifyError::BadOperand, pc);
-      if (word_op(word) == Op::REMGKEOL && packed_imm(image_.code[pc + 1]) == 0)
-        return fail(VerifyError::BadOperand, pc);
-      if (word_op(word) == Op::REMIK && word_imm(word) == 0)
-        return fail(VerifyError::BadOperand, pc);
       if (pops_host_arguments(word_op(word)) && image_.code[pc + 1] > limits_.max_stack)
         return fail(VerifyError::BadOperand, pc);
     }
@@ -165,28 +146,6 @@ class Verifier {
     switch (kind) {
       case Operand::Global:
         if (b >= globals) return fail(VerifyError::BadGlobal, pc);
-        break;
-      case Operand::GlobalPair:
-        if (packed_first(b) >= globals || packed_second(b) >= globals)
-          return fail(VerifyError::BadGlobal, pc);
-        break;
-      case Operand::GlobalConst:
-        if (packed_first(b) >= globals) return fail(VerifyError::BadGlobal, pc);
-        if (packed_second(b) >= image_.constants.size()) return fail(VerifyError::BadConstant, pc);
-        break;
-      case Operand::GlobalImm:
-        if (packed_first(b) >= globals) return fail(VerifyError::BadGlobal, pc);
-        break;
-      case Operand::GlobalsTest:
-        if (globals_test_first(b) >= globals || globals_test_second(b) >= globals)
-          return fail(VerifyError::BadGlobal, pc);
-        if (globals_test_how(b) > 5) return fail(VerifyError::BadOperand, pc);
-        break;
-      case Operand::LoopStep:
-        if (loop_step_global(b) >= globals) return fail(VerifyError::BadGlobal, pc);
-        break;
-      case Operand::GlobalWindow:
-        if (global_window_index(b) >= globals) return fail(VerifyError::BadGlobal, pc);
         break;
       default:
         break;
@@ -223,19 +182,6 @@ class Verifier {
     if (info.a == Operand::Local && a >= locals) return fail(VerifyError::BadLocal, pc);
     if (info.b == Operand::Local && image_.code[pc + 1] >= locals)
       return fail(VerifyError::BadLocal, pc);
-    if (info.b == Operand::FrameTest && frame_test_local(image_.code[pc + 1]) >= locals)
-      return fail(VerifyError::BadLocal, pc);
-    if (info.b == Operand::PointerTest &&
-        (pointer_test_local(image_.code[pc + 1]) >= locals ||
-         pointer_test_window_local(image_.code[pc + 1]) >= locals))
-      return fail(VerifyError::BadLocal, pc);
-    if (info.b == Operand::LocalPair || info.b == Operand::LocalImm ||
-        info.b == Operand::LocalConst) {
-      const uint32_t b = image_.code[pc + 1];
-      if (bytecode::packed_first(b) >= locals) return fail(VerifyError::BadLocal, pc);
-      if (info.b == Operand::LocalPair && bytecode::packed_second(b) >= locals)
-        return fail(VerifyError::BadLocal, pc);
-    }
 
     int32_t pop = info.pop;
     int32_t push = info.push;

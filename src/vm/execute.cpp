@@ -18,6 +18,7 @@
 #include "bytecode/opcodes.h"
 #include "support/arith.h"
 #include "vm/budget_count.h"
+#include "vm/fused.h"
 #include "vm/machine.h"
 
 namespace uprog::vm {
@@ -117,24 +118,6 @@ inline uint32_t float_outcome(float a, float b) {
   return a < b ? 0u : a == b ? 1u : a > b ? 2u : 3u;
 }
 inline uint32_t int_outcome(int32_t a, int32_t b) { return a < b ? 0u : a == b ? 1u : 2u; }
-static_assert(static_cast<int>(Op::JGEGK) - static_cast<int>(Op::JEQGK) == 5 &&
-                  static_cast<int>(Op::JNGEFGK) - static_cast<int>(Op::JNEQFGK) == 5 &&
-                  static_cast<int>(Op::JGEGKEOL) - static_cast<int>(Op::JEQGKEOL) == 5 &&
-                  static_cast<int>(Op::JNGEFGKEOL) - static_cast<int>(Op::JNEQFGKEOL) == 5 &&
-                  static_cast<int>(Op::JNGEFGG) - static_cast<int>(Op::JNEQFGG) == 5 &&
-                  static_cast<int>(Op::JNGEFGGEOL) - static_cast<int>(Op::JNEQFGGEOL) == 5,
-              "a family of fused comparisons is six opcodes in the order == != < <= > >=");
-
-// UNTILCK's read of command A at B's index and its test (B: opcodes.h, pack_command_test);
-// `met` only when the read gave a value (kCommandOk or kCommandEndSlice).
-CommandStatus test_command(Host& host, uint32_t a, uint32_t b, bool& met) {
-  Value v;
-  const auto index = static_cast<int32_t>(bytecode::command_test_index(b));
-  const CommandStatus status = host.read(a, index, v);
-  met = (status == kCommandOk || status == kCommandEndSlice) &&
-        holds(bytecode::command_test_how(b), int_outcome(v.i, bytecode::command_test_imm(b)));
-  return status;
-}
 
 }  // namespace
 
@@ -158,7 +141,6 @@ SliceResult Machine::run_other_slice(uint32_t thread, const Budget& budget) {
       break;
   }
   if (t.step_over) return step_over_breakpoint(t, budget);
-  if (bytecode::word_op(code_[t.pc]) == Op::UNTILCK) return test_then_execute(t, budget);
   return execute(t, budget);
 }
 
@@ -183,26 +165,6 @@ SliceResult Machine::run_other_slice(uint32_t thread, const Budget& budget) {
   return more;
 }
 
-// A thread waiting at UNTILCK (the usual servo cycle of a program waiting for its move): the
-// instruction's test here, and the execute loop only once it is met. A refused read is left to
-// the loop, which raises it.
-SliceResult Machine::test_then_execute(Thread& t, const Budget& budget) {
-  bool met = false;
-  const CommandStatus status =
-      test_command(*host_, bytecode::word_a(code_[t.pc]), code_[t.pc + 1], met);
-  if (status != kCommandOk && status != kCommandEndSlice) return execute(t, budget);
-  const uint64_t counted = budget.instructions != 0 ? 1 : 0;
-  if (!met) return {SliceEnd::Yielded, counted};
-  t.pc += 2;
-  if (status == kCommandEndSlice) return {SliceEnd::Yielded, counted};
-  if (budget.instructions == 1) return {SliceEnd::BudgetSpent, 1};
-  Budget rest = budget;
-  rest.instructions -= counted;
-  SliceResult more = execute(t, rest);
-  more.executed += counted;
-  return more;
-}
-
 // One loop for both kinds of slice: a slice with an instruction budget dispatches through a
 // table whose every entry counts first, so that a slice without one pays nothing per instruction
 // for counting and the loop's code is there once (a copy for each kind did not leave the
@@ -212,11 +174,17 @@ SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) 
 #define OP(name, a, b, pop, push, flow, meaning) &&op_##name,
 #include "bytecode/opcodes.def"
 #undef OP
+#define FUSED(name, pattern, when, meaning, ...) &&fused_##name,
+#include "vm/fused.def"
+#undef FUSED
   };
   static const void* const kCountThenDispatch[] = {
 #define OP(name, a, b, pop, push, flow, meaning) &&count_then_dispatch,
 #include "bytecode/opcodes.def"
 #undef OP
+#define FUSED(name, pattern, when, meaning, ...) &&count_then_dispatch,
+#include "vm/fused.def"
+#undef FUSED
   };
   const bool counted = budget.instructions != 0;
   const void* const* const dispatch = counted ? kCountThenDispatch : kDispatch;
@@ -238,7 +206,6 @@ SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) 
   const uint32_t call_room = config_.stack - max_depth_;  // in a thread's stack
   const Value* call_limit = tp->stack + call_room;
   uint32_t word = 0;
-  uint32_t line_ends = 0;  // what JMPLN and INCGJMPLN count
   RunError error = RunError::None;
   int32_t detail = 0;
   SliceEnd end = SliceEnd::BudgetSpent;
@@ -397,11 +364,6 @@ op_STGE:
   global_data_[A()][B()] = *--sp;
   ip += 2;
   DISPATCH();
-// Plain, not among the superinstructions: it may end a line (PDL's `a=b;`).
-op_MOVG:
-  global_data_[A()][0] = global_data_[B()][0];
-  ip += 2;
-  DISPATCH();
 // The fused copy of a run of lines, when no count or breakpoint can stop the slice inside it
 // (the drive's one-line slices, stepping and the debugger take the lines one by one).
 op_JLINES:
@@ -411,19 +373,9 @@ op_JLINES:
   }
   ip += 2;
   DISPATCH_NEXT();
-// The way out of such fused code, counting the lines its path ran; INCGJMPLN is a loop's step
-// on the way (INCGEOL's add, its line end counted with the rest).
-op_INCGJMPLN : {
-  const uint32_t step = B();
-  int32_t& counter = global_data_[bytecode::loop_step_global(step)][0].i;
-  counter = arith::wrap_add(counter, bytecode::loop_step_step(step));
-  line_ends = bytecode::loop_step_lines(step);
-  goto count_lines_then_jump;
-}
+// The way out of such fused code, counting the lines its path ran.
 op_JMPLN:
-  line_ends = B();
-count_lines_then_jump:
-  if (!lines.spend(line_ends)) {
+  if (!lines.spend(B())) {
     ip = code + A();
     end = SliceEnd::LineEnd;
     goto stop;
@@ -467,24 +419,6 @@ op_STGW : {
   if (i >= bytecode::window_size(b)) FAIL(RunError::IndexOutOfRange);
   global_data_[A()][bytecode::window_first(b) + i] = sp[-2];
   sp -= 2;
-  ip += 2;
-  DISPATCH();
-}
-op_LDGWG : {
-  const uint32_t b = B();
-  const uint32_t i =
-      static_cast<uint32_t>(global_data_[bytecode::global_window_index(b)][0].i) - 1u;
-  if (i >= bytecode::global_window_size(b)) FAIL(RunError::IndexOutOfRange);
-  *sp++ = global_data_[A()][bytecode::global_window_first(b) + i];
-  ip += 2;
-  DISPATCH();
-}
-op_STGWG : {
-  const uint32_t b = B();
-  const uint32_t i =
-      static_cast<uint32_t>(global_data_[bytecode::global_window_index(b)][0].i) - 1u;
-  if (i >= bytecode::global_window_size(b)) FAIL(RunError::IndexOutOfRange);
-  global_data_[A()][bytecode::global_window_first(b) + i] = *--sp;
   ip += 2;
   DISPATCH();
 }
@@ -864,58 +798,8 @@ op_CLOCK:
   (sp++)->i = static_cast<int32_t>(host_->now_us());
   goto next_1;
 
-// A superinstruction never carries the line-end mark (bytecode::may_end_line): its dispatch
-// need not look.
-#undef DISPATCH
-#define DISPATCH() DISPATCH_NEXT()
-op_ADDLK:
-  (sp++)->i = arith::wrap_add(locals[A()].i, static_cast<int32_t>(B()));
-  ip += 2;
-  DISPATCH();
-op_REMLK:
-  (sp++)->i = arith::int_rem(locals[A()].i, static_cast<int32_t>(B()));
-  ip += 2;
-  DISPATCH();
-
-#define JUMP_LOCALS(op)                                        \
-  {                                                            \
-    const uint32_t pair = B();                                 \
-    const int32_t a = locals[bytecode::packed_first(pair)].i;  \
-    const int32_t b = locals[bytecode::packed_second(pair)].i; \
-    if (a op b)                                                \
-      JUMP_TO(code + A());                                     \
-    else                                                       \
-      ip += 2;                                                 \
-    DISPATCH();                                                \
-  }
-#define JUMP_LOCAL_IMM(op)                                    \
-  {                                                           \
-    const uint32_t pair = B();                                \
-    const int32_t a = locals[bytecode::packed_first(pair)].i; \
-    if (a op bytecode::packed_imm(pair))                      \
-      JUMP_TO(code + A());                                    \
-    else                                                      \
-      ip += 2;                                                \
-    DISPATCH();                                               \
-  }
-// Float comparisons jump "unless" (see peephole.cpp): NaN compares false and falls through.
-#define JUMP_UNLESS_FLOATS(a_expr, b_expr, op) \
-  {                                            \
-    const uint32_t pair = B();                 \
-    const float a = a_expr;                    \
-    const float b = b_expr;                    \
-    if (!(a op b))                             \
-      JUMP_TO(code + A());                     \
-    else                                       \
-      ip += 2;                                 \
-    DISPATCH();                                \
-  }
-#define JUMP_UNLESS_LOCALS(op)                               \
-  JUMP_UNLESS_FLOATS(locals[bytecode::packed_first(pair)].f, \
-                     locals[bytecode::packed_second(pair)].f, op)
-#define JUMP_UNLESS_LOCAL_CONST(op)                          \
-  JUMP_UNLESS_FLOATS(locals[bytecode::packed_first(pair)].f, \
-                     constants_[bytecode::packed_second(pair)].f, op)
+// The compare-and-jumps: a comparison and its branch in one. Float ones jump "unless": NaN
+// compares false and falls through.
 #define JUMP_COMPARE(type, field, cond) \
   {                                     \
     const type a = sp[-2].field;        \
@@ -927,32 +811,6 @@ op_REMLK:
       ++ip;                             \
     DISPATCH();                         \
   }
-op_JEQLL:
-  JUMP_LOCALS(==)
-op_JNELL:
-  JUMP_LOCALS(!=)
-op_JLTLL:
-  JUMP_LOCALS(<)
-op_JLELL:
-  JUMP_LOCALS(<=)
-op_JGTLL:
-  JUMP_LOCALS(>)
-op_JGELL:
-  JUMP_LOCALS(>=)
-op_JEQLK:
-  JUMP_LOCAL_IMM(==)
-op_JNELK:
-  JUMP_LOCAL_IMM(!=)
-op_JLTLK:
-  JUMP_LOCAL_IMM(<)
-op_JLELK:
-  JUMP_LOCAL_IMM(<=)
-op_JGTLK:
-  JUMP_LOCAL_IMM(>)
-op_JGELK:
-  JUMP_LOCAL_IMM(>=)
-#undef DISPATCH
-#define DISPATCH() DISPATCH_COUNTING_MARK()
 op_JEQI:
   JUMP_COMPARE(int32_t, i, a == b)
 op_JNEI:
@@ -965,9 +823,6 @@ op_JGTI:
   JUMP_COMPARE(int32_t, i, a > b)
 op_JGEI:
   JUMP_COMPARE(int32_t, i, a >= b)
-// Superinstructions again: no mark to look for.
-#undef DISPATCH
-#define DISPATCH() DISPATCH_NEXT()
 op_JNEQF:
   JUMP_COMPARE(float, f, !(a == b))
 op_JNNEF:
@@ -980,416 +835,49 @@ op_JNGTF:
   JUMP_COMPARE(float, f, !(a > b))
 op_JNGEF:
   JUMP_COMPARE(float, f, !(a >= b))
-op_JNEQFLL:
-  JUMP_UNLESS_LOCALS(==)
-op_JNNEFLL:
-  JUMP_UNLESS_LOCALS(!=)
-op_JNLTFLL:
-  JUMP_UNLESS_LOCALS(<)
-op_JNLEFLL:
-  JUMP_UNLESS_LOCALS(<=)
-op_JNGTFLL:
-  JUMP_UNLESS_LOCALS(>)
-op_JNGEFLL:
-  JUMP_UNLESS_LOCALS(>=)
-op_JNEQFLK:
-  JUMP_UNLESS_LOCAL_CONST(==)
-op_JNNEFLK:
-  JUMP_UNLESS_LOCAL_CONST(!=)
-op_JNLTFLK:
-  JUMP_UNLESS_LOCAL_CONST(<)
-op_JNLEFLK:
-  JUMP_UNLESS_LOCAL_CONST(<=)
-op_JNGTFLK:
-  JUMP_UNLESS_LOCAL_CONST(>)
-op_JNGEFLK:
-  JUMP_UNLESS_LOCAL_CONST(>=)
-#undef JUMP_LOCALS
-#undef JUMP_LOCAL_IMM
 #undef JUMP_COMPARE
-#undef JUMP_UNLESS_FLOATS
-#undef JUMP_UNLESS_LOCALS
-#undef JUMP_UNLESS_LOCAL_CONST
-// A line that ends by jumping (a loop's step, an if arm's last assignment) stops the slice
-// at the jump's target, as EOL; JMP would.
-#define END_LINE_AND_JUMP()                             \
-  {                                                     \
-    JUMP_OR(code + A(), out_of_back_jumps_at_line_end); \
-    if (--lines.now == 0) goto out_of_lines;            \
-    DISPATCH();                                         \
-  }
-op_JMPEOL:
-  END_LINE_AND_JUMP()
-op_INCLJEOL : {
-  const uint32_t pair = B();
-  int32_t& counter = locals[bytecode::packed_first(pair)].i;
-  counter = arith::wrap_add(counter, bytecode::packed_imm(pair));
-  END_LINE_AND_JUMP()
-}
-op_STLJEOL:
-  locals[B()] = *--sp;
-  END_LINE_AND_JUMP()
-op_STGJEOL:
-  global_data_[B()][0] = *--sp;
-  END_LINE_AND_JUMP()
-#undef END_LINE_AND_JUMP
 op_RETEOL:
   // The line ends here; the return is the line's last instruction, so a slice whose line
   // budget runs out at this end of line stops after the return, in the caller.
   --lines.now;
   goto op_RET;
-op_LDL2:
-  sp[0] = locals[A()];
-  sp[1] = locals[B()];
-  sp += 2;
-  ip += 2;
-  DISPATCH();
-op_LDLK:
-  sp[0] = locals[A()];
-  sp[1] = constants_[B()];
-  sp += 2;
-  ip += 2;
-  DISPATCH();
-op_STLK:
-  locals[A()] = constants_[B()];
-  ip += 2;
-  DISPATCH();
-op_LDKL:
-  sp[0] = constants_[A()];
-  sp[1] = locals[B()];
-  sp += 2;
-  ip += 2;
-  DISPATCH();
-op_MOVL:
-  locals[A()] = locals[B()];
-  ip += 2;
-  DISPATCH();
 
-#define LOCALS_ARITH(type, field, expr, store)                  \
-  {                                                             \
-    const uint32_t pair = B();                                  \
-    const type a = locals[bytecode::packed_first(pair)].field;  \
-    const type b = locals[bytecode::packed_second(pair)].field; \
-    store = (expr);                                             \
-    ip += 2;                                                    \
-    DISPATCH();                                                 \
+// The fused instructions (vm/fused.def), formed at load: each reads its operands in the base
+// words of its pattern, where they stay, and goes on past them. Their dispatch is the same as
+// every other instruction's: the fused word carries the line-end mark of its pattern's last.
+#define A_AT(k) bytecode::word_a(ip[fused_offset(kShape, k)])
+#define IMM_AT(k) bytecode::word_imm(ip[fused_offset(kShape, k)])
+#define B_AT(k) (ip[fused_offset(kShape, k) + 1])
+#define NEXT()           \
+  do {                   \
+    ip += kShape.length; \
+    DISPATCH();          \
+  } while (0)
+#define BRANCH_IF(condition, k)  \
+  do {                           \
+    if (condition)               \
+      JUMP_TO(code + A_AT(k));   \
+    else                         \
+      ip += kShape.length;       \
+    DISPATCH();                  \
+  } while (0)
+#define FUSED(name, pattern, when, meaning, ...)                                   \
+  fused_##name : {                                                                 \
+    [[maybe_unused]] static constexpr FusedShape kShape =                          \
+        fused_detail::kShapes[static_cast<uint32_t>(Fused::name)];                 \
+    __VA_ARGS__;                                                                   \
   }
-op_ADDILL:
-  LOCALS_ARITH(int32_t, i, arith::wrap_add(a, b), (sp++)->i)
-op_SUBILL:
-  LOCALS_ARITH(int32_t, i, arith::wrap_sub(a, b), (sp++)->i)
-op_ADDFLL:
-  LOCALS_ARITH(float, f, a + b, (sp++)->f)
-op_SUBFLL:
-  LOCALS_ARITH(float, f, a - b, (sp++)->f)
-op_MULFLL:
-  LOCALS_ARITH(float, f, a* b, (sp++)->f)
-op_ADDILLS:
-  LOCALS_ARITH(int32_t, i, arith::wrap_add(a, b), locals[A()].i)
-op_SUBILLS:
-  LOCALS_ARITH(int32_t, i, arith::wrap_sub(a, b), locals[A()].i)
-op_ADDFLLS:
-  LOCALS_ARITH(float, f, a + b, locals[A()].f)
-op_SUBFLLS:
-  LOCALS_ARITH(float, f, a - b, locals[A()].f)
-op_MULFLLS:
-  LOCALS_ARITH(float, f, a* b, locals[A()].f)
-#undef LOCALS_ARITH
-
-// The global forms: element 0 of scalar globals, as LDG and STG read and write it.
-#define GLOBAL(n) (global_data_[n][0])
-op_STGEOL:
-  GLOBAL(A()) = *--sp;
-  ++ip;
-  if (--lines.now == 0) goto out_of_lines;
-  DISPATCH();
-op_STGK:
-  GLOBAL(A()) = constants_[B()];
-  goto next_2;
-op_LDG2:
-  sp[0] = GLOBAL(A());
-  sp[1] = GLOBAL(B());
-  sp += 2;
-  goto next_2;
-op_ADDGK:
-  (sp++)->i = arith::wrap_add(GLOBAL(A()).i, static_cast<int32_t>(B()));
-  goto next_2;
-op_REMGK:
-  (sp++)->i = arith::int_rem(GLOBAL(A()).i, static_cast<int32_t>(B()));
-  ip += 2;
-  DISPATCH();
-op_INCG : {
-  int32_t& counter = GLOBAL(A()).i;
-  counter = arith::wrap_add(counter, static_cast<int32_t>(B()));
-  ip += 2;
-  DISPATCH();
-}
-op_INCGEOL : {
-  int32_t& counter = GLOBAL(A()).i;
-  counter = arith::wrap_add(counter, static_cast<int32_t>(B()));
-  ip += 2;
-  if (--lines.now == 0) goto out_of_lines;
-  DISPATCH();
-}
-op_STGKEOL:
-  GLOBAL(A()) = constants_[B()];
-  ip += 2;
-  if (--lines.now == 0) goto out_of_lines;
-  DISPATCH();
-op_JZG:
-op_JNZG:
-  // JNZG follows JZG: it jumps when the global's being zero is not what JZG looks for.
-  if ((GLOBAL(B()).i == 0) != ((word & 0xFFu) == static_cast<uint32_t>(Op::JNZG)))
-    JUMP_TO(code + A());
-  else
-    ip += 2;
-  DISPATCH();
-// A global against a constant: one handler a family, the opcode's place in it the comparison
-// (holds(), above), so that the embeddable core stays within its 32 KiB.
-op_JEQGK:
-op_JNEGK:
-op_JLTGK:
-op_JLEGK:
-op_JGEGK : {
-  const uint32_t pair = B();
-  const uint32_t outcome = int_outcome(GLOBAL(bytecode::packed_first(pair)).i,
-                                       constants_[bytecode::packed_second(pair)].i);
-  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JEQGK);
-  if (holds(how, outcome))
-    JUMP_TO(code + A());
-  else
-    ip += 2;
-  DISPATCH();
-}
-// A counting loop's exit test (`for (K = 1, K <= N, ...)`), taken every turn: its own handler,
-// without the family's outcome and table.
-op_JGTGK : {
-  const uint32_t pair = B();
-  if (GLOBAL(bytecode::packed_first(pair)).i > constants_[bytecode::packed_second(pair)].i)
-      [[unlikely]] {
-    JUMP_TO(code + A());
-    DISPATCH();
-  }
-  ip += 2;
-  DISPATCH();
-}
-// "Jump unless", as the float forms on locals: NaN compares false and falls through.
-op_JNEQFGK:
-op_JNNEFGK:
-op_JNLTFGK:
-op_JNLEFGK:
-op_JNGTFGK:
-op_JNGEFGK : {
-  const uint32_t pair = B();
-  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFGK);
-  if (!holds(how, float_outcome(GLOBAL(bytecode::packed_first(pair)).f,
-                                constants_[bytecode::packed_second(pair)].f)))
-    JUMP_TO(code + A());
-  else
-    ip += 2;
-  DISPATCH();
-}
-// The branches that end their line on both paths: a handler a family (the embeddable core's
-// 32 KiB), the taken path as JMPEOL, the other as the instruction and its EOL. `width` is the
-// instruction's length in words.
-#define BRANCH_ENDING_LINE(taken, width)                  \
-  {                                                       \
-    if (taken) {                                          \
-      JUMP_OR(code + A(), out_of_back_jumps_at_line_end); \
-    } else {                                              \
-      ip += (width);                                      \
-    }                                                     \
-    if (--lines.now == 0) goto out_of_lines;              \
-    DISPATCH();                                           \
-  }
-op_JEQGKEOL:
-op_JNEGKEOL:
-op_JLTGKEOL:
-op_JLEGKEOL:
-op_JGTGKEOL:
-op_JGEGKEOL : {
-  const uint32_t pair = B();
-  const uint32_t outcome = int_outcome(GLOBAL(bytecode::packed_first(pair)).i,
-                                       constants_[bytecode::packed_second(pair)].i);
-  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JEQGKEOL);
-  BRANCH_ENDING_LINE(holds(how, outcome), 2)
-}
-op_JNEQFGKEOL:
-op_JNNEFGKEOL:
-op_JNLTFGKEOL:
-op_JNLEFGKEOL:
-op_JNGTFGKEOL:
-op_JNGEFGKEOL : {
-  const uint32_t pair = B();
-  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFGKEOL);
-  BRANCH_ENDING_LINE(!holds(how, float_outcome(GLOBAL(bytecode::packed_first(pair)).f,
-                                               constants_[bytecode::packed_second(pair)].f)),
-                     2)
-}
-op_JNCMPFEOL : {
-  const uint32_t outcome = float_outcome(sp[-2].f, sp[-1].f);
-  sp -= 2;
-  BRANCH_ENDING_LINE(!holds(B(), outcome), 2)
-}
-op_JZGEOL:
-op_JNZGEOL:
-  BRANCH_ENDING_LINE((GLOBAL(B()).i == 0) != ((word & 0xFFu) == static_cast<uint32_t>(Op::JNZGEOL)),
-                     2)
-// Two globals' arithmetic, a handler each (one shared through a switch slowed Gold's loop
-// by some 10 %, though it never runs there); they end in the shared dispatch.
-#define GLOBALS_ARITH(type, field, expr)                        \
-  {                                                             \
-    const uint32_t pair = B();                                  \
-    const type a = GLOBAL(bytecode::packed_first(pair)).field;  \
-    const type b = GLOBAL(bytecode::packed_second(pair)).field; \
-    (sp++)->field = (expr);                                     \
-    goto next_2;                                                \
-  }
-op_ADDIGG:
-  GLOBALS_ARITH(int32_t, i, arith::wrap_add(a, b))
-op_SUBIGG:
-  GLOBALS_ARITH(int32_t, i, arith::wrap_sub(a, b))
-op_ADDFGG:
-  GLOBALS_ARITH(float, f, a + b)
-op_SUBFGG:
-  GLOBALS_ARITH(float, f, a - b)
-op_MULFGG:
-  GLOBALS_ARITH(float, f, a* b)
-#undef GLOBALS_ARITH
-// The three-address forms: two globals' arithmetic into global A, ending the line.
-#define GLOBALS_ARITH_EOL(type, field, expr)                    \
-  {                                                             \
-    const uint32_t pair = B();                                  \
-    const type a = GLOBAL(bytecode::packed_first(pair)).field;  \
-    const type b = GLOBAL(bytecode::packed_second(pair)).field; \
-    GLOBAL(A()).field = (expr);                                 \
-    ip += 2;                                                    \
-    if (--lines.now == 0) goto out_of_lines;                    \
-    DISPATCH();                                                 \
-  }
-op_ADDIGGEOL:
-  GLOBALS_ARITH_EOL(int32_t, i, arith::wrap_add(a, b))
-op_SUBIGGEOL:
-  GLOBALS_ARITH_EOL(int32_t, i, arith::wrap_sub(a, b))
-op_ADDFGGEOL:
-  GLOBALS_ARITH_EOL(float, f, a + b)
-op_SUBFGGEOL:
-  GLOBALS_ARITH_EOL(float, f, a - b)
-op_MULFGGEOL:
-  GLOBALS_ARITH_EOL(float, f, a* b)
-#undef GLOBALS_ARITH_EOL
-op_REMGKEOL : {
-  const uint32_t pair = B();
-  const int32_t dividend = GLOBAL(bytecode::packed_first(pair)).i;
-  GLOBAL(A()).i = arith::int_rem(dividend, bytecode::packed_imm(pair));
-  ip += 2;
-  if (--lines.now == 0) goto out_of_lines;
-  DISPATCH();
-}
-// A global's accumulation of the popped value, the global the left operand.
-#define ACCUMULATE_EOL(field, expr)          \
-  {                                          \
-    auto& a = GLOBAL(A()).field;             \
-    const auto b = (--sp)->field;            \
-    a = (expr);                              \
-    ++ip;                                    \
-    if (--lines.now == 0) goto out_of_lines; \
-    DISPATCH();                              \
-  }
-op_ADDIGEOL:
-  ACCUMULATE_EOL(i, arith::wrap_add(a, b))
-op_ADDFGEOL:
-  ACCUMULATE_EOL(f, a + b)
-op_SUBFGEOL:
-  ACCUMULATE_EOL(f, a - b)
-#undef ACCUMULATE_EOL
-// A float global with a constant (GlobalConst: the global first, the constant second).
-#define GLOBAL_CONSTANT_ARITH(expr)                              \
-  {                                                              \
-    const uint32_t pair = B();                                   \
-    const float g = GLOBAL(bytecode::packed_first(pair)).f;      \
-    const float k = constants_[bytecode::packed_second(pair)].f; \
-    (sp++)->f = (expr);                                          \
-    goto next_2;                                                 \
-  }
-op_ADDFGK:
-  GLOBAL_CONSTANT_ARITH(g + k)
-op_SUBFGK:
-  GLOBAL_CONSTANT_ARITH(g - k)
-op_MULFGK:
-  GLOBAL_CONSTANT_ARITH(g * k)
-op_MULFKG:
-  GLOBAL_CONSTANT_ARITH(k * g)
-#undef GLOBAL_CONSTANT_ARITH
-op_JNEQFGG:
-op_JNNEFGG:
-op_JNLTFGG:
-op_JNLEFGG:
-op_JNGTFGG:
-op_JNGEFGG : {
-  const uint32_t pair = B();
-  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFGG);
-  if (!holds(how, float_outcome(GLOBAL(bytecode::packed_first(pair)).f,
-                                GLOBAL(bytecode::packed_second(pair)).f)))
-    JUMP_TO(code + A());
-  else
-    ip += 2;
-  DISPATCH();
-}
-op_JNEQFGGEOL:
-op_JNNEFGGEOL:
-op_JNLTFGGEOL:
-op_JNLEFGGEOL:
-op_JNGTFGGEOL:
-op_JNGEFGGEOL : {
-  const uint32_t pair = B();
-  const uint32_t how = (word & 0xFFu) - static_cast<uint32_t>(Op::JNEQFGGEOL);
-  BRANCH_ENDING_LINE(!holds(how, float_outcome(GLOBAL(bytecode::packed_first(pair)).f,
-                                               GLOBAL(bytecode::packed_second(pair)).f)),
-                     2)
-}
-op_JCMPGG : {
-  const uint32_t b = B();
-  if (holds(bytecode::globals_test_how(b), int_outcome(GLOBAL(bytecode::globals_test_first(b)).i,
-                                                       GLOBAL(bytecode::globals_test_second(b)).i)))
-    JUMP_TO(code + A());
-  else
-    ip += 2;
-  DISPATCH();
-}
-op_JCMPGGEOL : {
-  const uint32_t b = B();
-  BRANCH_ENDING_LINE(
-      holds(bytecode::globals_test_how(b), int_outcome(GLOBAL(bytecode::globals_test_first(b)).i,
-                                                       GLOBAL(bytecode::globals_test_second(b)).i)),
-      2)
-}
-// A frame's word compared with a constant: `if (n < 2)` of a parameter.
-op_JCMPMKEOL : {
-  const uint32_t test = B();
-  FRAME_WORD(at, bytecode::frame_test_local(test), bytecode::frame_test_offset(test));
-  BRANCH_ENDING_LINE(
-      holds(bytecode::frame_test_how(test), int_outcome(at.i, bytecode::frame_test_imm(test))), 2)
-}
-#undef BRANCH_ENDING_LINE
-#undef GLOBAL
-#undef DISPATCH
-#define DISPATCH() DISPATCH_COUNTING_MARK()
+#include "vm/fused.def"
+#undef FUSED
+#undef BRANCH_IF
+#undef NEXT
+#undef A_AT
+#undef IMM_AT
+#undef B_AT
 
 op_CMDGET : {
   Value v;
   HOST_CALL(host_->read(A(), static_cast<int32_t>(B()), v), (*sp++ = v, ip += 2))
-}
-op_UNTILCK : {
-  bool met = false;
-  round_ends = true;
-  detail = test_command(*host_, A(), B(), met);
-  if (detail != kCommandOk && detail != kCommandEndSlice) FAIL(RunError::CommandRefused);
-  if (met) ip += 2;
-  if (met && detail == kCommandOk) DISPATCH();
-  detail = 0;
-  end = SliceEnd::Yielded;  // not yet: here again in the next slice
-  goto stop;
 }
 op_CMDGETX : {
   Value v;
@@ -1429,83 +917,6 @@ op_STM : {
   ++ip;
   DISPATCH();
 }
-
-// Superinstructions again: no mark to look for.
-#undef DISPATCH
-#define DISPATCH() DISPATCH_NEXT()
-op_LDMLK : {
-  FRAME_WORD(at, A(), B());
-  *sp++ = at;
-  ip += 2;
-  DISPATCH();
-}
-op_STMLK : {
-  FRAME_WORD(at, A(), B());
-  at = *--sp;
-  ip += 2;
-  DISPATCH();
-}
-// An address's range tests: the operand stays for the code after either path.
-op_JULTK:
-  if (static_cast<uint32_t>(sp[-1].i) < B())
-    JUMP_TO(code + A());
-  else
-    ip += 2;
-  DISPATCH();
-op_LDPMLK : {
-  const uint32_t test = B();
-  FRAME_WORD(at, bytecode::pointer_test_local(test), bytecode::pointer_test_offset(test));
-  const uint32_t pointer = at.bits;
-  (sp++)->bits = pointer;
-  if (pointer < bytecode::pointer_test_bound(test) ||
-      pointer - locals[bytecode::pointer_test_window_local(test)].bits <
-          bytecode::pointer_test_window(test))
-    JUMP_TO(code + A());
-  else
-    ip += 2;
-  DISPATCH();
-}
-op_JULTLK : {
-  const uint32_t pair = B();
-  const uint32_t offset = static_cast<uint32_t>(sp[-1].i) -
-                          static_cast<uint32_t>(locals[bytecode::packed_first(pair)].i);
-  if (offset < static_cast<uint32_t>(bytecode::packed_imm(pair)))
-    JUMP_TO(code + A());
-  else
-    ip += 2;
-  DISPATCH();
-}
-// A frame's word plus a constant: `n - 1` of a parameter.
-op_ADDMLK : {
-  const uint32_t pair = B();
-  FRAME_WORD(at, A(), bytecode::packed_first(pair));
-  (sp++)->i = arith::wrap_add(at.i, bytecode::packed_imm(pair));
-  ip += 2;
-  DISPATCH();
-}
-// A frame's word stepped by a constant, ending the line: `n--;`.
-op_INCMLKEOL : {
-  const uint32_t pair = B();
-  FRAME_WORD(at, A(), bytecode::packed_first(pair));
-  at.i = arith::wrap_add(at.i, bytecode::packed_imm(pair));
-  ip += 2;
-  if (--lines.now == 0) goto out_of_lines;
-  DISPATCH();
-}
-op_MULIK:
-  sp[-1].i = arith::wrap_mul(sp[-1].i, IMM());
-  ++ip;
-  DISPATCH();
-op_REMIK:
-  sp[-1].i = arith::int_rem(sp[-1].i, IMM());
-  ++ip;
-  DISPATCH();
-op_ADDIG:
-  sp[-1].i = arith::wrap_add(sp[-1].i, global_data_[A()][0].i);
-  ++ip;
-  DISPATCH();
-#undef DISPATCH
-#define DISPATCH() DISPATCH_COUNTING_MARK()
 
 op_SEXT:
   UNARY(Value::of_int(arith::sign_extend(a.i, A())))
@@ -1552,12 +963,12 @@ op_BREAK:
 next_1:
   ++ip;
   DISPATCH();
-next_2:
-  ip += 2;
-  DISPATCH();
 
+// A slice that counts instructions counts base ones: a fused instruction runs as the first of
+// its pattern, and the rest follow one by one (their words were never changed).
 count_then_dispatch:
   if (steps.now-- == 0) goto out_of_budget;
+  word = base_word(word);
   goto* kDispatch[word & 0xFFu];
 
 // A spent 32-bit count takes the next chunk of its budget and the slice goes on as if nothing

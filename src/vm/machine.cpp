@@ -5,6 +5,8 @@
 #include <cstring>
 
 #include "bytecode/opcodes.h"
+#include "vm/fused.h"
+#include "vm/quicken.h"
 
 namespace uprog::vm {
 
@@ -88,6 +90,7 @@ size_t Machine::memory_needed(const ImageView& image, const MachineConfig& confi
     a.take<Handler>(config.handlers);
   }
   a.take<Breakpoint>(config.breakpoints);
+  a.take<uint32_t>(quicken_scratch_words(image.code.size()));
   uint64_t need = a.used();
   const uint64_t scratch = bytecode::verify_scratch_size(image);
   if (scratch > need) need = scratch;
@@ -159,10 +162,12 @@ LoadStatus Machine::load(const uint8_t* bytes, size_t size, const MachineConfig&
   }
   breakpoints_ = a.take<Breakpoint>(config.breakpoints);
   breakpoint_count_ = 0;
+  uint32_t* const quicken_scratch = a.take<uint32_t>(quicken_scratch_words(code_size_));
   if (!a.fits()) {
     status.no_memory = true;
     return status;
   }
+  quicken(code_, code_size_, view, quicken_scratch);
   image_ = view;
   host_ = &host;
   config_ = config;
@@ -363,15 +368,30 @@ bool Machine::move_pc(uint32_t thread, uint32_t pc, void* scratch, size_t scratc
   return true;
 }
 
+// The base code's instructions: a fused instruction's first word is the base one it was.
 bool Machine::is_instruction_start(uint32_t pc) const {
   for (uint32_t at = 0; at < code_size_;) {
     if (at == pc) return true;
     if (at > pc) return false;
     const Breakpoint* b = find_breakpoint(at);
-    const uint32_t word = b ? b->original : code_[at];
+    const uint32_t word = base_word(b ? b->original : code_[at]);
     at += bytecode::op_length(bytecode::word_op(word));
   }
   return false;
+}
+
+// A fused instruction that `pc` lies inside is its base code again, so that a trap there is hit.
+void Machine::unfuse_around(uint32_t pc) {
+  for (uint32_t at = 0; at < code_size_ && at < pc;) {
+    const Breakpoint* b = find_breakpoint(at);
+    uint32_t& word = b ? breakpoints_[b - breakpoints_].original : code_[at];
+    const uint32_t length = instruction_length(word);
+    if (pc < at + length) {
+      word = base_word(word);
+      return;
+    }
+    at += length;
+  }
 }
 
 const Machine::Breakpoint* Machine::find_breakpoint(uint32_t pc) const {
@@ -384,6 +404,7 @@ bool Machine::set_breakpoint(uint32_t pc) {
   if (!loaded_ || !is_instruction_start(pc)) return false;
   if (find_breakpoint(pc)) return true;
   if (breakpoint_count_ >= config_.breakpoints) return false;
+  unfuse_around(pc);
   breakpoints_[breakpoint_count_++] = {pc, code_[pc]};
   code_[pc] = bytecode::make_word(Op::BREAK, 0);
   return true;

@@ -115,7 +115,7 @@ class Machine {
   // to the next thread only while each slice ends at a line end, without a call to the host
   // (which may have changed which threads run next) and not before a program's bare end, nor
   // before a thread that is not running at an ordinary instruction (waiting, stopped, at a
-  // breakpoint or UNTILCK). round.at is the last thread run; its result is returned, the
+  // breakpoint). round.at is the last thread run; its result is returned, the
   // earlier ones ended at their line end. NotRunning, with nothing run and round.at the lowest
   // thread, when that one cannot start in a round: run_slice takes those.
   SliceResult run_round(Round& round, const Budget& budget);
@@ -236,7 +236,6 @@ class Machine {
   Thread* next_in_round(Round& round, bytecode::Op next_op, uint32_t frame_count);
   SliceResult run_other_slice(uint32_t thread, const Budget& budget);  // the rest of run_slice
   SliceResult step_over_breakpoint(Thread& t, const Budget& budget);
-  SliceResult test_then_execute(Thread& t, const Budget& budget);
   SliceResult execute(Thread& t, const Budget& budget, Round* round = nullptr);
   // Enters routine r: pushes a frame, moves the inputs into its locals. False on an error,
   // which is then set in `error`.
@@ -247,6 +246,7 @@ class Machine {
   void reset_thread(Thread& t);
   void set_status(Thread& t, ThreadStatus s);  // the status and threads_in() together
   bool is_instruction_start(uint32_t pc) const;
+  void unfuse_around(uint32_t pc);
   const Breakpoint* find_breakpoint(uint32_t pc) const;
 
   bool loaded_ = false;
@@ -277,8 +277,7 @@ inline bool Machine::starts_plainly(uint32_t thread) const {
   return loaded_ && thread < thread_count_ && starts_plainly(threads_[thread]);
 }
 inline bool Machine::starts_plainly(const Thread& t) const {
-  return t.status == ThreadStatus::Running && !t.step_over &&
-         bytecode::word_op(code_[t.pc]) != bytecode::Op::UNTILCK;
+  return t.status == ThreadStatus::Running && !t.step_over;
 }
 inline SliceResult Machine::run_slice(uint32_t thread, const Budget& budget) {
   if (starts_plainly(thread)) return execute(threads_[thread], budget);
@@ -312,7 +311,7 @@ inline Machine::Thread* Machine::next_in_round(Round& round, bytecode::Op next_o
   // changes no other thread's status: the next one is still running.
   const auto thread = static_cast<uint32_t>(std::countr_zero(later));
   Thread& t = threads_[thread];
-  if (t.step_over || bytecode::word_op(code_[t.pc]) == bytecode::Op::UNTILCK) return nullptr;
+  if (t.step_over) return nullptr;
   round.at = thread;
   return &t;
 }

@@ -124,7 +124,7 @@ TEST(LineStep, AWakeThatSleepsAgainAtTheSamePlaceStillRan) {
 t:
   PUSHI 1
   WAIT 1000
-  JMPEOL t
+  JMP.eol t
 )",
                      1));
   d.start(0, "t");

@@ -91,7 +91,7 @@ t2:
 go:
   PUSHI 2
   CMDSET 1 0
-  JMPEOL go
+  JMP.eol go
 )"));
   p.d.start(1, "t1");
   p.d.start(2, "t2");
@@ -250,7 +250,7 @@ t3:
 t3_go:
   PUSHI 3
   CMDSET 1 0
-  JMPEOL t3_go
+  JMP.eol t3_go
 )"));
     for (uint32_t t = 1; t <= 3; ++t) p.d.start(t, "t" + std::to_string(t));
     p.run(50);

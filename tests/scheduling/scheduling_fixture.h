@@ -107,7 +107,8 @@ inline std::string routine_header(const std::string& name) {
 }
 // Writes `value` in every line from here on: a label and a line that jumps back to it.
 inline std::string write_forever(const std::string& label, int value) {
-  return label + ":\n  PUSHI " + std::to_string(value) + "\n  CMDSET 1 0\n  JMPEOL " + label + "\n";
+  return label + ":\n  PUSHI " + std::to_string(value) + "\n  CMDSET 1 0\n  JMP.eol " + label +
+         "\n";
 }
 
 // A task that writes `id` in every line, forever: each line is `PUSHI id; CMDSET 1 0; EOL`.

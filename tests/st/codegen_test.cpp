@@ -1,7 +1,8 @@
 // The code the ST compiler makes of a condition's line (IF, WHILE, UNTIL, FOR): the line ends
-// after its branch on both paths, so that the peephole pass makes comparison, branch and end of
-// line one instruction; and every path still ends each line exactly once, since the drive's
-// line budget and TASK's figures count the line ends.
+// after its branch on both paths, so that the compile-time pass makes comparison, branch and end
+// of line one compare-and-jump carrying the line-end mark (which the VM fuses with the loads
+// before it at load); and every path still ends each line exactly once, since the drive's line
+// budget and TASK's figures count the line ends.
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -36,15 +37,21 @@ std::vector<std::string> ops_on_line(const bytecode::Image& image, uint32_t line
   }
   return out;
 }
-std::string first_op(const bytecode::Image& image, uint32_t line) {
-  const auto ops = ops_on_line(image, line);
-  return ops.empty() ? "" : ops.front();
-}
-// The last two instructions the line table gives `line`, or fewer.
-std::string last_ops(const bytecode::Image& image, uint32_t line) {
-  const auto ops = ops_on_line(image, line);
+// The last `n` instructions the line table gives `line` (or fewer), as assembly names them:
+// ".eol" on one that carries the line-end mark.
+std::string last_ops(const bytecode::Image& image, uint32_t line, size_t n) {
+  std::vector<std::string> ops;
+  for (size_t k = 0; k < image.lines.size(); ++k) {
+    if (image.lines[k].line != line) continue;
+    const uint32_t end = k + 1 < image.lines.size() ? image.lines[k + 1].code
+                                                    : static_cast<uint32_t>(image.code.size());
+    for (uint32_t pc = image.lines[k].code; pc < end;
+         pc += bytecode::op_length(bytecode::word_op(image.code[pc])))
+      ops.push_back(std::string(bytecode::op_name(bytecode::word_op(image.code[pc]))) +
+                    (bytecode::word_ends_line(image.code[pc]) ? ".eol" : ""));
+  }
   std::string out;
-  for (size_t k = ops.size() < 2 ? 0 : ops.size() - 2; k < ops.size(); ++k)
+  for (size_t k = ops.size() < n ? 0 : ops.size() - n; k < ops.size(); ++k)
     out += (out.empty() ? "" : " ") + ops[k];
   return out;
 }
@@ -135,20 +142,24 @@ FUNCTION F
 END_FUNCTION
 )";
 
-// What the peephole makes of the rest of the code may change; a condition's line is its fused
-// branch, which ends the line on both paths.
+// What the pass makes of the rest of the code may change; a condition's line ends in its
+// compare-and-jump, which ends the line on both paths.
 TEST(st_codegen, AConditionsLineIsOneBranchThatEndsIt) {
   const bytecode::Image image = compiled(kConditions);
-  EXPECT_EQ(first_op(image, 3), "JNEGKEOL");  // IF A = 3: to the ELSE side unless
-  EXPECT_EQ(first_op(image, 8), "JGEGKEOL");  // WHILE N < 10: out unless
-  EXPECT_EQ(first_op(image, 13), "JZGEOL");   // UNTIL N = 0: out if (a test against 0)
-  EXPECT_EQ(first_op(image, 17), "JZGEOL");   // IF S
-  // FOR: the test is at the bottom, after the body's last line; a pass ends with the step and
+  EXPECT_EQ(last_ops(image, 3, 3), "LDG PUSHI JNEI.eol");  // IF A = 3: to the ELSE side unless
+  EXPECT_EQ(last_ops(image, 8, 3), "LDG PUSHI JGEI.eol");  // WHILE N < 10: out unless
+  // UNTIL N = 0: out if (a test against 0) to the line's EOL there, else back, the line ending
+  // in the jump back.
+  EXPECT_EQ(last_ops(image, 13, 4), "LDG JZ JMP.eol EOL");
+  EXPECT_EQ(last_ops(image, 17, 2), "LDG JZ.eol");  // IF S
+  // FOR: the test is at the bottom, after the body's last line and the step; a pass ends with
   // the branch back against the literal bound, a constant.
-  EXPECT_EQ(last_ops(image, 15), "INCG JLEGKEOL");
-  for (uint32_t line : {3u, 8u, 13u, 15u, 17u})
+  EXPECT_EQ(last_ops(image, 15, 3), "LDG PUSHK JLEI.eol");
+  // (UNTIL's line keeps the EOL at its way out.)
+  for (uint32_t line : {3u, 8u, 15u, 17u})
     for (const std::string& op : ops_on_line(image, line))
-      EXPECT_TRUE(op != "JZ" && op != "JNZ") << "line " << line << ": an unfused branch";
+      EXPECT_TRUE(op != "EOL" && op != "EQI" && op != "LTI" && op != "LEI")
+          << "line " << line << ": a comparison or a line end apart from the branch";
 }
 
 // Every shape, fused or not: the branches on a constant, a two globals' comparison and an AND
@@ -189,8 +200,9 @@ TEST(st_codegen, EveryPathEndsEachLineOnce) {
   // FOR A: 1 (ELSE), 2 (THEN), 3 (ELSE); each pass's step and test end the FOR line again.
   const std::string for_a = "3 4 7 (7) 4 5 (7) 4 7 (7)";
   const std::string while_n = "10 11 10 11 10";  // twice, then out
-  // N 2 -> 1 -> 0; the UNTIL line's way back is a JMP after its end, as it was a JZ.
-  const std::string repeat_n = "14 15 (15) 15";
+  // N 2 -> 1 -> 0; the UNTIL line's way back is a jump that ends the line (its EOL and JMP
+  // merged), so the slice after it starts at line 14 again.
+  const std::string repeat_n = "14 15 14 15";
   // FOR B := 0 TO 4 BY 2 (a bound in the hidden local): the IF's false side ends its line at
   // its target's EOL, then the step.
   const std::string for_b = "16 17 (18) 17 (18) 17 (18)";

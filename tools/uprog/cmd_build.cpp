@@ -8,10 +8,13 @@
 #include <string>
 
 #include "bytecode/assembly.h"
+#include "bytecode/image_view.h"
 #include "commands.h"
 #include "dialect_choice.h"
 #include "huge_heap.h"
 #include "support/files.h"
+#include "vm/fused.h"
+#include "vm/quicken.h"
 
 namespace uprog::cli {
 namespace {
@@ -21,7 +24,27 @@ struct BuildOptions {
   std::string output;
   std::string emit = "image";
   std::string dialect;
+  bool quickened = false;
 };
+
+// For each code word where the VM forms a fused instruction when it loads `image`
+// (vm/quicken.h), "quickened: NAME"; "" elsewhere.
+std::vector<std::string> quickened_notes(const bytecode::Image& image) {
+  const std::vector<uint8_t> bytes = bytecode::encode(image);
+  bytecode::ImageView view;
+  std::vector<std::string> notes(image.code.size());
+  if (bytecode::load_image(bytes.data(), bytes.size(), view) != bytecode::LoadError::Ok)
+    return notes;
+  std::vector<uint32_t> code = image.code;
+  const auto size = static_cast<uint32_t>(code.size());
+  std::vector<uint32_t> scratch(vm::quicken_scratch_words(size));
+  vm::quicken(code.data(), size, view, scratch.data());
+  for (uint32_t pc = 0; pc < size; pc += vm::instruction_length(code[pc]))
+    if (vm::is_fused(code[pc]))
+      notes[pc] = fmt::format("quickened: {}",
+                              vm::kFusedNames[(code[pc] & 0xFFu) - vm::kFirstFused]);
+  return notes;
+}
 
 // The build's date: SOURCE_DATE_EPOCH when set (reproducible builds,
 // reproducible-builds.org/specs/source-date-epoch), else now.
@@ -51,7 +74,9 @@ int build(const BuildOptions& o) {
                  d->name());
       return 1;
     }
-    const std::string text = bytecode::disassemble(*r.image);
+    const std::string text =
+        o.quickened ? bytecode::disassemble(*r.image, quickened_notes(*r.image))
+                    : bytecode::disassemble(*r.image);
     written = write_file_atomically(o.output.empty() ? o.input + ".s" : o.output, text.data(),
                                     text.size(), &error);
   } else {
@@ -77,6 +102,8 @@ void add_build(Options& cmd, Action& action) {
              "output file (default FILE plus the stored form's extension, "
              "e.g. FILE.upi, or FILE.s with --emit asm)");
   cmd.option("--emit", o->emit, "image (the stored form) or asm").one_of({"image", "asm"});
+  cmd.flag("--quickened", o->quickened,
+           "with --emit asm: name the fused instruction the VM forms at load where one starts");
   add_dialect_option(cmd, o->dialect);
   cmd.on_chosen([&action, o] { action = [o] { return build(*o); }; });
 }

@@ -340,10 +340,10 @@ class Loader {
   // AJump[c]: one branch that ends the line whether it is taken or not.
   void jump(bytecode::CodeBuilder& b, int32_t c, bytecode::CodeBuilder::Label to) {
     static const Op kCompareJumps[] = {Op::JEQI, Op::JNEI, Op::JGTI, Op::JGEI, Op::JLTI, Op::JLEI};
-    if (c == 1) return b.emit_to(Op::JMPEOL, to);
     const uint32_t start = b.here();
     if (c == 2) b.emit_imm(Op::PUSHI, 0);
     const Op branch = c >= 3 && c <= 8 ? kCompareJumps[c - 3]
+                      : c == 1         ? Op::JMP
                       : c == 2         ? Op::JGTI
                       : c == 9         ? Op::JZ
                                        : Op::JNZ;

@@ -8,6 +8,8 @@
 #include "bytecode/peephole.h"
 #include "dialects/pup/cup_code.h"
 #include "dialects/pup/cup_loader.h"
+#include "vm/fused.h"
+#include "vm/quicken.h"
 
 namespace uprog::pup {
 namespace {
@@ -57,32 +59,74 @@ bool may_copy(const LineOp& op, const LineOp* before) {
   }
 }
 
-// What the paths through a copy cost together: their instructions (each with the JLINES before
-// it) and the lines they run. Paths weigh the same.
+// What the paths through a copy cost together: their instructions as the VM runs them, fused at
+// load (vm/quicken.h), each with the JLINES before it, and the lines they run. Paths weigh the
+// same.
 struct PathCost {
   uint64_t instructions = 0, lines = 0;
   bool lost = false;  // code that does not end in a JMPLN: not a copy this file made
 };
 
+// One instruction of quickened code as a path sees it: its words, the lines it ends, and its
+// branch or jump (a fused one's, where its pattern has one), if any.
+struct Step {
+  uint32_t length = 1, ended = 0;
+  bytecode::Flow flow = bytecode::Flow::Next;
+  uint32_t target = 0;
+};
+Step step_at(const std::vector<uint32_t>& code, uint32_t pc) {
+  const uint32_t word = code[pc];
+  Step s;
+  s.ended = bytecode::word_ends_line(word) ? 1 : 0;
+  if (!vm::is_fused(word)) {
+    const Op op = bytecode::word_op(word);
+    s.length = bytecode::op_length(op);
+    s.ended += bytecode::ends_line_itself(op) ? 1 : 0;
+    s.flow = bytecode::op_info(op).flow;
+    s.target = bytecode::word_a(word);
+    return s;
+  }
+  const vm::FusedShape& shape = vm::kFusedShapes[(word & 0xFFu) - vm::kFirstFused];
+  s.length = shape.length;
+  for (uint32_t k = 0; k < shape.count; ++k) {
+    const Op op = shape.ops[k];
+    s.ended += bytecode::ends_line_itself(op) ? 1 : 0;
+    const bytecode::Flow flow = bytecode::op_info(op).flow;
+    if (flow == bytecode::Flow::Branch || flow == bytecode::Flow::Jump) {
+      s.flow = flow;
+      s.target = bytecode::word_a(code[pc + vm::fused_offset(shape, k)]);
+    }
+  }
+  return s;
+}
+
 void walk(const std::vector<uint32_t>& code, uint32_t pc, uint32_t instructions, uint32_t ended,
           PathCost& cost) {
   while (pc < code.size() && instructions < kMostLines * 4) {
-    const uint32_t word = code[pc];
-    const Op op = bytecode::word_op(word);
+    const Step s = step_at(code, pc);
     ++instructions;
-    ended += bytecode::word_ends_line(word) || bytecode::ends_line_itself(op) ? 1 : 0;
-    if (op == Op::JMPLN || op == Op::INCGJMPLN) {
-      const uint32_t b = code[pc + 1];
+    ended += s.ended;
+    if (bytecode::word_op(code[pc]) == Op::JMPLN) {
       cost.instructions += instructions + 1;
-      cost.lines += (op == Op::JMPLN ? b : bytecode::loop_step_lines(b)) + ended;
+      cost.lines += code[pc + 1] + ended;
       return;
     }
-    const bytecode::Flow flow = bytecode::op_info(op).flow;
-    if (flow == bytecode::Flow::Branch)
-      walk(code, bytecode::word_a(word), instructions, ended, cost);
-    pc = flow == bytecode::Flow::Jump ? bytecode::word_a(word) : pc + bytecode::op_length(op);
+    if (s.flow == bytecode::Flow::Branch) walk(code, s.target, instructions, ended, cost);
+    pc = s.flow == bytecode::Flow::Jump ? s.target : pc + s.length;
   }
   cost.lost = true;
+}
+
+// The piece's code as the VM will run it: fused where nothing enters (its lines' starts are
+// where it may fail, kept apart).
+std::vector<uint32_t> quickened(const bytecode::Image& piece) {
+  std::vector<uint32_t> code = piece.code;
+  std::vector<uint32_t> entries = {0};
+  for (const bytecode::LineEntry& e : piece.lines) entries.push_back(e.code);
+  const auto size = static_cast<uint32_t>(code.size());
+  std::vector<uint32_t> scratch(vm::quicken_scratch_words(size));
+  vm::quicken(code.data(), size, entries, scratch.data());
+  return code;
 }
 
 class Copier {
@@ -112,9 +156,8 @@ class Copier {
     piece.routines.push_back(r);
     bytecode::optimize(piece);
     PathCost cost;
-    walk(piece.code, 0, 0, 0, cost);
+    walk(quickened(piece), 0, 0, 0, cost);
     if (cost.lost || cost.instructions >= cost.lines) return {};
-    image_.constants = piece.constants;  // with those the fusions added
     LineRun run{first, most_, piece.code, {}};
     for (const bytecode::LineEntry& e : piece.lines) run.lines.emplace_back(e.code, e.line);
     return run;

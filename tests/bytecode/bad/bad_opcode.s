@@ -1,4 +1,5 @@
-; an opcode number that does not exist (255: 0..252 are taken)
+; an opcode number that is no base instruction (255: 0..121 are the base set, 122 BREAK, and
+; the VM numbers its fused instructions after it)
 .routine function "main" in=0 out=0 entry=main
 main:
   .word 0x000000ff

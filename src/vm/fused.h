@@ -1,0 +1,104 @@
+// The fused instructions of vm/fused.def as tables: their opcodes (after bytecode's, from
+// kOpCount), their base patterns with each instruction's word offset, and their names and
+// meanings. Freestanding, as the rest of the VM; what the quickener, the execute loop, the
+// machine's breakpoints and the tools read.
+#pragma once
+#include <cstdint>
+
+#include "bytecode/opcodes.h"
+
+namespace uprog::vm {
+
+constexpr uint32_t kMostFusedInstructions = 10;
+
+// One fused instruction's pattern: its base instructions and the words they take together.
+struct FusedShape {
+  uint8_t count;
+  bytecode::Op ops[kMostFusedInstructions];
+  uint8_t length;
+};
+// Where the pattern's k-th instruction starts: a word offset from the first.
+constexpr uint32_t fused_offset(const FusedShape& s, uint32_t k) {
+  uint32_t at = 0;
+  for (uint32_t i = 0; i < k; ++i) at += bytecode::op_length(s.ops[i]);
+  return at;
+}
+
+namespace fused_detail {
+using enum bytecode::Op;
+template <typename... Ops>
+constexpr FusedShape shape(Ops... ops) {
+  FusedShape s{};
+  const bytecode::Op list[] = {ops...};
+  uint8_t at = 0;
+  for (bytecode::Op op : list) {
+    s.ops[s.count++] = op;
+    at = static_cast<uint8_t>(at + bytecode::op_length(op));
+  }
+  s.length = at;
+  return s;
+}
+#define UPROG_UNPAREN(...) __VA_ARGS__
+inline constexpr FusedShape kShapes[] = {
+#define FUSED(name, pattern, when, meaning, ...) shape(UPROG_UNPAREN pattern),
+#include "vm/fused.def"
+#undef FUSED
+};
+}  // namespace fused_detail
+
+enum class Fused : uint8_t {
+#define FUSED(name, pattern, when, meaning, ...) name,
+#include "vm/fused.def"
+#undef FUSED
+};
+
+// The patterns in full: what the quickener matches (and tools show). The execute loop copies
+// each handler's into a constexpr of its own, so that firmware carries the table once.
+inline constexpr const FusedShape* kFusedShapes = fused_detail::kShapes;
+inline constexpr uint32_t kFusedCount = sizeof(fused_detail::kShapes) / sizeof(FusedShape);
+inline constexpr uint32_t kFirstFused = bytecode::kOpCount;
+static_assert(kFirstFused + kFusedCount <= 256, "an opcode is one byte");
+
+// Of each fused instruction, its pattern's first opcode and its words: two bytes each, what
+// the machine needs to see base code.
+struct FusedBases {
+  uint8_t first[kFusedCount];
+  uint8_t length[kFusedCount];
+};
+constexpr FusedBases make_fused_bases() {
+  FusedBases b{};
+  for (uint32_t f = 0; f < kFusedCount; ++f) {
+    b.first[f] = static_cast<uint8_t>(fused_detail::kShapes[f].ops[0]);
+    b.length[f] = fused_detail::kShapes[f].length;
+  }
+  return b;
+}
+inline constexpr FusedBases kFusedBases = make_fused_bases();
+
+constexpr uint32_t fused_number(Fused f) { return kFirstFused + static_cast<uint32_t>(f); }
+constexpr bool is_fused(uint32_t word) { return (word & 0xFFu) >= kFirstFused; }
+// The base word a fused instruction's first word was: its pattern's first opcode, no mark (a
+// word inside a fused sequence carries none). Any other word as it is.
+constexpr uint32_t base_word(uint32_t word) {
+  if (!is_fused(word)) return word;
+  return (word & ~0x1FFu) | kFusedBases.first[(word & 0xFFu) - kFirstFused];
+}
+// How many words the instruction at `word` takes: a fused one its whole pattern.
+constexpr uint32_t instruction_length(uint32_t word) {
+  return is_fused(word) ? kFusedBases.length[(word & 0xFFu) - kFirstFused]
+                        : bytecode::op_length(bytecode::word_op(word));
+}
+
+// Names and meanings, for tools (a firmware that does not use them carries none).
+inline constexpr const char* kFusedNames[] = {
+#define FUSED(name, pattern, when, meaning, ...) #name,
+#include "vm/fused.def"
+#undef FUSED
+};
+inline constexpr const char* kFusedMeanings[] = {
+#define FUSED(name, pattern, when, meaning, ...) meaning,
+#include "vm/fused.def"
+#undef FUSED
+};
+
+}  // namespace uprog::vm

@@ -1,0 +1,132 @@
+// Quickening (quicken.h): a forward pass over the base code, longest pattern first.
+#include "vm/quicken.h"
+
+#include "vm/fused.h"
+
+namespace uprog::vm {
+namespace {
+
+using bytecode::Op;
+
+class Quickener {
+ public:
+  Quickener(uint32_t* code, uint32_t size, uint32_t* entered)
+      : code_(code), size_(size), entered_(entered) {}
+
+  void mark_entered(uint32_t pc) {
+    if (pc < size_) entered_[pc / 32] |= 1u << (pc % 32);
+  }
+  bool entered(uint32_t pc) const { return (entered_[pc / 32] >> (pc % 32)) & 1u; }
+
+  // The fused instruction the base code at `pc` may become (the one of most instructions), or
+  // kFusedCount.
+  uint32_t match(uint32_t pc) const {
+    uint32_t best = kFusedCount;
+    for (uint32_t f = 0; f < kFusedCount; ++f) {
+      const FusedShape& s = kFusedShapes[f];
+      if (s.ops[0] != bytecode::word_op(code_[pc])) continue;
+      if (best != kFusedCount && kFusedShapes[best].count >= s.count) continue;
+      if (fits(pc, s) && holds(static_cast<Fused>(f), code_ + pc)) best = f;
+    }
+    return best;
+  }
+
+  // Forms the fused instruction f at pc: its opcode, and the mark of its last word.
+  void form(uint32_t pc, uint32_t f) {
+    const FusedShape& s = kFusedShapes[f];
+    const uint32_t last = code_[pc + fused_offset(s, s.count - 1u)];
+    code_[pc] = (code_[pc] & ~0x1FFu) | (kFirstFused + f) | (last & bytecode::kLineEndBit);
+  }
+
+ private:
+  bool fits(uint32_t pc, const FusedShape& s) const {
+    if (s.length > size_ - pc) return false;
+    uint32_t at = pc;
+    for (uint32_t k = 0; k < s.count; at += bytecode::op_length(s.ops[k++])) {
+      if (bytecode::word_op(code_[at]) != s.ops[k]) return false;
+      if (k > 0 && entered(at)) return false;
+      if (k + 1 < s.count && bytecode::word_ends_line(code_[at])) return false;
+    }
+    return true;
+  }
+
+  // The pattern's condition on its operands (fused.def's WHEN).
+  static bool holds(Fused f, const uint32_t* at) {
+#define A_AT(k) bytecode::word_a(at[fused_offset(fused_detail::kShapes[index], k)])
+#define IMM_AT(k) bytecode::word_imm(at[fused_offset(fused_detail::kShapes[index], k)])
+#define B_AT(k) (at[fused_offset(fused_detail::kShapes[index], k) + 1])
+    switch (f) {
+#define FUSED(name, pattern, when, meaning, ...)                  \
+  case Fused::name: {                                             \
+    [[maybe_unused]] constexpr auto index = static_cast<uint32_t>(Fused::name); \
+    return (when);                                                \
+  }
+#include "vm/fused.def"
+#undef FUSED
+    }
+#undef A_AT
+#undef IMM_AT
+#undef B_AT
+    return false;
+  }
+
+  uint32_t* code_;
+  uint32_t size_;
+  uint32_t* entered_;
+};
+
+}  // namespace
+
+namespace {
+
+// Marks every jump and catch target of the code; the caller marks the entries and line starts.
+Quickener entered_targets(uint32_t* code, uint32_t size, uint32_t* scratch) {
+  for (uint32_t i = 0; i < quicken_scratch_words(size); ++i) scratch[i] = 0;
+  Quickener q(code, size, scratch);
+  for (uint32_t pc = 0; pc < size; pc += bytecode::op_length(bytecode::word_op(code[pc]))) {
+    const bytecode::OpInfo& info = bytecode::op_info(bytecode::word_op(code[pc]));
+    if (info.a == bytecode::Operand::Target) q.mark_entered(bytecode::word_a(code[pc]));
+  }
+  return q;
+}
+
+uint32_t form_all(Quickener& q, uint32_t* code, uint32_t size) {
+  uint32_t formed = 0;
+  for (uint32_t pc = 0; pc < size;) {
+    const uint32_t length = bytecode::op_length(bytecode::word_op(code[pc]));
+    uint32_t f = q.match(pc);
+    // A pair gives way to a longer pattern that starts at its second instruction (LDL x; LDL a;
+    // PUSHI k; JLTI: x stays, JLTLK follows).
+    if (f != kFusedCount && kFusedShapes[f].count == 2 && pc + length < size) {
+      const uint32_t next = q.match(pc + length);
+      if (next != kFusedCount && kFusedShapes[next].count > 2) f = kFusedCount;
+    }
+    if (f == kFusedCount) {
+      pc += length;
+      continue;
+    }
+    q.form(pc, f);
+    ++formed;
+    pc += kFusedShapes[f].length;
+  }
+  return formed;
+}
+
+}  // namespace
+
+uint32_t quicken(uint32_t* code, uint32_t size, const bytecode::ImageView& image,
+                 uint32_t* scratch) {
+  Quickener q = entered_targets(code, size, scratch);
+  for (uint32_t i = 0; i < image.routines.size(); ++i) q.mark_entered(image.routines[i].entry);
+  for (uint32_t i = 0; i < image.lines.size(); ++i) q.mark_entered(image.lines[i].code);
+  return form_all(q, code, size);
+}
+
+uint32_t quicken(uint32_t* code, uint32_t size, std::span<const uint32_t> entries,
+                 uint32_t* scratch) {
+  Quickener q = entered_targets(code, size, scratch);
+  for (const uint32_t pc : entries) q.mark_entered(pc);
+  return form_all(q, code, size);
+}
+
+}  // namespace uprog::vm

@@ -1,0 +1,209 @@
+// Fusion at load (vm/quicken.cpp, vm/fused.def): the first word of a matching base sequence gets
+// the fused opcode and nothing else changes; never across a place control can enter or inside a
+// line; a breakpoint inside a fused sequence is hit; a slice that counts instructions counts
+// base ones; and the VM cases together form every fused instruction (and the case runner runs
+// them, so each handler is checked against the expectations its base code has).
+#include "vm/quicken.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "bytecode/image_view.h"
+#include "testlib/test_files.h"
+#include "vm/fused.h"
+#include "vm_fixture.h"
+
+namespace uprog::test {
+namespace {
+
+using bytecode::Op;
+
+struct Quickened {
+  std::vector<uint32_t> base;
+  std::vector<uint32_t> code;
+  uint32_t formed = 0;
+};
+
+// The code of `text` assembled, and the same code quickened as Machine::load does it.
+Quickened quickened(const std::string& text) {
+  LoadedProgram p;
+  EXPECT_TRUE(p.load(text));
+  Quickened q;
+  q.base = p.image.code;
+  q.code = p.image.code;
+  bytecode::ImageView view;
+  EXPECT_EQ(bytecode::load_image(p.bytes.data(), p.bytes.size(), view), bytecode::LoadError::Ok);
+  std::vector<uint32_t> scratch(vm::quicken_scratch_words(static_cast<uint32_t>(q.code.size())));
+  q.formed = vm::quicken(q.code.data(), static_cast<uint32_t>(q.code.size()), view, scratch.data());
+  return q;
+}
+
+uint32_t opcode(vm::Fused f) { return vm::fused_number(f); }
+
+TEST(Quicken, OnlyTheFirstWordOfTheSequenceChanges) {
+  const Quickened q = quickened(R"(
+.global int "g" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  LDG g
+  PUSHI 3
+  JLTI out
+  PUSHI 1
+  STG g
+out:
+  RET
+)");
+  ASSERT_EQ(q.formed, 2u);
+  EXPECT_EQ(q.code[0] & 0xFFu, opcode(vm::Fused::JLTGK));
+  EXPECT_EQ(vm::base_word(q.code[0]), q.base[0]);
+  EXPECT_EQ(q.code[1], q.base[1]);  // the immediate stays where it was, and the target
+  EXPECT_EQ(q.code[2], q.base[2]);
+  EXPECT_EQ(vm::instruction_length(q.code[0]), 3u);
+  EXPECT_EQ(q.code[3] & 0xFFu, opcode(vm::Fused::STGI));
+  EXPECT_EQ(q.code[5], q.base[5]);
+}
+
+TEST(Quicken, NeverAcrossAPlaceControlCanEnter) {
+  const Quickened q = quickened(R"(
+.global int "g" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  LDG g
+again:
+  PUSHI 3
+  JLTI out
+  PUSHI 1
+  STG g
+  PUSHI 0
+  JMP again
+out:
+  RET
+)");
+  // `again` is a jump target: LDG g stays alone, PUSHI 3; JLTI has no fused form, PUSHI 1;
+  // STG g is STGI.
+  EXPECT_EQ(q.code[0], q.base[0]);
+  EXPECT_EQ(q.code[1], q.base[1]);
+  EXPECT_EQ(q.code[3] & 0xFFu, opcode(vm::Fused::STGI));
+  EXPECT_EQ(q.formed, 1u);
+}
+
+TEST(Quicken, NeverInsideALineAndTheLastWordsMarkMoves) {
+  const Quickened q = quickened(R"(
+.global int "a" 1
+.global int "b" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  LDG.eol a
+  STG b
+  LDG a
+  STG.eol b
+  RET
+)");
+  // A line ends after the first LDG: its STG is no part of a fused MOVG. The second pair is,
+  // and the fused word carries the mark its STG did (the line ends where it did).
+  EXPECT_EQ(q.code[0], q.base[0]);
+  EXPECT_EQ(q.code[2] & 0xFFu, opcode(vm::Fused::MOVG));
+  EXPECT_TRUE(bytecode::word_ends_line(q.code[2]));
+  EXPECT_FALSE(bytecode::word_ends_line(q.base[2]));
+  EXPECT_EQ(vm::base_word(q.code[2]), q.base[2]);
+}
+
+TEST(Quicken, APatternsConditionHolds) {
+  const Quickened q = quickened(R"(
+.global int "a" 1
+.global int "b" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  LDG a
+  PUSHI 1
+  ADDI
+  STG b
+  LDG a
+  PUSHI 1
+  ADDI
+  STG a
+  RET
+)");
+  // a + 1 into b is no INCG (the globals differ): ADDGK and a plain STG; into a it is.
+  EXPECT_EQ(q.code[0] & 0xFFu, opcode(vm::Fused::ADDGK));
+  EXPECT_EQ(q.code[3], q.base[3]);
+  EXPECT_EQ(q.code[4] & 0xFFu, opcode(vm::Fused::INCG));
+}
+
+const char* kCountUp = R"(
+.global int "n" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+top:
+  LDG n
+  PUSHI 5
+  JGEI done
+  LDG n
+  PUSHI 1
+  ADDI
+  STG n
+  JMP top
+done:
+  RET
+)";
+
+TEST(Quicken, ABreakpointInsideAFusedInstructionIsHit) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(kCountUp));
+  ASSERT_TRUE(p.machine.set_breakpoint(2));  // the JGEI of the fused JGEGK at 0
+  ASSERT_TRUE(p.machine.set_breakpoint(4));  // the PUSHI 1 of the fused INCG at 3
+  p.machine.start(0, 0);
+  for (int n = 0; n < 5; ++n) {
+    EXPECT_EQ(p.machine.run_slice(0, vm::Budget::unlimited()).end, vm::SliceEnd::Breakpoint);
+    EXPECT_EQ(p.machine.pc(0), 2u) << n;
+    p.machine.resume(0);
+    EXPECT_EQ(p.machine.run_slice(0, vm::Budget::unlimited()).end, vm::SliceEnd::Breakpoint);
+    EXPECT_EQ(p.machine.pc(0), 4u) << n;
+    p.machine.resume(0);
+  }
+  EXPECT_EQ(p.machine.run_slice(0, vm::Budget::unlimited()).end, vm::SliceEnd::Breakpoint);
+  p.machine.resume(0);
+  EXPECT_EQ(p.machine.run_slice(0, vm::Budget::unlimited()).end, vm::SliceEnd::Finished);
+  EXPECT_EQ(p.global("n").i, 5);
+}
+
+TEST(Quicken, ASliceThatCountsInstructionsCountsBaseOnes) {
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(kCountUp));
+  p.machine.start(0, 0);
+  // Five turns of eight base instructions, the last test (3) and RET: 44.
+  const vm::SliceResult r = p.machine.run_slice(0, vm::Budget::of_instructions(1000));
+  EXPECT_EQ(r.end, vm::SliceEnd::Finished);
+  EXPECT_EQ(r.executed, 44u);
+  EXPECT_EQ(p.global("n").i, 5);
+  // And one at a time, every base instruction's place is a stop.
+  LoadedProgram q;
+  ASSERT_TRUE(q.load(kCountUp));
+  q.machine.start(0, 0);
+  std::vector<uint32_t> pcs;
+  for (int i = 0; i < 8; ++i) {
+    q.machine.run_slice(0, vm::Budget::of_instructions(1));
+    pcs.push_back(q.machine.pc(0));
+  }
+  EXPECT_EQ(pcs, (std::vector<uint32_t>{1, 2, 3, 4, 5, 6, 7, 0}));
+}
+
+// The VM cases together form every fused instruction of fused.def: each is then run by the case
+// runner, which checks what its base code must do.
+TEST(Quicken, TheCasesTogetherFormEveryFusedInstruction) {
+  std::set<uint32_t> formed;
+  for (const auto& f : source_files("tests/vm/cases", ".s")) {
+    const Quickened q = quickened(read_whole(f));
+    for (uint32_t pc = 0; pc < q.code.size(); pc += vm::instruction_length(q.code[pc]))
+      if (vm::is_fused(q.code[pc])) formed.insert(q.code[pc] & 0xFFu);
+  }
+  for (uint32_t f = 0; f < vm::kFusedCount; ++f)
+    EXPECT_TRUE(formed.count(vm::kFirstFused + f))
+        << "no case in tests/vm/cases forms " << vm::kFusedNames[f];
+}
+
+}  // namespace
+}  // namespace uprog::test
