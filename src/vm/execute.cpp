@@ -848,6 +848,9 @@ op_RETEOL:
 #define A_AT(k) bytecode::word_a(ip[fused_offset(kShape, k)])
 #define IMM_AT(k) bytecode::word_imm(ip[fused_offset(kShape, k)])
 #define B_AT(k) (ip[fused_offset(kShape, k) + 1])
+#define RELATION_AT(k)                                                   \
+  (static_cast<uint32_t>(bytecode::word_op(ip[fused_offset(kShape, k)])) - \
+   static_cast<uint32_t>(kShape.ops[k]))
 #define NEXT()           \
   do {                   \
     ip += kShape.length; \
@@ -874,6 +877,7 @@ op_RETEOL:
 #undef A_AT
 #undef IMM_AT
 #undef B_AT
+#undef RELATION_AT
 
 op_CMDGET : {
   Value v;

@@ -12,11 +12,38 @@ namespace uprog::vm {
 constexpr uint32_t kMostFusedInstructions = 10;
 
 // One fused instruction's pattern: its base instructions and the words they take together.
+// A folded family's pattern has one compare-and-jump that stands for its six relations
+// (JEQI..JGEI or JNEQF..JNGEF, in that order): ops[relation_at] is the first of them.
+constexpr uint8_t kNoRelation = 0xFF;
 struct FusedShape {
   uint8_t count;
   bytecode::Op ops[kMostFusedInstructions];
   uint8_t length;
+  uint8_t relation_at = kNoRelation;
 };
+// Whether base opcode `op` is the pattern's k-th instruction (any of the six relations where
+// the pattern takes one).
+constexpr bool fused_op_matches(const FusedShape& s, uint32_t k, bytecode::Op op) {
+  if (k != s.relation_at) return op == s.ops[k];
+  const uint32_t rel = static_cast<uint32_t>(op) - static_cast<uint32_t>(s.ops[k]);
+  return rel < 6u;
+}
+// A folded compare-and-jump's relation, 0..5 for == != < <= > >=, holds of a and b. Without a
+// branch on the relation (a folded instruction costs its family's members a load and a shift):
+// how a and b compare is one of four states (<, ==, >, unordered: a NaN), and each relation's
+// nibble in kRelationTruth has a bit for each state in which it holds.
+inline constexpr uint32_t kRelationTruth = 0x2u | 0xDu << 4 | 0x1u << 8 | 0x3u << 12 |
+                                           0x4u << 16 | 0x6u << 20;
+template <typename T>
+constexpr bool relation_holds(uint32_t relation, T a, T b) {
+  const uint32_t state = static_cast<uint32_t>(a == b) + 2u * static_cast<uint32_t>(a > b) +
+                         3u * static_cast<uint32_t>(!(a == a && b == b));
+  return (kRelationTruth >> (4u * relation + state)) & 1u;
+}
+static_assert(relation_holds(0, 2, 2) && relation_holds(1, 2, 3) && relation_holds(2, 2, 3) &&
+              relation_holds(3, 3, 3) && relation_holds(4, 4, 3) && relation_holds(5, 3, 3) &&
+              !relation_holds(5, 2, 3) && !relation_holds(2, 3, 3));
+
 // Where the pattern's k-th instruction starts: a word offset from the first.
 constexpr uint32_t fused_offset(const FusedShape& s, uint32_t k) {
   uint32_t at = 0;
@@ -26,15 +53,24 @@ constexpr uint32_t fused_offset(const FusedShape& s, uint32_t k) {
 
 namespace fused_detail {
 using enum bytecode::Op;
+// A pattern's place for any of the six int (JREL) or float (JNREL) compare-and-jumps.
+struct AnyRelation {
+  bytecode::Op first;
+};
+inline constexpr AnyRelation JREL{JEQI};
+inline constexpr AnyRelation JNRELF{JNEQF};
+constexpr void add(FusedShape& s, bytecode::Op op) { s.ops[s.count++] = op; }
+constexpr void add(FusedShape& s, AnyRelation r) {
+  s.relation_at = s.count;
+  s.ops[s.count++] = r.first;
+}
 template <typename... Ops>
 constexpr FusedShape shape(Ops... ops) {
   FusedShape s{};
-  const bytecode::Op list[] = {ops...};
+  (add(s, ops), ...);
   uint8_t at = 0;
-  for (bytecode::Op op : list) {
-    s.ops[s.count++] = op;
-    at = static_cast<uint8_t>(at + bytecode::op_length(op));
-  }
+  for (uint32_t k = 0; k < s.count; ++k)
+    at = static_cast<uint8_t>(at + bytecode::op_length(s.ops[k]));
   s.length = at;
   return s;
 }

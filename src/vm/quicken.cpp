@@ -43,7 +43,7 @@ class Quickener {
     if (s.length > size_ - pc) return false;
     uint32_t at = pc;
     for (uint32_t k = 0; k < s.count; at += bytecode::op_length(s.ops[k++])) {
-      if (bytecode::word_op(code_[at]) != s.ops[k]) return false;
+      if (!fused_op_matches(s, k, bytecode::word_op(code_[at]))) return false;
       if (k > 0 && entered(at)) return false;
       if (k + 1 < s.count && bytecode::word_ends_line(code_[at])) return false;
     }

@@ -1,8 +1,9 @@
 ; A frame's words in the data memory (PDL's parameters, at a local's address plus an offset):
-; base code that the machine fuses at load into INCMLK and DECMLK (`n++;`, `n--;`), the six
-; JxxMK (`if (n < 5)` of a parameter) and an address's range tests JULTK and JULTLK (a pointer
-; into the user memory, or into a task's stack). The data memory is the globals' words: `mem`
-; is words 0..7, fp = 2, so fp + 1 is mem[3]. taken[k] is 1 when test k jumps.
+; base code that the machine fuses at load into DECMLK (`n--;`; `n++;` is ADDLK and LDMLK, as
+; no program needs more), JRELMK for its six relations (`if (n < 5)` of a parameter) and an
+; address's range tests JULTK and JULTLK (a pointer into the user memory, or into a task's
+; stack). The data memory is the globals' words: `mem` is words 0..7, fp = 2, so fp + 1 is
+; mem[3]. taken[k] is 1 when test k jumps.
 .global int "mem" 8
 .global int "taken" 6
 .global int "in_range" 2
@@ -28,7 +29,7 @@ main:
   LDM
   PUSHI 2
   ADDI
-  STM              ; mem[3] = 5 + 2 = 7 (INCMLK)
+  STM              ; mem[3] = 5 + 2 = 7
   LDL 0
   PUSHI 1
   ADDI
