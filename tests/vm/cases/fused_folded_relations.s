@@ -1,16 +1,17 @@
-; The folded compare-and-jumps of vm/fused.def (JRELGC, JRELGG, JNRELFGK): one fused
+; The folded compare-and-jumps of vm/fused.def (JRELGC, JRELGG, JNRELFGK, JNRELFGG): one fused
 ; instruction each for the six relations, which it reads from its jump's own opcode. Base code
 ; that the machine fuses at load; every relation of each form, the left side below, equal to and
 ; above the right (and a NaN). taken[k] is 1 when test k jumps; each comment gives the
 ; comparison and its answer by the relation's meaning (src/bytecode/opcodes.def: JxxI jumps
 ; when int a <rel> b, JNxxF unless float a <rel> b, so a NaN jumps for every relation but !=).
-; Globals: g2 = 2, g3 = 3, g4 = 4 (int); f = 1.5, n = NaN (float); constants k0 = 3 (int),
-; k1 = 1.5, k2 = 4.0 (float).
-.global int "taken" 60
+; Globals: g2 = 2, g3 = 3, g4 = 4 (int); f = 1.5, h = 4.0, n = NaN (float); constants k0 = 3
+; (int), k1 = 1.5, k2 = 4.0 (float).
+.global int "taken" 84
 .global int "g2" 1
 .global int "g3" 1
 .global int "g4" 1
 .global float "f" 1
+.global float "h" 1
 .global float "n" 1
 .const int 3
 .const float 1.5
@@ -26,6 +27,8 @@ main:
   STG g4
   PUSHK 1
   STG f
+  PUSHK 2
+  STG h
   PUSHK 3
   STG n
   LDG g2  ; g2 == k0 (3) is false -> falls through
@@ -568,6 +571,222 @@ t59:
   PUSHI 1
   STGX taken
 n59:
+  LDG f   ; f == f is true -> falls through
+  LDG f
+  JNEQF t60
+  JMP n60
+t60:
+  PUSHI 60
+  PUSHI 1
+  STGX taken
+n60:
+  LDG f   ; f != f is false -> jumps
+  LDG f
+  JNNEF t61
+  JMP n61
+t61:
+  PUSHI 61
+  PUSHI 1
+  STGX taken
+n61:
+  LDG f   ; f < f is false -> jumps
+  LDG f
+  JNLTF t62
+  JMP n62
+t62:
+  PUSHI 62
+  PUSHI 1
+  STGX taken
+n62:
+  LDG f   ; f <= f is true -> falls through
+  LDG f
+  JNLEF t63
+  JMP n63
+t63:
+  PUSHI 63
+  PUSHI 1
+  STGX taken
+n63:
+  LDG f   ; f > f is false -> jumps
+  LDG f
+  JNGTF t64
+  JMP n64
+t64:
+  PUSHI 64
+  PUSHI 1
+  STGX taken
+n64:
+  LDG f   ; f >= f is true -> falls through
+  LDG f
+  JNGEF t65
+  JMP n65
+t65:
+  PUSHI 65
+  PUSHI 1
+  STGX taken
+n65:
+  LDG f   ; f == h (4.0) is false -> jumps
+  LDG h
+  JNEQF t66
+  JMP n66
+t66:
+  PUSHI 66
+  PUSHI 1
+  STGX taken
+n66:
+  LDG f   ; f != h (4.0) is true -> falls through
+  LDG h
+  JNNEF t67
+  JMP n67
+t67:
+  PUSHI 67
+  PUSHI 1
+  STGX taken
+n67:
+  LDG f   ; f < h (4.0) is true -> falls through
+  LDG h
+  JNLTF t68
+  JMP n68
+t68:
+  PUSHI 68
+  PUSHI 1
+  STGX taken
+n68:
+  LDG f   ; f <= h (4.0) is true -> falls through
+  LDG h
+  JNLEF t69
+  JMP n69
+t69:
+  PUSHI 69
+  PUSHI 1
+  STGX taken
+n69:
+  LDG f   ; f > h (4.0) is false -> jumps
+  LDG h
+  JNGTF t70
+  JMP n70
+t70:
+  PUSHI 70
+  PUSHI 1
+  STGX taken
+n70:
+  LDG f   ; f >= h (4.0) is false -> jumps
+  LDG h
+  JNGEF t71
+  JMP n71
+t71:
+  PUSHI 71
+  PUSHI 1
+  STGX taken
+n71:
+  LDG n   ; n == f is false -> jumps
+  LDG f
+  JNEQF t72
+  JMP n72
+t72:
+  PUSHI 72
+  PUSHI 1
+  STGX taken
+n72:
+  LDG n   ; n != f is true -> falls through
+  LDG f
+  JNNEF t73
+  JMP n73
+t73:
+  PUSHI 73
+  PUSHI 1
+  STGX taken
+n73:
+  LDG n   ; n < f is false -> jumps
+  LDG f
+  JNLTF t74
+  JMP n74
+t74:
+  PUSHI 74
+  PUSHI 1
+  STGX taken
+n74:
+  LDG n   ; n <= f is false -> jumps
+  LDG f
+  JNLEF t75
+  JMP n75
+t75:
+  PUSHI 75
+  PUSHI 1
+  STGX taken
+n75:
+  LDG n   ; n > f is false -> jumps
+  LDG f
+  JNGTF t76
+  JMP n76
+t76:
+  PUSHI 76
+  PUSHI 1
+  STGX taken
+n76:
+  LDG n   ; n >= f is false -> jumps
+  LDG f
+  JNGEF t77
+  JMP n77
+t77:
+  PUSHI 77
+  PUSHI 1
+  STGX taken
+n77:
+  LDG n   ; n == h (4.0) is false -> jumps
+  LDG h
+  JNEQF t78
+  JMP n78
+t78:
+  PUSHI 78
+  PUSHI 1
+  STGX taken
+n78:
+  LDG n   ; n != h (4.0) is true -> falls through
+  LDG h
+  JNNEF t79
+  JMP n79
+t79:
+  PUSHI 79
+  PUSHI 1
+  STGX taken
+n79:
+  LDG n   ; n < h (4.0) is false -> jumps
+  LDG h
+  JNLTF t80
+  JMP n80
+t80:
+  PUSHI 80
+  PUSHI 1
+  STGX taken
+n80:
+  LDG n   ; n <= h (4.0) is false -> jumps
+  LDG h
+  JNLEF t81
+  JMP n81
+t81:
+  PUSHI 81
+  PUSHI 1
+  STGX taken
+n81:
+  LDG n   ; n > h (4.0) is false -> jumps
+  LDG h
+  JNGTF t82
+  JMP n82
+t82:
+  PUSHI 82
+  PUSHI 1
+  STGX taken
+n82:
+  LDG n   ; n >= h (4.0) is false -> jumps
+  LDG h
+  JNGEF t83
+  JMP n83
+t83:
+  PUSHI 83
+  PUSHI 1
+  STGX taken
+n83:
   RET
 ; expect taken[0] = 0
 ; expect taken[1] = 1
@@ -629,4 +848,28 @@ n59:
 ; expect taken[57] = 1
 ; expect taken[58] = 1
 ; expect taken[59] = 1
+; expect taken[60] = 0
+; expect taken[61] = 1
+; expect taken[62] = 1
+; expect taken[63] = 0
+; expect taken[64] = 1
+; expect taken[65] = 0
+; expect taken[66] = 1
+; expect taken[67] = 0
+; expect taken[68] = 0
+; expect taken[69] = 0
+; expect taken[70] = 1
+; expect taken[71] = 1
+; expect taken[72] = 1
+; expect taken[73] = 0
+; expect taken[74] = 1
+; expect taken[75] = 1
+; expect taken[76] = 1
+; expect taken[77] = 1
+; expect taken[78] = 1
+; expect taken[79] = 0
+; expect taken[80] = 1
+; expect taken[81] = 1
+; expect taken[82] = 1
+; expect taken[83] = 1
 ; expect end: finished
