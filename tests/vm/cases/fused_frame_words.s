@@ -1,9 +1,10 @@
 ; A frame's words in the data memory (PDL's parameters, at a local's address plus an offset):
 ; base code that the machine fuses at load into DECMLK (`n--;`; `n++;` is ADDLK and LDMLK, as
 ; no program needs more), JRELMK for its six relations (`if (n < 5)` of a parameter) and an
-; address's range tests JULTK and JULTLK (a pointer into the user memory, or into a task's
-; stack). The data memory is the globals' words: `mem` is words 0..7, fp = 2, so fp + 1 is
-; mem[3]. taken[k] is 1 when test k jumps.
+; address's range tests, JULTK and the second alone as base code (a pointer into the user
+; memory, or into a task's stack; both together are JULTKLK, fused_pointer_ranges.s). The
+; data memory is the globals' words: `mem` is words 0..7, fp = 2, so fp + 1 is mem[3].
+; taken[k] is 1 when test k jumps.
 .global int "mem" 8
 .global int "taken" 6
 .global int "in_range" 2
