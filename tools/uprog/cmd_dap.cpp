@@ -11,7 +11,8 @@
 #include <csignal>
 
 #include "commands.h"
-#include "debug/dap_framing.h"
+#include "jsonrpc/fields.h"
+#include "jsonrpc/framing.h"
 #include "debug/dap_server.h"
 #include "dialects/registry.h"
 #include "transport/asio.h"
@@ -51,7 +52,7 @@ const dialect::Dialect* dialect_for(const std::string& name, const std::string& 
 struct Remote {
   boost::asio::io_context io;
   boost::asio::ip::tcp::socket socket{io};
-  debug::DapReader reader;
+  jsonrpc::MessageReader reader;
   int fd() { return socket.is_open() ? socket.native_handle() : -1; }
 };
 
@@ -71,12 +72,12 @@ bool relay_from_remote(Remote& remote, debug::DapServer& server, int out, bool& 
   remote.reader.feed(std::string_view(buffer, static_cast<size_t>(n)));
   while (auto message = remote.reader.next()) {
     nlohmann::json m = nlohmann::json::parse(*message, nullptr, false);
-    if (m.is_discarded()) continue;
-    if (m.value("type", "") == "response" && m.value("command", "") == "initialize") continue;
+    if (!m.is_object()) continue;
+    if (jsonrpc::peek_string(m, "type") == "response" &&
+        jsonrpc::peek_string(m, "command") == "initialize")
+      continue;
     m["seq"] = server.next_seq();
-    broken =
-        broken || !write_all(out, debug::frame_message(m.dump(
-                                      -1, ' ', false, nlohmann::json::error_handler_t::replace)));
+    broken = broken || !write_all(out, jsonrpc::frame_message(jsonrpc::to_text(m)));
   }
   return remote.reader.error().empty();
 }
@@ -93,7 +94,7 @@ int serve(int in, int out) {
   };
   debug::DapServer server(std::move(options),
                           [&](const std::string& m) { broken = broken || !write_all(out, m); });
-  debug::DapReader reader;
+  jsonrpc::MessageReader reader;
   char buffer[65536];
   auto last = std::chrono::steady_clock::now();
   while (!server.done() && !broken) {
@@ -111,12 +112,12 @@ int serve(int in, int out) {
       reader.feed(std::string_view(buffer, static_cast<size_t>(n)));
       while (auto message = reader.next()) {
         if (server.relaying()) {
-          if (!write_all(remote.fd(), debug::frame_message(*message))) return 1;
+          if (!write_all(remote.fd(), jsonrpc::frame_message(*message))) return 1;
           continue;
         }
         server.handle(*message);
         for (const std::string& first : server.relay_start()) {
-          if (!write_all(remote.fd(), debug::frame_message(first))) return 1;
+          if (!write_all(remote.fd(), jsonrpc::frame_message(first))) return 1;
         }
       }
       if (!reader.error().empty()) {
