@@ -99,6 +99,15 @@ void LspServer::request(const json& id, const std::string& method, const json& p
     shutdown_ = true;
     return send(jsonrpc::rpc_result(id, nullptr));
   }
+  if (method.starts_with("textDocument/")) {
+    json result;
+    try {
+      result = feature(method, params.is_null() ? json::object() : params);
+    } catch (const FeatureError& e) {
+      throw RequestError{ErrorCode::RequestFailed, e.what()};
+    }
+    return send(jsonrpc::rpc_result(id, std::move(result)));
+  }
   throw RequestError{ErrorCode::MethodNotFound, "no method '" + method + "' here"};
 }
 
@@ -124,12 +133,69 @@ json LspServer::initialize(const json& params) {
   encoding_ = std::find(encodings.begin(), encodings.end(), "utf-8") != encodings.end()
                   ? PositionEncoding::Utf8
                   : PositionEncoding::Utf16;
+  const json& text_document =
+      object_or_empty(object_or_empty(params, "capabilities"), "textDocument");
+  client_.snippets =
+      bool_or(object_or_empty(object_or_empty(text_document, "completion"), "completionItem"),
+              "snippetSupport", false);
+  client_.hierarchical_symbols = bool_or(object_or_empty(text_document, "documentSymbol"),
+                                         "hierarchicalDocumentSymbolSupport", false);
   json capabilities = {
       {"positionEncoding", encoding_ == PositionEncoding::Utf8 ? "utf-8" : "utf-16"},
       {"textDocumentSync", {{"openClose", true}, {"change", 2}, {"save", true}}},
+      {"hoverProvider", true},
+      {"completionProvider", {{"triggerCharacters", json::array({"#", "_"})}}},
+      {"signatureHelpProvider", {{"triggerCharacters", json::array({"(", ","})}}},
+      {"definitionProvider", true},
+      {"referencesProvider", true},
+      {"renameProvider", true},
+      {"documentSymbolProvider", true},
+      {"foldingRangeProvider", true},
+      {"semanticTokensProvider", {{"legend", semantic_token_legend()}, {"full", true}}},
   };
   return {{"capabilities", std::move(capabilities)},
           {"serverInfo", {{"name", "uprog"}, {"version", "0.1"}}}};
+}
+
+const ReferenceIndex* LspServer::reference_of(const dialect::Dialect* d) {
+  if (d == nullptr) return nullptr;
+  std::unique_ptr<ReferenceIndex>& index = references_[d];
+  if (!index) index = std::make_unique<ReferenceIndex>(*d);
+  return index.get();
+}
+
+json LspServer::feature(const std::string& method, const json& params) {
+  using namespace jsonrpc;
+  static const char* const kMethods[] = {"textDocument/hover",
+                                         "textDocument/completion",
+                                         "textDocument/signatureHelp",
+                                         "textDocument/definition",
+                                         "textDocument/references",
+                                         "textDocument/rename",
+                                         "textDocument/documentSymbol",
+                                         "textDocument/foldingRange",
+                                         "textDocument/semanticTokens/full"};
+  if (std::find(std::begin(kMethods), std::end(kMethods), method) == std::end(kMethods))
+    throw RequestError{ErrorCode::MethodNotFound, "no method '" + method + "' here"};
+  const std::string uri = required_string(required_object(params, "textDocument"), "uri");
+  const auto it = documents_.find(uri);
+  if (it == documents_.end())
+    throw RequestError{ErrorCode::InvalidParams, "no open document " + uri};
+  const TextDocument& doc = it->second.text;
+  const Analysis analysis(doc, reference_of(doc.dialect), encoding_);
+  if (method == "textDocument/documentSymbol") return document_symbols(analysis, client_);
+  if (method == "textDocument/foldingRange") return folding_ranges(analysis);
+  if (method == "textDocument/semanticTokens/full") return semantic_tokens(analysis);
+  const Position at = position_from(required_object(params, "position"));
+  if (method == "textDocument/hover") return hover(analysis, at);
+  if (method == "textDocument/completion") return completion(analysis, at, client_);
+  if (method == "textDocument/signatureHelp") return signature_help(analysis, at);
+  if (method == "textDocument/definition") return definition(analysis, at);
+  if (method == "textDocument/references") {
+    return references(analysis, at,
+                      bool_or(object_or_empty(params, "context"), "includeDeclaration", true));
+  }
+  return rename(analysis, at, required_string(params, "newName"));
 }
 
 const dialect::Dialect* LspServer::dialect_for(const std::string& language_id,

@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "dialect/dialect.h"
+#include "lsp/analysis.h"
+#include "lsp/reference_index.h"
 #include "lsp/text_document.h"
 
 namespace uprog::lsp {
@@ -56,6 +58,10 @@ class LspServer {
   void did_close(const json& params);
   void did_save(const json& params);
 
+  // A feature's request on an open document: its position, the document as analysed.
+  json feature(const std::string& method, const json& params);
+  const ReferenceIndex* reference_of(const dialect::Dialect* d);
+
   const dialect::Dialect* dialect_for(const std::string& language_id,
                                       const std::string& path) const;
   void publish_diagnostics(Document& doc);
@@ -70,6 +76,8 @@ class LspServer {
   bool shutdown_ = false;
   bool done_ = false;
   std::map<std::string, Document> documents_;  // by URI
+  std::map<const dialect::Dialect*, std::unique_ptr<ReferenceIndex>> references_;
+  ClientSupport client_;
 };
 
 }  // namespace uprog::lsp

@@ -42,6 +42,8 @@ const UndeclaredCase kCases[] = {
      "LONG DONE ;\nPROGRAM PLCMAIN\n   DONE := MISSING;\nEND_PROGRAM\n", "MISSING", "6 * 7", 11},
 };
 
+void PrintTo(const UndeclaredCase& k, std::ostream* os) { *os << k.dialect; }
+
 std::string registered_text(const std::string& dialect, int code) {
   for (const dialect::ErrorInfo& e : dialects::find(dialect)->diagnostic_codes())
     if (e.code == code) return std::string(e.text);

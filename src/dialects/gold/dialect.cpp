@@ -5,6 +5,8 @@
 #include "dialects/gold/download_protocol.h"
 #include "dialects/gold/errors.h"
 #include "dialects/gold/firmware.h"
+#include "dialects/gold/outline.h"
+#include "dialects/gold/reference.h"
 
 namespace uprog::gold {
 namespace {
@@ -76,6 +78,12 @@ class GoldDialect final : public dialect::Dialect {
   }
   std::size_t max_download_bytes() const override { return kDownloadMaxBytes; }
   const dialect::SampleProgram& sample_program() const override { return kSample; }
+  std::vector<dialect::ReferenceEntry> reference() const override { return gold::reference(); }
+  bool names_ignore_case() const override { return true; }  // PX and px (commands.h)
+  std::vector<dialect::SourceSymbol> outline(std::string_view text) const override {
+    return gold::outline(text);
+  }
+  dialect::WordSyntax word_syntax() const override { return gold::word_syntax(); }
 
  private:
   // AC must be positive (EC 21, the Elmo reference's "out of range").

@@ -6,6 +6,8 @@
 #include "dialects/pdl/compile.h"
 #include "dialects/pdl/errors.h"
 #include "dialects/pdl/firmware.h"
+#include "dialects/pdl/outline.h"
+#include "dialects/pdl/reference.h"
 
 namespace uprog::pdl {
 namespace {
@@ -80,6 +82,12 @@ class PdlDialect final : public dialect::Dialect {
   std::string load_line() const override { return "reset"; }
   std::size_t max_download_bytes() const override { return gold::kDownloadMaxBytes; }
   const dialect::SampleProgram& sample_program() const override { return kSample; }
+  std::vector<dialect::ReferenceEntry> reference() const override { return pdl::reference(); }
+  // The drive's names are found ignoring case (system_names.h); the user's are not.
+  bool names_ignore_case() const override { return true; }
+  std::vector<dialect::SourceSymbol> outline(std::string_view text) const override {
+    return pdl::outline(text);
+  }
 
  private:
   // A command the host protocol does not know is 1 (tests/transcripts/pdl/host_protocol.txt).
