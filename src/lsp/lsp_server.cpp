@@ -122,6 +122,8 @@ void LspServer::notification(const std::string& method, const json& params) {
   if (method == "textDocument/didChange") return did_change(p);
   if (method == "textDocument/didClose") return did_close(p);
   if (method == "textDocument/didSave") return did_save(p);
+  // A header changed on disk (the client watches them): every open document is checked again.
+  if (method == "workspace/didChangeWatchedFiles") return check_all_again();
   // initialized, $/cancelRequest, $/setTrace, workspace/didChangeConfiguration, ...: nothing to do.
 }
 
@@ -273,6 +275,10 @@ void LspServer::did_close(const json& params) {
 // A saved file may be a header that other open documents include: they are checked again.
 void LspServer::did_save(const json& params) {
   (void)jsonrpc::required_object(params, "textDocument");
+  check_all_again();
+}
+
+void LspServer::check_all_again() {
   for (auto& [uri, doc] : documents_) doc.due_ms = now();
 }
 

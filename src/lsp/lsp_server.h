@@ -57,6 +57,7 @@ class LspServer {
   void did_change(const json& params);
   void did_close(const json& params);
   void did_save(const json& params);
+  void check_all_again();
 
   // A feature's request on an open document: its position, the document as analysed.
   json feature(const std::string& method, const json& params);

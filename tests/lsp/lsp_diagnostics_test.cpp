@@ -145,6 +145,13 @@ TEST(LspDiagnostics, AnErrorInAnIncludedFileIsShownOnTheIncludeLine) {
   const json& related = d["relatedInformation"][0];
   EXPECT_EQ(related["location"]["uri"], "file://" + (dir / "bad.h").string());
   EXPECT_EQ(related["location"]["range"]["start"], (json{{"line", 1}, {"character", 9}}));
+  // The header fixed on disk: a watched-file change checks the document again, now clean.
+  std::ofstream(dir / "bad.h") << "#long shared\nshared = 1;\n";
+  c.notify("workspace/didChangeWatchedFiles",
+           {{"changes", {{{"uri", "file://" + (dir / "bad.h").string()}, {"type", 2}}}}});
+  const json again = published(c.wait(0));
+  ASSERT_FALSE(again.is_null());
+  EXPECT_EQ(again["diagnostics"], json::array()) << again.dump();
   fs::remove_all(dir);
 }
 

@@ -136,3 +136,27 @@ test('a hostile message gets its error and the server goes on', async () => {
   });
   assert.ok(hover.contents.value.includes(cases[0].words));
 });
+
+test('uprog lsp --listen serves one client over TCP', async () => {
+  const net = require('node:net');
+  const listening = spawn(uprog, ['lsp', '--listen', '127.0.0.1:0'], { stdio: ['ignore', 'ignore', 'pipe'] });
+  const port = await new Promise((resolve) => {
+    let said = '';
+    listening.stderr.on('data', (chunk) => {
+      said += chunk;
+      const m = said.match(/listening on tcp [0-9.]+:(\d+)/);
+      if (m) resolve(Number(m[1]));
+    });
+  });
+  const socket = net.connect(port, '127.0.0.1');
+  const tcp = rpc.createMessageConnection(new rpc.SocketMessageReader(socket),
+                                          new rpc.SocketMessageWriter(socket));
+  tcp.listen();
+  const init = await tcp.sendRequest('initialize', { processId: null, rootUri: null, capabilities: {} });
+  assert.ok(init.capabilities.definitionProvider);
+  await tcp.sendRequest('shutdown');
+  tcp.sendNotification('exit');
+  assert.strictEqual(await new Promise((resolve) => listening.on('exit', resolve)), 0);
+  tcp.dispose();
+  socket.destroy();
+});
