@@ -6,9 +6,10 @@ namespace uprog::jsonrpc {
 
 DapEnvelope check_dap_message(std::string_view text) {
   DapEnvelope e;
-  e.message = json::parse(text, nullptr, false);
-  if (e.message.is_discarded()) {
-    e.error = "not a JSON message";
+  std::string why;
+  if (!parse_message(text, e.message, why)) {
+    e.error = why;
+    e.message = nullptr;
     return e;
   }
   const std::optional<std::string> type = peek_string(e.message, "type");

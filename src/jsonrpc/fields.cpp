@@ -129,6 +129,34 @@ std::vector<double> numbers_or_empty(const json& object, std::string_view key) {
   return out;
 }
 
+bool parse_message(std::string_view text, json& out, std::string& why) {
+  // The depth, counted outside strings before anything is built.
+  int depth = 0;
+  bool in_string = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxNesting) {
+        why = "a message nested deeper than " + std::to_string(kMaxNesting) + " levels";
+        return false;
+      }
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  out = json::parse(text, nullptr, false);
+  if (out.is_discarded()) {
+    why = "not a JSON text";
+    return false;
+  }
+  return true;
+}
+
 std::string to_text(const json& message) {
   return message.dump(-1, ' ', false, json::error_handler_t::replace);
 }

@@ -53,6 +53,12 @@ int64_t as_integer(const json& value, std::string_view what,
                    int64_t max = std::numeric_limits<int64_t>::max());
 void require_object(const json& value, std::string_view what);
 
+// A message's text parsed: false with `why` set when it is not JSON, or nests deeper than
+// kMaxNesting arrays and objects (no protocol message does; a deeper one would cost a copy or a
+// dump its depth in stack frames).
+constexpr int kMaxNesting = 64;
+bool parse_message(std::string_view text, json& out, std::string& why);
+
 // The text of a message to send: bytes that are not UTF-8 (a program's output, a request's own
 // text) are replaced rather than thrown on.
 std::string to_text(const json& message);

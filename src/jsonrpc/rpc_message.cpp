@@ -16,10 +16,11 @@ RpcMessage invalid(json id, ErrorCode code, std::string error) {
 }  // namespace
 
 RpcMessage parse_rpc_message(std::string_view text) {
-  json m = json::parse(text, nullptr, false);
+  json m;
+  std::string why;
   // JSON-RPC 2.0 section 5: a parse error, or a text that is no request object, is answered
   // with a null id, since no id can be read from it.
-  if (m.is_discarded()) return invalid(nullptr, ErrorCode::ParseError, "not a JSON text");
+  if (!parse_message(text, m, why)) return invalid(nullptr, ErrorCode::ParseError, why);
   if (!m.is_object()) {
     return invalid(nullptr, ErrorCode::InvalidRequest,
                    "a message must be a JSON object (batches are not part of LSP)");
@@ -41,7 +42,7 @@ RpcMessage parse_rpc_message(std::string_view text) {
     return invalid(nullptr, ErrorCode::InvalidRequest, "\"id\" must be an integer or a string");
   const std::optional<std::string> version = peek_string(m, "jsonrpc");
   const json* params = find(m, "params");
-  std::string why;
+  why.clear();
   if (version != "2.0")
     why = "\"jsonrpc\" must be \"2.0\"";
   else if (!method->is_string())
@@ -60,7 +61,7 @@ RpcMessage parse_rpc_message(std::string_view text) {
   r.kind = id_usable ? RpcMessage::Kind::Request : RpcMessage::Kind::Notification;
   r.id = reply_to;
   r.method = method->get<std::string>();
-  if (params != nullptr) r.params = *params;
+  if (params != nullptr) r.params = std::move(m["params"]);
   return r;
 }
 

@@ -53,6 +53,22 @@ TEST(RpcMessage, SpecificationErrorCodes) {
   EXPECT_TRUE(m.id.is_null());
 }
 
+TEST(RpcMessage, NestingDeeperThanAnyMessageIsRefusedBeforeItIsBuilt) {
+  // 65 levels: one past kMaxNesting; inside a string brackets do not count.
+  const std::string deep = R"({"jsonrpc":"2.0","id":1,"method":"x","params":)" +
+                           std::string(64, '[') + std::string(64, ']') + "}";
+  RpcMessage m = parse_rpc_message(deep);
+  EXPECT_EQ(m.kind, Kind::Invalid);
+  EXPECT_EQ(static_cast<int>(m.code), -32700);
+  const std::string shallow = R"({"jsonrpc":"2.0","id":1,"method":"x","params":{"s":")" +
+                              std::string(100, '[') + R"("}})";
+  EXPECT_EQ(parse_rpc_message(shallow).kind, Kind::Request);
+  EXPECT_EQ(check_dap_message(R"({"seq":1,"type":"request","command":"x","arguments":{"a":)" +
+                              std::string(70, '[') + std::string(70, ']') + "}}")
+                .kind,
+            DapEnvelope::Kind::NotRequest);
+}
+
 TEST(RpcMessage, AWrongNotificationIsDropped) {
   EXPECT_EQ(parse_rpc_message(R"({"jsonrpc":"2.0","method":5})").kind, Kind::Dropped);
   EXPECT_EQ(parse_rpc_message(R"({"jsonrpc":"2.0","method":"x","params":"s"})").kind,

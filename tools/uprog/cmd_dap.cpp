@@ -60,8 +60,9 @@ bool relay_from_remote(Remote& remote, debug::DapServer& server, int out, bool& 
   if (n <= 0) return false;
   remote.reader.feed(std::string_view(buffer, static_cast<size_t>(n)));
   while (auto message = remote.reader.next()) {
-    nlohmann::json m = nlohmann::json::parse(*message, nullptr, false);
-    if (!m.is_object()) continue;
+    nlohmann::json m;
+    std::string why;
+    if (!jsonrpc::parse_message(*message, m, why) || !m.is_object()) continue;
     if (jsonrpc::peek_string(m, "type") == "response" &&
         jsonrpc::peek_string(m, "command") == "initialize")
       continue;
