@@ -45,25 +45,25 @@ void BM_LspDiagnosticsAfterChange(benchmark::State& state) {
   });
   server.handle(R"({"jsonrpc":"2.0","id":1,"method":"initialize","params":{"capabilities":{}}})");
   const std::string uri = std::string("file:///bench/doc.") + d.dialect;
-  server.handle(json{{"jsonrpc", "2.0"},
-                     {"method", "textDocument/didOpen"},
-                     {"params",
-                      {{"textDocument",
-                        {{"uri", uri}, {"languageId", d.dialect}, {"version", 1}, {"text", text}}}}}}
-                    .dump());
+  server.handle(
+      json{{"jsonrpc", "2.0"},
+           {"method", "textDocument/didOpen"},
+           {"params",
+            {{"textDocument",
+              {{"uri", uri}, {"languageId", d.dialect}, {"version", 1}, {"text", text}}}}}}
+          .dump());
   int64_t version = 1;
   for (auto _ : state) {
     // A blank typed at the end of line 5000, then checked.
-    const json change = {
-        {"jsonrpc", "2.0"},
-        {"method", "textDocument/didChange"},
-        {"params",
-         {{"textDocument", {{"uri", uri}, {"version", ++version}}},
-          {"contentChanges",
-           {{{"range",
-              {{"start", {{"line", 5000}, {"character", 0}}},
-               {"end", {{"line", 5000}, {"character", 0}}}}},
-             {"text", " "}}}}}}};
+    const json change = {{"jsonrpc", "2.0"},
+                         {"method", "textDocument/didChange"},
+                         {"params",
+                          {{"textDocument", {{"uri", uri}, {"version", ++version}}},
+                           {"contentChanges",
+                            {{{"range",
+                               {{"start", {{"line", 5000}, {"character", 0}}},
+                                {"end", {{"line", 5000}, {"character", 0}}}}},
+                              {"text", " "}}}}}}};
     server.handle(change.dump());
     server.poll();
   }

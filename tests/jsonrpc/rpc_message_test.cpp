@@ -60,8 +60,8 @@ TEST(RpcMessage, NestingDeeperThanAnyMessageIsRefusedBeforeItIsBuilt) {
   RpcMessage m = parse_rpc_message(deep);
   EXPECT_EQ(m.kind, Kind::Invalid);
   EXPECT_EQ(static_cast<int>(m.code), -32700);
-  const std::string shallow = R"({"jsonrpc":"2.0","id":1,"method":"x","params":{"s":")" +
-                              std::string(100, '[') + R"("}})";
+  const std::string shallow =
+      R"({"jsonrpc":"2.0","id":1,"method":"x","params":{"s":")" + std::string(100, '[') + R"("}})";
   EXPECT_EQ(parse_rpc_message(shallow).kind, Kind::Request);
   EXPECT_EQ(check_dap_message(R"({"seq":1,"type":"request","command":"x","arguments":{"a":)" +
                               std::string(70, '[') + std::string(70, ']') + "}}")
