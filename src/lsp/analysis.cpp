@@ -7,9 +7,13 @@
 
 namespace uprog::lsp {
 
+namespace {
+
 using json = nlohmann::json;
 using dialect::SourceSymbol;
 using dialect::SourceWord;
+
+}  // namespace
 
 Analysis::Analysis(const TextDocument& doc, const ReferenceIndex* reference,
                    PositionEncoding encoding)
