@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace uprog::jsonrpc {
 
@@ -17,15 +18,20 @@ class MessageReader {
   // Takes bytes as they arrive.
   void feed(std::string_view bytes) { buffer_.append(bytes); }
   // The next whole message's body; nullopt when none is complete yet. A header without a
-  // Content-Length, or one too large, sets error() and the reader takes nothing more.
+  // Content-Length, with one that is no number or above 16 MiB, or longer than 4096 bytes is
+  // dropped with a problem to report, and the stream goes on with what follows it.
   std::optional<std::string> next();
-  const std::string& error() const { return error_; }
+  // What was dropped since the last call, a line each.
+  std::vector<std::string> take_problems();
 
   static constexpr size_t kMaxMessageBytes = 16u << 20;
+  static constexpr size_t kMaxHeaderBytes = 4096;
 
  private:
+  static std::optional<size_t> content_length(std::string_view header, std::string& problem);
+
   std::string buffer_;
-  std::string error_;
+  std::vector<std::string> problems_;
 };
 
 }  // namespace uprog::jsonrpc

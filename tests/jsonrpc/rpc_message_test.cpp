@@ -113,14 +113,24 @@ TEST(Framing, MessagesInPiecesAndBadHeaders) {
   EXPECT_EQ(r.next(), std::optional<std::string>(R"({"a":1})"));
   EXPECT_EQ(r.next(), std::optional<std::string>("{}"));
   EXPECT_EQ(r.next(), std::nullopt);
+  // A bad header is dropped and the stream goes on with the next message.
   MessageReader bad;
-  bad.feed("Content-Type: x\r\n\r\n{}");
-  EXPECT_EQ(bad.next(), std::nullopt);
-  EXPECT_NE(bad.error().find("Content-Length"), std::string::npos);
+  bad.feed("Content-Type: x\r\n\r\n" + frame_message("{}"));
+  EXPECT_EQ(bad.next(), std::optional<std::string>("{}"));
+  std::vector<std::string> problems = bad.take_problems();
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_NE(problems[0].find("without Content-Length"), std::string::npos);
+  EXPECT_TRUE(bad.take_problems().empty());
   MessageReader huge;
-  huge.feed("Content-Length: 99999999999\r\n\r\n");
-  EXPECT_EQ(huge.next(), std::nullopt);
-  EXPECT_FALSE(huge.error().empty());
+  huge.feed("Content-Length: 99999999999\r\n\r\nContent-Length: x\r\n\r\n" + frame_message("[1]"));
+  EXPECT_EQ(huge.next(), std::optional<std::string>("[1]"));
+  EXPECT_EQ(huge.take_problems().size(), 2u);
+  MessageReader endless;  // no header end in 4096 bytes: dropped, and a message after it read
+  endless.feed(std::string(5000, 'x'));
+  EXPECT_EQ(endless.next(), std::nullopt);
+  EXPECT_EQ(endless.take_problems().size(), 1u);
+  endless.feed(frame_message("{}"));
+  EXPECT_EQ(endless.next(), std::optional<std::string>("{}"));
   MessageReader typed;  // LSP's optional Content-Type field is read past
   typed.feed(
       "Content-Length: 2\r\nContent-Type: application/vscode-jsonrpc; charset=utf-8"

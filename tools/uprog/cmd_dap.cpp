@@ -69,7 +69,9 @@ bool relay_from_remote(Remote& remote, debug::DapServer& server, int out, bool& 
     m["seq"] = server.next_seq();
     broken = broken || !write_all(out, jsonrpc::frame_message(jsonrpc::to_text(m)));
   }
-  return remote.reader.error().empty();
+  for (const std::string& problem : remote.reader.take_problems())
+    fmt::print(stderr, "uprog dap: from the sim: {}\n", problem);
+  return true;
 }
 
 // Serves one client on `in` and `out` until it disconnects or closes its end.
@@ -110,10 +112,8 @@ int serve(int in, int out) {
           if (!write_all(remote.fd(), jsonrpc::frame_message(first))) return 1;
         }
       }
-      if (!reader.error().empty()) {
-        fmt::print(stderr, "uprog dap: {}; the session ends\n", reader.error());
-        return 1;
-      }
+      for (const std::string& problem : reader.take_problems())
+        fmt::print(stderr, "uprog dap: {}\n", problem);
     }
     if (server.running()) {
       const auto now = std::chrono::steady_clock::now();

@@ -38,10 +38,8 @@ int serve_lsp(int in, int out) {
     if (n <= 0) return 1;  // the client closed its end without exit (LSP 3.17: exit code 1)
     reader.feed(std::string_view(buffer, static_cast<size_t>(n)));
     while (auto message = reader.next()) server.handle(*message);
-    if (!reader.error().empty()) {
-      fmt::print(stderr, "uprog lsp: {}; the session ends\n", reader.error());
-      return 1;
-    }
+    for (const std::string& problem : reader.take_problems())
+      fmt::print(stderr, "uprog lsp: {}\n", problem);
   }
   return broken ? 1 : server.exit_code();
 }

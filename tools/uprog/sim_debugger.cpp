@@ -69,10 +69,8 @@ void SimDebugger::read() {
           server_->handle(*message);
           if (server_->done()) return end_session();
         }
-        if (!reader_.error().empty()) {
-          fmt::print(stderr, "uprog sim: debugger: {}; the session ends\n", reader_.error());
-          return end_session();
-        }
+        for (const std::string& problem : reader_.take_problems())
+          fmt::print(stderr, "uprog sim: debugger: {}\n", problem);
         read();
       });
 }
