@@ -1,8 +1,12 @@
 // Go to definition, find references, rename, the outline and folding (analysis.h), over the
 // dialect's declarations in the document.
 #include <cctype>
+#include <filesystem>
 
+#include "dialect/dialect.h"
 #include "lsp/analysis.h"
+#include "lsp/uri.h"
+#include "support/files.h"
 
 namespace uprog::lsp {
 namespace {
@@ -56,12 +60,61 @@ json symbol_json(const Analysis& a, const SourceSymbol& s, bool hierarchical) {
   return j;
 }
 
+// The files the document's `#include` lines name (PDL's "scale.h", PUP's lib.puh), beside the
+// document, as the compilers find them first; at most 1 MiB each.
+std::vector<std::string> included_files(const Analysis& a) {
+  std::vector<std::string> files;
+  if (a.doc().path.empty()) return files;
+  const std::filesystem::path dir = std::filesystem::path(a.doc().path).parent_path();
+  const std::vector<dialect::SourceWord>& words = a.words();
+  for (size_t i = 0; i < words.size(); ++i) {
+    if (!words[i].line_start || words[i].text != "#include") continue;
+    std::string_view rest = dialect::rest_of_line(a.doc().text, words[i].offset + 8);
+    while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t')) rest.remove_prefix(1);
+    const bool quoted = !rest.empty() && (rest.front() == '"' || rest.front() == '<');
+    if (quoted) rest.remove_prefix(1);
+    const size_t end = rest.find_first_of(quoted ? "\">" : " \t\r/");
+    std::string name(rest.substr(0, end));
+    for (char& c : name)
+      if (c == '\\') c = '/';
+    if (name.empty()) continue;
+    std::error_code ec;
+    const std::filesystem::path file = dir / name;
+    if (std::filesystem::is_regular_file(file, ec) &&
+        std::filesystem::file_size(file, ec) <= (1u << 20) && !ec)
+      files.push_back(file.lexically_normal().string());
+  }
+  return files;
+}
+
+// `name` declared at the top level of an included file: its location, or null.
+json included_definition(const Analysis& a, std::string_view name) {
+  if (a.doc().dialect == nullptr) return nullptr;
+  for (const std::string& file : included_files(a)) {
+    const std::optional<std::string> text = read_text_file(file);
+    if (!text) continue;
+    for (const SourceSymbol& s : a.doc().dialect->outline(*text)) {
+      if (s.name != name || !s.scope.empty()) continue;
+      const int64_t line = s.line - 1, character = s.column - 1;
+      return {
+          {"uri", uri_from_path(std::filesystem::absolute(file).string())},
+          {"range",
+           {{"start", {{"line", line}, {"character", character}}},
+            {"end",
+             {{"line", line}, {"character", character + static_cast<int64_t>(s.name.size())}}}}}};
+    }
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 json definition(const Analysis& a, Position p) {
-  const SourceSymbol* s = symbol_under(a, p);
-  if (s == nullptr) return nullptr;
-  return {{"uri", a.doc().uri}, {"range", a.symbol_range(*s)}};
+  if (const SourceSymbol* s = symbol_under(a, p))
+    return {{"uri", a.doc().uri}, {"range", a.symbol_range(*s)}};
+  // Not declared here: a procedure, function or macro of an included file.
+  const dialect::SourceWord* w = a.word_at(p);
+  return w == nullptr ? json(nullptr) : included_definition(a, Analysis::name_of(*w));
 }
 
 json references(const Analysis& a, Position p, bool include_declaration) {

@@ -155,5 +155,28 @@ TEST(LspDiagnostics, AnErrorInAnIncludedFileIsShownOnTheIncludeLine) {
   fs::remove_all(dir);
 }
 
+TEST(LspDiagnostics, GoToAProcedureOfAnIncludedFile) {
+  const fs::path dir = fs::temp_directory_path() / "uprog_lsp_include_definition";
+  fs::create_directories(dir);
+  // A procedure in the header (manual 1.4, 2.5.6), called from the document.
+  std::ofstream(dir / "twice.h")
+      << "// doubles\nproc twice(long x, long* out) do\n  *out=x*2;\nend;\n";
+  const std::string main_text =
+      "#include \"twice.h\"\n#long v, w\n#task/1;\ntwice(v, &w);\nhalt;\n";
+  LspClient c;
+  c.initialize();
+  const std::string uri = "file://" + (dir / "main.pdl").string();
+  const json p = c.open(uri, "hiwin-pdl", main_text);
+  ASSERT_EQ(p["diagnostics"], json::array()) << p.dump();
+  const std::vector<json> out =
+      c.request("textDocument/definition",
+                {{"textDocument", {{"uri", uri}}}, {"position", {{"line", 3}, {"character", 1}}}});
+  ASSERT_EQ(out.size(), 1u);
+  const json& where = out[0]["result"];
+  EXPECT_EQ(where["uri"], "file://" + (dir / "twice.h").string());
+  EXPECT_EQ(where["range"]["start"], (json{{"line", 1}, {"character", 5}}));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace uprog::lsp
