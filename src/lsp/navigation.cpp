@@ -73,7 +73,7 @@ std::vector<std::string> included_files(const Analysis& a) {
     while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t')) rest.remove_prefix(1);
     const bool quoted = !rest.empty() && (rest.front() == '"' || rest.front() == '<');
     if (quoted) rest.remove_prefix(1);
-    const size_t end = rest.find_first_of(quoted ? "\">" : " \t\r/");
+    const size_t end = rest.find_first_of(quoted ? "\">" : " \t\r");
     std::string name(rest.substr(0, end));
     for (char& c : name)
       if (c == '\\') c = '/';
