@@ -21,7 +21,8 @@ constexpr uint32_t kScratchA = 0, kScratchB = 1, kFirstForLocal = 2;
 
 class Generator {
  public:
-  Generator(const Program& p, const Locator& locator) : p_(p), locator_(locator), b_(image_.code) {}
+  Generator(const Program& p, const preproc::SourceLocator& locator)
+      : p_(p), locator_(locator), b_(image_.code) {}
 
   bytecode::Image run(const std::string& source_name) {
     image_.dialect = "st";
@@ -94,7 +95,7 @@ class Generator {
   }
 
   void line(size_t offset) {
-    const Location at = locator_.at(offset);
+    const Location at = locator_.locate(offset);
     image_.lines.push_back({b_.here(), at.file, static_cast<uint32_t>(at.line)});
   }
   void eol() { b_.emit(bytecode::Op::EOL); }
@@ -510,7 +511,7 @@ class Generator {
   }
 
   const Program& p_;
-  const Locator& locator_;
+  const preproc::SourceLocator& locator_;
   bytecode::Image image_;
   CodeBuilder b_;
   std::map<std::string, uint32_t> routine_index_;
@@ -519,7 +520,7 @@ class Generator {
 
 }  // namespace
 
-bytecode::Image generate(const Program& program, const Locator& locator,
+bytecode::Image generate(const Program& program, const preproc::SourceLocator& locator,
                          const std::string& source_name) {
   return Generator(program, locator).run(source_name);
 }

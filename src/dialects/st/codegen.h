@@ -9,14 +9,14 @@
 
 #include "bytecode/image.h"
 #include "dialects/st/ast.h"
-#include "dialects/st/locator.h"
+#include "preproc/source_locator.h"
 
 namespace uprog::st {
 
 // PLCMAIN's last local: the passes it has begun (the top of a pass adds one).
 constexpr std::string_view kMainPassesLocal = "$PASSES";
 
-bytecode::Image generate(const Program& program, const Locator& locator,
+bytecode::Image generate(const Program& program, const preproc::SourceLocator& locator,
                          const std::string& source_name);
 
 }  // namespace uprog::st
