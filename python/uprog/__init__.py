@@ -1,0 +1,17 @@
+"""uprog for Python: test drive programs on the simulated drive (in process, virtual time) and on
+a real drive or a `uprog sim` over the vendor's wire, with one API (docs/python.md)."""
+
+from .drive import DIALECTS, Drive, connect
+from .errors import (CompileError, ConnectionLost, Diagnostic, DriveError, DriveTimeout,
+                     ProgramError, ProtocolError, UprogError)
+
+__all__ = ["DIALECTS", "CompileError", "ConnectionLost", "Diagnostic", "Drive", "DriveError",
+           "DriveTimeout", "ProgramError", "ProtocolError", "SimDrive", "UprogError", "connect"]
+
+
+def __getattr__(name):
+    # The in-process drive needs the C++ module (_uprog); the wire layer does not.
+    if name == "SimDrive":
+        from .sim import SimDrive
+        return SimDrive
+    raise AttributeError(name)

@@ -1,0 +1,88 @@
+"""A drive over its vendor's wire: `uprog.connect(url, dialect)` gives a Drive whose command(),
+query(), load() and output() speak to a real drive or a `uprog sim` as the dialect's own host
+software does. Pure Python: nothing here needs the C++ module."""
+
+from . import compiler
+from .errors import DriveError, ProtocolError, UprogError
+from .links import open_link
+from .values import number_of
+from .wires import WIRES
+
+DIALECTS = tuple(WIRES)
+
+
+class Drive:
+    """One connection to one drive; one line at a time, as a serial host works."""
+
+    def __init__(self, link, dialect, timeout_s=5.0, uprog=None):
+        if dialect not in WIRES:
+            raise UprogError(f"no dialect {dialect!r}: {', '.join(DIALECTS)}")
+        self.dialect = dialect
+        self.timeout_s = timeout_s
+        self.uprog = uprog
+        self._link = link
+        self._wire = WIRES[dialect](link)
+        self._wire.start(timeout_s)
+
+    # --- the command line
+    def command(self, line, timeout_s=None):
+        """Sends one line; its answers as the drive sends them (`""` for a command that shows
+        nothing). The first refused expression raises DriveError with its code and text."""
+        try:
+            answers = self._wire.exchange(line, self.timeout_s if timeout_s is None else timeout_s)
+        except ProtocolError:
+            self._wire.resync()  # the rest of a garbled line is no answer to the next one
+            raise
+        for a in answers:
+            if a.is_error:
+                raise DriveError(a.code, a.text, line)
+        return [a.text for a in answers]
+
+    def query(self, name):
+        """A value: a parameter (`PX`), an array element (`AGenData[3]`), a program global."""
+        answers = self.command(name)
+        if len(answers) != 1:
+            raise ProtocolError(f"{name} answered {len(answers)} times, not once: {answers}")
+        return number_of(answers[0], name)
+
+    def output(self):
+        """The lines the drive sent on its own since the last call (printl, PRINTF, events)."""
+        return self._wire.output()
+
+    # --- programs
+    def load(self, path, *, uprog=None, start=True):
+        """Compiles `path` on this host (with the uprog binary), downloads it with the dialect's
+        download lines and, with `start`, loads it as the dialect's host does (Gold CC, PDL
+        reset, S300 PLCRUN; the AG300's last download line loads it already)."""
+        stored = compiler.compile_file(path, self.dialect, uprog or self.uprog)
+        for line in compiler.download_lines(self.dialect, stored):
+            self.command(line)
+        load_line = compiler.LOAD_LINES[self.dialect]
+        if start and load_line:
+            # The load line shows nothing (Gold CC, PDL reset, S300 PLCRUN); what comes with it
+            # is the drive's own text: the S300's MSG compile report, the program's first PRINTF.
+            self._wire.keep_as_output(text for text in self.command(load_line) if text)
+        return len(stored)
+
+    # --- the connection
+    def close(self):
+        self._link.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+
+def connect(url, dialect, *, timeout_s=5.0, uprog=None):
+    """A Drive over tcp://HOST:PORT, udp://HOST:PORT (Gold's Ethernet) or
+    serial:///dev/ttyUSB0?baud=115200 (pyserial)."""
+    if dialect not in WIRES:
+        raise UprogError(f"no dialect {dialect!r}: {', '.join(DIALECTS)}")
+    link = open_link(url, timeout_s)
+    try:
+        return Drive(link, dialect, timeout_s, uprog)
+    except BaseException:
+        link.close()
+        raise
