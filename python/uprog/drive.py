@@ -2,8 +2,11 @@
 query(), load() and output() speak to a real drive or a `uprog sim` as the dialect's own host
 software does. Pure Python: nothing here needs the C++ module."""
 
+import inspect
+import time
+
 from . import compiler
-from .errors import DriveError, ProtocolError, UprogError
+from .errors import DriveError, DriveTimeout, ProtocolError, UprogError
 from .links import open_link
 from .values import number_of
 from .wires import WIRES
@@ -64,6 +67,22 @@ class Drive:
             self._wire.keep_as_output(text for text in self.command(load_line) if text)
         return len(stored)
 
+    # --- time: a real drive's is the wall clock's
+    def run(self, seconds):
+        """Lets `seconds` pass (a real drive runs on its own: this waits)."""
+        time.sleep(seconds)
+
+    def run_until(self, predicate, timeout=10.0, *, step_s=0.02):
+        """Polls predicate() (or predicate(drive)) every `step_s` until it is true; DriveTimeout
+        after `timeout` seconds. The time it took."""
+        call = _as_callable(predicate, self)
+        start = time.monotonic()
+        while not call():
+            if time.monotonic() - start >= timeout:
+                raise DriveTimeout(f"still false after {timeout} s")
+            time.sleep(step_s)
+        return time.monotonic() - start
+
     # --- the connection
     def close(self):
         self._link.close()
@@ -86,3 +105,12 @@ def connect(url, dialect, *, timeout_s=5.0, uprog=None):
     except BaseException:
         link.close()
         raise
+
+
+def _as_callable(predicate, drive):
+    """predicate() or predicate(drive), whichever it takes."""
+    try:
+        takes_drive = len(inspect.signature(predicate).parameters) >= 1
+    except (TypeError, ValueError):
+        takes_drive = False
+    return (lambda: predicate(drive)) if takes_drive else predicate

@@ -1,0 +1,72 @@
+"""The pytest plugin (entry point `pytest11: uprog`; in a tree, `-p uprog.pytest_plugin`):
+
+- `sim_drive(dialect, program=None, **options)`: a fixture factory giving a SimDrive with the
+  program loaded, or, with `--uprog-drive URL`, a Drive over that wire (a real drive or a
+  running `uprog sim`) with the program downloaded: the same test runs on both.
+- `@pytest.mark.uprog_sim_only`: a test that needs what only the simulation does (inputs,
+  faults, the recorder) is skipped against a wire drive.
+- `assert_recording_matches(recording, "ref.csv", tolerances={"PX": 2})`: the recorder's
+  `--expect` comparison, failing with the channel, time, got and expected.
+"""
+
+import os
+
+import pytest
+
+from .recording import assert_recording_matches  # noqa: F401  (re-exported for tests)
+
+
+def pytest_addoption(parser):
+    group = parser.getgroup("uprog")
+    group.addoption("--uprog-drive", metavar="URL", default=None,
+                    help="run sim_drive tests against this drive: tcp://HOST:PORT, "
+                         "udp://HOST:PORT, serial:///dev/ttyUSB0?baud=115200")
+    group.addoption("--uprog-binary", metavar="PATH", default=None,
+                    help="the uprog binary that compiles programs for a wire drive")
+
+
+def pytest_configure(config):
+    config.addinivalue_line("markers", "uprog_sim_only: needs the simulated drive (inputs, "
+                                       "faults, virtual time, the recorder)")
+
+
+def pytest_collection_modifyitems(config, items):
+    url = config.getoption("--uprog-drive")
+    if not url:
+        return
+    skip = pytest.mark.skip(reason=f"needs the simulated drive, not {url}")
+    for item in items:
+        if "uprog_sim_only" in item.keywords:
+            item.add_marker(skip)
+
+
+def _resolve(config, path):
+    if path is None or os.path.isabs(path) or os.path.exists(path):
+        return path
+    return os.path.join(str(config.rootpath), path)
+
+
+@pytest.fixture
+def sim_drive(request):
+    """sim_drive(dialect, program=None, **SimDrive options) -> SimDrive, or a wire Drive with
+    --uprog-drive; closed after the test."""
+    config = request.config
+    url = config.getoption("--uprog-drive")
+    made = []
+
+    def make(dialect, program=None, **options):
+        program = _resolve(config, program)
+        if url:
+            from .drive import connect
+            drive = connect(url, dialect, uprog=config.getoption("--uprog-binary"))
+        else:
+            from .sim import SimDrive
+            drive = SimDrive(dialect, **options)
+        made.append(drive)
+        if program:
+            drive.load(program)
+        return drive
+
+    yield make
+    for drive in made:
+        drive.close()
