@@ -85,6 +85,16 @@ class Core {
     for (const Diagnostic& d : diagnostics) out.append(diagnostic_of(d));
     return py::make_tuple(ok, out);
   }
+  // Stores a stored form as it is (a .upi image, a .cup file): "" or why the drive refused it.
+  std::string download_stored(const py::bytes& stored) {
+    const std::string bytes = stored;
+    const dialect::DownloadResult r =
+        drive_->download(std::vector<uint8_t>(bytes.begin(), bytes.end()));
+    return r.ok ? std::string() : (r.error.empty() ? "refused" : r.error);
+  }
+  std::string stored_extension() const {
+    return std::string(drive_->dialect().stored_extension());
+  }
   std::string load_line() const { return drive_->dialect().load_line(); }
 
   py::list send(const std::string& line) { return answers_of(host_->send(line)); }
@@ -206,6 +216,8 @@ PYBIND11_MODULE(_uprog, m) {
       .def_property_readonly("dialect", &Core::dialect)
       .def("boot_messages", &Core::boot_messages)
       .def("download", &Core::download)
+      .def("download_stored", &Core::download_stored)
+      .def("stored_extension", &Core::stored_extension)
       .def("load_line", &Core::load_line)
       .def("send", &Core::send)
       .def("query", &Core::query)

@@ -246,3 +246,47 @@ def test_bad_arguments_raise_not_crash():
     with pytest.raises(uprog.CompileError):
         d.load("/nonexistent/file.ehl")
     assert d.command("3+4") == ["7"]  # the drive still serves
+
+
+def test_hostile_inputs_raise_and_the_drive_keeps_serving(tmp_path):
+    junk = tmp_path / "junk.ehl"
+    junk.write_bytes(bytes(range(256)) * 8)
+    image = tmp_path / "junk.upi"
+    image.write_bytes(b"UPG\0" + bytes(100))
+    spin = tmp_path / "spin.ehl"
+    spin.write_text("function main()\nwhile(1)\nend\nreturn\n")
+    deep = tmp_path / "deep.ehl"
+    deep.write_text("function f()\nf()\nreturn\nfunction main()\nf()\nreturn\n")
+    d = uprog.SimDrive("gold")
+    with pytest.raises(uprog.CompileError) as failed:
+        d.load(junk)
+    assert failed.value.diagnostics and all(x.file == str(junk) for x in failed.value.diagnostics)
+    with pytest.raises(uprog.DriveError):  # the image is refused before anything is stored
+        d.load(image)
+    d.load(spin)  # a program that never ends: virtual time still passes, the line still answers
+    d.command("XQ##main")
+    d.run(1.0)
+    assert d.command("3+4") == ["7"] and d.query("PS") == 1
+    with pytest.raises(uprog.DriveError) as refused:
+        d.load(deep)  # stored, but CC loads no program over a running one: EC 203
+    assert refused.value.code == 203
+    d.command("KL")
+    d.load(deep)  # endless recursion: the VM's "call stack too deep" (run_errors.def, 4)
+    with pytest.raises(uprog.ProgramError) as stopped:
+        d.command("XQ##main")
+        d.run(0.1)
+    assert (stopped.value.code, stopped.value.text, stopped.value.line) == (4, "call stack too deep", 2)
+
+
+def test_plot_script(tmp_path):
+    pytest.importorskip("matplotlib")
+    import runpy
+    import sys
+    out = tmp_path / "move.png"
+    argv = sys.argv
+    sys.argv = ["plot_move.py", str(out)]
+    try:
+        runpy.run_path(os.path.join(ROOT, "examples", "python", "plot_move.py"), run_name="__main__")
+    finally:
+        sys.argv = argv
+    assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

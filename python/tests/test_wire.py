@@ -211,3 +211,21 @@ def test_nothing_listening():
     server.close()
     with pytest.raises(uprog.ConnectionLost):
         uprog.connect(f"tcp://127.0.0.1:{port}", "gold")
+
+
+def test_gold_image_downloads_as_it_is(uprog_sim, uprog_binary, tmp_path):
+    import subprocess
+    image = tmp_path / "first_move.upi"
+    subprocess.run([uprog_binary, "build", example("gold", "first_move.ehl"), "-o", str(image)],
+                   check=True, timeout=60)
+    garbage = tmp_path / "garbage.upi"
+    garbage.write_bytes(b"UPG\0" + bytes(100))
+    sim = uprog_sim("gold")
+    with uprog.connect(sim.urls["tcp"], "gold") as drive:
+        assert drive.load(str(image)) == image.stat().st_size
+        assert drive.query("moves") == 0  # CC loaded it: its global reads
+        # docs/protocol.md: DL##END checks the image; a refused one is EC 213.
+        with pytest.raises(uprog.DriveError) as refused:
+            drive.load(str(garbage))
+        assert refused.value.code == 213
+        assert drive.query("moves") == 0  # the program stays

@@ -14,6 +14,20 @@ from .errors import CompileError, Diagnostic, UprogError
 # ADownloadUProg[2] within its 255-character line (118, pup/download.h), the S300's PLCDL (100).
 _CHUNK_BYTES = {"gold": 254, "pdl": 254, "pup": 118, "st": 100}
 LOAD_LINES = {"gold": "CC", "pdl": "reset", "pup": "", "st": "PLCRUN"}
+# What a drive stores (`uprog dialects`): a file with this extension is downloaded as it is.
+STORED_EXTENSIONS = {"gold": ".upi", "pdl": ".pdi", "pup": ".cup", "st": ".st"}
+
+
+
+
+def is_stored_form(path, dialect):
+    return str(path).endswith(STORED_EXTENSIONS.get(dialect, "\0"))
+
+
+def is_image(path, dialect):
+    """A compiled image (.upi, .pdi), not a source: the AG300's .cup and the S300's .st are
+    sources as well as stored forms, and compiling them on the host gives their diagnostics."""
+    return dialect in ("gold", "pdl") and is_stored_form(path, dialect)
 
 
 def find_uprog(given=None):
@@ -42,6 +56,12 @@ def diagnostics_of(uprog, path, dialect):
 def compile_file(path, dialect, uprog=None):
     """The stored form of a source file (bytes); a stored form (.upi, .cup) is read as it is.
     Raises CompileError with every diagnostic when it does not compile."""
+    if is_stored_form(path, dialect):
+        try:
+            with open(path, "rb") as f:
+                return f.read()
+        except OSError as e:
+            raise UprogError(f"{path}: {e.strerror}") from None
     uprog = find_uprog(uprog)
     with tempfile.TemporaryDirectory(prefix="uprog-") as tmp:
         out = os.path.join(tmp, "stored")

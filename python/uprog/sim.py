@@ -9,6 +9,7 @@ from .errors import (CompileError, Diagnostic, DriveError, DriveTimeout, Program
                      ProtocolError, UprogError)
 from .recording import Recording
 from .recording import plot as plot_recording
+from .compiler import is_image
 from .drive import _as_callable
 from .values import number_of
 
@@ -77,12 +78,16 @@ class SimDrive:
         """Compiles `path` in the drive's dialect, downloads it and loads it as the dialect's
         host does (Gold CC, PDL reset, S300 PLCRUN; the AG300's download loads it). Raises
         CompileError listing every diagnostic."""
-        ok, found = self._core.download(str(path))
-        diagnostics = [Diagnostic(d["file"], d["line"], d["column"], d["code"], d["message"],
-                                  d["severity"]) for d in found]
-        if not ok:
-            raise CompileError([d for d in diagnostics if d.severity == "error"] or diagnostics)
-        self.warnings = [d for d in diagnostics if d.severity != "error"]
+        path = str(path)
+        if is_image(path, self.dialect):
+            self._download_stored(path)
+        else:
+            ok, found = self._core.download(path)
+            diagnostics = [Diagnostic(d["file"], d["line"], d["column"], d["code"], d["message"],
+                                      d["severity"]) for d in found]
+            if not ok:
+                raise CompileError([d for d in diagnostics if d.severity == "error"] or diagnostics)
+            self.warnings = [d for d in diagnostics if d.severity != "error"]
         load_line = self._core.load_line()
         if load_line:
             # As a transcript's `load` does: the load line takes no time.
@@ -90,6 +95,16 @@ class SimDrive:
                 if code:
                     raise DriveError(code, text, load_line)
         self._check_program()
+
+    def _download_stored(self, path):
+        try:
+            with open(path, "rb") as f:
+                stored = f.read()
+        except OSError as e:
+            raise UprogError(f"{path}: {e.strerror}") from None
+        why = self._core.download_stored(stored)
+        if why:
+            raise DriveError(0, why, f"download {path}")
 
     # --- time
     @property
