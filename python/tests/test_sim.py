@@ -290,3 +290,24 @@ def test_plot_script(tmp_path):
     finally:
         sys.argv = argv
     assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_recording_round_trip_and_its_forms(tmp_path):
+    d = uprog.SimDrive("gold")
+    d.command("MO=1")
+    d.run_until("SO==1", timeout=1)  # a drive expression as the condition
+    d.command("SP=50000;AC=1000000;DC=1000000;PA=100000")
+    d.record("DV[2],DV[3],IQ", trigger="begin", length=8, gap=20)
+    d.command("BG")
+    d.run(0.01)
+    r = d.recording()
+    again = uprog.read_recording_csv(r.to_csv(tmp_path / "again.csv"))
+    assert uprog.compare_recordings(again, r) is None  # export, import: the same samples
+    assert again.units == {"DV[2]": "counts/s", "DV[3]": "counts", "IQ": "A"}  # docs/recorder.md
+    uprog.assert_recording_matches(r, again, "DV[2]=0 DV[3]=0")  # the recorder's CH=V words
+    pytest.importorskip("pandas")
+    frame = d.recording(dataframe=True)
+    assert list(frame.columns) == ["DV[2]", "DV[3]", "IQ"] and frame.index.name == "time_s"
+    assert frame["DV[2]"].iloc[0] == 50  # a k TS for k = 1 (first_steps.csv)
+    with pytest.raises(uprog.UprogError):
+        uprog.assert_recording_matches(r, again, ["DV[2]"])  # a tolerance is CH=VALUE

@@ -2,11 +2,14 @@
 a real drive or a `uprog sim` over the vendor's wire, with one API (docs/python.md)."""
 
 from .drive import DIALECTS, Drive, connect
+from .recording import Recording, assert_recording_matches, compare as compare_recordings
+from .recording import read_csv as read_recording_csv
 from .errors import (CompileError, ConnectionLost, Diagnostic, DriveError, DriveTimeout,
                      ProgramError, ProtocolError, UprogError)
 
 __all__ = ["DIALECTS", "CompileError", "ConnectionLost", "Diagnostic", "Drive", "DriveError",
-           "DriveTimeout", "ProgramError", "ProtocolError", "SimDrive", "UprogError", "connect"]
+           "DriveTimeout", "ProgramError", "ProtocolError", "Recording", "SimDrive", "UprogError",
+           "assert_recording_matches", "compare_recordings", "connect", "read_recording_csv"]
 
 
 def __getattr__(name):

@@ -73,7 +73,7 @@ class Drive:
         time.sleep(seconds)
 
     def run_until(self, predicate, timeout=10.0, *, step_s=0.02):
-        """Polls predicate() (or predicate(drive)) every `step_s` until it is true; DriveTimeout
+        """Polls predicate() (or predicate(drive), or a drive expression) every `step_s` until it is true; DriveTimeout
         after `timeout` seconds. The time it took."""
         call = _as_callable(predicate, self)
         start = time.monotonic()
@@ -108,7 +108,10 @@ def connect(url, dialect, *, timeout_s=5.0, uprog=None):
 
 
 def _as_callable(predicate, drive):
-    """predicate() or predicate(drive), whichever it takes."""
+    """predicate() or predicate(drive), whichever it takes; a string is an expression the drive
+    evaluates (`"MS==0"`, `"PS"`): true when its value is not 0."""
+    if isinstance(predicate, str):
+        return lambda: drive.query(predicate) != 0
     try:
         takes_drive = len(inspect.signature(predicate).parameters) >= 1
     except (TypeError, ValueError):

@@ -40,10 +40,21 @@ def pytest_collection_modifyitems(config, items):
             item.add_marker(skip)
 
 
-def _resolve(config, path):
-    if path is None or os.path.isabs(path) or os.path.exists(path):
+def _resolve(request, path):
+    """A program path as given, else relative to the working directory, the test's folder or
+    one of its parents, or pytest's rootdir: `examples/gold/first_move.ehl` from anywhere."""
+    if path is None or os.path.isabs(str(path)) or os.path.exists(str(path)):
         return path
-    return os.path.join(str(config.rootpath), path)
+    folder = os.path.dirname(str(request.node.fspath))
+    while True:
+        candidate = os.path.join(folder, str(path))
+        if os.path.exists(candidate):
+            return candidate
+        parent = os.path.dirname(folder)
+        if parent == folder:
+            break
+        folder = parent
+    return os.path.join(str(request.config.rootpath), str(path))
 
 
 @pytest.fixture
@@ -55,7 +66,7 @@ def sim_drive(request):
     made = []
 
     def make(dialect, program=None, **options):
-        program = _resolve(config, program)
+        program = _resolve(request, program)
         if url:
             from .drive import connect
             drive = connect(url, dialect, uprog=config.getoption("--uprog-binary"))

@@ -34,6 +34,22 @@ class Recording(dict):
     def time_us(self, i):
         return (i - self.trigger_index) * self.sample_period_us
 
+    def to_csv(self, path):
+        """Writes the recorder's CSV file (docs/recorder.md), a reference for later runs."""
+        units = ",".join(self.units.get(n, "") for n in self.channels)
+        types = ",".join("float" if self.floats.get(n) else "int" for n in self.channels)
+        lines = ["# uprog recording 1", f"# sample_period_us: {self.sample_period_us}",
+                 f"# trigger: {self.trigger}", f"# pretrigger_percent: {self.pretrigger_percent}",
+                 f"# trigger_index: {self.trigger_index}",
+                 f"# trigger_time_us: {self.trigger_time_us}", f"# units: {units}",
+                 f"# types: {types}", ",".join(["time_us", *self.channels])]
+        for i in range(self.samples):
+            cells = [str(self.time_us(i))] + [_shown(self[n][i], self.floats.get(n)) for n in self.channels]
+            lines.append(",".join(cells))
+        with open(path, "w", encoding="utf-8") as f:
+            f.write("\n".join(lines) + "\n")
+        return path
+
     def dataframe(self):
         """The recording as a pandas DataFrame indexed by time_s (pandas needed)."""
         try:
@@ -42,6 +58,9 @@ class Recording(dict):
             raise UprogError("a DataFrame needs pandas (Debian: python3-pandas)") from e
         return pd.DataFrame({name: self[name] for name in self.channels},
                             index=pd.Index(self["time_s"], name="time_s"))
+
+
+    to_dataframe = dataframe
 
 
 def read_csv(path):
@@ -62,6 +81,9 @@ def read_csv(path):
         raise UprogError(f"{path}: line {body + 1}: the first column is time_us")
     names = columns[1:]
     values = {name: [] for name in names}
+    # A float channel holds float32 values written in their shortest form: read back exactly.
+    floats = dict(zip(names, (t == "float" for t in header.get("types", "").split(","))))
+    import numpy as np
     for number, line in enumerate(lines[body + 1:], start=body + 2):
         if not line:
             continue
@@ -70,7 +92,8 @@ def read_csv(path):
             raise UprogError(f"{path}: line {number}: {len(cells)} values, expected {len(columns)}")
         for name, cell in zip(names, cells[1:]):
             try:
-                values[name].append(float(cell))
+                value = float(cell)
+                values[name].append(float(np.float32(value)) if floats.get(name) else value)
             except ValueError:
                 raise UprogError(f"{path}: line {number}: {cell!r} is no number ({name})") from None
     try:
@@ -79,7 +102,8 @@ def read_csv(path):
                          pretrigger_percent=int(header.get("pretrigger_percent", 0)),
                          trigger_index=int(header.get("trigger_index", 0)),
                          trigger_time_us=int(header.get("trigger_time_us", 0)),
-                         units=dict(zip(names, header.get("units", "").split(","))))
+                         units=dict(zip(names, header.get("units", "").split(","))),
+                         floats=floats)
     except ValueError as e:
         raise UprogError(f"{path}: a header value is not a number: {e}") from None
 
@@ -101,8 +125,33 @@ class Difference:
         return self.text
 
 
-def _shown(v):
-    return str(int(v)) if float(v).is_integer() else repr(float(v))
+def _shown(v, is_float=False):
+    """A value in its shortest exact form: an int32 as an integer, a float32 as float32 prints."""
+    if float(v).is_integer():
+        return str(int(v))
+    if is_float:
+        import numpy as np
+        return str(np.float32(v))
+    return repr(float(v))
+
+
+def _tolerances(given):
+    """{"PX": 2}, or the recorder's "PX=2" words (a list, or one string split at blanks/commas)."""
+    if not given:
+        return {}
+    if isinstance(given, dict):
+        return {str(k): float(v) for k, v in given.items()}
+    words = given.replace(",", " ").split() if isinstance(given, str) else list(given)
+    out = {}
+    for word in words:
+        name, eq, value = str(word).rpartition("=")
+        try:
+            out[name] = float(value)
+        except ValueError:
+            eq = ""
+        if not eq or not name:
+            raise UprogError(f"a tolerance is CH=VALUE, not {word!r}")
+    return out
 
 
 def compare(actual, expected, tolerances=None):
@@ -110,7 +159,7 @@ def compare(actual, expected, tolerances=None):
     order, the sampling period, the trigger index, then every sample in time order, the channels
     in order; the first value further from the reference than its channel's tolerance (0
     without one) is the Difference returned. None when they agree."""
-    tolerances = dict(tolerances or {})
+    tolerances = _tolerances(tolerances)
     for name in tolerances:
         if name not in expected.channels:
             return Difference(f"tolerance {name}: the reference has no channel '{name}'")

@@ -119,8 +119,8 @@ class SimDrive:
         self._check_program()
 
     def run_until(self, predicate, timeout=10.0, *, step_s=DEFAULT_STEP_S):
-        """Runs until predicate() (or predicate(drive)) is true, checking every `step_s` of virtual
-        time; DriveTimeout after `timeout` seconds of it. The virtual time it took."""
+        """Runs until predicate() (or predicate(drive), or a drive expression such as "MS==0")
+        is true, checking every `step_s` of virtual time; DriveTimeout after `timeout` seconds of it. The virtual time it took."""
         call = _as_callable(predicate, self)
         start = self._core.now_us()
         limit = start + _microseconds(timeout)
@@ -162,18 +162,20 @@ class SimDrive:
         except ValueError as e:
             raise UprogError(f"record: {e}") from None
 
-    def recording(self):
-        """The finished recording (a dict of numpy arrays with "time_s"; .dataframe() with
-        pandas); UprogError while there is none."""
+    def recording(self, *, dataframe=False):
+        """The finished recording: a dict of numpy arrays with "time_s" (a Recording, whose
+        .dataframe() is a pandas DataFrame), or that DataFrame with dataframe=True. UprogError
+        while there is none."""
         r = self._core.recording()
         if r is None:
             raise UprogError("no finished recording (not triggered yet, or still recording)")
-        return Recording({c[0]: c[3] for c in r["channels"]},
+        recording = Recording({c[0]: c[3] for c in r["channels"]},
                          sample_period_us=r["sample_period_us"], trigger=r["trigger"],
                          pretrigger_percent=r["pretrigger_percent"],
                          trigger_index=r["trigger_index"], trigger_time_us=r["trigger_time_us"],
                          units={c[0]: c[1] for c in r["channels"]},
-                         floats={c[0]: c[2] for c in r["channels"]})
+                              floats={c[0]: c[2] for c in r["channels"]})
+        return recording.dataframe() if dataframe else recording
 
     def plot(self, path, title=""):
         """Draws the finished recording to `path` (PNG, SVG, PDF: matplotlib's formats)."""
