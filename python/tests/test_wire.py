@@ -2,13 +2,14 @@
 host reads them, a download through the dialect's own protocol, program output, and a wire
 that breaks. Expected values come from the manuals, the spec and the examples' comments."""
 
+import os
 import socket
 import time
 
 import pytest
 
 import uprog
-from conftest import example
+from conftest import ROOT, example
 
 
 def wait_for(drive, name, wanted, timeout_s=5.0):
@@ -229,3 +230,17 @@ def test_gold_image_downloads_as_it_is(uprog_sim, uprog_binary, tmp_path):
             drive.load(str(garbage))
         assert refused.value.code == 213
         assert drive.query("moves") == 0  # the program stays
+
+
+def test_pdl_run_time_error_event_raises(uprog_sim):
+    # pdl-drive.md, "Events": a run-time error sends `%E task code text`; code 4 is the VM's
+    # "call stack too deep" (src/vm/run_errors.def), on line 7 of the program.
+    program = os.path.join(ROOT, "tests", "transcripts", "pdl", "programs", "stack_overflow.pdl")
+    sim = uprog_sim("pdl")
+    with uprog.connect(sim.urls["tcp"], "pdl") as drive:
+        with pytest.raises(uprog.ProgramError) as stopped:
+            drive.load(program)  # `reset` starts task 1
+            drive.run_until(lambda: False, timeout=3)
+        e = stopped.value
+        assert (e.code, e.text, e.file, e.line) == (4, "call stack too deep", "stack_overflow.pdl", 7)
+        assert drive.output()[0].startswith("%E 1 4 call stack too deep")

@@ -3,15 +3,34 @@ query(), load() and output() speak to a real drive or a `uprog sim` as the diale
 software does. Pure Python: nothing here needs the C++ module."""
 
 import inspect
+import re
 import time
 
 from . import compiler
-from .errors import DriveError, DriveTimeout, ProtocolError, UprogError
+from .errors import DriveError, DriveTimeout, ProgramError, ProtocolError, UprogError
 from .links import open_link
 from .values import number_of
 from .wires import WIRES
 
 DIALECTS = tuple(WIRES)
+
+# A PDL drive reports a task's run-time error to every host: `%E task code text` (pdl-drive.md,
+# "Events"), the text ending with the source place ("call stack too deep at f.pdl:7").
+_PDL_ERROR_EVENT = re.compile(r"^%E \d+ (-?\d+) (.*?)\s*$")
+_PLACE = re.compile(r"^(.*) at (\S+):(\d+)$")
+
+
+def program_error_of(dialect, line):
+    """The ProgramError an output line reports, or None."""
+    found = _PDL_ERROR_EVENT.match(line) if dialect == "pdl" else None
+    if not found:
+        return None
+    text = found.group(2)
+    place = _PLACE.match(text)
+    if place:
+        return ProgramError(int(found.group(1)), place.group(1), place.group(2),
+                            int(place.group(3)))
+    return ProgramError(int(found.group(1)), text)
 
 
 class Drive:
@@ -26,6 +45,7 @@ class Drive:
         self._link = link
         self._wire = WIRES[dialect](link)
         self._wire.start(timeout_s)
+        self._output = []
 
     # --- the command line
     def command(self, line, timeout_s=None):
@@ -36,6 +56,7 @@ class Drive:
         except ProtocolError:
             self._wire.resync()  # the rest of a garbled line is no answer to the next one
             raise
+        self._check_program()
         for a in answers:
             if a.is_error:
                 raise DriveError(a.code, a.text, line)
@@ -50,7 +71,19 @@ class Drive:
 
     def output(self):
         """The lines the drive sent on its own since the last call (printl, PRINTF, events)."""
-        return self._wire.output()
+        self._output += self._wire.output()
+        out, self._output = self._output, []
+        return out
+
+    def _check_program(self):
+        """ProgramError when the drive reported that its program stopped (PDL's `%E`); the
+        line stays in output()."""
+        new = self._wire.output()
+        self._output += new
+        for line in new:
+            error = program_error_of(self.dialect, line)
+            if error:
+                raise error
 
     # --- programs
     def load(self, path, *, uprog=None, start=True):
@@ -69,8 +102,10 @@ class Drive:
 
     # --- time: a real drive's is the wall clock's
     def run(self, seconds):
-        """Lets `seconds` pass (a real drive runs on its own: this waits)."""
+        """Lets `seconds` pass (a real drive runs on its own: this waits); ProgramError when the
+        drive reports a stopped program meanwhile."""
         time.sleep(seconds)
+        self._check_program()
 
     def run_until(self, predicate, timeout=10.0, *, step_s=0.02):
         """Polls predicate() (or predicate(drive), or a drive expression) every `step_s` until it is true; DriveTimeout
@@ -78,6 +113,7 @@ class Drive:
         call = _as_callable(predicate, self)
         start = time.monotonic()
         while not call():
+            self._check_program()
             if time.monotonic() - start >= timeout:
                 raise DriveTimeout(f"still false after {timeout} s")
             time.sleep(step_s)

@@ -60,7 +60,8 @@ class Wire:
             raise DriveTimeout("the drive did not answer within the timeout")
         data = self.link.receive(min(left, 0.5))
         self._pending += data
-        if len(self._pending) > MAX_ANSWER_BYTES:
+        if len(self._pending) > MAX_ANSWER_BYTES and not any(
+                end in self._pending for end in (b";", b"\r", b"\n")):
             self._pending = b""
             raise ProtocolError("the drive sent more than 64 KiB without ending an answer")
 
