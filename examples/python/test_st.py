@@ -14,7 +14,7 @@ def test_init_parameters(sim_drive):
     # PLCINIT's XWRITEs: ramps 50, VLIM 2500, PEINPOS 10, and motion task 192.
     d = sim_drive("st", program=os.path.join(ST, "init_parameters.st"))
     d.run_until(lambda: d.query("MTMUX") == 192, timeout=1)
-    assert (d.query("ACC"), d.query("DEC"), d.query("VLIM"), d.query("PEINPOS")) == (50, 50, 2500, 10)
+    assert [d.query(name) for name in ("ACC", "DEC", "VLIM", "PEINPOS")] == [50, 50, 2500, 10]
     assert d.command("ORDER 192") == ["192 20000 5000 8192 10 10 0 0 0 0"]
 
 

@@ -92,9 +92,7 @@ class Core {
         drive_->download(std::vector<uint8_t>(bytes.begin(), bytes.end()));
     return r.ok ? std::string() : (r.error.empty() ? "refused" : r.error);
   }
-  std::string stored_extension() const {
-    return std::string(drive_->dialect().stored_extension());
-  }
+  std::string stored_extension() const { return std::string(drive_->dialect().stored_extension()); }
   std::string load_line() const { return drive_->dialect().load_line(); }
 
   py::list send(const std::string& line) { return answers_of(host_->send(line)); }

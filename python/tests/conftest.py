@@ -43,7 +43,8 @@ class Sim:
             words = line.split()
             if len(words) != 4 or words[0] != "listening":
                 self.stop()
-                raise RuntimeError(f"uprog sim did not start: {line!r} {self.process.stderr.read()}")
+                why = self.process.stderr.read()
+                raise RuntimeError(f"uprog sim did not start: {line!r} {why}")
             scheme = "serial://" if words[2] == "pty" else f"{words[2]}://"
             self.urls[words[2]] = scheme + words[3]
 

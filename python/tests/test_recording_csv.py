@@ -27,5 +27,6 @@ def test_shape_differences_are_named():
     steps = read_csv(os.path.join(ROOT, "tests", "transcripts", "recorder", "first_steps.csv"))
     other = read_csv(os.path.join(ROOT, "tests", "transcripts", "recorder", "gold_dv2.csv"))
     assert compare(steps, steps) is None
-    assert str(compare(steps, steps, {"PX": 1})) == "tolerance PX: the reference has no channel 'PX'"
+    assert str(compare(steps, steps, {"PX": 1})) == (
+        "tolerance PX: the reference has no channel 'PX'")
     assert compare(other, steps) is not None

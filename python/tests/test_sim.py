@@ -275,7 +275,8 @@ def test_hostile_inputs_raise_and_the_drive_keeps_serving(tmp_path):
     with pytest.raises(uprog.ProgramError) as stopped:
         d.command("XQ##main")
         d.run(0.1)
-    assert (stopped.value.code, stopped.value.text, stopped.value.line) == (4, "call stack too deep", 2)
+    e = stopped.value
+    assert (e.code, e.text, e.line) == (4, "call stack too deep", 2)
 
 
 def test_plot_script(tmp_path):
@@ -286,7 +287,8 @@ def test_plot_script(tmp_path):
     argv = sys.argv
     sys.argv = ["plot_move.py", str(out)]
     try:
-        runpy.run_path(os.path.join(ROOT, "examples", "python", "plot_move.py"), run_name="__main__")
+        script = os.path.join(ROOT, "examples", "python", "plot_move.py")
+        runpy.run_path(script, run_name="__main__")
     finally:
         sys.argv = argv
     assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

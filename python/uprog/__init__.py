@@ -2,14 +2,16 @@
 a real drive or a `uprog sim` over the vendor's wire, with one API (docs/python.md)."""
 
 from .drive import DIALECTS, Drive, connect
-from .recording import Recording, assert_recording_matches, compare as compare_recordings
+from .errors import (BadArgument, CompileError, ConnectionLost, Diagnostic, DriveError,
+                     DriveTimeout, ProgramError, ProtocolError, UprogError)
+from .recording import Recording, assert_recording_matches
+from .recording import compare as compare_recordings
 from .recording import read_csv as read_recording_csv
-from .errors import (CompileError, ConnectionLost, Diagnostic, DriveError, DriveTimeout,
-                     ProgramError, ProtocolError, UprogError)
 
-__all__ = ["DIALECTS", "CompileError", "ConnectionLost", "Diagnostic", "Drive", "DriveError",
-           "DriveTimeout", "ProgramError", "ProtocolError", "Recording", "SimDrive", "UprogError",
-           "assert_recording_matches", "compare_recordings", "connect", "read_recording_csv"]
+__all__ = ["DIALECTS", "BadArgument", "CompileError", "ConnectionLost", "Diagnostic", "Drive",
+           "DriveError", "DriveTimeout", "ProgramError", "ProtocolError", "Recording", "SimDrive",
+           "UprogError", "assert_recording_matches", "compare_recordings", "connect",
+           "read_recording_csv"]
 
 
 def __getattr__(name):

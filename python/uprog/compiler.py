@@ -80,7 +80,8 @@ def _hex_lines(prefix, stored, chunk):
 
 
 def _declared_crc(cup):
-    # An AG300 CUP file's first line is `% CRC8HEX` CR, or `% 000000` CR: not checked (cup_file.cpp).
+    # An AG300 CUP file's first line is `% CRC8HEX` CR, or `% 000000` CR: not checked
+    # (src/dialects/pup/cup_file.cpp).
     if cup.startswith(b"% 000000\r") or len(cup) < 11:
         return 0
     try:
@@ -95,7 +96,8 @@ def download_lines(dialect, stored):
     if dialect in ("gold", "pdl"):
         return [f"DL##BEGIN={len(stored)}", *_hex_lines("DL=", stored, chunk), "DL##END"]
     if dialect == "pup":
-        return [f"ADownloadUProg[1],{len(stored)}", *_hex_lines("ADownloadUProg[2],", stored, chunk),
+        return [f"ADownloadUProg[1],{len(stored)}",
+                *_hex_lines("ADownloadUProg[2],", stored, chunk),
                 f"ADownloadUProg[3],0x{_declared_crc(stored):08X}"]
     if dialect == "st":
         return [f"PLCDL BEGIN {len(stored)}", *_hex_lines("PLCDL ", stored, chunk), "PLCDL END"]

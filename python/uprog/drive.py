@@ -7,7 +7,7 @@ import re
 import time
 
 from . import compiler
-from .errors import DriveError, DriveTimeout, ProgramError, ProtocolError, UprogError
+from .errors import BadArgument, DriveError, DriveTimeout, ProgramError, ProtocolError
 from .links import open_link
 from .values import number_of
 from .wires import WIRES
@@ -38,7 +38,7 @@ class Drive:
 
     def __init__(self, link, dialect, timeout_s=5.0, uprog=None):
         if dialect not in WIRES:
-            raise UprogError(f"no dialect {dialect!r}: {', '.join(DIALECTS)}")
+            raise BadArgument(f"no dialect {dialect!r}: {', '.join(DIALECTS)}")
         self.dialect = dialect
         self.timeout_s = timeout_s
         self.uprog = uprog
@@ -108,9 +108,10 @@ class Drive:
         self._check_program()
 
     def run_until(self, predicate, timeout=10.0, *, step_s=0.02):
-        """Polls predicate() (or predicate(drive), or a drive expression) every `step_s` until it is true; DriveTimeout
+        """Polls predicate() (or predicate(drive), or a drive expression) every `step_s` until
+        it is true; DriveTimeout
         after `timeout` seconds. The time it took."""
-        call = _as_callable(predicate, self)
+        call = as_condition(predicate, self)
         start = time.monotonic()
         while not call():
             self._check_program()
@@ -134,7 +135,7 @@ def connect(url, dialect, *, timeout_s=5.0, uprog=None):
     """A Drive over tcp://HOST:PORT, udp://HOST:PORT (Gold's Ethernet) or
     serial:///dev/ttyUSB0?baud=115200 (pyserial)."""
     if dialect not in WIRES:
-        raise UprogError(f"no dialect {dialect!r}: {', '.join(DIALECTS)}")
+        raise BadArgument(f"no dialect {dialect!r}: {', '.join(DIALECTS)}")
     link = open_link(url, timeout_s)
     try:
         return Drive(link, dialect, timeout_s, uprog)
@@ -143,7 +144,7 @@ def connect(url, dialect, *, timeout_s=5.0, uprog=None):
         raise
 
 
-def _as_callable(predicate, drive):
+def as_condition(predicate, drive):
     """predicate() or predicate(drive), whichever it takes; a string is an expression the drive
     evaluates (`"MS==0"`, `"PS"`): true when its value is not 0."""
     if isinstance(predicate, str):

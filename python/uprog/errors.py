@@ -8,6 +8,11 @@ class UprogError(Exception):
     """The base of every exception the package raises."""
 
 
+class BadArgument(UprogError, ValueError):
+    """An argument the drive has no use for: an unknown dialect, fault or channel, an input
+    outside 1..6 (also a ValueError)."""
+
+
 class DriveError(UprogError):
     """A line the drive refused: its error code and text, and the line sent."""
 
@@ -44,7 +49,8 @@ class Diagnostic:
     severity: str = "error"
 
     def __str__(self):
-        return f"{self.file}:{self.line}:{self.column}: {self.severity}: {self.message} [{self.code}]"
+        return (f"{self.file}:{self.line}:{self.column}: {self.severity}: {self.message} "
+                f"[{self.code}]")
 
 
 class CompileError(UprogError):
@@ -52,7 +58,8 @@ class CompileError(UprogError):
 
     def __init__(self, diagnostics, summary=""):
         self.diagnostics = list(diagnostics)
-        text = "\n".join(str(d) for d in self.diagnostics) or summary or "the program did not compile"
+        text = ("\n".join(str(d) for d in self.diagnostics) or summary
+                or "the program did not compile")
         super().__init__(text)
 
 

@@ -13,7 +13,9 @@ import os
 
 import pytest
 
-from .recording import assert_recording_matches  # noqa: F401  (re-exported for tests)
+from .recording import assert_recording_matches
+
+__all__ = ["assert_recording_matches", "sim_drive"]
 
 
 def pytest_addoption(parser):

@@ -44,7 +44,8 @@ class Recording(dict):
                  f"# trigger_time_us: {self.trigger_time_us}", f"# units: {units}",
                  f"# types: {types}", ",".join(["time_us", *self.channels])]
         for i in range(self.samples):
-            cells = [str(self.time_us(i))] + [_shown(self[n][i], self.floats.get(n)) for n in self.channels]
+            cells = [str(self.time_us(i))]
+            cells += [_shown(self[n][i], self.floats.get(n)) for n in self.channels]
             lines.append(",".join(cells))
         with open(path, "w", encoding="utf-8") as f:
             f.write("\n".join(lines) + "\n")

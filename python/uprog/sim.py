@@ -2,15 +2,14 @@
 the API of the wire layer's Drive (command, query, load, output) and what only a simulation can
 do: run time forward, set inputs, place switches, inject faults, record."""
 
-import inspect
 import re
 
-from .errors import (CompileError, Diagnostic, DriveError, DriveTimeout, ProgramError,
+from .errors import (BadArgument, CompileError, Diagnostic, DriveError, DriveTimeout, ProgramError,
                      ProtocolError, UprogError)
+from .compiler import is_image
+from .drive import as_condition
 from .recording import Recording
 from .recording import plot as plot_recording
-from .compiler import is_image
-from .drive import _as_callable
 from .values import number_of
 
 try:
@@ -36,9 +35,10 @@ class SimDrive:
 
     def __init__(self, dialect, *, axes=1, state_dir=None, safe_boot=False, servo_period_us=0):
         try:
-            self._core = _uprog.Core(dialect, axes, state_dir or "", safe_boot, servo_period_us)
-        except ValueError as e:
-            raise UprogError(str(e)) from None
+            self._core = _uprog.Core(dialect, int(axes), str(state_dir or ""), bool(safe_boot),
+                                     int(servo_period_us))
+        except (ValueError, TypeError) as e:
+            raise BadArgument(str(e)) from None
         self.dialect = dialect
         self.warnings = []
         self.log = []  # (time_us, text): what the firmware noted (auto-routines, errors)
@@ -120,8 +120,9 @@ class SimDrive:
 
     def run_until(self, predicate, timeout=10.0, *, step_s=DEFAULT_STEP_S):
         """Runs until predicate() (or predicate(drive), or a drive expression such as "MS==0")
-        is true, checking every `step_s` of virtual time; DriveTimeout after `timeout` seconds of it. The virtual time it took."""
-        call = _as_callable(predicate, self)
+        is true, checking every `step_s` of virtual time; DriveTimeout after `timeout` seconds
+        of it. The virtual time it took."""
+        call = as_condition(predicate, self)
         start = self._core.now_us()
         limit = start + _microseconds(timeout)
         step = max(_microseconds(step_s), 1)
@@ -136,19 +137,25 @@ class SimDrive:
     # --- the world
     def set_input(self, n, level):
         """Digital input n (1..6) high (1, True) or low."""
-        self._core.set_input(int(n), bool(level))
+        try:
+            self._core.set_input(int(n), bool(level))
+        except ValueError as e:
+            raise BadArgument(str(e)) from None
 
     def place_switch(self, n, lo, hi):
         """Input n is high while the motor's position (counts) lies in [lo, hi]: a cam, a home
         or limit switch (the transcripts' `switch`)."""
-        self._core.place_switch(int(n), float(lo), float(hi))
+        try:
+            self._core.place_switch(int(n), float(lo), float(hi))
+        except ValueError as e:
+            raise BadArgument(str(e)) from None
 
     def inject_fault(self, name, persistent=False):
         """Latches a drive fault by name (feedback, overcurrent, undervoltage, ...)."""
         try:
             self._core.inject_fault(name, persistent)
         except ValueError as e:
-            raise UprogError(str(e)) from None
+            raise BadArgument(str(e)) from None
 
     # --- the recorder
     def record(self, channels, *, trigger="immediate", pretrigger=0, length=1000, gap=1):
@@ -160,7 +167,7 @@ class SimDrive:
         try:
             self._core.record(channels, trigger, int(pretrigger), int(length), int(gap))
         except ValueError as e:
-            raise UprogError(f"record: {e}") from None
+            raise BadArgument(f"record: {e}") from None
 
     def recording(self, *, dataframe=False):
         """The finished recording: a dict of numpy arrays with "time_s" (a Recording, whose
@@ -187,7 +194,7 @@ class SimDrive:
         return self._core.program_running()
 
     def close(self):
-        self._core = None
+        self._core = _Closed()
 
     def __enter__(self):
         return self
@@ -237,6 +244,13 @@ def _program_error(text, fallback_text):
         message = message.replace(f" at {place[-1][0]}:{place[-1][1]}", "")
     return ProgramError(code, message, place[-1][0] if place else None,
                         int(place[-1][1]) if place else None)
+
+class _Closed:
+    """Stands for the drive after close(): every use says so."""
+
+    def __getattr__(self, name):
+        raise UprogError("the drive is closed")
+
 
 def _microseconds(seconds):
     if seconds < 0:
