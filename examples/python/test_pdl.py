@@ -7,6 +7,9 @@ import pytest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 PDL = os.path.join(HERE, "..", "pdl")
+# The manual's 2.2.11 home search with TOUT, as tests/transcripts/pdl keeps it.
+HOME_SEARCH = os.path.join(HERE, "..", "..", "tests", "transcripts", "pdl", "programs",
+                           "tout_home_2_2_11.pdl")
 
 
 def test_move_with_timeout(sim_drive):
@@ -38,3 +41,22 @@ def test_move_recording(sim_drive):
     assert position[0] == 0 and position[-1] == 10000
     assert (position[1:] >= position[:-1]).all()
     assert velocity.max() == 20000
+
+
+@pytest.mark.uprog_sim_only
+def test_home_input_ends_the_search(sim_drive):
+    # Manual 2.2.11: jog at 2000 counts/s until the home input or 3 s of TOUT. A home cam on
+    # input 3 at 3000..4000 counts is reached after about 1.5 s: "OK, found home limit".
+    d = sim_drive("pdl")
+    d.place_switch(3, 3000, 4000)
+    d.load(HOME_SEARCH)
+    d.run(2.5)
+    assert d.output() == ["%P 1 00000101 00000000 OK, found home limit"]
+    assert d.query("X_homed") == 1
+
+
+@pytest.mark.uprog_sim_only
+def test_home_search_times_out_without_the_input(sim_drive):
+    d = sim_drive("pdl", program=HOME_SEARCH)
+    d.run(3.5)  # TOUT's 60000 phases of 50 us: 3 s
+    assert d.output() == ["%P 1 00000101 00000000 ERROR time out when search home limit"]

@@ -20,6 +20,18 @@ def test_point_to_point(sim_drive):
 
 
 @pytest.mark.uprog_sim_only
+def test_point_to_point_recording(sim_drive):
+    # The profile: out to FAR (20000) and back at ASpeed 100000 counts/s, four times.
+    d = sim_drive("pup", program=os.path.join(PUP, "point_to_point.pup"))
+    d.record("reference_position,reference_velocity", trigger="begin", length=1500, gap=20)
+    d.command("AProgRun[1],1")
+    d.run(1.5)
+    r = d.recording()
+    assert r["reference_position"].max() == 20000 and r["reference_position"][-1] == 0
+    assert abs(r["reference_velocity"]).max() == 100000
+
+
+@pytest.mark.uprog_sim_only
 def test_input_event(sim_drive):
     # input_event.pup: each rising edge of input 3 counts and toggles output 2 (ADoutPort bit 1).
     d = sim_drive("pup", program=os.path.join(PUP, "input_event.pup"))

@@ -6,6 +6,8 @@ import os
 
 import pytest
 
+numpy = pytest.importorskip("numpy")
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ST = os.path.join(HERE, "..", "st")
 
@@ -16,6 +18,21 @@ def test_init_parameters(sim_drive):
     d.run_until(lambda: d.query("MTMUX") == 192, timeout=1)
     assert [d.query(name) for name in ("ACC", "DEC", "VLIM", "PEINPOS")] == [50, 50, 2500, 10]
     assert d.command("ORDER 192") == ["192 20000 5000 8192 10 10 0 0 0 0"]
+
+
+@pytest.mark.uprog_sim_only
+def test_move_sequence_recording(sim_drive):
+    # move_sequence.st: out to 5000 and back to 0 three times (ROUNDS), then DIS (STEP 4). In
+    # counts (PGEARO 65536 per PGEARI 10000 units) the target is 32768: three peaks, never past.
+    d = sim_drive("st", program=os.path.join(ST, "move_sequence.st"))
+    d.record("reference_position", trigger="immediate", length=700, gap=80)  # every 10 ms
+    d.run(7.0)
+    position = d.recording()["reference_position"]
+    rising = numpy.diff(position) > 0
+    peaks = (rising[:-1] & ~rising[1:]).sum()
+    assert (peaks, position[0], position[-1]) == (3, 0, 0)
+    assert 0 < position.max() <= 32768
+    assert (d.query("ROUNDS"), d.query("STEP"), d.query("ACTIVE")) == (3, 4, 0)
 
 
 @pytest.mark.uprog_sim_only
