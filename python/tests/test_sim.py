@@ -313,3 +313,38 @@ def test_recording_round_trip_and_its_forms(tmp_path):
     assert frame["DV[2]"].iloc[0] == 50  # a k TS for k = 1 (first_steps.csv)
     with pytest.raises(uprog.UprogError):
         uprog.assert_recording_matches(r, again, ["DV[2]"])  # a tolerance is CH=VALUE
+
+
+def test_deterministic_bit_for_bit():
+    # DESIGN.md: "The same program, inputs and scenario give the same result bit for bit."
+    def one_run():
+        d = uprog.SimDrive("gold")
+        d.load(example("gold", "first_move.ehl"))
+        d.record("PX,VX,PE,IQ", trigger="begin", length=500, gap=40)
+        d.command("XQ##main")
+        d.run(2.5)
+        return d.recording()
+    first, second = one_run(), one_run()
+    assert uprog.compare_recordings(first, second) is None
+    assert all((first[name] == second[name]).all() for name in first)
+
+
+def test_state_dir_keeps_the_program_across_drives(tmp_path):
+    d = uprog.SimDrive("gold", state_dir=tmp_path)
+    d.load(example("gold", "first_move.ehl"))
+    d.close()
+    with pytest.raises(uprog.UprogError):
+        d.command("PX")  # a closed drive says so
+    again = uprog.SimDrive("gold", state_dir=tmp_path)  # boots with the stored program
+    assert again.boot_messages == []
+    again.command("XQ##main")
+    again.run_until("PS==0", timeout=5)
+    assert again.query("moves") == 1
+    # A flash whose program was damaged: the drive boots without it and says why.
+    with open(tmp_path / "program.upi", "r+b") as flash:
+        flash.write(b"XXXX")
+    damaged = uprog.SimDrive("gold", state_dir=tmp_path)
+    assert "refused" in damaged.boot_messages[0]
+    with pytest.raises(uprog.DriveError) as refused:
+        damaged.command("XQ##main")
+    assert refused.value.code == 201  # "No program is loaded" (interpreter_errors.def)

@@ -193,6 +193,11 @@ class SimDrive:
     def program_running(self):
         return self._core.program_running()
 
+    @property
+    def boot_messages(self):
+        """What the drive said at power-up: a refused stored program, unreadable parameters."""
+        return list(self._core.boot_messages())
+
     def close(self):
         self._core = _Closed()
 
