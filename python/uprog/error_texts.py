@@ -1,7 +1,8 @@
-"""The Gold command interpreter's error texts by EC code (src/dialects/gold/interpreter_errors.def).
+"""The Gold command interpreter's error texts by EC code (its interpreter_errors.def).
 
 A Gold drive's own wire sends a refused command's code as one byte and `?;`, no text: a host
-shows the text from this table. tests/test_error_texts.py keeps it equal to the .def file."""
+shows the text from this table. Written by python/gen_error_texts.py; tests/test_error_texts.py
+keeps it equal to the .def file."""
 
 GOLD_EC_TEXTS = {
     2: 'Bad command',
