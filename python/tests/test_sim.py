@@ -75,7 +75,10 @@ def test_gold_auto_perr_recovers_without_raising():
     d.command("IL[1]=1")
     d.set_input(1, 1)  # an active inhibit: MO=1 is refused in main
     d.command("UI[1]=-5000")
-    d.run(0.1)
+    start = d.time_s
+    d.run(0.1)  # the error and AUTO_PERR come in it; the run goes on to its end all the same
+    assert d.time_s - start == pytest.approx(0.1, abs=1e-6)
+    assert "AUTO_PERR entered" in d.log[-1][1]
     assert d.query("UI[1]") == -5000  # AUTO_PERR waits 200 ms before it clears UI[1]
     d.run(0.3)
     assert d.query("MO") == 0 and d.query("UI[1]") == 0 and d.query("PS") == 1

@@ -114,9 +114,12 @@ class SimDrive:
 
     def run(self, seconds, *, step_s=DEFAULT_STEP_S):
         """Lets `seconds` of virtual time pass; ProgramError at the step the program stopped."""
-        us = _microseconds(seconds)
-        self._core.advance(us, max(_microseconds(step_s), 1))
-        self._check_program()
+        target = self._core.now_us() + _microseconds(seconds)
+        step = max(_microseconds(step_s), 1)
+        # The core stops at a step with a run-time error; one the program takes goes on.
+        while self._core.now_us() < target:
+            self._core.advance(target - self._core.now_us(), step)
+            self._check_program()
 
     def run_until(self, predicate, timeout=10.0, *, step_s=DEFAULT_STEP_S):
         """Runs until predicate() (or predicate(drive), or a drive expression such as "MS==0")
