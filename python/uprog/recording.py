@@ -2,7 +2,7 @@
 recorder's CSV file (docs/recorder.md, "The CSV file") read back, and the comparison of
 `uprog run --expect` (drive::compare in src/drive/recording.cpp) with its readable message."""
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from .errors import UprogError
 
@@ -120,7 +120,6 @@ class Difference:
     got: float = 0.0
     expected: float = 0.0
     tolerance: float = 0.0
-    extra: dict = field(default_factory=dict)
 
     def __str__(self):
         return self.text
