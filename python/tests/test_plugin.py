@@ -36,8 +36,9 @@ def test_examples_over_the_wire(uprog_binary):
         for dialect in DIALECTS:
             for scheme in ("tcp", "pty"):
                 sim = Sim(uprog_binary, dialect, pty=scheme == "pty")
-                command = pytest_command(os.path.join(EXAMPLES, f"test_{dialect}.py"),
-                                         "--uprog-drive", sim.urls[scheme],
+                # The whole folder: --uprog-dialect skips the other dialects' files.
+                command = pytest_command(EXAMPLES, "--uprog-drive", sim.urls[scheme],
+                                         "--uprog-dialect", dialect,
                                          "--uprog-binary", uprog_binary)
                 runs.append((dialect, scheme, sim, subprocess.Popen(
                     command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)))

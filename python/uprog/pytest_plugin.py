@@ -3,6 +3,8 @@
 - `sim_drive(dialect, program=None, **options)`: a fixture factory giving a SimDrive with the
   program loaded, or, with `--uprog-drive URL`, a Drive over that wire (a real drive or a
   running `uprog sim`) with the program downloaded: the same test runs on both.
+- `--uprog-dialect NAME` says which dialect that drive speaks: tests of the others are skipped,
+  so one run of a whole folder fits the drive on the bench.
 - `@pytest.mark.uprog_sim_only`: a test that needs what only the simulation does (inputs,
   faults, the recorder) is skipped against a wire drive.
 - `assert_recording_matches(recording, "ref.csv", tolerances={"PX": 2})`: the recorder's
@@ -23,6 +25,9 @@ def pytest_addoption(parser):
     group.addoption("--uprog-drive", metavar="URL", default=None,
                     help="run sim_drive tests against this drive: tcp://HOST:PORT, "
                          "udp://HOST:PORT, serial:///dev/ttyUSB0?baud=115200")
+    group.addoption("--uprog-dialect", metavar="NAME", default=None,
+                    help="the dialect of the --uprog-drive drive: sim_drive tests of another "
+                         "dialect are skipped")
     group.addoption("--uprog-binary", metavar="PATH", default=None,
                     help="the uprog binary that compiles programs for a wire drive")
 
@@ -69,6 +74,9 @@ def sim_drive(request):
 
     def make(dialect, program=None, **options):
         program = _resolve(request, program)
+        only = config.getoption("--uprog-dialect")
+        if url and only and dialect != only:
+            pytest.skip(f"a {dialect} test; the drive at {url} is {only}")
         if url:
             from .drive import connect
             drive = connect(url, dialect, uprog=config.getoption("--uprog-binary"))
