@@ -205,8 +205,10 @@ void Firmware::step_motion() {
     jog_until_ns_ = 0;
     axis_->stop();
   }
-  step_switch_homing();
-  step_analog_speed();
+  // Each is a call only while it has work (the usual cycle has neither): a search under way,
+  // OPMODE 1 or the speed it last commanded to forget.
+  if (switch_homing_.phase != SwitchHoming::kIdle) step_switch_homing();
+  if (opmode_ == 1 || analog_rpm_) step_analog_speed();
   if (homing_ && !axis_->profiler_moving()) {
     if (axis_->motor_on()) set_reference(homing_mark_);
     homing_ = false;
