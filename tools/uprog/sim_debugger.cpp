@@ -46,7 +46,7 @@ void SimDebugger::accept() {
     boost::system::error_code ignored;
     socket.set_option(tcp::no_delay(true), ignored);
     socket_ = std::make_unique<tcp::socket>(std::move(socket));
-    reader_ = debug::DapReader{};
+    reader_ = jsonrpc::MessageReader{};
     debug::DapOptions options;
     options.choose_dialect = [](const std::string&, const std::string&, std::string& error) {
       error = "this drive's debugger attaches to the program it runs";

@@ -1,10 +1,10 @@
-// DAP framing (dap_framing.h).
-#include "debug/dap_framing.h"
+// Content-Length framing (framing.h).
+#include "jsonrpc/framing.h"
 
 #include <cctype>
 #include <charconv>
 
-namespace uprog::debug {
+namespace uprog::jsonrpc {
 
 std::string frame_message(std::string_view body) {
   std::string out = "Content-Length: " + std::to_string(body.size()) + "\r\n\r\n";
@@ -12,7 +12,7 @@ std::string frame_message(std::string_view body) {
   return out;
 }
 
-std::optional<std::string> DapReader::next() {
+std::optional<std::string> MessageReader::next() {
   if (!error_.empty()) return std::nullopt;
   const size_t end = buffer_.find("\r\n\r\n");
   if (end == std::string::npos) {
@@ -59,4 +59,4 @@ std::optional<std::string> DapReader::next() {
   return message;
 }
 
-}  // namespace uprog::debug
+}  // namespace uprog::jsonrpc

@@ -1,17 +1,18 @@
-// The Debug Adapter Protocol's base framing: "Content-Length: N\r\n\r\n" and N bytes of JSON,
-// as a byte stream delivers it, in pieces of any size.
+// The base framing the Debug Adapter Protocol and the Language Server Protocol share:
+// "Content-Length: N\r\n\r\n" and N bytes of JSON, as a byte stream delivers it, in pieces of
+// any size.
 #pragma once
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
 
-namespace uprog::debug {
+namespace uprog::jsonrpc {
 
 // "Content-Length: 12\r\n\r\n" + body.
 std::string frame_message(std::string_view body);
 
-class DapReader {
+class MessageReader {
  public:
   // Takes bytes as they arrive.
   void feed(std::string_view bytes) { buffer_.append(bytes); }
@@ -27,4 +28,4 @@ class DapReader {
   std::string error_;
 };
 
-}  // namespace uprog::debug
+}  // namespace uprog::jsonrpc
