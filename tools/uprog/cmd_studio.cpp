@@ -1,5 +1,5 @@
 // `uprog studio [FILE]`: write, run, watch and debug a drive program in the browser. Serves the
-// page (built into the build folder, studio/) and its WebSockets from this process, with a
+// page (built into the build folder, studio-page/) and its WebSockets from this process, with a
 // simulated drive paced to the wall clock (src/studio/studio_app.h, docs/studio.md).
 #include <fmt/core.h>
 #include <unistd.h>
@@ -25,14 +25,14 @@ struct StudioCliOptions {
   bool open = false;
 };
 
-// The page's folder: --page, else the build's studio/ beside bin/ (build/bin/uprog finds
-// build/studio).
+// The page's folder: --page, else the build's studio-page/ beside bin/ (build/bin/uprog finds
+// build/studio-page).
 std::string page_folder(const std::string& given) {
   if (!given.empty()) return given;
   std::error_code ec;
   const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (ec) return "studio";
-  return (exe.parent_path().parent_path() / "studio").string();
+  if (ec) return "studio-page";
+  return (exe.parent_path().parent_path() / "studio-page").string();
 }
 
 // The browser, without waiting for it; its own output stays out of the studio's.
@@ -110,7 +110,7 @@ void add_studio(Options& cmd, Action& action) {
   add_dialect_option(cmd, options->dialect);
   cmd.option("--listen", options->listen,
              "HOST:PORT to serve the page on (default 127.0.0.1:8080; port 0 picks one)");
-  cmd.option("--page", options->page, "folder of the built page (default: the build's studio/)");
+  cmd.option("--page", options->page, "folder of the built page (default: the build's studio-page/)");
   cmd.flag("--open", options->open, "open the page in the browser (xdg-open)");
   cmd.on_chosen([&action, options] { action = [options] { return run_studio(*options); }; });
 }

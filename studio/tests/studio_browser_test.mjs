@@ -1,0 +1,208 @@
+// The studio in a real browser: playwright-core drives Debian's chromium headless against
+// `uprog studio` on each dialect's example. A broken line shows a diagnostic; build and run; the
+// position moves in the scope; a breakpoint stops the program, the call stack and a variable
+// show, a step changes the variable, continue lets it end; an input toggle runs Gold's
+// AUTO_I2 (manual 2.14.8). Screenshots go to SCREENSHOTS (the build folder).
+// Environment: UPROG (the binary), CHROMIUM (optional path), SCREENSHOTS (a folder).
+// Exit 77 (ctest's skip) when there is no chromium.
+import { spawn } from "node:child_process";
+import { existsSync, mkdirSync, readFileSync } from "node:fs";
+import { join, dirname } from "node:path";
+import { fileURLToPath } from "node:url";
+import { chromium } from "playwright-core";
+
+const root = join(dirname(fileURLToPath(import.meta.url)), "../..");
+const uprog = process.env.UPROG ?? join(root, "build/bin/uprog");
+const shots = process.env.SCREENSHOTS ?? join(root, "build/studio-screenshots");
+const browserPath = [process.env.CHROMIUM, "/usr/bin/chromium", "/usr/bin/chromium-browser"]
+  .find((p) => p && existsSync(p));
+if (!browserPath) {
+  console.log("SKIP: no chromium (scripts/install-deps installs Debian's)");
+  process.exit(77);
+}
+mkdirSync(shots, { recursive: true });
+
+// Each dialect's example, its position signal's target (from the example and its transcript),
+// and a line whose variable the breakpoint reads before and after a step.
+const cases = [
+  { dialect: "gold", file: "examples/gold/first_move.ehl", target: 100000,  // PA=100000
+    breakAt: "moves = moves + 1", variable: "moves", before: "0", after: "1" },
+  { dialect: "pdl", file: "examples/pdl/move_with_timeout.pdl", target: 10000,  // X_trg=10000
+    breakAt: "result=1;", variable: "result", before: "0", after: "1" },
+  { dialect: "pup", file: "examples/pup/point_to_point.pup", target: 20000,  // FAR
+    breakAt: "Moves = Moves + 1", variable: null },
+  { dialect: "st", file: "examples/st/move_sequence.st", target: 5000,  // ORDER 192 5000
+    breakAt: "ROUNDS := ROUNDS + 1;", variable: "ROUNDS", before: "0", after: "1" },
+];
+
+function startStudio(file) {
+  const child = spawn(uprog, ["studio", join(root, file), "--listen", "127.0.0.1:0"],
+    { stdio: ["ignore", "pipe", "inherit"] });
+  return new Promise((resolve, reject) => {
+    let text = "";
+    child.stdout.on("data", (d) => {
+      text += d;
+      const m = /studio on (http:\/\/\S+)/.exec(text);
+      if (m) resolve({ child, url: m[1] });
+    });
+    child.on("exit", (code) => reject(new Error(`uprog studio exited with ${code}`)));
+  });
+}
+
+async function expectText(page, testid, pattern, timeout = 10000) {
+  await page.waitForFunction(([id, source]) => new RegExp(source).test(
+    document.querySelector(`[data-testid=${id}]`)?.textContent ?? ""), [testid, pattern.source],
+  { timeout });
+}
+
+// The line number of the first line that contains `text`.
+function lineOf(file, text) {
+  return readFileSync(join(root, file), "utf8").split("\n").findIndex((l) => l.includes(text)) + 1;
+}
+
+// The cursor at the end of a line, scrolled into view (the editor draws only what is in view).
+async function goToLineEnd(page, line) {
+  await page.evaluate((n) => {
+    const view = window.studio.editor;
+    view.dispatch({ selection: { anchor: view.state.doc.line(n).to }, scrollIntoView: true });
+    view.focus();
+  }, line);
+}
+
+async function clickGutter(page, line) {
+  await goToLineEnd(page, line);
+  const number = page.locator(".cm-lineNumbers .cm-gutterElement", { hasText: new RegExp(`^${line}$`) });
+  const box = await number.boundingBox();
+  const gutter = await page.locator(".cm-breakpoint-gutter").boundingBox();
+  await page.mouse.click(gutter.x + gutter.width / 2, box.y + box.height / 2);
+}
+
+async function variableText(page, name) {
+  return page.locator(`[data-testid=variables] .variable[data-name="${name}"]`).first().textContent();
+}
+
+async function runCase(browser, c) {
+  const { child, url } = await startStudio(c.file);
+  const page = await browser.newPage({ viewport: { width: 1400, height: 900 } });
+  const errors = [];
+  page.on("pageerror", (e) => errors.push(e.message));
+  const shot = (step) => page.screenshot({ path: join(shots, `${c.dialect}_${step}.png`) });
+  try {
+    await page.goto(url);
+    await page.waitForFunction(() => window.studio?.ready);
+    await page.locator("[data-testid=editor] .cm-content").waitFor();
+
+    // A broken line: the language server's diagnostic shows; undone, it goes.
+    const line = lineOf(c.file, c.breakAt);
+    await goToLineEnd(page, line);
+    await page.keyboard.type(" )(");
+    await page.locator("[data-testid=diagnostics] li").first().waitFor({ timeout: 10000 });
+    await shot("1_diagnostic");
+    await page.keyboard.press("Control+z");
+    await page.waitForFunction(() => !document.querySelector("[data-testid=diagnostics] li"),
+      null, { timeout: 10000 });
+
+    // A breakpoint on the line, then build and run at x2.
+    await clickGutter(page, line);
+    await page.locator(".cm-breakpoint-gutter .bp:visible").waitFor();
+    await page.selectOption("[data-testid=speed]", "2");
+    await page.click("[data-testid=build]");
+    await expectText(page, "output", /build: downloaded/);
+    await page.click("[data-testid=run]");
+    await expectText(page, "output", /program started/);
+
+    // It stops there: the paused line, the call stack, the variable; the position has moved.
+    await page.locator("[data-testid=call-stack] li").first().waitFor({ timeout: 20000 });
+    await page.locator(".cm-paused-line").waitFor();
+    await shot("2_stopped");
+    const moved = await page.evaluate((target) => {
+      const s = window.studio.scope;
+      let max = -Infinity;
+      for (let i = s.oldest(); i < s.total; ++i) max = Math.max(max, s.at(0, i));
+      return max >= 0.99 * target;
+    }, c.target);
+    if (!moved) throw new Error(`${c.dialect}: the position never reached ${c.target} in the scope`);
+    if (c.variable) {
+      const before = await variableText(page, c.variable);
+      if (before !== `${c.variable} = ${c.before}`) throw new Error(`${c.dialect}: ${before}`);
+    } else {
+      await page.locator("[data-testid=variables] .variable").first().waitFor();
+    }
+    await page.click("[data-testid=debug-step-over]");
+    await page.locator("[data-testid=call-stack] li").first().waitFor({ timeout: 10000 });
+    if (c.variable) {
+      await page.waitForFunction(([name, value]) => document.querySelector(
+        `[data-testid=variables] .variable[data-name="${name}"]`)?.textContent === `${name} = ${value}`,
+      [c.variable, c.after], { timeout: 10000 });
+    }
+    await shot("3_stepped");
+    // Continue without the breakpoint: the program goes on.
+    await clickGutter(page, line);
+    await page.click("[data-testid=debug-continue]");
+    await page.waitForFunction(() => !document.querySelector(".cm-paused-line"), null, { timeout: 10000 });
+    await shot("4_continued");
+    if (errors.length) throw new Error(`${c.dialect}: page errors: ${errors.join("; ")}`);
+  } catch (e) {
+    await shot("failed");
+    const output = await page.locator("[data-testid=output]").textContent();
+    throw new Error(`${e.message}\noutput panel:\n${output}`);
+  } finally {
+    await page.close();
+    child.kill("SIGTERM");
+  }
+}
+
+// Manual 2.14.8: input 2 on and off runs AUTO_I2 (UI[1]=9000) and main moves to 9000.
+async function inputCase(browser) {
+  const { child, url } = await startStudio("examples/gold/2_14_auto_inputs.ehl");
+  const page = await browser.newPage({ viewport: { width: 1400, height: 900 } });
+  try {
+    await page.goto(url);
+    await page.waitForFunction(() => window.studio?.ready);
+    await page.selectOption("[data-testid=speed]", "5");
+    await page.click("[data-testid=build]");
+    await expectText(page, "output", /build: downloaded/);
+    await page.click("[data-testid=run]");
+    await expectText(page, "output", /program started/);
+    await page.click("[data-testid=input-2]");
+    await page.waitForTimeout(100);
+    await page.click("[data-testid=input-2]");
+    await page.waitForFunction(() => Math.abs(window.studio.scope.latest("position") - 9000) <= 2,
+      null, { timeout: 10000 });
+    // The terminal reads it too, as `uprog term` would.
+    await page.click("[data-testid=terminal]");
+    await page.keyboard.type("UI[1]\n");
+    await expectText(page, "terminal", /> UI\[1\]\s*0/);
+    await page.screenshot({ path: join(shots, "gold_5_input.png") });
+  } finally {
+    await page.close();
+    child.kill("SIGTERM");
+  }
+}
+
+const browser = await chromium.launch({ executablePath: browserPath, headless: true,
+  args: ["--no-sandbox"] });
+let failed = false;
+const only = process.argv[2];
+for (const c of cases) {
+  if (only && c.dialect !== only) continue;
+  const t0 = Date.now();
+  try {
+    await runCase(browser, c);
+    console.log(`ok ${c.dialect} (${((Date.now() - t0) / 1000).toFixed(1)} s)`);
+  } catch (e) {
+    failed = true;
+    console.log(`FAILED ${c.dialect}: ${e.message}`);
+  }
+}
+if (!only || only === "input") {
+  try {
+    await inputCase(browser);
+    console.log("ok gold input");
+  } catch (e) {
+    failed = true;
+    console.log(`FAILED gold input: ${e.message}`);
+  }
+}
+await browser.close();
+process.exit(failed ? 1 : 0);
