@@ -164,13 +164,8 @@ void StudioDrive::build(uint64_t page, const json& request) {
     if (r.ok && !out.debug_map.empty()) controller_->firmware().set_debug_map(out.debug_map);
     if (!r.ok) error = r.error;
     if (r.ok) options_.source = source;
-    // Loaded as a host loads it after a download (Gold's CC), so that the terminal can start it.
-    const std::string load = options_.dialect->load_line();
-    if (r.ok && !load.empty()) {
-      for (const dialect::Answer& a : service_->handle_line(load)) {
-        if (a.error != 0) error = load + ": " + a.text;
-      }
-    }
+    // Stored only: a dialect's load line (PDL's reset, the S300's PLCRUN) would start it too;
+    // Run (start_program) loads and starts it, with the debugger ready (docs/studio.md).
   }
   const bool ok = out.ok() && error.empty();
   send(page, {{"type", "build"}, {"ok", ok}, {"error", error}, {"diagnostics", diagnostics}});

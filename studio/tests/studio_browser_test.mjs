@@ -24,15 +24,18 @@ mkdirSync(shots, { recursive: true });
 
 // Each dialect's example, its position signal's target (from the example and its transcript),
 // and a line whose variable the breakpoint reads before and after a step.
+// `read`: a variable's value at the stop; `step`: a variable the step over the line changes (to
+// `after`, or just to another value).
 const cases = [
   { dialect: "gold", file: "examples/gold/first_move.ehl", target: 100000,  // PA=100000
-    breakAt: "moves = moves + 1", variable: "moves", before: "0", after: "1" },
+    breakAt: "moves = moves + 1", read: ["moves", "0"], step: ["moves", "1"] },
+  // The move ended in time (move_with_timeout.txt: result 1), so line 21 runs and sets t0.
   { dialect: "pdl", file: "examples/pdl/move_with_timeout.pdl", target: 10000,  // X_trg=10000
-    breakAt: "result=1;", variable: "result", before: "0", after: "1" },
+    breakAt: "t0=fclk-t0;", read: ["result", "1"], step: ["t0", null] },
   { dialect: "pup", file: "examples/pup/point_to_point.pup", target: 20000,  // FAR
-    breakAt: "Moves = Moves + 1", variable: null },
+    breakAt: "Moves = Moves + 1", read: null, step: null },
   { dialect: "st", file: "examples/st/move_sequence.st", target: 5000,  // ORDER 192 5000
-    breakAt: "ROUNDS := ROUNDS + 1;", variable: "ROUNDS", before: "0", after: "1" },
+    breakAt: "ROUNDS := ROUNDS + 1;", read: ["ROUNDS", "0"], step: ["ROUNDS", "1"] },
 ];
 
 function startStudio(file) {
@@ -122,18 +125,20 @@ async function runCase(browser, c) {
       return max >= 0.99 * target;
     }, c.target);
     if (!moved) throw new Error(`${c.dialect}: the position never reached ${c.target} in the scope`);
-    if (c.variable) {
-      const before = await variableText(page, c.variable);
-      if (before !== `${c.variable} = ${c.before}`) throw new Error(`${c.dialect}: ${before}`);
-    } else {
-      await page.locator("[data-testid=variables] .variable").first().waitFor();
+    await page.locator("[data-testid=variables] .variable").first().waitFor();
+    if (c.read) {
+      const text = await variableText(page, c.read[0]);
+      if (text !== `${c.read[0]} = ${c.read[1]}`) throw new Error(`${c.dialect}: read ${text}`);
     }
+    const before = c.step ? await variableText(page, c.step[0]) : null;
     await page.click("[data-testid=debug-step-over]");
     await page.locator("[data-testid=call-stack] li").first().waitFor({ timeout: 10000 });
-    if (c.variable) {
-      await page.waitForFunction(([name, value]) => document.querySelector(
-        `[data-testid=variables] .variable[data-name="${name}"]`)?.textContent === `${name} = ${value}`,
-      [c.variable, c.after], { timeout: 10000 });
+    if (c.step) {
+      const [name, after] = c.step;
+      await page.waitForFunction(([n, a, b]) => {
+        const t = document.querySelector(`[data-testid=variables] .variable[data-name="${n}"]`)?.textContent;
+        return a != null ? t === `${n} = ${a}` : t != null && t !== b;
+      }, [name, after, before], { timeout: 10000 });
     }
     await shot("3_stepped");
     // Continue without the breakpoint: the program goes on.

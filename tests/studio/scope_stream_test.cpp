@@ -48,7 +48,7 @@ std::vector<std::vector<double>> joined(const std::vector<ScopeBlock>& blocks) {
 TEST(ScopeStream, EveryServoCycleOfEightChannelsWithoutAGap) {
   Scope s;
   s.send({{"op", "build"}, {"source", s.source}});
-  s.send({{"op", "line"}, {"text", "XQ##main"}});
+  s.send({{"op", "start"}});
   const std::vector<std::string> names = {"PX", "VX", "PE", "DV[3]", "DV[2]", "IQ", "MS", "moves"};
   s.send({{"op", "scope"}, {"channels", names}});
   const json scope = s.recorder.last("scope");

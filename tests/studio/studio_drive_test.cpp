@@ -70,7 +70,8 @@ TEST(StudioDrive, BuildAndRunFirstMoveAtTheWallClock) {
   Studio s("gold", "first_move.ehl", example("gold/first_move.ehl"));
   const json built = s.request({{"op", "build"}, {"source", example("gold/first_move.ehl")}});
   EXPECT_EQ(s.recorder.last("build")["ok"], true) << built.dump();
-  s.request({{"op", "line"}, {"text", "XQ##main"}});
+  s.request({{"op", "start"}});
+  EXPECT_EQ(s.recorder.last("started")["ok"], true);
   const uint64_t started_us = s.drive.controller().now_us();  // after the line's own time
   s.run_for(1000 * kMs);
   EXPECT_EQ(s.drive.controller().now_us(), started_us + 1'000'000u);
@@ -158,7 +159,7 @@ TEST(StudioDrive, AnInputToggleRunsItsAutoRoutine) {
   const std::string source = example("gold/2_14_auto_inputs.ehl");
   Studio s("gold", "2_14_auto_inputs.ehl", source);
   s.request({{"op", "build"}, {"source", source}});
-  s.line("XQ##main");
+  s.request({{"op", "start"}});
   s.run_for(10 * kMs);
   EXPECT_EQ(s.request({{"op", "input"}, {"n", 2}, {"high", true}})["high"], true);
   s.run_for(10 * kMs);
