@@ -47,7 +47,7 @@ export class Scope {
     this.plot = new uPlot({
       width, height: 260, series,
       scales: { x: { time: false } },
-      axes: [{ label: "drive time (s)" }, {}],
+      axes: [{ label: "drive time (s)" }, { size: 80 }],
       cursor: { drag: { x: true, y: false } },
       hooks: { ready: [(u) => u.over.addEventListener("click", () => this.markCursor(u))] },
     }, [[], ...this.channels.map(() => [])], this.parent);
