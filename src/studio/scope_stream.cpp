@@ -10,8 +10,7 @@
 namespace uprog::studio {
 
 std::string ScopeStream::choose(const std::vector<std::string>& names) {
-  if (names.size() > kMaxChannels)
-    return "at most " + std::to_string(kMaxChannels) + " channels";
+  if (names.size() > kMaxChannels) return "at most " + std::to_string(kMaxChannels) + " channels";
   std::vector<drive::Channel> chosen;
   for (const std::string& name : names) {
     std::string why;
@@ -57,10 +56,9 @@ std::optional<ScopeBlock> ScopeStream::collect() {
 }
 
 std::string encode_block(const ScopeBlock& block) {
-  std::vector<double> words = {static_cast<double>(block.first_time_us),
-                               static_cast<double>(block.period_us),
-                               static_cast<double>(block.channels),
-                               static_cast<double>(block.samples())};
+  std::vector<double> words = {
+      static_cast<double>(block.first_time_us), static_cast<double>(block.period_us),
+      static_cast<double>(block.channels), static_cast<double>(block.samples())};
   words.insert(words.end(), block.values.begin(), block.values.end());
   static_assert(std::endian::native == std::endian::little, "the page reads little-endian words");
   std::string bytes(words.size() * sizeof(double), '\0');

@@ -42,13 +42,12 @@ void StudioApp::stop() {
 
 WebSocketHandler StudioApp::drive_socket(const std::shared_ptr<WebSocketPeer>& peer) {
   std::weak_ptr<WebSocketPeer> weak = peer;
-  const uint64_t page = drive_.connect(PageSink{
-      [weak](const std::string& text) {
-        if (auto p = weak.lock()) p->send_text(text);
-      },
-      [weak](const std::string& bytes) {
-        if (auto p = weak.lock()) p->send_binary(bytes);
-      }});
+  const uint64_t page = drive_.connect(PageSink{[weak](const std::string& text) {
+                                                  if (auto p = weak.lock()) p->send_text(text);
+                                                },
+                                                [weak](const std::string& bytes) {
+                                                  if (auto p = weak.lock()) p->send_binary(bytes);
+                                                }});
   return {[this, page](const std::string& message) { drive_.handle(page, message); },
           [this, page] { drive_.disconnect(page); }};
 }

@@ -39,8 +39,8 @@ StudioDrive::StudioDrive(StudioDriveOptions options) : options_(std::move(option
   c.wire_style = dialect::WireStyle::kReadable;
   controller_ = std::make_unique<controller::Controller>(c);
   service_ = std::make_unique<transport::ControllerService>(*controller_);
-  output_listener_ = service_->add_output_listener(
-      [this](std::string_view text) { output_.emplace_back(text); });
+  output_listener_ =
+      service_->add_output_listener([this](std::string_view text) { output_.emplace_back(text); });
   scope_ = std::make_unique<ScopeStream>(*controller_);
 }
 
@@ -70,14 +70,10 @@ json StudioDrive::hello() const {
   for (const drive::SignalInfo& s : drive::all_signals()) signals.push_back(s.name);
   json faults = json::array();
   for (const drive::FaultName& f : drive::fault_names()) faults.push_back(f.name);
-  return {{"type", "hello"},
-          {"dialect", std::string(options_.dialect->name())},
-          {"file", options_.file},
-          {"source", options_.source},
-          {"signals", signals},
-          {"inputs", drive::kInputCount},
-          {"faults", faults},
-          {"speed", speed_}};
+  return {{"type", "hello"},       {"dialect", std::string(options_.dialect->name())},
+          {"file", options_.file}, {"source", options_.source},
+          {"signals", signals},    {"inputs", drive::kInputCount},
+          {"faults", faults},      {"speed", speed_}};
 }
 
 json StudioDrive::status() const {
@@ -249,7 +245,8 @@ void StudioDrive::set_scope(uint64_t page, const json& request) {
   json channels = json::array();
   for (const drive::Channel& c : scope_->channels())
     channels.push_back({{"name", c.name}, {"unit", c.unit}});
-  send_all({{"type", "scope"}, {"channels", channels}, {"period_us", controller_->axis().period_us()}});
+  send_all(
+      {{"type", "scope"}, {"channels", channels}, {"period_us", controller_->axis().period_us()}});
 }
 
 void StudioDrive::tick(uint64_t wall_ns) {

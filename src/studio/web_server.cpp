@@ -2,12 +2,11 @@
 // files and hands an upgrade to a WebSocket session on its route.
 #include "studio/web_server.h"
 
-#include <utility>  // before Beast: Boost 1.74's asio misses it under g++ 12 (transport/asio.h)
-
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
 #include <deque>
+#include <utility>  // before Beast: Boost 1.74's asio misses it under g++ 12 (transport/asio.h)
 
 #include "studio/page_files.h"
 
@@ -42,8 +41,8 @@ class WebSocketSession final : public WebSocketPeer,
   void run(http::request<http::string_body> request, WebServer::Route route) {
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     ws_.read_message_max(state_->limits.max_message_bytes);
-    ws_.async_accept(request, [self = shared_from_this(), route = std::move(route)](
-                                  beast::error_code ec) mutable {
+    ws_.async_accept(request, [self = shared_from_this(),
+                               route = std::move(route)](beast::error_code ec) mutable {
       if (ec) return;
       self->handler_ = route(self);
       self->read();
@@ -65,8 +64,7 @@ class WebSocketSession final : public WebSocketPeer,
     websocket::close_reason why;
     why.code = code;
     why.reason = reason;
-    ws_.async_close(why,
-                    [self = shared_from_this()](beast::error_code) { self->gone(); });
+    ws_.async_close(why, [self = shared_from_this()](beast::error_code) { self->gone(); });
   }
 
  private:
@@ -148,10 +146,9 @@ class HttpSession final : public std::enable_shared_from_this<HttpSession> {
     parser_->header_limit(static_cast<uint32_t>(state_->limits.max_request_bytes));
     parser_->body_limit(state_->limits.max_request_bytes);
     stream_.expires_after(kIdleHttp);
-    http::async_read(stream_, buffer_, *parser_,
-                     [self = shared_from_this()](beast::error_code ec, size_t) {
-                       self->on_request(ec);
-                     });
+    http::async_read(
+        stream_, buffer_, *parser_,
+        [self = shared_from_this()](beast::error_code ec, size_t) { self->on_request(ec); });
   }
 
  private:
@@ -212,13 +209,13 @@ class HttpSession final : public std::enable_shared_from_this<HttpSession> {
   template <class Response>
   void send(std::shared_ptr<Response> response, bool keep_alive) {
     stream_.expires_after(kIdleHttp);
-    http::async_write(stream_, *response,
-                      [self = shared_from_this(), response, keep_alive](beast::error_code ec,
-                                                                         size_t) {
-                        // A client gone mid-download ends here; the server goes on.
-                        if (ec || !keep_alive) return self->close();
-                        self->read();
-                      });
+    http::async_write(
+        stream_, *response,
+        [self = shared_from_this(), response, keep_alive](beast::error_code ec, size_t) {
+          // A client gone mid-download ends here; the server goes on.
+          if (ec || !keep_alive) return self->close();
+          self->read();
+        });
   }
 
   void close() {

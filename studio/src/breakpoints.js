@@ -1,8 +1,8 @@
-// The editor's breakpoint gutter and paused line (CodeMirror 6): a click on a line's gutter sets
-// or clears a breakpoint; a right click asks for its condition and hit count. The markers move
+// The editor's breakpoint gutter and paused line (CodeMirror 6): a click on a line's gutter (or its
+// number) sets or clears a breakpoint; a right click asks for its condition and hit count. The markers move
 // with edits; the debugger reads them as line numbers.
 import { StateField, StateEffect, RangeSet } from "@codemirror/state";
-import { EditorView, GutterMarker, gutter, Decoration } from "@codemirror/view";
+import { EditorView, GutterMarker, gutter, lineNumbers, Decoration } from "@codemirror/view";
 
 const toggleBreakpoint = StateEffect.define({ map: (v, mapping) => ({ ...v, pos: mapping.mapPos(v.pos) }) });
 const setPaused = StateEffect.define();
@@ -68,7 +68,15 @@ export function breakpointGutter(onChange) {
     view.dispatch({ effects: toggleBreakpoint.of({ pos, spec: { condition, hitCondition } }) });
     onChange();
   };
+  const toggleAt = (view, line, event) => {
+    if (event.button !== 0) return false;
+    view.dispatch({ effects: toggleBreakpoint.of({ pos: line.from }) });
+    onChange();
+    return true;
+  };
   return [
+    // A click on a line's number toggles its breakpoint too, as in most editors.
+    lineNumbers({ domEventHandlers: { mousedown: toggleAt } }),
     breakpointField,
     pausedField,
     gutter({
@@ -76,12 +84,7 @@ export function breakpointGutter(onChange) {
       markers: (v) => v.state.field(breakpointField),
       initialSpacer: () => new BreakpointMarker({}),
       domEventHandlers: {
-        mousedown(view, line, event) {
-          if (event.button !== 0) return false;
-          view.dispatch({ effects: toggleBreakpoint.of({ pos: line.from }) });
-          onChange();
-          return true;
-        },
+        mousedown: toggleAt,
         contextmenu(view, line, event) {
           event.preventDefault();
           askAndSet(view, line.from);

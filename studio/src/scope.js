@@ -39,6 +39,8 @@ export class Scope {
 
   makePlot() {
     this.plot?.destroy();
+    this.readout?.remove();
+    this.readout = null;
     const series = [{ label: "time (s)" }];
     this.channels.forEach((c, i) => series.push({
       label: c.unit ? `${c.name} (${c.unit})` : c.name, stroke: kColors[i % kColors.length], width: 1,
@@ -108,6 +110,7 @@ export class Scope {
     if (!w) return;
     this.shown = w;
     this.plot.setData(this.decimated(w[0], w[1], this.plot.width));
+    this.showReadout();
   }
 
   // At most two points (min and max of each channel) per pixel column.
@@ -167,6 +170,18 @@ export class Scope {
     let text = `A: t=${a.x.toFixed(6)} s ${a.values.join(" ")}`;
     if (b) text += ` | B: t=${b.x.toFixed(6)} s ${b.values.join(" ")} | Δt=${(b.x - a.x).toFixed(6)} s`;
     this.cursorsBox.textContent = text;
+  }
+
+  // The latest value of every channel, as text under the plot.
+  showReadout() {
+    if (!this.readout) {
+      this.readout = document.createElement("div");
+      this.readout.className = "readout";
+      this.readout.dataset.testid = "scope-readout";
+      this.parent.append(this.readout);
+    }
+    this.readout.textContent = this.channels.map((c) =>
+      `${c.name} = ${this.latest(c.name)}${c.unit ? " " + c.unit : ""}`).join("   ");
   }
 
   // The last value of a channel by name (the tests' and the page's readout).

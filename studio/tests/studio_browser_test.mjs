@@ -125,6 +125,7 @@ async function runCase(browser, c) {
       return max >= 0.99 * target;
     }, c.target);
     if (!moved) throw new Error(`${c.dialect}: the position never reached ${c.target} in the scope`);
+    await expectText(page, "scope", /position = -?\d/);
     await page.locator("[data-testid=variables] .variable").first().waitFor();
     if (c.read) {
       const text = await variableText(page, c.read[0]);

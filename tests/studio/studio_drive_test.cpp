@@ -197,11 +197,10 @@ TEST(StudioDrive, FaultInjectionLatchesTheMotorFault) {
 TEST(StudioDrive, HostileMessagesAreAnsweredAndTheDriveGoesOn) {
   Studio s("gold");
   for (const std::string& bad :
-       {std::string("not json"), std::string("[1,2]"), std::string("{\"op\":5}"),
-        std::string("{}"), std::string("{\"op\":\"nope\"}"),
-        std::string("{\"op\":\"input\",\"n\":\"x\"}"), std::string("{\"op\":\"line\"}"),
-        std::string("{\"op\":\"build\",\"source\":7}"), std::string("\xff\xfe{"),
-        std::string("{\"op\":\"scope\",\"channels\":[1e300]}"),
+       {std::string("not json"), std::string("[1,2]"), std::string("{\"op\":5}"), std::string("{}"),
+        std::string("{\"op\":\"nope\"}"), std::string("{\"op\":\"input\",\"n\":\"x\"}"),
+        std::string("{\"op\":\"line\"}"), std::string("{\"op\":\"build\",\"source\":7}"),
+        std::string("\xff\xfe{"), std::string("{\"op\":\"scope\",\"channels\":[1e300]}"),
         std::string("{\"op\":\"switch\",\"n\":1,\"from\":1e999}")}) {
     s.recorder.clear();
     s.drive.handle(s.page, bad);

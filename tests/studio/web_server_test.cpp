@@ -3,8 +3,6 @@
 // mid-download, a path outside the page): each is answered or dropped, and the drive goes on.
 #include <gtest/gtest.h>
 
-#include <utility>  // before Beast (transport/asio.h)
-
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
@@ -12,6 +10,7 @@
 #include <fstream>
 #include <future>
 #include <thread>
+#include <utility>  // before Beast (transport/asio.h)
 
 #include "dialects/registry.h"
 #include "studio/studio_app.h"
@@ -208,7 +207,8 @@ TEST(StudioServer, AFloodIsAnsweredOrDroppedAndTheDriveGoesOn) {
   {
     Client c(server.port(), "/ws/drive");
     c.read();
-    beast::get_lowest_layer(c.ws).socket().set_option(asio::socket_base::receive_buffer_size(65536));
+    beast::get_lowest_layer(c.ws).socket().set_option(
+        asio::socket_base::receive_buffer_size(65536));
     for (int i = 0; i < kLines; ++i) {
       c.send(json({{"op", "line"}, {"text", std::to_string(i) + "+0"}}).dump());
       if (c.error) break;
@@ -263,8 +263,8 @@ TEST(StudioServer, TheLanguageServerAnswersOverItsSocket) {
 TEST(StudioServer, TheDebuggerAttachesToTheStudiosDrive) {
   Server server;
   Client c(server.port(), "/ws/dap");
-  c.send(json({{"seq", 1}, {"type", "request"}, {"command", "initialize"}, {"arguments", {}}})
-             .dump());
+  c.send(
+      json({{"seq", 1}, {"type", "request"}, {"command", "initialize"}, {"arguments", {}}}).dump());
   const json init = c.read();
   EXPECT_EQ(init["success"], true);
   EXPECT_EQ(init["body"]["supportsConditionalBreakpoints"], true);
@@ -277,8 +277,8 @@ TEST(StudioServer, TheDebuggerAttachesToTheStudiosDrive) {
   Client d(server.port(), "/ws/dap");
   while (!c.read().is_null()) {
   }
-  d.send(json({{"seq", 1}, {"type", "request"}, {"command", "initialize"}, {"arguments", {}}})
-             .dump());
+  d.send(
+      json({{"seq", 1}, {"type", "request"}, {"command", "initialize"}, {"arguments", {}}}).dump());
   EXPECT_EQ(d.read()["success"], true);
 }
 

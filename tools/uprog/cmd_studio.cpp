@@ -110,7 +110,8 @@ void add_studio(Options& cmd, Action& action) {
   add_dialect_option(cmd, options->dialect);
   cmd.option("--listen", options->listen,
              "HOST:PORT to serve the page on (default 127.0.0.1:8080; port 0 picks one)");
-  cmd.option("--page", options->page, "folder of the built page (default: the build's studio-page/)");
+  cmd.option("--page", options->page,
+             "folder of the built page (default: the build's studio-page/)");
   cmd.flag("--open", options->open, "open the page in the browser (xdg-open)");
   cmd.on_chosen([&action, options] { action = [options] { return run_studio(*options); }; });
 }
