@@ -100,7 +100,9 @@ function showStatus(m) {
   const rows = m.threads.map((t) => `<tr><td>${t.name}</td><td class="st-${t.status}">${t.status}</td>` +
     `<td>${t.where}</td></tr>`);
   $("threads").innerHTML = `<tr><th>thread</th><th>status</th><th>where</th></tr>${rows.join("")}`;
-  $("program-state").textContent = (m.running ? "running" : "not running") + (m.error ? ` — ${m.error}` : "");
+  const held = m.threads.some((t) => /breakpoint/i.test(t.status));
+  $("program-state").textContent = (held ? "held by the debugger" : m.running ? "running" : "not running") +
+    (m.error ? ` — ${m.error}` : "");
   m.inputs.forEach((high, i) => {
     const box = document.querySelector(`[data-testid=input-${i + 1}]`);
     if (box && box.checked !== high && document.activeElement !== box) box.checked = high;

@@ -131,6 +131,12 @@ async function runCase(browser, c) {
       const text = await variableText(page, c.read[0]);
       if (text !== `${c.read[0]} = ${c.read[1]}`) throw new Error(`${c.dialect}: read ${text}`);
     }
+    if (c.read) {
+      // A watch of the same variable evaluates to the same value in the stopped frame.
+      await page.fill("[data-testid=watch-input]", c.read[0]);
+      await page.press("[data-testid=watch-input]", "Enter");
+      await expectText(page, "watches", new RegExp(`^${c.read[0]} = ${c.read[1]}$`));
+    }
     const before = c.step ? await variableText(page, c.step[0]) : null;
     await page.click("[data-testid=debug-step-over]");
     await page.locator("[data-testid=call-stack] li").first().waitFor({ timeout: 10000 });
@@ -179,6 +185,10 @@ async function inputCase(browser) {
     await page.click("[data-testid=terminal]");
     await page.keyboard.type("UI[1]\n");
     await expectText(page, "terminal", /> UI\[1\]\s*0/);
+    // A fault injected latches its MF bit (drive/faults.h: overcurrent is 0x8).
+    await page.selectOption("[data-testid=fault-name]", "overcurrent");
+    await page.click("[data-testid=fault-inject]");
+    await expectText(page, "motor-fault", /MF = 0x[0-9a-f]*8$/);
     await page.screenshot({ path: join(shots, "gold_5_input.png") });
   } finally {
     await page.close();
