@@ -59,7 +59,7 @@ class WebSocketSession final : public WebSocketPeer,
     queued_bytes_ = 0;
     if (writing_) {
       // A close frame may not overlap a write: drop the connection instead.
-      return drop();
+      return drop_later();
     }
     websocket::close_reason why;
     why.code = code;
@@ -84,7 +84,7 @@ class WebSocketSession final : public WebSocketPeer,
     if (queued_bytes_ > state_->limits.max_unread_bytes) {
       // A peer that does not read what it asked for is dropped, not buffered without end.
       closing_ = true;
-      return drop();
+      return drop_later();
     }
     queue_.push_back({std::move(bytes), binary});
     if (!writing_) write();
@@ -102,6 +102,12 @@ class WebSocketSession final : public WebSocketPeer,
                       self->queue_.pop_front();
                       if (!self->queue_.empty() && !self->closed_) self->write();
                     });
+  }
+
+  // Dropped from a handler of its own: the caller (a route's send, deep in a drive's or a
+  // server's message handling) must not see its on_close run under its feet.
+  void drop_later() {
+    asio::post(ws_.get_executor(), [self = shared_from_this()] { self->drop(); });
   }
 
   void drop() {

@@ -232,6 +232,37 @@ TEST(StudioServer, AFloodIsAnsweredOrDroppedAndTheDriveGoesOn) {
   EXPECT_EQ(d.read()["type"], "hello");
 }
 
+// A page that asks for 8 channels as fast as the drive goes and reads nothing is dropped once the
+// unread samples pass the limit, instead of growing the server's memory; the drive goes on.
+TEST(StudioServer, APeerThatDoesNotReadIsDropped) {
+  WebLimits limits;
+  limits.max_unread_bytes = 64 * 1024;
+  Server server(limits);
+  {
+    Client c(server.port(), "/ws/drive");
+    beast::get_lowest_layer(c.ws).socket().set_option(asio::socket_base::receive_buffer_size(4096));
+    c.send(json({{"op", "scope"},
+                 {"channels", {"PX", "VX", "PE", "IQ", "MS", "DV[1]", "DV[2]", "DV[3]"}}})
+               .dump());
+    c.send(json({{"op", "speed"}, {"factor", "max"}}).dump());
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    // Kept, the stream would go on without end; dropped, it ends with what was in flight.
+    beast::flat_buffer buffer;
+    size_t read_bytes = 0;
+    while (!c.error && read_bytes < (size_t{64} << 20)) {
+      buffer.clear();
+      read_bytes += c.ws.read(buffer, c.error);
+    }
+    EXPECT_NE(c.error, beast::error_code{});
+    EXPECT_LT(read_bytes, size_t{64} << 20);
+  }
+  const uint64_t before = server.now_us();
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  EXPECT_GT(server.now_us(), before);
+  Client d(server.port(), "/ws/drive");
+  EXPECT_EQ(d.read()["type"], "hello");
+}
+
 TEST(StudioServer, TheLanguageServerAnswersOverItsSocket) {
   Server server;
   Client c(server.port(), "/ws/lsp");
