@@ -34,8 +34,10 @@ const cases = [
     breakAt: "t0=fclk-t0;", read: ["result", "1"], step: ["t0", null] },
   { dialect: "pup", file: "examples/pup/point_to_point.pup", target: 20000,  // FAR
     breakAt: "Moves = Moves + 1", read: null, step: null },
+  // A conditional breakpoint: the second round's (ROUNDS counts 3 rounds, move_sequence.st).
   { dialect: "st", file: "examples/st/move_sequence.st", target: 5000,  // ORDER 192 5000
-    breakAt: "ROUNDS := ROUNDS + 1;", read: ["ROUNDS", "0"], step: ["ROUNDS", "1"] },
+    breakAt: "ROUNDS := ROUNDS + 1;", condition: "ROUNDS = 1", read: ["ROUNDS", "1"],
+    step: ["ROUNDS", "2"] },
 ];
 
 function startStudio(file) {
@@ -72,12 +74,19 @@ async function goToLineEnd(page, line) {
   }, line);
 }
 
-async function clickGutter(page, line) {
+// A right click asks for the condition and the hit count (two prompts).
+async function clickGutter(page, line, answers) {
   await goToLineEnd(page, line);
   const number = page.locator(".cm-lineNumbers .cm-gutterElement", { hasText: new RegExp(`^${line}$`) });
   const box = await number.boundingBox();
   const gutter = await page.locator(".cm-breakpoint-gutter").boundingBox();
-  await page.mouse.click(gutter.x + gutter.width / 2, box.y + box.height / 2);
+  if (!answers) return page.mouse.click(gutter.x + gutter.width / 2, box.y + box.height / 2);
+  const replies = [...answers];
+  const reply = (dialog) => dialog.accept(replies.shift() ?? "");
+  page.on("dialog", reply);
+  await page.mouse.click(gutter.x + gutter.width / 2, box.y + box.height / 2, { button: "right" });
+  await page.waitForFunction(() => document.querySelector(".cm-breakpoint-gutter .bp-conditional"));
+  page.off("dialog", reply);
 }
 
 async function variableText(page, name) {
@@ -107,7 +116,7 @@ async function runCase(browser, c) {
       null, { timeout: 10000 });
 
     // A breakpoint on the line, then build and run at x2.
-    await clickGutter(page, line);
+    await clickGutter(page, line, c.condition ? [c.condition, ""] : null);
     await page.locator(".cm-breakpoint-gutter .bp:visible").waitFor();
     await page.selectOption("[data-testid=speed]", "2");
     await page.click("[data-testid=build]");
