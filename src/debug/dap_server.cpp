@@ -5,9 +5,9 @@
 
 #include <fmt/core.h>
 
+#include "drive/axis.h"
 #include "jsonrpc/dap_envelope.h"
 #include "jsonrpc/framing.h"
-#include "drive/axis.h"
 
 namespace uprog::debug {
 namespace {
@@ -32,8 +32,8 @@ void DapServer::handle(const std::string& message) {
       event("output", {{"category", "stderr"}, {"output", envelope.error + "\n"}});
       return;
     case jsonrpc::DapEnvelope::Kind::BadRequest:
-      send_(jsonrpc::frame_message(jsonrpc::to_text(jsonrpc::dap_error_response(
-          seq_++, envelope.seq, envelope.command, envelope.error))));
+      send_(jsonrpc::frame_message(jsonrpc::to_text(
+          jsonrpc::dap_error_response(seq_++, envelope.seq, envelope.command, envelope.error))));
       return;
     case jsonrpc::DapEnvelope::Kind::Request:
       break;

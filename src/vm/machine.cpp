@@ -235,9 +235,9 @@ RunError Machine::start(uint32_t thread, uint32_t routine, const Value* args, ui
   if (arg_count != r.inputs) return RunError::BadArguments;
   Thread& t = threads_[thread];
   reset_thread(t);
-  const RunError refused = arg_count > config_.stack   ? RunError::StackOverflow
-                           : config_.frames == 0       ? RunError::CallDepth
-                           : r.locals > config_.locals ? RunError::LocalsExhausted
+  const RunError refused = arg_count > config_.stack    ? RunError::StackOverflow
+                           : config_.frames == 0        ? RunError::CallDepth
+                           : r.locals > config_.locals  ? RunError::LocalsExhausted
                            : config_.stack < max_depth_ ? RunError::StackOverflow
                                                         : RunError::None;
   if (refused != RunError::None) return refused;  // the thread stays reset

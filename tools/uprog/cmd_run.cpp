@@ -33,10 +33,10 @@ struct RunOptions {
   std::string duration;  // empty: until the program has ended and the axis is still
   std::string limit = "60s";
   std::string budget = "1";
-  std::vector<std::string> inputs;    // N=LEVEL@TIME
-  std::vector<std::string> faults;    // NAME@TIME
-  WorldOptions world;                 // --switch, --analog
-  std::string record;                 // PX,VX,myvar
+  std::vector<std::string> inputs;  // N=LEVEL@TIME
+  std::vector<std::string> faults;  // NAME@TIME
+  WorldOptions world;               // --switch, --analog
+  std::string record;               // PX,VX,myvar
   std::string trigger = "immediate";
   std::string pretrigger = "0";
   std::string length;  // empty: the whole run (immediate, no pre-trigger) or 1000

@@ -36,7 +36,7 @@ struct SimOptions {
   bool safe_boot = false;
   std::string wire = "drive";
   bool log = false;
-  std::string dap;  // HOST:PORT of the debugger's port, empty for none
+  std::string dap;     // HOST:PORT of the debugger's port, empty for none
   WorldOptions world;  // --input, --switch, --analog: the world from the start
 };
 

@@ -60,19 +60,19 @@ void SimDebugger::accept() {
 }
 
 void SimDebugger::read() {
-  socket_->async_read_some(
-      asio::buffer(buffer_), [this](const boost::system::error_code& ec, std::size_t n) {
-        if (ec == asio::error::operation_aborted || !server_) return;
-        if (ec) return end_session();
-        reader_.feed(std::string_view(buffer_, n));
-        while (auto message = reader_.next()) {
-          server_->handle(*message);
-          if (server_->done()) return end_session();
-        }
-        for (const std::string& problem : reader_.take_problems())
-          fmt::print(stderr, "uprog sim: debugger: {}\n", problem);
-        read();
-      });
+  socket_->async_read_some(asio::buffer(buffer_),
+                           [this](const boost::system::error_code& ec, std::size_t n) {
+                             if (ec == asio::error::operation_aborted || !server_) return;
+                             if (ec) return end_session();
+                             reader_.feed(std::string_view(buffer_, n));
+                             while (auto message = reader_.next()) {
+                               server_->handle(*message);
+                               if (server_->done()) return end_session();
+                             }
+                             for (const std::string& problem : reader_.take_problems())
+                               fmt::print(stderr, "uprog sim: debugger: {}\n", problem);
+                             read();
+                           });
 }
 
 void SimDebugger::send(const std::string& framed) {

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "controller/controller.h"
-#include "jsonrpc/framing.h"
 #include "debug/dap_server.h"
+#include "jsonrpc/framing.h"
 #include "transport/asio.h"
 #include "transport/controller_service.h"
 

@@ -31,8 +31,7 @@ bool Firmware::homing_input_active() const {
 // / 2)", the following error the motor builds against it.
 bool Firmware::homing_criterion_met() const {
   if (switch_homing_.criterion != SwitchHoming::kMechanicalStop) return homing_input_active();
-  const double following =
-      axis_->reference_position_exact() - axis_->motor_state().position_counts;
+  const double following = axis_->reference_position_exact() - axis_->motor_state().position_counts;
   return std::fabs(following) > axis_->parameters().max_position_error_counts / 2.0;
 }
 
@@ -65,8 +64,8 @@ int32_t Firmware::start_switch_homing(int32_t nref) {
     if (values_.at("PEMAX") == 0) return kErrRange;
   } else {
     const int32_t wanted = h.criterion == SwitchHoming::kReferenceSwitch ? kModeReference
-                           : dref == 0                             ? kModeNegativeStop
-                                                                   : kModePositiveStop;
+                           : dref == 0                                   ? kModeNegativeStop
+                                                                         : kModePositiveStop;
     const auto it = std::find(input_modes_.begin(), input_modes_.end(), wanted);
     if (it == input_modes_.end()) return kErrRange;
     h.input = static_cast<int>(it - input_modes_.begin()) + 1;
