@@ -5,7 +5,13 @@ import os
 import sys
 
 _here = os.path.dirname(os.path.abspath(__file__))
-for _path in (os.path.join(_here, "build", "python"), os.path.join(_here, "python")):
+# Under ctest (UPROG names the build's uprog), PYTHONPATH already holds the module of the build
+# being tested, or none (the sanitizer build makes none): the tree's build/python would mix
+# another build's module in.
+_paths = [os.path.join(_here, "python")]
+if not os.environ.get("UPROG"):
+    _paths.insert(0, os.path.join(_here, "build", "python"))
+for _path in _paths:
     if os.path.isdir(_path) and _path not in sys.path:
         sys.path.insert(0, _path)
 

@@ -51,7 +51,8 @@ void add_lsp(Options& cmd, Action& action) {
   // VS Code's language client passes --stdio to a server it starts over stdio: the default here.
   auto stdio = std::make_shared<bool>(false);
   cmd.flag("--stdio", *stdio, "Serve over stdin/stdout (the default)");
-  cmd.on_chosen([&action, listen] {
+  cmd.on_chosen([&action, listen, stdio] {  // holds both for the parse
+    (void)stdio;
     action = [listen] {
       return listen->empty() ? serve_lsp(STDIN_FILENO, STDOUT_FILENO)
                              : serve_one_tcp_client("uprog lsp", *listen, serve_lsp);
