@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "debug/dap_server.h"
+#include "jsonrpc/fields.h"
 
 namespace uprog::debug {
 namespace {
@@ -23,23 +24,24 @@ uint32_t DapServer::reference(Reference r) {
   return static_cast<uint32_t>(references_.size());
 }
 
-std::pair<uint32_t, uint32_t> DapServer::frame_of(const json& frame_id) const {
-  if (frame_id.is_number_integer() && frame_id.get<int64_t>() > 0) {
-    const int64_t id = frame_id.get<int64_t>() - 1;
-    return {static_cast<uint32_t>(id / kFramesPerThread),
-            static_cast<uint32_t>(id % kFramesPerThread)};
+std::pair<uint32_t, uint32_t> DapServer::frame_of(const json* frame_id) const {
+  const int64_t id = frame_id == nullptr ? 0 : jsonrpc::as_integer(*frame_id, "frameId");
+  if (id > 0) {
+    return {static_cast<uint32_t>((id - 1) / kFramesPerThread),
+            static_cast<uint32_t>((id - 1) % kFramesPerThread)};
   }
   return {debugger_->last_stop().thread, 0};
 }
 
 void DapServer::stack_trace(const json& r) {
-  const json& args = r.at("arguments");
-  const int64_t id = args.at("threadId").get<int64_t>();
+  using namespace jsonrpc;
+  const json& args = r["arguments"];
+  const int64_t id = required_integer(args, "threadId", INT64_MIN, int64_t{UINT32_MAX} + 1);
   if (id < 1) return fail(r, "no thread " + std::to_string(id));
   const uint32_t thread = static_cast<uint32_t>(id - 1);
   const std::vector<StackFrame> frames = debugger_->stack(thread);
-  const size_t start = args.value("startFrame", size_t{0});
-  const size_t levels = args.value("levels", size_t{0});
+  const auto start = static_cast<size_t>(integer_or(args, "startFrame", 0, 0));
+  const auto levels = static_cast<size_t>(integer_or(args, "levels", 0, 0));
   json out = json::array();
   for (size_t i = start; i < frames.size() && (levels == 0 || i < start + levels); ++i) {
     const StackFrame& f = frames[i];
@@ -57,7 +59,7 @@ void DapServer::stack_trace(const json& r) {
 }
 
 void DapServer::scopes(const json& r) {
-  const auto [thread, depth] = frame_of(r.at("arguments").at("frameId"));
+  const auto [thread, depth] = frame_of(jsonrpc::find(r["arguments"], "frameId"));
   json out = json::array();
   out.push_back({{"name", "Locals"},
                  {"presentationHint", "locals"},
@@ -74,7 +76,7 @@ void DapServer::scopes(const json& r) {
 }
 
 void DapServer::variables(const json& r) {
-  const int64_t ref = r.at("arguments").at("variablesReference").get<int64_t>();
+  const int64_t ref = jsonrpc::required_integer(r["arguments"], "variablesReference");
   if (ref < 1 || static_cast<size_t>(ref) > references_.size())
     return fail(r, "no such variablesReference");
   const Reference at = references_[static_cast<size_t>(ref - 1)];
@@ -113,12 +115,13 @@ void DapServer::variables(const json& r) {
 }
 
 void DapServer::set_variable(const json& r) {
-  const json& args = r.at("arguments");
-  const int64_t ref = args.at("variablesReference").get<int64_t>();
+  const json& args = r["arguments"];
+  const int64_t ref = jsonrpc::required_integer(args, "variablesReference");
   if (ref < 1 || static_cast<size_t>(ref) > references_.size())
     return fail(r, "no such variablesReference");
   const Reference at = references_[static_cast<size_t>(ref - 1)];
-  const std::string name = args.at("name"), value = args.at("value");
+  const std::string name = jsonrpc::required_string(args, "name");
+  const std::string value = jsonrpc::required_string(args, "value");
   SetResult result;
   switch (at.kind) {
     case Reference::Kind::Locals:
@@ -149,9 +152,9 @@ void DapServer::set_variable(const json& r) {
 }
 
 void DapServer::evaluate(const json& r) {
-  const json& args = r.at("arguments");
-  const std::string expression = args.at("expression");
-  const std::string context = args.value("context", "");
+  const json& args = r["arguments"];
+  const std::string expression = jsonrpc::required_string(args, "expression");
+  const std::string context = jsonrpc::string_or(args, "context", "");
   if (context == "repl") {
     // The drive's command line, as a terminal would send the line. Stopped, it takes no time.
     const bool stopped = debugger_->state() == RunState::Stopped;
@@ -174,7 +177,7 @@ void DapServer::evaluate(const json& r) {
     }
     return;
   }
-  const auto [thread, depth] = frame_of(args.value("frameId", json()));
+  const auto [thread, depth] = frame_of(jsonrpc::find(args, "frameId"));
   const dialect::Evaluation e = debugger_->evaluate(thread, depth, expression);
   if (!e.ok) return fail(r, e.error);
   respond(r, {{"result", e.value}, {"variablesReference", 0}});

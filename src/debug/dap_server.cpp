@@ -5,20 +5,15 @@
 
 #include <fmt/core.h>
 
-#include "debug/dap_framing.h"
 #include "drive/axis.h"
+#include "jsonrpc/dap_envelope.h"
+#include "jsonrpc/framing.h"
 
 namespace uprog::debug {
 namespace {
 
 // DAP thread ids start at 1; the VM's threads at 0.
 int64_t thread_id(uint32_t thread) { return int64_t{thread} + 1; }
-
-// A program's output or a request's own text may hold bytes that are not UTF-8: they go out
-// replaced rather than ending the session.
-std::string dumped(const nlohmann::json& m) {
-  return m.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-}
 
 }  // namespace
 
@@ -30,30 +25,33 @@ DapServer::~DapServer() {
 
 void DapServer::handle(const std::string& message) {
   if (done_) return;  // after disconnect's response nothing more is said
-  json request;
-  try {
-    request = json::parse(message);
-  } catch (const json::exception& e) {
-    event("output", {{"category", "stderr"},
-                     {"output", std::string("not a JSON message: ") + e.what() + "\n"}});
-    return;
+  jsonrpc::DapEnvelope envelope = jsonrpc::check_dap_message(message);
+  switch (envelope.kind) {
+    case jsonrpc::DapEnvelope::Kind::NotRequest:
+      // No one to answer: the client's console is told, the session goes on.
+      event("output", {{"category", "stderr"}, {"output", envelope.error + "\n"}});
+      return;
+    case jsonrpc::DapEnvelope::Kind::BadRequest:
+      send_(jsonrpc::frame_message(jsonrpc::to_text(
+          jsonrpc::dap_error_response(seq_++, envelope.seq, envelope.command, envelope.error))));
+      return;
+    case jsonrpc::DapEnvelope::Kind::Request:
+      break;
   }
-  if (!request.is_object() || request.value("type", "") != "request" ||
-      !request.contains("command") || !request["command"].is_string()) {
-    event("output",
-          {{"category", "stderr"}, {"output", "a message that is not a request was ignored\n"}});
-    return;
-  }
-  if (request["command"] == "initialize") initialize_request_ = message;
+  const json& request = envelope.message;
+  if (envelope.command == "initialize") initialize_request_ = message;
   try {
     dispatch(request);
-  } catch (const json::exception& e) {
+  } catch (const jsonrpc::FieldError& e) {
     // A field of the wrong type: the request fails, the session goes on.
+    fail(request, std::string("malformed arguments: ") + e.what());
+  } catch (const json::exception& e) {
     fail(request, std::string("malformed arguments: ") + e.what());
   }
   report();
 }
 
+// `r` passed check_dap_message: its seq, command and arguments have their types.
 void DapServer::dispatch(const json& r) {
   const std::string command = r["command"];
   if (command == "initialize") return initialize(r);
@@ -91,28 +89,22 @@ void DapServer::dispatch(const json& r) {
 void DapServer::respond(const json& request, json body) {
   json m = {{"seq", seq_++},
             {"type", "response"},
-            {"request_seq", request.value("seq", int64_t{0})},
+            {"request_seq", request["seq"]},
             {"success", true},
             {"command", request["command"]}};
   if (!body.empty()) m["body"] = std::move(body);
-  send_(frame_message(dumped(m)));
+  send_(jsonrpc::frame_message(jsonrpc::to_text(m)));
 }
 
 void DapServer::fail(const json& request, const std::string& message) {
-  json m = {{"seq", seq_++},
-            {"type", "response"},
-            {"request_seq", request.value("seq", int64_t{0})},
-            {"success", false},
-            {"command", request.value("command", "")},
-            {"message", message},
-            {"body", {{"error", {{"id", 1}, {"format", message}}}}}};
-  send_(frame_message(dumped(m)));
+  send_(jsonrpc::frame_message(jsonrpc::to_text(jsonrpc::dap_error_response(
+      seq_++, request["seq"].get<int64_t>(), request["command"].get<std::string>(), message))));
 }
 
 void DapServer::event(const std::string& name, json body) {
   json m = {{"seq", seq_++}, {"type", "event"}, {"event", name}};
   if (!body.empty()) m["body"] = std::move(body);
-  send_(frame_message(dumped(m)));
+  send_(jsonrpc::frame_message(jsonrpc::to_text(m)));
 }
 
 void DapServer::initialize(const json& r) {
@@ -137,19 +129,21 @@ void DapServer::launch(const json& r) {
   if (drive_) return fail(r, "a program is already launched");
   if (options_.attach_target != nullptr)
     return fail(r, "this is a drive's own debugger: attach to the program it runs");
-  const json args = r.value("arguments", json::object());
-  const std::string program = args.value("program", "");
+  using namespace jsonrpc;
+  const json& args = r["arguments"];
+  const std::string program = string_or(args, "program", "");
   if (program.empty()) return fail(r, "launch needs \"program\": the path of the source file");
   std::string error;
-  const dialect::Dialect* d = options_.choose_dialect(args.value("dialect", ""), program, error);
+  const dialect::Dialect* d =
+      options_.choose_dialect(string_or(args, "dialect", ""), program, error);
   if (d == nullptr) return fail(r, error);
-  std::vector<std::string> input_items = args.value("inputs", std::vector<std::string>{});
+  std::vector<std::string> input_items = strings_or_empty(args, "inputs");
   auto inputs = parse_input_changes(input_items, &error);
   if (!inputs) return fail(r, error);
-  const std::vector<double> entry_args = args.value("args", std::vector<double>{});
-  const std::string entry = args.value("entry", "");
-  const bool stop_on_entry = args.value("stopOnEntry", false);
-  const bool realtime = args.value("realtime", false);
+  const std::vector<double> entry_args = numbers_or_empty(args, "args");
+  const std::string entry = string_or(args, "entry", "");
+  const bool stop_on_entry = bool_or(args, "stopOnEntry", false);
+  const bool realtime = bool_or(args, "realtime", false);
 
   controller::ControllerOptions o;
   o.dialect = d;
@@ -183,16 +177,16 @@ void DapServer::launch(const json& r) {
 void DapServer::attach(const json& r) {
   if (drive_) return fail(r, "a program is already being debugged");
   if (options_.attach_target == nullptr) {
-    const json args = r.value("arguments", json::object());
-    const std::string host = args.value("host", "127.0.0.1");
-    const int64_t port = args.value("port", int64_t{0});
+    const json& args = r["arguments"];
+    const std::string host = jsonrpc::string_or(args, "host", "127.0.0.1");
+    const int64_t port = jsonrpc::integer_or(args, "port", 0);
     if (!options_.connect_remote) return fail(r, "attach: no drive to attach to here");
     if (port < 1 || port > 65535)
       return fail(r, "attach needs \"port\": the debugger port of a `uprog sim --dap`");
     std::string error;
     if (!options_.connect_remote(host, static_cast<uint16_t>(port), error))
       return fail(r, "attach: " + error);
-    relay_start_ = {initialize_request_, dumped(r)};
+    relay_start_ = {initialize_request_, jsonrpc::to_text(r)};
     return;
   }
   drive_ = options_.attach_target;
@@ -253,22 +247,24 @@ void DapServer::program_output(const std::string& text) {
 }
 
 void DapServer::set_breakpoints(const json& r) {
-  const json& args = r.at("arguments");
-  const std::string path = args.at("source").value("path", args.at("source").value("name", ""));
+  using namespace jsonrpc;
+  const json& args = r["arguments"];
+  const json& source = required_object(args, "source");
+  const std::string path = string_or(source, "path", string_or(source, "name", ""));
   std::vector<BreakpointSpec> specs;
-  if (args.contains("breakpoints")) {
-    for (const json& b : args["breakpoints"]) {
+  if (find(args, "breakpoints") != nullptr) {
+    for (const json& b : array_or_empty(args, "breakpoints")) {
       BreakpointSpec s;
-      s.line = b.at("line").get<uint32_t>();
-      s.condition = b.value("condition", "");
-      s.hit_condition = b.value("hitCondition", "");
-      s.log_message = b.value("logMessage", "");
+      s.line = static_cast<uint32_t>(required_integer(b, "line", 0, UINT32_MAX));
+      s.condition = string_or(b, "condition", "");
+      s.hit_condition = string_or(b, "hitCondition", "");
+      s.log_message = string_or(b, "logMessage", "");
       specs.push_back(std::move(s));
     }
-  } else if (args.contains("lines")) {
-    for (const json& l : args["lines"]) {
+  } else {
+    for (const json& l : array_or_empty(args, "lines")) {
       BreakpointSpec s;
-      s.line = l.get<uint32_t>();
+      s.line = static_cast<uint32_t>(as_integer(l, "lines", 0, UINT32_MAX));
       specs.push_back(std::move(s));
     }
   }
@@ -284,11 +280,11 @@ void DapServer::set_breakpoints(const json& r) {
 
 void DapServer::set_function_breakpoints(const json& r) {
   std::vector<BreakpointSpec> specs;
-  for (const json& b : r.at("arguments").value("breakpoints", json::array())) {
+  for (const json& b : jsonrpc::array_or_empty(r["arguments"], "breakpoints")) {
     BreakpointSpec s;
-    s.function = b.at("name").get<std::string>();
-    s.condition = b.value("condition", "");
-    s.hit_condition = b.value("hitCondition", "");
+    s.function = jsonrpc::required_string(b, "name");
+    s.condition = jsonrpc::string_or(b, "condition", "");
+    s.hit_condition = jsonrpc::string_or(b, "hitCondition", "");
     specs.push_back(std::move(s));
   }
   json out = json::array();
@@ -303,8 +299,8 @@ void DapServer::set_function_breakpoints(const json& r) {
 
 void DapServer::set_exception_breakpoints(const json& r) {
   bool on = false;
-  for (const json& f : r.at("arguments").value("filters", json::array())) {
-    if (f.get<std::string>() == "error") on = true;
+  for (const std::string& f : jsonrpc::strings_or_empty(r["arguments"], "filters")) {
+    if (f == "error") on = true;
   }
   debugger_->set_break_on_error(on);
   respond(r, {{"breakpoints", json::array({{{"verified", true}}})}});
@@ -327,16 +323,16 @@ void DapServer::threads(const json& r) {
 
 void DapServer::step(const json& r, std::optional<StepKind> kind) {
   if (ended_) return fail(r, "the program has ended");
-  const json args = r.value("arguments", json::object());
-  const int64_t id = args.value("threadId", int64_t{1});
+  const json& args = r["arguments"];
+  const int64_t id = jsonrpc::integer_or(args, "threadId", 1, 0, int64_t{UINT32_MAX} + 1);
+  const bool single_thread = jsonrpc::bool_or(args, "singleThread", false);
   if (debugger_->state() != RunState::Stopped) {
     return fail(r, "the program is running");
   }
   references_.clear();
   stop_reported_ = false;
   if (kind) {
-    debugger_->step(static_cast<uint32_t>(std::max<int64_t>(id - 1, 0)), *kind,
-                    args.value("singleThread", false));
+    debugger_->step(static_cast<uint32_t>(std::max<int64_t>(id - 1, 0)), *kind, single_thread);
     respond(r);
   } else {
     debugger_->resume();

@@ -38,7 +38,8 @@ class DapServer {
   DapServer(DapOptions options, std::function<void(const std::string&)> send);
   ~DapServer();
 
-  // One incoming message's body. A text that is not a request gets an error event (an output).
+  // One incoming message's body, checked by jsonrpc::check_dap_message: a request with a wrong
+  // field gets a failed response, a text that is not a request an error event (an output).
   void handle(const std::string& message);
   // Lets a running program run for up to `budget_ns` of virtual time and sends what happened.
   // False when nothing runs: the server only waits for requests.
@@ -100,7 +101,7 @@ class DapServer {
   void flush_output();
   uint32_t reference(Reference r);
   // The thread and frame depth of a frameId (0: the stopped thread's innermost).
-  std::pair<uint32_t, uint32_t> frame_of(const json& frame_id) const;
+  std::pair<uint32_t, uint32_t> frame_of(const json* frame_id) const;
   bool running_program() const;
 
   DapOptions options_;

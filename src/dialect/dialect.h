@@ -13,6 +13,8 @@
 
 #include "bytecode/image.h"
 #include "dialect/firmware.h"
+#include "dialect/outline.h"
+#include "dialect/reference.h"
 #include "dialect/runtime.h"
 #include "support/diagnostic.h"
 #include "support/source.h"
@@ -109,6 +111,15 @@ class Dialect {
   virtual std::size_t max_download_bytes() const = 0;
   // The dialect's sample program (SampleProgram above).
   virtual const SampleProgram& sample_program() const = 0;
+  // Its reference for editors (dialect/reference.h): the language server's hover and
+  // completion. Whether names are matched ignoring case, as the dialect's compiler does.
+  virtual std::vector<ReferenceEntry> reference() const { return {}; }
+  virtual bool names_ignore_case() const { return false; }
+  // The declarations of a source as written (dialect/outline.h), for an editor's outline, go to
+  // definition, references, rename and completion; none by default.
+  virtual std::vector<SourceSymbol> outline(std::string_view /*text*/) const { return {}; }
+  // How its comments and strings are written, for the words an editor looks at.
+  virtual WordSyntax word_syntax() const { return {}; }
 };
 
 }  // namespace uprog::dialect

@@ -351,6 +351,7 @@ void Axis::place_world(const World& world) {
   any_switch_ = false;
   for (const PositionSwitch& sw : switches_) any_switch_ = any_switch_ || sw.placed;
   index_offset_counts_ = world.index_offset_counts;
+  end_stops_ = world.end_stops;
   follow_position_switches();
   for (int n = 1; n <= kInputCount; ++n) input_was_active_[n - 1] = input_active(n);
   inputs_changed_ = true;  // the next scan summarises the limits and inhibits that hold
@@ -365,6 +366,23 @@ void Axis::follow_position_switches() {
     if (high == level_bit(n)) continue;
     set_level_bit(n, high);
     inputs_changed_ = true;
+  }
+}
+
+void Axis::place_end_stops(double low_counts, double high_counts) {
+  end_stops_ = {true, std::min(low_counts, high_counts), std::max(low_counts, high_counts)};
+  meet_end_stops();
+}
+
+// An inelastic stop: the load stands at the stop and keeps no speed toward it.
+void Axis::meet_end_stops() {
+  MotorState& m = motor_state_;
+  if (m.position_counts < end_stops_.low_counts) {
+    m.position_counts = end_stops_.low_counts;
+    m.velocity_counts_per_s = std::max(m.velocity_counts_per_s, 0.0);
+  } else if (m.position_counts > end_stops_.high_counts) {
+    m.position_counts = end_stops_.high_counts;
+    m.velocity_counts_per_s = std::min(m.velocity_counts_per_s, 0.0);
   }
 }
 
@@ -573,6 +591,7 @@ void Axis::close_loop() {
   const double voltage = current_loop(params_.gains, loop_, current_command_a_,
                                       motor_state_.current_a, motor_.bus_voltage_v, dt);
   step_motor(motor_, motor_step(), motor_state_, voltage);
+  if (end_stops_.placed) meet_end_stops();
 }
 
 inline void Axis::check_faults() {
@@ -746,6 +765,7 @@ uint32_t Axis::step() {
                                 motor_state_.velocity_counts_per_s * motor_step().rad_per_count;
       step_motor(motor_, motor_step(), motor_state_, back_emf_v);
       motor_state_.current_a = 0.0;
+      if (end_stops_.placed) meet_end_stops();
     }
     hold_reference_at_feedback();
   }

@@ -161,14 +161,23 @@ class Axis {
     bool placed = false;
     double from_counts = 0.0, to_counts = 0.0;
   };
+  // Mechanical end stops: the load cannot leave [low, high] (motor counts). A motor driven into
+  // one stands there (its speed toward it is lost) while the reference runs on, so the
+  // following error grows against it. Placed again, they replace the last ones.
+  struct EndStops {
+    bool placed = false;
+    double low_counts = 0.0, high_counts = 0.0;
+  };
+  void place_end_stops(double low_counts, double high_counts);
   // All of the above: the world outside the drive, which a reset does not change, so that the
   // controller carries it to the fresh axes.
   struct World {
     uint32_t input_levels = 0;  // bit n-1 for input n
     std::array<PositionSwitch, kInputCount> switches{};
     double index_offset_counts = 0.0;
+    EndStops end_stops{};
   };
-  World world() const { return {input_levels_, switches_, index_offset_counts_}; }
+  World world() const { return {input_levels_, switches_, index_offset_counts_, end_stops_}; }
   // The world as a drive finds it at power-up: the inputs start at its levels (no edge).
   void place_world(const World& world);
 
@@ -221,6 +230,7 @@ class Axis {
   void stop_with(double decel_counts_per_s2);
   uint32_t scan_inputs();
   void follow_position_switches();
+  void meet_end_stops();
   void advance_profile();
   void advance_pt();
   void enforce_limits();
@@ -306,6 +316,7 @@ class Axis {
   std::array<PositionSwitch, kInputCount> switches_{};
   bool any_switch_ = false;
   double index_offset_counts_ = 0.0;
+  EndStops end_stops_;
   HomingSettings homing_settings_;
   Homing homing_;
   int32_t home_capture_ = 0;

@@ -213,6 +213,8 @@ class Runner {
         fail(number, "index needs 'index OFFSET' in motor counts");
       else
         drive().axis().place_index_pulse(offset);
+    } else if (directive == "endstops") {
+      end_stops(number, arg);
     } else if (directive == "record") {
       if (const std::string why = record_directive(drive(), arg); !why.empty())
         fail(number, "record: " + why);
@@ -419,6 +421,20 @@ class Runner {
       return;
     }
     drive().axis().place_position_switch(n, from, to);
+  }
+
+  // An extension: "endstops LOW HIGH": mechanical stops keep the load within [LOW, HIGH] motor
+  // counts (docs/drive.md).
+  void end_stops(int number, const std::string& arg) {
+    const std::string both = trim(arg);
+    const size_t a = both.find_first_of(" \t");
+    double low = 0, high = 0;
+    if (a == std::string::npos || !parse_number(both.substr(0, a), low) ||
+        !parse_number(both.substr(a), high) || low > high) {
+      fail(number, "endstops needs 'endstops LOW HIGH' in motor counts, LOW not above HIGH");
+      return;
+    }
+    drive().axis().place_end_stops(low, high);
   }
 
   void input(int number, const std::string& arg) {

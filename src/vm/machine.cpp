@@ -188,6 +188,28 @@ void Machine::reset_thread(Thread& t) {
   t.status_before_halt = ThreadStatus::Running;
 }
 
+// The frame of `routine` on t: its inputs, which end at `base` on the stack, become its first
+// locals and the others start at zero. The checks are the caller's (enter(), start()).
+inline void Machine::push_frame(Thread& t, uint32_t routine, Value* base, uint32_t return_pc,
+                                uint8_t nargout, FrameKind kind) {
+  const RoutineInfo& r = routines_[routine];
+  Frame& f = t.frames[t.frame_count++];
+  f.return_pc = return_pc;
+  f.routine = routine;
+  f.locals = t.locals_top;
+  f.stack_base = base;
+  f.saved_wake_us = t.wake_us;
+  f.nargout = nargout;
+  f.kind = kind;
+  f.saved_status = t.status;
+  Value* locals = t.locals_top;
+  for (uint32_t i = 0; i < r.inputs; ++i) locals[i] = base[i];
+  for (uint32_t i = r.inputs; i < r.locals; ++i) locals[i] = Value::of_bits(0);
+  t.locals_top = locals + r.locals;
+  t.sp = base;
+  t.pc = r.entry;
+}
+
 bool Machine::enter(Thread& t, uint32_t routine, uint32_t return_pc, uint8_t nargout,
                     FrameKind kind, RunError& error) {
   const RoutineInfo& r = routines_[routine];
@@ -204,38 +226,29 @@ bool Machine::enter(Thread& t, uint32_t routine, uint32_t return_pc, uint8_t nar
     error = RunError::StackOverflow;
     return false;
   }
-  Frame& f = t.frames[t.frame_count++];
-  f.return_pc = return_pc;
-  f.routine = routine;
-  f.locals = t.locals_top;
-  f.stack_base = base;
-  f.saved_wake_us = t.wake_us;
-  f.nargout = nargout;
-  f.kind = kind;
-  f.saved_status = t.status;
-  Value* locals = t.locals_top;
-  for (uint32_t i = 0; i < r.inputs; ++i) locals[i] = base[i];
-  for (uint32_t i = r.inputs; i < r.locals; ++i) locals[i] = Value::of_bits(0);
-  t.locals_top = locals + r.locals;
-  t.sp = base;
-  t.pc = r.entry;
+  push_frame(t, routine, base, return_pc, nargout, kind);
   return true;
 }
 
+// A drive's scheduler starts a routine for every run of a cyclic task (the S300's PLC62 16 000
+// times a virtual second), so the checks enter() makes are made here on what they come to for a
+// thread just reset: no frame, all its locals free, the stack empty but for the inputs.
 RunError Machine::start(uint32_t thread, uint32_t routine, const Value* args, uint32_t arg_count) {
   if (!loaded_ || thread >= thread_count_) return RunError::NoSuchThread;
   if (routine >= routine_count_) return RunError::NoSuchRoutine;
-  if (arg_count != routines_[routine].inputs) return RunError::BadArguments;
+  const RoutineInfo& r = routines_[routine];
+  if (arg_count != r.inputs) return RunError::BadArguments;
   Thread& t = threads_[thread];
   reset_thread(t);
-  if (arg_count > config_.stack) return RunError::StackOverflow;
-  for (uint32_t i = 0; i < arg_count; ++i) *t.sp++ = args[i];
-  RunError error = RunError::None;
+  const RunError refused = arg_count > config_.stack    ? RunError::StackOverflow
+                           : config_.frames == 0        ? RunError::CallDepth
+                           : r.locals > config_.locals  ? RunError::LocalsExhausted
+                           : config_.stack < max_depth_ ? RunError::StackOverflow
+                                                        : RunError::None;
+  if (refused != RunError::None) return refused;  // the thread stays reset
+  for (uint32_t i = 0; i < arg_count; ++i) t.stack[i] = args[i];
   set_status(t, ThreadStatus::Running);
-  if (!enter(t, routine, 0, 0, FrameKind::Call, error)) {
-    reset_thread(t);
-    return error;
-  }
+  push_frame(t, routine, t.stack, 0, 0, FrameKind::Call);
   t.last_error = RunError::None;
   return RunError::None;
 }

@@ -241,6 +241,8 @@ class Machine {
   // which is then set in `error`.
   bool enter(Thread& t, uint32_t routine, uint32_t return_pc, uint8_t nargout, FrameKind kind,
              RunError& error);
+  void push_frame(Thread& t, uint32_t routine, Value* base, uint32_t return_pc, uint8_t nargout,
+                  FrameKind kind);  // enter()'s frame, its checks made
   // Delivers a run-time error: true when a try block caught it and the thread continues.
   bool raise(Thread& t, RunError error, int32_t detail);
   void reset_thread(Thread& t);

@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
-#include "debug/dap_framing.h"
 #include "dialects/gold/dialect.h"
+#include "jsonrpc/framing.h"
 
 namespace uprog::debug {
 namespace {
@@ -18,7 +18,7 @@ const std::string kScenario = UPROG_SOURCE_DIR "/tests/debug/programs/scenario.e
 
 struct Client {
   std::vector<json> out;
-  DapReader reader;
+  jsonrpc::MessageReader reader;
   DapServer server{{[](const std::string& name, const std::string&,
                        std::string& error) -> const dialect::Dialect* {
                      if (name.empty() || name == "gold") return &gold::dialect();
@@ -386,23 +386,6 @@ TEST(DapServer, TerminateThenDisconnect) {
   EXPECT_TRUE(c.server.done());
 }
 
-TEST(DapFraming, MessagesInPiecesAndBadHeaders) {
-  DapReader r;
-  const std::string framed = frame_message(R"({"a":1})") + frame_message("{}");
-  for (char ch : framed) r.feed(std::string_view(&ch, 1));
-  EXPECT_EQ(r.next(), std::optional<std::string>(R"({"a":1})"));
-  EXPECT_EQ(r.next(), std::optional<std::string>("{}"));
-  EXPECT_EQ(r.next(), std::nullopt);
-  DapReader bad;
-  bad.feed("Content-Type: x\r\n\r\n{}");
-  EXPECT_EQ(bad.next(), std::nullopt);
-  EXPECT_NE(bad.error().find("Content-Length"), std::string::npos);
-  DapReader huge;
-  huge.feed("Content-Length: 99999999999\r\n\r\n");
-  EXPECT_EQ(huge.next(), std::nullopt);
-  EXPECT_FALSE(huge.error().empty());
-}
-
 }  // namespace
 }  // namespace uprog::debug
 
@@ -503,7 +486,7 @@ TEST(DapServer, AttachStopsTheDrivesRunningProgramAndItsTime) {
   ASSERT_EQ(drive.start_program("main"), "");
   drive.advance(100'000);
   std::vector<json> out;
-  DapReader reader;
+  jsonrpc::MessageReader reader;
   DapOptions options;
   options.attach_target = &drive;
   DapServer server(options, [&](const std::string& framed) {

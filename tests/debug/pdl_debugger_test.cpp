@@ -7,9 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "debug/dap_framing.h"
 #include "debug/dap_server.h"
 #include "dialects/pdl/dialect.h"
+#include "jsonrpc/framing.h"
 
 namespace uprog::debug {
 namespace {
@@ -22,7 +22,7 @@ constexpr int64_t kTask1 = 2;  // a DAP thread id is the VM's thread + 1: task t
 
 struct Client {
   std::vector<json> out;
-  DapReader reader;
+  jsonrpc::MessageReader reader;
   DapServer server{{[](const std::string&, const std::string&,
                        std::string&) -> const dialect::Dialect* { return &pdl::dialect(); }},
                    [this](const std::string& framed) {

@@ -1,4 +1,5 @@
-// Digital inputs and their functions (IL), outputs, events, status words and time.
+// Digital inputs and their functions (IL), outputs, events, status words and time; the world's end
+// stops.
 #include <gtest/gtest.h>
 
 #include "axis_helpers.h"
@@ -186,6 +187,37 @@ TEST(drive_axis_io, TimeAdvancesByTsAndWraps) {
   axis.step();
   EXPECT_EQ(axis.time_us(), static_cast<uint32_t>(0xFFFFFF00u + 600u));
   EXPECT_EQ(axis.set_period_us(10), Status::kOutOfRange);
+}
+
+}  // namespace
+}  // namespace uprog::drive
+
+namespace uprog::drive {
+namespace {
+
+// The world's end stops (docs/drive.md): a move beyond one ends at the stop itself, and the
+// reference running on builds the following error against it.
+TEST(drive_axis_world, EndStopHoldsTheLoadAndTheFollowingErrorGrows) {
+  Axis axis;
+  axis.parameters().max_position_error_counts = 2000000000;  // watch PE grow, no fault
+  axis.parameters().max_velocity_error_counts_per_s = 2000000000;
+  axis.place_end_stops(-1000.0, 5000.0);
+  testing::enable(axis);
+  testing::set_motion(axis, 50000, 1000000, 1000000);
+  axis.set_absolute_target(20000);
+  axis.begin();
+  testing::run_us(axis, 1000000);  // the profile reaches 20000 within 0.45 s
+  EXPECT_EQ(axis.position(), 5000);
+  EXPECT_EQ(axis.position_error(), 15000);  // the reference at 20000, the load at the stop
+  // The world outlives a fresh axis (the controller's reboot carries it).
+  Axis fresh;
+  fresh.place_world(axis.world());
+  testing::enable(fresh);
+  testing::set_motion(fresh, 50000, 1000000, 1000000);
+  fresh.set_absolute_target(-8000);
+  fresh.begin();
+  testing::run_us(fresh, 1000000);
+  EXPECT_EQ(fresh.position(), -1000);
 }
 
 }  // namespace

@@ -7,8 +7,8 @@
 
 #include "bytecode/image.h"
 #include "compile_bytes.h"
+#include "dialect/dl_lines.h"
 #include "dialects/gold/compile.h"
-#include "dialects/gold/download_protocol.h"
 #include "dialects/gold/interpreter_errors.h"
 #include "gold_drive.h"
 #include "support/files.h"
@@ -43,8 +43,9 @@ const std::string kProgramB = "int b;\nfunction main()\n  b = 22;\nreturn\n";
 
 TEST(controller_download, LinesStayWithinTheLineLimit) {
   const std::vector<uint8_t> image(1000, 0xAB);
-  const auto lines = gold::download_lines(image);
-  ASSERT_EQ(lines.size(), 2u + (1000 + gold::kDownloadChunkBytes - 1) / gold::kDownloadChunkBytes);
+  const auto lines = dialect::download_lines(image);
+  ASSERT_EQ(lines.size(),
+            2u + (1000 + dialect::kDownloadChunkBytes - 1) / dialect::kDownloadChunkBytes);
   EXPECT_EQ(lines.front(), "DL##BEGIN=1000");
   EXPECT_EQ(lines.back(), "DL##END");
   for (const auto& l : lines) EXPECT_LE(l.size(), 511u);
@@ -58,7 +59,7 @@ TEST(controller_download, AnImageSentInLinesIsStoredAndRuns) {
   auto host_session = drive.open_session();
   dialect::Session& host = *host_session;
   const auto image = compile_bytes(kProgramA);
-  EXPECT_EQ(send_all(host, gold::download_lines(image)), "");
+  EXPECT_EQ(send_all(host, dialect::download_lines(image)), "");
   EXPECT_EQ(read_binary_file(dir + "/program.upi"), image);
   EXPECT_EQ(one(host, "CC"), "");
   EXPECT_EQ(one(host, "XQ##main"), "");
@@ -66,7 +67,7 @@ TEST(controller_download, AnImageSentInLinesIsStoredAndRuns) {
   EXPECT_EQ(one(host, "a"), "11");
   // Lower case, blanks and a whole transfer in one host line (`;`-separated) work alike.
   const auto b = compile_bytes(kProgramB);
-  auto lines = gold::download_lines(b);
+  auto lines = dialect::download_lines(b);
   lines[0] = "dl ## begin = " + std::to_string(b.size());
   std::string joined;
   for (const auto& l : lines) joined += l + ";";
@@ -83,10 +84,10 @@ TEST(controller_download, BadTransfersAreRefusedAndThePreviousProgramStays) {
   auto host_session = drive.open_session();
   dialect::Session& host = *host_session;
   const auto a = compile_bytes(kProgramA);
-  ASSERT_EQ(send_all(host, gold::download_lines(a)), "");
+  ASSERT_EQ(send_all(host, dialect::download_lines(a)), "");
 
   const auto b = compile_bytes(kProgramB);
-  const auto good = gold::download_lines(b);
+  const auto good = dialect::download_lines(b);
   EXPECT_EQ(one(host, "DL##END"), "!210");  // nothing is in progress any more
   EXPECT_EQ(one(host, "DL=0102"), "!210");
   EXPECT_EQ(one(host, "DL##BEGIN=0"), "!211");
@@ -121,9 +122,9 @@ TEST(controller_download, BadTransfersAreRefusedAndThePreviousProgramStays) {
   // The right size but corrupt bytes: the CRC refuses it.
   auto corrupt = b;
   corrupt[corrupt.size() / 2] ^= 0x40;
-  EXPECT_EQ(send_all(host, gold::download_lines(corrupt)), "!213");
+  EXPECT_EQ(send_all(host, dialect::download_lines(corrupt)), "!213");
   // Not an image at all.
-  EXPECT_EQ(send_all(host, gold::download_lines(std::vector<uint8_t>(300, 7))), "!213");
+  EXPECT_EQ(send_all(host, dialect::download_lines(std::vector<uint8_t>(300, 7))), "!213");
   // Other lines between DL lines are served as usual; the transfer goes on.
   EXPECT_EQ(one(host, good[0]), "");
   EXPECT_EQ(one(host, "3+4"), "7");
@@ -138,7 +139,7 @@ TEST(controller_download, EachHostHasItsOwnTransfer) {
   auto first_session = drive.open_session(), second_session = drive.open_session();
   dialect::Session &first = *first_session, &second = *second_session;
   const auto image = compile_bytes(kProgramA);
-  const auto lines = gold::download_lines(image);
+  const auto lines = dialect::download_lines(image);
   ASSERT_GE(lines.size(), 3u);
   EXPECT_EQ(one(first, lines[0]), "");
   EXPECT_EQ(one(second, lines[1]), "!210");  // the second host has begun nothing
@@ -157,7 +158,7 @@ TEST(controller_download, AnUnwritableStateDirIsAStorageError) {
   dialect::Session& host = *host_session;
   // A directory where the program file would go makes the atomic replacement fail.
   std::filesystem::create_directories(dir + "/program.upi/x");
-  EXPECT_EQ(send_all(host, gold::download_lines(compile_bytes(kProgramA))), "!206");
+  EXPECT_EQ(send_all(host, dialect::download_lines(compile_bytes(kProgramA))), "!206");
   EXPECT_TRUE(std::filesystem::is_directory(dir + "/program.upi"));
   std::filesystem::remove_all(dir);
 }

@@ -15,8 +15,8 @@
 #include <thread>
 
 #include "bytecode/image.h"
+#include "dialect/dl_lines.h"
 #include "dialects/gold/compile.h"
-#include "dialects/gold/download_protocol.h"
 #include "dialects/registry.h"
 #include "sim_process.h"
 #include "support/files.h"
@@ -167,8 +167,8 @@ TEST(transport_sim_kill, SigkillDuringDownloadOrSvNeverLosesOrMixesTheStoredStat
 
   const std::vector<uint8_t> images[2] = {program_image(0), program_image(1)};
   ASSERT_NE(images[0], images[1]);
-  const std::vector<std::string> lines[2] = {gold::download_lines(images[0]),
-                                             gold::download_lines(images[1])};
+  const std::vector<std::string> lines[2] = {dialect::download_lines(images[0]),
+                                             dialect::download_lines(images[1])};
   const std::string dir = temp_state_dir();
   struct RemoveAtEnd {
     std::string dir;

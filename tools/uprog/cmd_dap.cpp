@@ -11,29 +11,19 @@
 #include <csignal>
 
 #include "commands.h"
-#include "debug/dap_framing.h"
 #include "debug/dap_server.h"
 #include "dialects/registry.h"
+#include "jsonrpc/fields.h"
+#include "jsonrpc/framing.h"
+#include "stream_server.h"
 #include "transport/asio.h"
 #include "transport/tcp_connect.h"
-#include "transport/tcp_server.h"
 
 namespace uprog::cli {
 namespace {
 
 // Virtual time per slice while running as fast as it can: requests are read between slices.
 constexpr uint64_t kSliceNs = 10'000'000;
-
-bool write_all(int fd, const std::string& bytes) {
-  size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<size_t>(n);
-  }
-  return true;
-}
 
 const dialect::Dialect* dialect_for(const std::string& name, const std::string& path,
                                     std::string& error) {
@@ -51,7 +41,7 @@ const dialect::Dialect* dialect_for(const std::string& name, const std::string& 
 struct Remote {
   boost::asio::io_context io;
   boost::asio::ip::tcp::socket socket{io};
-  debug::DapReader reader;
+  jsonrpc::MessageReader reader;
   int fd() { return socket.is_open() ? socket.native_handle() : -1; }
 };
 
@@ -70,15 +60,18 @@ bool relay_from_remote(Remote& remote, debug::DapServer& server, int out, bool& 
   if (n <= 0) return false;
   remote.reader.feed(std::string_view(buffer, static_cast<size_t>(n)));
   while (auto message = remote.reader.next()) {
-    nlohmann::json m = nlohmann::json::parse(*message, nullptr, false);
-    if (m.is_discarded()) continue;
-    if (m.value("type", "") == "response" && m.value("command", "") == "initialize") continue;
+    nlohmann::json m;
+    std::string why;
+    if (!jsonrpc::parse_message(*message, m, why) || !m.is_object()) continue;
+    if (jsonrpc::peek_string(m, "type") == "response" &&
+        jsonrpc::peek_string(m, "command") == "initialize")
+      continue;
     m["seq"] = server.next_seq();
-    broken =
-        broken || !write_all(out, debug::frame_message(m.dump(
-                                      -1, ' ', false, nlohmann::json::error_handler_t::replace)));
+    broken = broken || !write_all(out, jsonrpc::frame_message(jsonrpc::to_text(m)));
   }
-  return remote.reader.error().empty();
+  for (const std::string& problem : remote.reader.take_problems())
+    fmt::print(stderr, "uprog dap: from the sim: {}\n", problem);
+  return true;
 }
 
 // Serves one client on `in` and `out` until it disconnects or closes its end.
@@ -93,7 +86,7 @@ int serve(int in, int out) {
   };
   debug::DapServer server(std::move(options),
                           [&](const std::string& m) { broken = broken || !write_all(out, m); });
-  debug::DapReader reader;
+  jsonrpc::MessageReader reader;
   char buffer[65536];
   auto last = std::chrono::steady_clock::now();
   while (!server.done() && !broken) {
@@ -111,18 +104,16 @@ int serve(int in, int out) {
       reader.feed(std::string_view(buffer, static_cast<size_t>(n)));
       while (auto message = reader.next()) {
         if (server.relaying()) {
-          if (!write_all(remote.fd(), debug::frame_message(*message))) return 1;
+          if (!write_all(remote.fd(), jsonrpc::frame_message(*message))) return 1;
           continue;
         }
         server.handle(*message);
         for (const std::string& first : server.relay_start()) {
-          if (!write_all(remote.fd(), debug::frame_message(first))) return 1;
+          if (!write_all(remote.fd(), jsonrpc::frame_message(first))) return 1;
         }
       }
-      if (!reader.error().empty()) {
-        fmt::print(stderr, "uprog dap: {}; the session ends\n", reader.error());
-        return 1;
-      }
+      for (const std::string& problem : reader.take_problems())
+        fmt::print(stderr, "uprog dap: {}\n", problem);
     }
     if (server.running()) {
       const auto now = std::chrono::steady_clock::now();
@@ -137,44 +128,14 @@ int serve(int in, int out) {
   return broken ? 1 : 0;
 }
 
-int listen_and_serve(const std::string& where) {
-  namespace asio = boost::asio;
-  asio::ip::tcp::endpoint endpoint;
-  std::string error;
-  if (!transport::parse_endpoint(where, endpoint, error)) {
-    fmt::print(stderr, "uprog dap: --listen {}: {}\n", where, error);
-    return 2;
-  }
-  asio::io_context io;
-  boost::system::error_code ec;
-  asio::ip::tcp::acceptor acceptor(io);
-  acceptor.open(endpoint.protocol(), ec);
-  if (!ec) acceptor.set_option(asio::ip::tcp::acceptor::reuse_address(true), ec);
-  if (!ec) acceptor.bind(endpoint, ec);
-  if (!ec) acceptor.listen(1, ec);
-  if (ec) {
-    fmt::print(stderr, "uprog dap: cannot listen on {}: {}\n", where, ec.message());
-    return 1;
-  }
-  const auto local = acceptor.local_endpoint();
-  fmt::print(stderr, "uprog dap: listening on tcp {}:{}\n", local.address().to_string(),
-             local.port());
-  asio::ip::tcp::socket socket(io);
-  acceptor.accept(socket, ec);
-  if (ec) {
-    fmt::print(stderr, "uprog dap: accept failed: {}\n", ec.message());
-    return 1;
-  }
-  return serve(socket.native_handle(), socket.native_handle());
-}
-
 void add_options(Options& cmd, Action& action) {
   auto listen = std::make_shared<std::string>();
   cmd.option("--listen", *listen,
              "HOST:PORT: serve one client over TCP instead of stdin/stdout (port 0 picks one)");
   cmd.on_chosen([&action, listen] {
     action = [listen] {
-      return listen->empty() ? serve(STDIN_FILENO, STDOUT_FILENO) : listen_and_serve(*listen);
+      return listen->empty() ? serve(STDIN_FILENO, STDOUT_FILENO)
+                             : serve_one_tcp_client("uprog dap", *listen, serve);
     };
   });
 }

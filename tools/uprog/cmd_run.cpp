@@ -20,6 +20,7 @@
 #include "support/files.h"
 #include "transcript/recording_options.h"
 #include "transcript/transcript.h"
+#include "world_options.h"
 
 namespace uprog::cli {
 namespace {
@@ -32,10 +33,10 @@ struct RunOptions {
   std::string duration;  // empty: until the program has ended and the axis is still
   std::string limit = "60s";
   std::string budget = "1";
-  std::vector<std::string> inputs;    // N=LEVEL@TIME
-  std::vector<std::string> faults;    // NAME@TIME
-  std::vector<std::string> switches;  // N=FROM:TO
-  std::string record;                 // PX,VX,myvar
+  std::vector<std::string> inputs;  // N=LEVEL@TIME
+  std::vector<std::string> faults;  // NAME@TIME
+  WorldOptions world;               // --switch, --analog
+  std::string record;               // PX,VX,myvar
   std::string trigger = "immediate";
   std::string pretrigger = "0";
   std::string length;  // empty: the whole run (immediate, no pre-trigger) or 1000
@@ -84,26 +85,6 @@ bool parse_schedule(const RunOptions& o, std::vector<Scheduled>& out) {
   }
   std::stable_sort(out.begin(), out.end(),
                    [](const Scheduled& a, const Scheduled& b) { return a.at_us < b.at_us; });
-  return true;
-}
-
-// --switch N=FROM:TO: input N is high while the motor lies in [FROM, TO] counts, as the
-// transcripts' `switch` directive places a home or limit cam (docs/transcripts.md).
-bool place_switches(const RunOptions& o, controller::Controller& drive) {
-  for (const std::string& s : o.switches) {
-    int n = 0;
-    double from = 0.0, to = 0.0;
-    char tail = 0;
-    if (std::sscanf(s.c_str(), "%d=%lf:%lf%c", &n, &from, &to, &tail) != 3 || n < 1 || n > 6 ||
-        !std::isfinite(from) || !std::isfinite(to) || !(from <= to)) {
-      fmt::print(stderr,
-                 "uprog run: --switch {}: expected N=FROM:TO, N 1..6, FROM <= TO in motor "
-                 "counts, e.g. 5=40000:42000\n",
-                 s);
-      return false;
-    }
-    drive.axis().place_position_switch(n, from, to);
-  }
   return true;
 }
 
@@ -225,7 +206,7 @@ int run(const RunOptions& o) {
   }
 
   controller::Controller drive(copts);
-  if (!place_switches(o, drive)) return 2;
+  if (!place_world(o.world, drive, "run")) return 2;
   std::vector<Diagnostic> diagnostics;
   const bool compiled = drive.download_source_file(o.file, diagnostics);
   if (!diagnostics.empty()) fmt::print(stderr, "{}", format_text(diagnostics));
@@ -309,8 +290,7 @@ void add_run(Options& cmd, Action& action) {
   add_drive_shape_options(cmd, o->shape);
   cmd.option("--budget", o->budget, "source lines per background pass, or 'unlimited' (default 1)");
   cmd.option("--input", o->inputs, "N=LEVEL@TIME: set digital input N at TIME");
-  cmd.option("--switch", o->switches,
-             "N=FROM:TO: input N is high while the motor lies in [FROM, TO] counts (a cam)");
+  add_world_options(cmd, o->world, /*with_inputs=*/false);
   cmd.option("--fault", o->faults, "NAME@TIME: latch a drive fault at TIME");
   cmd.option(
       "--record", o->record,

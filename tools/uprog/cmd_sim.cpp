@@ -19,6 +19,7 @@
 #include "transport/pty_server.h"
 #include "transport/tcp_server.h"
 #include "transport/udp_server.h"
+#include "world_options.h"
 
 namespace uprog::cli {
 
@@ -35,7 +36,8 @@ struct SimOptions {
   bool safe_boot = false;
   std::string wire = "drive";
   bool log = false;
-  std::string dap;  // HOST:PORT of the debugger's port, empty for none
+  std::string dap;     // HOST:PORT of the debugger's port, empty for none
+  WorldOptions world;  // --input, --switch, --analog: the world from the start
 };
 
 // Downloads `path` (a stored form such as a .upi image, or a source the dialect compiles), then
@@ -117,6 +119,8 @@ int run_sim(const SimOptions& options) {
   controller::Controller drive(controller_options);
   for (const auto& message : drive.boot_messages()) fmt::print(stderr, "uprog sim: {}\n", message);
   if (!options.program.empty() && !install_program(drive, options)) return 1;
+  // After the program's boot: the world outlives a reboot, the drive finds it as it is.
+  if (!place_world(options.world, drive, "sim")) return 2;
 
   transport::ControllerService service(drive, [&drive, &options] {
     if (options.log) print_log(drive);
@@ -199,6 +203,7 @@ void add_sim(Options& cmd, Action& action) {
   cmd.option("--program", options->program, "source or stored form (.upi) to download and load");
   add_dialect_option(cmd, options->dialect);
   add_drive_shape_options(cmd, options->shape);
+  add_world_options(cmd, options->world, /*with_inputs=*/true);
   cmd.flag("--safe-boot", options->safe_boot, "boot without running AUTOEXEC");
   cmd.option("--wire", options->wire,
              "drive: the bytes the vendor's drive sends (default); readable: error texts and a "

@@ -46,7 +46,7 @@ void SimDebugger::accept() {
     boost::system::error_code ignored;
     socket.set_option(tcp::no_delay(true), ignored);
     socket_ = std::make_unique<tcp::socket>(std::move(socket));
-    reader_ = debug::DapReader{};
+    reader_ = jsonrpc::MessageReader{};
     debug::DapOptions options;
     options.choose_dialect = [](const std::string&, const std::string&, std::string& error) {
       error = "this drive's debugger attaches to the program it runs";
@@ -60,21 +60,19 @@ void SimDebugger::accept() {
 }
 
 void SimDebugger::read() {
-  socket_->async_read_some(
-      asio::buffer(buffer_), [this](const boost::system::error_code& ec, std::size_t n) {
-        if (ec == asio::error::operation_aborted || !server_) return;
-        if (ec) return end_session();
-        reader_.feed(std::string_view(buffer_, n));
-        while (auto message = reader_.next()) {
-          server_->handle(*message);
-          if (server_->done()) return end_session();
-        }
-        if (!reader_.error().empty()) {
-          fmt::print(stderr, "uprog sim: debugger: {}; the session ends\n", reader_.error());
-          return end_session();
-        }
-        read();
-      });
+  socket_->async_read_some(asio::buffer(buffer_),
+                           [this](const boost::system::error_code& ec, std::size_t n) {
+                             if (ec == asio::error::operation_aborted || !server_) return;
+                             if (ec) return end_session();
+                             reader_.feed(std::string_view(buffer_, n));
+                             while (auto message = reader_.next()) {
+                               server_->handle(*message);
+                               if (server_->done()) return end_session();
+                             }
+                             for (const std::string& problem : reader_.take_problems())
+                               fmt::print(stderr, "uprog sim: debugger: {}\n", problem);
+                             read();
+                           });
 }
 
 void SimDebugger::send(const std::string& framed) {

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "controller/controller.h"
-#include "debug/dap_framing.h"
 #include "debug/dap_server.h"
+#include "jsonrpc/framing.h"
 #include "transport/asio.h"
 #include "transport/controller_service.h"
 
@@ -40,7 +40,7 @@ class SimDebugger {
   std::uint64_t output_listener_ = 0;
   std::unique_ptr<boost::asio::ip::tcp::socket> socket_;
   std::unique_ptr<debug::DapServer> server_;
-  debug::DapReader reader_;
+  jsonrpc::MessageReader reader_;
   char buffer_[16384];
 };
 

@@ -163,8 +163,8 @@ class CyclicTasks {
 
   bool started_ = false;
   bool init_done_ = false;
-  uint64_t start_ns_ = 0;
   uint64_t next_tick_ = 1;      // the tick run() does next; tick k comes at start + k·tick_ns
+  uint64_t next_tick_ns_ = 0;   // when that tick comes (added up, not multiplied: run() is hot)
   uint64_t first_rt_tick_ = 0;  // the first tick after the init task: every task is due
   uint64_t accrued_ns_ = 0;     // time up to which the background's lines have been credited
   uint64_t accrued_remainder_ns_ = 0;  // time short of a whole line, credited later

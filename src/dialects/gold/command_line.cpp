@@ -13,6 +13,13 @@
 
 namespace uprog::gold {
 
+// Gold's list names the DL lines' codes (interpreter_errors.def); they are the protocol's.
+static_assert(kErrorSyntax == dialect::kDlSyntax && kErrorStorage == dialect::kDlStorage &&
+              kErrorNoDownload == dialect::kDlNoDownload &&
+              kErrorDownloadSize == dialect::kDlBadSize &&
+              kErrorDownloadChunk == dialect::kDlBadChunk &&
+              kErrorDownloadRefused == dialect::kDlImageRefused);
+
 using dialect::Answer;
 
 namespace {
@@ -70,7 +77,7 @@ std::vector<Answer> Firmware::send(std::string_view text, bool takes_time) {
 }
 
 std::vector<Answer> Firmware::send_line(std::string_view text, bool takes_time,
-                                        DownloadReceiver* download) {
+                                        dialect::DlReceiver* download) {
   std::vector<Answer> answers;
   const dialect::FramerOptions framing = command_line_framing();
   for (const dialect::Frame& frame : dialect::frame_text(text, framing)) {
@@ -81,7 +88,7 @@ std::vector<Answer> Firmware::send_line(std::string_view text, bool takes_time,
     } else if (frame.kind == dialect::Frame::Kind::kBadCharacter) {
       answers.push_back(error_answer(
           kErrorSyntax, "Command syntax error: a character that is not printable ASCII"));
-    } else if (download != nullptr && DownloadReceiver::is_download_command(frame.text)) {
+    } else if (download != nullptr && dialect::DlReceiver::is_download_command(frame.text)) {
       download_expression(frame.text, *download, answers);
     } else {
       expression(frame.text, answers);
@@ -92,7 +99,7 @@ std::vector<Answer> Firmware::send_line(std::string_view text, bool takes_time,
   return answers;
 }
 
-void Firmware::download_expression(std::string_view expression, DownloadReceiver& download,
+void Firmware::download_expression(std::string_view expression, dialect::DlReceiver& download,
                                    std::vector<Answer>& answers) {
   std::vector<uint8_t> image;
   if (auto error = download.handle(expression, image)) {

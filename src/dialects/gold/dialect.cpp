@@ -1,10 +1,12 @@
 // Gold's entry in the dialect registry: its compiler, tables and firmware behind dialect::Dialect.
 #include "dialects/gold/dialect.h"
 
+#include "dialect/dl_lines.h"
 #include "dialects/gold/compile.h"
-#include "dialects/gold/download_protocol.h"
 #include "dialects/gold/errors.h"
 #include "dialects/gold/firmware.h"
+#include "dialects/gold/outline.h"
+#include "dialects/gold/reference.h"
 
 namespace uprog::gold {
 namespace {
@@ -66,7 +68,7 @@ class GoldDialect final : public dialect::Dialect {
   }
 
   std::vector<std::string> download_lines(const std::vector<uint8_t>& stored_form) const override {
-    return gold::download_lines(stored_form);
+    return dialect::download_lines(stored_form);
   }
   std::string load_line() const override { return "CC"; }
   std::optional<dialect::FramerOptions> host_framing() const override {
@@ -74,8 +76,14 @@ class GoldDialect final : public dialect::Dialect {
     framing.answer_empty_expressions = true;  // the drive form answers `PX;` CR twice
     return framing;
   }
-  std::size_t max_download_bytes() const override { return kDownloadMaxBytes; }
+  std::size_t max_download_bytes() const override { return dialect::kDownloadMaxBytes; }
   const dialect::SampleProgram& sample_program() const override { return kSample; }
+  std::vector<dialect::ReferenceEntry> reference() const override { return gold::reference(); }
+  bool names_ignore_case() const override { return true; }  // PX and px (commands.h)
+  std::vector<dialect::SourceSymbol> outline(std::string_view text) const override {
+    return gold::outline(text);
+  }
+  dialect::WordSyntax word_syntax() const override { return gold::word_syntax(); }
 
  private:
   // AC must be positive (EC 21, the Elmo reference's "out of range").

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "dialect/dl_lines.h"
 #include "dialect/firmware.h"
 #include "dialect/loaded_program.h"
 #include "dialect/runtime.h"
 #include "dialects/gold/auto_routines.h"
 #include "dialects/gold/compile.h"
-#include "dialects/gold/download_receiver.h"
 #include "dialects/gold/drive_commands.h"
 #include "dialects/gold/elmo_wire.h"
 #include "dialects/gold/interpreter_errors.h"
@@ -71,7 +71,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::vector<dialect::Answer> send(std::string_view line, bool takes_time = true);
   // As send(), with the DL commands of one host's download (a Session's).
   std::vector<dialect::Answer> send_line(std::string_view line, bool takes_time,
-                                         DownloadReceiver* download);
+                                         dialect::DlReceiver* download);
   // Lets one servo cycle pass: an expression's time (docs/dialects/gold-command-line.md).
   void spend_expression_time();
   uint64_t servo_cycle_ns() const;  // TS
@@ -99,7 +99,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   void on_run_time_error();
 
   // --- the command line ---
-  void download_expression(std::string_view expression, DownloadReceiver& download,
+  void download_expression(std::string_view expression, dialect::DlReceiver& download,
                            std::vector<dialect::Answer>& answers);
   void expression(std::string_view text, std::vector<dialect::Answer>& answers);
   void recorder_upload(std::string_view argument, std::vector<dialect::Answer>& answers);  // BH=n

@@ -6,43 +6,6 @@
 
 namespace uprog::gold {
 
-int Locator::text_line(uint32_t offset) const {
-  if (line_starts_.empty()) {
-    line_starts_.push_back(0);
-    for (size_t i = text_.find('\n'); i != std::string_view::npos; i = text_.find('\n', i + 1))
-      line_starts_.push_back(static_cast<uint32_t>(i + 1));
-  }
-  auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
-  return static_cast<int>(it - line_starts_.begin());
-}
-
-const preproc::Expansion* Locator::expansion(uint32_t offset) const {
-  if (map_ == nullptr) return nullptr;
-  if (const preproc::Expansion* e = map_->expansion_at(offset)) return e;
-  // An error found just past an expansion's last character ("a = SPEED" with "5 +") is the
-  // expansion's too.
-  if (offset == 0) return nullptr;
-  const preproc::Expansion* e = map_->expansion_at(offset - 1);
-  return e != nullptr && e->end == offset ? e : nullptr;
-}
-
-std::vector<DiagnosticNote> Locator::notes(uint32_t offset) const {
-  const preproc::Expansion* e = expansion(offset);
-  if (e == nullptr) return {};
-  return {{e->defined_at, "in the expansion of '" + e->macro + "', defined here"}};
-}
-
-Location Locator::locate(uint32_t offset) const {
-  if (const preproc::Expansion* e = expansion(offset)) return e->used_at;
-  if (map_ != nullptr && !map_->segments.empty()) return map_->locate(offset);
-  const int line = text_line(offset);
-  Location loc;
-  loc.file = file_;
-  loc.line = line;
-  loc.column = static_cast<int>(offset - line_starts_[static_cast<size_t>(line - 1)]) + 1;
-  return loc;
-}
-
 Reporter::Reporter(const Locator& locator, size_t limit)
     : locator_(locator),
       limit_(limit),

@@ -8,34 +8,13 @@
 #include <vector>
 
 #include "dialects/gold/errors.h"
-#include "preproc/preprocess.h"
+#include "preproc/source_locator.h"
 #include "support/diagnostic.h"
 
 namespace uprog::gold {
 
 // Maps offsets of the text the lexer reads back to the user's file, line and column.
-class Locator {
- public:
-  // `map` may be null: then offsets are located in `text` itself, named `file`.
-  // `text` must outlive the locator.
-  Locator(std::string file, std::string_view text, const preproc::SourceMap* map)
-      : file_(std::move(file)), text_(text), map_(map) {}
-  // Inside (or just past) a macro expansion: where the macro was used.
-  Location locate(uint32_t offset) const;
-  // A note naming the macro expansion `offset` lies in, if any.
-  std::vector<DiagnosticNote> notes(uint32_t offset) const;
-  // 1-based line of `offset` in the lexer's text (for the line table when there is no map).
-  int text_line(uint32_t offset) const;
-
- private:
-  const preproc::Expansion* expansion(uint32_t offset) const;
-
-  std::string file_;
-  std::string_view text_;
-  const preproc::SourceMap* map_;
-  // Found on the first question: a compile without errors or line table never asks.
-  mutable std::vector<uint32_t> line_starts_;
-};
+using Locator = preproc::SourceLocator;
 
 // The compiler's stages, in the order they ran before the front end streamed: errors at one place
 // are listed in this order, although the lexer now runs interleaved with the parser and the

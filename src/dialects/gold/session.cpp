@@ -14,7 +14,7 @@ class Session final : public dialect::Session {
 
  private:
   Firmware& firmware_;
-  DownloadReceiver download_;
+  dialect::DlReceiver download_;
 };
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "bytecode/peephole.h"
 #include "dialects/pdl/compiler.h"
 #include "preproc/preprocess.h"
+#include "preproc/source_locator.h"
 #include "support/files.h"
 
 namespace uprog::pdl {
@@ -59,26 +60,6 @@ const char* preproc_text(preproc::PreprocError e) {
   }
   return "preprocessor error";
 }
-
-// Line starts of a text, to place an offset where no source map is.
-class PlainLocator {
- public:
-  PlainLocator(std::string name, const std::string& text) : name_(std::move(name)) {
-    starts_.push_back(0);
-    for (size_t i = 0; i < text.size(); ++i)
-      if (text[i] == '\n') starts_.push_back(i + 1);
-  }
-  Location operator()(size_t offset) const {
-    const auto it = std::upper_bound(starts_.begin(), starts_.end(), offset);
-    const size_t line = static_cast<size_t>(it - starts_.begin());
-    return Location{name_, static_cast<int>(line),
-                    static_cast<int>(offset - starts_[line - 1] + 1)};
-  }
-
- private:
-  std::string name_;
-  std::vector<size_t> starts_;
-};
 
 // An included file: a regular file of at most kMaxIncludeBytes (not a device or a pipe, which
 // might never end).
@@ -137,13 +118,8 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
 
   std::vector<LexError> lex_errors;
   std::vector<Token> tokens = tokenize(text, lex_errors);
-  std::function<Location(size_t)> locate;
-  if (preprocess) {
-    const preproc::SourceMap* map = &pre.map;
-    locate = [map](size_t offset) { return map->locate(offset); };
-  } else {
-    locate = PlainLocator(source.name, text);
-  }
+  const preproc::SourceLocator locator(source.name, text, preprocess ? &pre.map : nullptr);
+  const auto locate = [&locator](size_t offset) { return locator.locate(offset); };
   for (const LexError& e : lex_errors)
     diags.push_back(make_diagnostic(e.error, locate(e.offset), e.detail));
   Compiler compiler(std::move(tokens), locate, source.name);

@@ -2,10 +2,12 @@
 // and each host's session (its level and its download in progress).
 #include "dialects/pdl/dialect.h"
 
-#include "dialects/gold/download_protocol.h"
+#include "dialect/dl_lines.h"
 #include "dialects/pdl/compile.h"
 #include "dialects/pdl/errors.h"
 #include "dialects/pdl/firmware.h"
+#include "dialects/pdl/outline.h"
+#include "dialects/pdl/reference.h"
 
 namespace uprog::pdl {
 namespace {
@@ -36,7 +38,7 @@ class Session final : public dialect::Session {
  private:
   Firmware& firmware_;
   int32_t level_ = 0;  // level/n; 0 at connect
-  gold::DownloadReceiver download_;
+  dialect::DlReceiver download_;
 };
 
 class PdlDialect final : public dialect::Dialect {
@@ -75,11 +77,17 @@ class PdlDialect final : public dialect::Dialect {
     return std::make_unique<Firmware>(runtime, options);
   }
   std::vector<std::string> download_lines(const std::vector<uint8_t>& stored_form) const override {
-    return gold::download_lines(stored_form);
+    return dialect::download_lines(stored_form);
   }
   std::string load_line() const override { return "reset"; }
-  std::size_t max_download_bytes() const override { return gold::kDownloadMaxBytes; }
+  std::size_t max_download_bytes() const override { return dialect::kDownloadMaxBytes; }
   const dialect::SampleProgram& sample_program() const override { return kSample; }
+  std::vector<dialect::ReferenceEntry> reference() const override { return pdl::reference(); }
+  // The drive's names are found ignoring case (system_names.h); the user's are not.
+  bool names_ignore_case() const override { return true; }
+  std::vector<dialect::SourceSymbol> outline(std::string_view text) const override {
+    return pdl::outline(text);
+  }
 
  private:
   // A command the host protocol does not know is 1 (tests/transcripts/pdl/host_protocol.txt).

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "dialect/dl_lines.h"
 #include "dialect/firmware.h"
 #include "dialect/loaded_program.h"
 #include "dialect/runtime.h"
 #include "dialect/scheduling/phase_round_robin.h"
 #include "dialect/semicolon_wire.h"
-#include "dialects/gold/download_receiver.h"
 #include "dialects/pdl/debug_info.h"
 #include "dialects/pdl/layout.h"
 #include "vm/machine.h"
@@ -88,11 +88,11 @@ class Firmware final : public dialect::Firmware, public vm::Host {
 
   // --- the host protocol (host_lines.cpp): one host line with that host's level and download
   std::vector<dialect::Answer> host_line(std::string_view line, int32_t& level,
-                                         gold::DownloadReceiver* download, bool takes_time);
+                                         dialect::DlReceiver* download, bool takes_time);
   uint32_t fclk() const { return fclk_; }
 
  private:
-  void answer_one(std::string_view text, int32_t& level, gold::DownloadReceiver* download,
+  void answer_one(std::string_view text, int32_t& level, dialect::DlReceiver* download,
                   std::vector<dialect::Answer>& answers);
   dialect::Answer read_name(std::string_view name, std::optional<int32_t> index, int32_t level);
   std::optional<dialect::Answer> write_name(std::string_view name, std::optional<int32_t> index,

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstring>
 
-#include "dialects/gold/interpreter_errors.h"
 #include "dialects/pdl/firmware.h"
 #include "dialects/pdl/system_names.h"
 #include "drive/axis.h"
@@ -95,7 +94,7 @@ std::vector<Answer> Firmware::query(std::string_view line) {
 }
 
 std::vector<Answer> Firmware::host_line(std::string_view line, int32_t& level,
-                                        gold::DownloadReceiver* download, bool takes_time) {
+                                        dialect::DlReceiver* download, bool takes_time) {
   std::vector<Answer> answers;
   for (const dialect::Frame& frame : dialect::frame_text(line, wire_.framing())) {
     if (frame.kind == dialect::Frame::Kind::kTooLong ||
@@ -111,17 +110,17 @@ std::vector<Answer> Firmware::host_line(std::string_view line, int32_t& level,
   return answers;
 }
 
-void Firmware::answer_one(std::string_view text, int32_t& level, gold::DownloadReceiver* download,
+void Firmware::answer_one(std::string_view text, int32_t& level, dialect::DlReceiver* download,
                           std::vector<Answer>& answers) {
   text = trim(text);
-  if (download != nullptr && gold::DownloadReceiver::is_download_command(text)) {
+  if (download != nullptr && dialect::DlReceiver::is_download_command(text)) {
     std::vector<uint8_t> image;
     if (auto e = download->handle(text, image)) return answers.push_back(*e);
     if (image.empty()) return;
     const dialect::DownloadResult r = this->download(image);
     if (!r.ok)
       answers.push_back(
-          error(r.storage_failed ? gold::kErrorStorage : gold::kErrorDownloadRefused, r.error));
+          error(r.storage_failed ? dialect::kDlStorage : dialect::kDlImageRefused, r.error));
     return;
   }
   auto word = [&](std::string_view w) {

@@ -9,7 +9,9 @@
 #include "dialects/pup/download.h"
 #include "dialects/pup/errors.h"
 #include "dialects/pup/firmware.h"
+#include "dialects/pup/outline.h"
 #include "dialects/pup/pup_compiler.h"
+#include "dialects/pup/reference.h"
 #include "support/files.h"
 
 namespace uprog::pup {
@@ -95,6 +97,12 @@ class PupDialect final : public dialect::Dialect {
   std::string load_line() const override { return ""; }  // ADownloadUProg[3] stores and loads
   std::size_t max_download_bytes() const override { return kMaxProgramBytes; }
   const dialect::SampleProgram& sample_program() const override { return kSample; }
+  std::vector<dialect::ReferenceEntry> reference() const override { return pup::reference(); }
+  // Controller keywords are case-insensitive (keywords.h); statements are matched exactly first.
+  bool names_ignore_case() const override { return true; }
+  std::vector<dialect::SourceSymbol> outline(std::string_view text) const override {
+    return pup::outline(text);
+  }
 
  private:
   // An unknown keyword is 1 (akribis-drive.md, "Errors"; tests/transcripts/pup/command_line.txt).

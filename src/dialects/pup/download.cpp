@@ -14,23 +14,6 @@ std::string to_hex(const std::string& bytes) {
   return out;
 }
 
-bool from_hex(const std::string& hex, std::string& out) {
-  auto digit = [](char c) -> int {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    return -1;
-  };
-  if (hex.size() % 2 != 0) return false;
-  out.clear();
-  for (size_t i = 0; i < hex.size(); i += 2) {
-    const int hi = digit(hex[i]), lo = digit(hex[i + 1]);
-    if (hi < 0 || lo < 0) return false;
-    out.push_back(static_cast<char>(hi * 16 + lo));
-  }
-  return true;
-}
-
 std::vector<std::string> download_lines(const std::vector<uint8_t>& cup) {
   const std::string bytes(cup.begin(), cup.end());
   std::vector<std::string> lines = {fmt::format("ADownloadUProg[1],{}", bytes.size())};

@@ -10,11 +10,8 @@
 namespace uprog::pup {
 namespace {
 
-dialect::Answer fail(DownloadState& d, int32_t code, std::string text) {
-  d.open = false;
-  d.dropped = true;
-  d.data.clear();
-  return {std::move(text), code};
+dialect::Answer answered(std::optional<dialect::Answer> fault) {
+  return fault ? std::move(*fault) : dialect::Answer{};
 }
 
 }  // namespace
@@ -23,31 +20,26 @@ dialect::Answer Firmware::download_message(int32_t step, const std::optional<std
                                            DownloadState& d) {
   if (!argument) return {"argument required", 9};
   const std::string& arg = *argument;
+  dialect::DownloadReceiver& transfer = d.transfer;
   if (step == 1) {
     const auto n = parse_number(arg);
-    if (!n || *n < 0 || static_cast<size_t>(*n) > kMaxProgramBytes) return fail(d, 41, "length");
-    if (running()) return fail(d, 16, "user program running");
-    d = DownloadState{};
+    transfer.abort();
+    if (!n || *n < 0 || static_cast<size_t>(*n) > kMaxProgramBytes) return {"length", 41};
+    if (running()) return {"user program running", 16};
     if (*n == 0) return {};  // drops a transfer
-    d.open = true;
-    d.expected = static_cast<size_t>(*n);
-    return {};
+    return answered(transfer.begin(static_cast<size_t>(*n)));
   }
-  if (!d.open) return {"download not begun", 40};
-  if (step == 2) {
-    std::string bytes;
-    if (!from_hex(arg, bytes) || bytes.size() > kMaxChunkBytes || bytes.empty())
-      return fail(d, 42, "data");
-    if (d.data.size() + bytes.size() > d.expected) return fail(d, 41, "length");
-    d.data += bytes;
-    return {};
-  }
+  if (!transfer.in_progress()) return {"download not begun", 40};
+  if (step == 2) return answered(transfer.add_hex(arg));
   const auto crc = parse_number(arg);
-  if (!crc) return fail(d, 6, "argument wrong format");
-  if (d.data.size() != d.expected) return fail(d, 41, "length");
-  const std::string cup = std::move(d.data);
-  d = DownloadState{};
-  if (static_cast<uint32_t>(*crc) != expected_crc(cup)) return fail(d, 43, "CRC");
+  if (!crc) {
+    transfer.abort();
+    return {"argument wrong format", 6};
+  }
+  std::vector<uint8_t> bytes;
+  if (auto fault = transfer.finish(bytes)) return std::move(*fault);
+  const std::string cup(bytes.begin(), bytes.end());
+  if (static_cast<uint32_t>(*crc) != expected_crc(cup)) return {"CRC", 43};
   const std::string why = install(cup, true);
   if (why.empty()) {
     runtime_.log(fmt::format("program downloaded ({} bytes)", cup.size()));
@@ -55,7 +47,7 @@ dialect::Answer Firmware::download_message(int32_t step, const std::optional<std
   }
   // "error N: text"
   const int32_t code = std::atoi(why.c_str() + 6);
-  return fail(d, code == 0 ? 45 : code, why.substr(why.find(':') + 2));
+  return {why.substr(why.find(':') + 2), code == 0 ? 45 : code};
 }
 
 dialect::Answer Firmware::upload(int32_t offset) {

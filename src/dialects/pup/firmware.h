@@ -15,6 +15,7 @@
 #include "dialects/pup/cup_file.h"
 #include "dialects/pup/cup_loader.h"
 #include "dialects/pup/debug_map.h"
+#include "dialects/pup/download.h"
 #include "dialects/pup/message.h"
 #include "dialects/pup/pup_wire.h"
 
@@ -22,12 +23,10 @@ namespace uprog::pup {
 
 constexpr uint32_t kThreads = 8;
 
-// One host's download in progress (ADownloadUProg[1..3]); it dies with the connection.
+// One host's download in progress (ADownloadUProg[1..3]); it dies with the connection. A fault
+// drops the transfer: 40 until the next [1].
 struct DownloadState {
-  bool open = false;
-  bool dropped = false;  // an error dropped the transfer: 40 until the next [1]
-  size_t expected = 0;
-  std::string data;
+  dialect::DownloadReceiver transfer{kMaxProgramBytes, kCupDownloadCodes, kMaxChunkBytes};
 };
 
 class Firmware final : public dialect::Firmware, public vm::Host {

@@ -99,6 +99,8 @@ constexpr AsciiEntry kTable[] = {
     {"ANZERO2", K::Command, A::Write, 0, false, false},
     {"VSCALE1", K::Int, A::ReadWrite, 3000, false, true},
     {"VSCALE2", K::Int, A::ReadWrite, 3000, false, true},
+    // Where the last homing saw its criterion, within one turn in 20 bits (reference, "REFPOS").
+    {"REFPOS", K::Int, A::Read, 0, false, false},
 };
 
 bool same_ignoring_case(std::string_view a, std::string_view b) {

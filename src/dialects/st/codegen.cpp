@@ -21,7 +21,8 @@ constexpr uint32_t kScratchA = 0, kScratchB = 1, kFirstForLocal = 2;
 
 class Generator {
  public:
-  Generator(const Program& p, const Locator& locator) : p_(p), locator_(locator), b_(image_.code) {}
+  Generator(const Program& p, const preproc::SourceLocator& locator)
+      : p_(p), locator_(locator), b_(image_.code) {}
 
   bytecode::Image run(const std::string& source_name) {
     image_.dialect = "st";
@@ -63,8 +64,17 @@ class Generator {
       main_loop(r, image_.routines.back());
       return;
     }
+    uses_scratch_ = false;
     for (int s : r.body) statement(s);
     b_.emit(bytecode::Op::RET);
+    // A routine that needs no local has none: a cyclic task's every run zeroes its locals.
+    if (!uses_scratch_ && r.for_count == 0) image_.routines.back().locals.clear();
+  }
+
+  // A load or store of a scratch local.
+  void scratch(bytecode::Op op, uint32_t local) {
+    uses_scratch_ = true;
+    b_.emit(op, local);
   }
 
   // PLCMAIN restarts at its top when it ends: the routine loops by itself, counting its passes
@@ -94,7 +104,7 @@ class Generator {
   }
 
   void line(size_t offset) {
-    const Location at = locator_.at(offset);
+    const Location at = locator_.locate(offset);
     image_.lines.push_back({b_.here(), at.file, static_cast<uint32_t>(at.line)});
   }
   void eol() { b_.emit(bytecode::Op::EOL); }
@@ -238,15 +248,15 @@ class Generator {
         expression(e.a);
         expression(e.b);
         b_.emit(bytecode::Op::SEXT, 16);
-        b_.emit(bytecode::Op::STL, kScratchB);
-        b_.emit(bytecode::Op::STL, kScratchA);
-        b_.emit(bytecode::Op::LDL, kScratchA);
-        b_.emit(bytecode::Op::LDL, kScratchB);
+        scratch(bytecode::Op::STL, kScratchB);
+        scratch(bytecode::Op::STL, kScratchA);
+        scratch(bytecode::Op::LDL, kScratchA);
+        scratch(bytecode::Op::LDL, kScratchB);
         b_.emit(bytecode::Op::DIVI);
         check_quotient();
         b_.emit(bytecode::Op::POP);
-        b_.emit(bytecode::Op::LDL, kScratchA);
-        b_.emit(bytecode::Op::LDL, kScratchB);
+        scratch(bytecode::Op::LDL, kScratchA);
+        scratch(bytecode::Op::LDL, kScratchB);
         b_.emit(bytecode::Op::REMI);
         return;
       case Op::Shl:
@@ -425,10 +435,10 @@ class Generator {
   }
   // The 64-bit pair on the stack (high on top) into DLONG `global`.
   void store_pair(uint32_t global) {
-    b_.emit(bytecode::Op::STL, kScratchA);
+    scratch(bytecode::Op::STL, kScratchA);
     b_.emit(bytecode::Op::STG, global);
     push(1);
-    b_.emit(bytecode::Op::LDL, kScratchA);
+    scratch(bytecode::Op::LDL, kScratchA);
     b_.emit(bytecode::Op::STGX, global);
   }
 
@@ -486,40 +496,41 @@ class Generator {
   void limitw(uint32_t out, uint32_t in, uint32_t max) {
     const L below = b_.new_label(), done = b_.new_label();
     b_.emit(bytecode::Op::LDG, in);
-    b_.emit(bytecode::Op::STL, kScratchA);
-    b_.emit(bytecode::Op::LDL, kScratchA);
+    scratch(bytecode::Op::STL, kScratchA);
+    scratch(bytecode::Op::LDL, kScratchA);
     b_.emit(bytecode::Op::LDG, max);
     b_.emit(bytecode::Op::GTI);
     b_.emit_to(bytecode::Op::JZ, below);
     b_.emit(bytecode::Op::LDG, max);
-    b_.emit(bytecode::Op::STL, kScratchA);
+    scratch(bytecode::Op::STL, kScratchA);
     b_.bind(below);
     push(0);
     b_.emit(bytecode::Op::LDG, max);
     b_.emit(bytecode::Op::SUBI);
-    b_.emit(bytecode::Op::STL, kScratchB);
-    b_.emit(bytecode::Op::LDL, kScratchA);
-    b_.emit(bytecode::Op::LDL, kScratchB);
+    scratch(bytecode::Op::STL, kScratchB);
+    scratch(bytecode::Op::LDL, kScratchA);
+    scratch(bytecode::Op::LDL, kScratchB);
     b_.emit(bytecode::Op::LTI);
     b_.emit_to(bytecode::Op::JZ, done);
-    b_.emit(bytecode::Op::LDL, kScratchB);
-    b_.emit(bytecode::Op::STL, kScratchA);
+    scratch(bytecode::Op::LDL, kScratchB);
+    scratch(bytecode::Op::STL, kScratchA);
     b_.bind(done);
-    b_.emit(bytecode::Op::LDL, kScratchA);
+    scratch(bytecode::Op::LDL, kScratchA);
     store(out);
   }
 
   const Program& p_;
-  const Locator& locator_;
+  const preproc::SourceLocator& locator_;
   bytecode::Image image_;
   CodeBuilder b_;
   std::map<std::string, uint32_t> routine_index_;
   std::map<std::string, L> labels_;
+  bool uses_scratch_ = false;  // the routine being generated loads or stores a scratch local
 };
 
 }  // namespace
 
-bytecode::Image generate(const Program& program, const Locator& locator,
+bytecode::Image generate(const Program& program, const preproc::SourceLocator& locator,
                          const std::string& source_name) {
   return Generator(program, locator).run(source_name);
 }

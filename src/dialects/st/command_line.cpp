@@ -274,6 +274,7 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     return {};
   }
   if (name == "PRD") return {value(feedback_within_turn())};
+  if (name == "REFPOS") return {value(within_turn(refpos_motor_))};
   if (name == "PFB") return {value(user_of(axis_->position_exact()))};
   if (name == "PE") return {value(user_of(axis_->position_error()))};
   if (name == "PV") return {value(user_of(axis_->velocity()))};

@@ -169,7 +169,7 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
         preproc::preprocess(SourceFile{source.name, lower_directives(source.text)}, po, pre_diags);
   }
   const std::string& text = preprocess ? pre.text : source.text;
-  Locator locator(source.name, text, preprocess ? &pre.map : nullptr);
+  preproc::SourceLocator locator(source.name, text, preprocess ? &pre.map : nullptr);
   Reporter reporter(locator);
   check_limits(source, reporter);
   for (Diagnostic& d : pre_diags.items()) reporter.add(std::move(d));

@@ -13,6 +13,8 @@
 #include "dialects/st/errors.h"
 #include "dialects/st/firmware.h"
 #include "dialects/st/names.h"
+#include "dialects/st/outline.h"
+#include "dialects/st/reference.h"
 
 namespace uprog::st {
 namespace {
@@ -123,6 +125,13 @@ class StDialect final : public dialect::Dialect {
   std::string load_line() const override { return "PLCRUN"; }
   std::size_t max_download_bytes() const override { return kMaxStoredSource; }
   const dialect::SampleProgram& sample_program() const override { return kSample; }
+  std::vector<dialect::ReferenceEntry> reference() const override { return st::reference(); }
+  // Keywords and the drive's names are case-insensitive (s300-drive.md, Program layout).
+  bool names_ignore_case() const override { return true; }
+  std::vector<dialect::SourceSymbol> outline(std::string_view text) const override {
+    return st::outline(text);
+  }
+  dialect::WordSyntax word_syntax() const override { return st::word_syntax(); }
 
  private:
   // An unknown command is ERR 1 (tests/transcripts/st/interface.txt).

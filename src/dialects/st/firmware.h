@@ -135,15 +135,18 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   void apply_limits();
   bool defer_until_ready(Deferred::Kind kind, int32_t a, int32_t b);
   int32_t start_homing();
-  // MH's switch types (homing.cpp): 1 and 3 to the reference switch, 4 to a limit switch.
+  // MH's searching types (homing.cpp): 1 and 3 to the reference switch, 2 and 4 to a limit
+  // switch, 7 and 9 to a mechanical stop; 1, 2 and 7 go on to a zero mark.
   struct SwitchHoming {
-    enum Phase : uint8_t { kIdle, kLeave, kSearch, kMark, kStop, kReturn } phase = kIdle;
-    int input = 0;            // 1..4
-    bool active_low = false;  // PSTOP and NSTOP are active low, the reference switch high
-    bool zero_mark = false;   // NREF 1: the first zero mark after the switch
-    double direction = -1.0;  // DREF 0 negative, 1 positive
-    double capture = 0.0;     // the reference point (motor counts) once found
-    double last_motor = 0.0;  // the motor's position a cycle ago, for the zero mark
+    enum Phase : uint8_t { kIdle, kLeave, kSearch, kBack, kMark, kStop, kReturn } phase = kIdle;
+    enum Criterion : uint8_t { kReferenceSwitch, kLimitSwitch, kMechanicalStop };
+    Criterion criterion = kReferenceSwitch;
+    int input = 0;             // 1..4 (the switch types)
+    bool zero_mark = false;    // NREF 1, 2, 7: the first zero mark after the criterion
+    bool mark_behind = false;  // NREF 2, 7: that mark lies back, away from the limit or stop
+    double direction = -1.0;   // DREF 0 negative, 1 positive
+    double capture = 0.0;      // the reference point (motor counts) once found
+    double last_motor = 0.0;   // the motor's position a cycle ago, for the zero mark
   };
   int32_t start_switch_homing(int32_t nref);
   // --- the analog inputs (analog.cpp) ---
@@ -153,10 +156,13 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   void step_switch_homing();
   void head_for(double motor_counts);  // a move at the homing speed to a motor position
   bool homing_input_active() const;
+  bool homing_criterion_met() const;
+  void found_criterion(double motor_counts);
   void end_homing();
   void set_reference();
   void set_reference(double at_motor);
   int32_t feedback_within_turn() const;
+  int32_t within_turn(double motor_counts) const;
   int32_t start_task(int32_t nr);
   void step_motion();
   int32_t jog(int32_t rpm, int32_t ms);
@@ -200,6 +206,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   bool homing_ = false;       // MH's move to a zero mark is under way
   double homing_mark_ = 0;    // that mark, in motor counts
   SwitchHoming switch_homing_;
+  double refpos_motor_ = 0;  // REFPOS: where the last homing saw its criterion (motor counts)
   std::array<int32_t, 4> input_modes_{};  // IN1MODE…IN4MODE as the last boot took them
   int32_t ancnfg_ = 0;                    // ANCNFG as the last boot took it
   std::array<int32_t, 2> analog_mv_{};    // SW1, SW2: the world's levels (a reboot keeps them)

@@ -121,21 +121,22 @@ int32_t Firmware::start_task(int32_t nr) {
   return 0;
 }
 
-// MH (SERVOSTAR-family reference, "MH", "NREF", "DREF", "VREF"): NREF 0 takes the position
-// where the axis stands as the reference point; NREF 5 moves at VREF (user units/s) in DREF's
-// direction (0 negative, 1 positive, 2 the nearer) to the feedback's next zero mark and takes
-// it. The reference point reads ROFFS. The switch types 1, 3 and 4 are homing.cpp's; 2 (a zero
-// mark beyond a limit switch), 6 and 7 and above (a mechanical stop, an absolute encoder): MH
+// MH (SERVOSTAR-family reference, "MH", "NREF", "DREF", "VREF"): NREF 0 and 6 take the
+// position where the axis stands as the reference point; NREF 5 moves at VREF (user units/s) in
+// DREF's direction (0 negative, 1 positive, 2 the nearer) to the feedback's next zero mark and
+// takes it. The reference point reads ROFFS. The searching types 1 to 4, 7 and 9 are
+// homing.cpp's; 8 (an absolute SSI encoder's position) and 10 to 20 (described nowhere): MH
 // refuses them (3), docs/dialects/st.md.
 int32_t Firmware::start_homing() {
   if (opmode_ != 8) return kErrOpmode;
   if (!axis_->motor_on()) return kErrNeedsEnabled;
   const int32_t nref = values_.at("NREF");
-  if (nref == 1 || nref == 3 || nref == 4) return start_switch_homing(nref);
-  if (nref != 0 && nref != 5) return kErrRange;
+  if ((nref >= 1 && nref <= 4) || nref == 7 || nref == 9) return start_switch_homing(nref);
+  if (nref != 0 && nref != 5 && nref != 6) return kErrRange;
   end_homing();
   next_pending_ = false;
-  if (nref == 0) {
+  refpos_motor_ = axis_->motor_state().position_counts;  // REFPOS: where it started
+  if (nref != 5) {
     set_reference();
     return 0;
   }
@@ -177,8 +178,12 @@ void Firmware::set_reference() { set_reference(axis_->motor_state().position_cou
 
 // PRD: the feedback's position within one turn, 20 bits (0..1048575), whatever PFB says.
 int32_t Firmware::feedback_within_turn() const {
+  return within_turn(axis_->motor_state().position_counts);
+}
+
+// A motor position within its turn in 20 bits (PRD, REFPOS).
+int32_t Firmware::within_turn(double motor) const {
   const double cpr = axis_->parameters().counts_per_revolution();
-  const double motor = axis_->motor_state().position_counts;
   const double within = motor - std::floor(motor / cpr) * cpr;
   // A position a whole step of the 20 bits up to the arithmetic's noise (a target reached by
   // way of an offset, 66535.99999999 for 66536) reads that step.
@@ -200,8 +205,10 @@ void Firmware::step_motion() {
     jog_until_ns_ = 0;
     axis_->stop();
   }
-  step_switch_homing();
-  step_analog_speed();
+  // Each is a call only while it has work (the usual cycle has neither): a search under way,
+  // OPMODE 1 or the speed it last commanded to forget.
+  if (switch_homing_.phase != SwitchHoming::kIdle) step_switch_homing();
+  if (opmode_ == 1 || analog_rpm_) step_analog_speed();
   if (homing_ && !axis_->profiler_moving()) {
     if (axis_->motor_on()) set_reference(homing_mark_);
     homing_ = false;

@@ -5,17 +5,17 @@
 #include <vector>
 
 #include "dialects/st/errors.h"
-#include "dialects/st/locator.h"
+#include "preproc/source_locator.h"
 
 namespace uprog::st {
 
 class Reporter {
  public:
-  explicit Reporter(const Locator& locator) : locator_(locator) {}
+  explicit Reporter(const preproc::SourceLocator& locator) : locator_(locator) {}
 
   // A syntax error on a line that already has an error is the first one's consequence: dropped.
   void error(Error e, size_t offset, const std::string& note = {}) {
-    Location where = locator_.at(offset);
+    Location where = locator_.locate(offset);
     if (e == Error::Syntax && line_has_error(where.line)) return;
     error_lines_.insert(where.line);
     add(e, std::move(where), note);
@@ -40,10 +40,10 @@ class Reporter {
   }
   bool has_errors() const { return errors_ > 0; }
   std::vector<Diagnostic> take() { return std::move(items_); }
-  const Locator& locator() const { return locator_; }
+  const preproc::SourceLocator& locator() const { return locator_; }
 
  private:
-  const Locator& locator_;
+  const preproc::SourceLocator& locator_;
   std::vector<Diagnostic> items_;
   size_t errors_ = 0;
   bool full_ = false;

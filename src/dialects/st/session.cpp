@@ -1,8 +1,9 @@
 // One host's S300 command line: its own PLCDL download in progress (`PLCDL BEGIN n`, hex lines,
 // `PLCDL END` stores atomically, `PLCDL ABORT`); every other line goes to the drive's command
 // line, and each takes one axis step of virtual time after its answer.
-#include <cctype>
+#include <optional>
 
+#include "dialect/download_receiver.h"
 #include "dialects/st/firmware.h"
 #include "dialects/st/names.h"
 
@@ -11,10 +12,20 @@ namespace {
 
 using dialect::Answer;
 
-int hex_digit(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+// The PLCDL lines' faults in the spec's codes (shared/spec/s300-drive.md: Gold's 210-213 as
+// 12-14).
+constexpr dialect::DownloadCodes kPlcdlCodes{
+    .not_begun = {kErrNoDownload, "no download in progress (PLCDL BEGIN first)"},
+    .bad_size = {kErrDownloadSize, "PLCDL BEGIN needs a size from 1 to 61440"},
+    .bad_data = {kErrDownloadData, "not hex digit pairs"},
+    .too_many = {kErrDownloadData, "more bytes than PLCDL BEGIN announced"},
+    .too_few = {kErrDownloadSize, "fewer bytes than PLCDL BEGIN announced"},
+};
+
+std::string_view trimmed(std::string_view s) {
+  const size_t b = s.find_first_not_of(" \t");
+  if (b == std::string_view::npos) return {};
+  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
 }
 
 class Session final : public dialect::Session {
@@ -32,60 +43,30 @@ class Session final : public dialect::Session {
   }
 
  private:
-  std::vector<Answer> fail(int32_t code, std::string why) {
-    active_ = false;
-    bytes_.clear();
-    return {Answer{std::move(why), code}};
+  static std::vector<Answer> answered(std::optional<Answer> fault) {
+    if (!fault) return {};
+    return {std::move(*fault)};
   }
 
   std::vector<Answer> download(std::string_view rest) {
-    const size_t b = rest.find_first_not_of(" \t");
-    if (b == std::string_view::npos) return fail(kErrSyntax, "syntax error");
-    rest = rest.substr(b);
-    while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t')) rest.remove_suffix(1);
+    rest = trimmed(rest);
+    if (rest.empty()) return {Answer{"syntax error", kErrSyntax}};
     const std::string word = upper(rest.substr(0, rest.find_first_of(" \t")));
-    if (word == "BEGIN") {
-      const std::string n(rest.substr(5));
-      char* end = nullptr;
-      const long size = std::strtol(n.c_str(), &end, 10);
-      if (end == n.c_str() || *end != '\0' || size < 1 ||
-          size > static_cast<long>(kMaxStoredSource))
-        return fail(kErrDownloadSize, "PLCDL BEGIN needs a size from 1 to 61440");
-      active_ = true;
-      announced_ = static_cast<size_t>(size);
-      bytes_.clear();
-      return {};
-    }
+    if (word == "BEGIN") return answered(transfer_.begin(trimmed(rest.substr(5))));
     if (word == "ABORT") {
-      active_ = false;
-      bytes_.clear();
+      transfer_.abort();
       return {};
     }
-    if (!active_) return fail(kErrNoDownload, "no download in progress (PLCDL BEGIN first)");
-    if (word == "END") {
-      if (bytes_.size() != announced_)
-        return fail(kErrDownloadSize, "fewer bytes than PLCDL BEGIN announced");
-      const dialect::DownloadResult r = firmware_.download(bytes_);
-      active_ = false;
-      bytes_.clear();
-      if (!r.ok) return {Answer{r.error, kErrStorage}};
-      return {};
-    }
-    if (rest.size() % 2 != 0) return fail(kErrDownloadData, "an odd number of hex digits");
-    for (size_t i = 0; i < rest.size(); i += 2) {
-      const int hi = hex_digit(rest[i]), lo = hex_digit(rest[i + 1]);
-      if (hi < 0 || lo < 0) return fail(kErrDownloadData, "not hex digit pairs");
-      bytes_.push_back(static_cast<uint8_t>(hi * 16 + lo));
-    }
-    if (bytes_.size() > announced_)
-      return fail(kErrDownloadData, "more bytes than PLCDL BEGIN announced");
+    if (word != "END") return answered(transfer_.add_hex(rest));
+    std::vector<uint8_t> source;
+    if (auto fault = transfer_.finish(source)) return {std::move(*fault)};
+    const dialect::DownloadResult r = firmware_.download(source);
+    if (!r.ok) return {Answer{r.error, kErrStorage}};
     return {};
   }
 
   Firmware& firmware_;
-  bool active_ = false;
-  size_t announced_ = 0;
-  std::vector<uint8_t> bytes_;
+  dialect::DownloadReceiver transfer_{kMaxStoredSource, kPlcdlCodes};
 };
 
 }  // namespace

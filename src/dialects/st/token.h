@@ -1,5 +1,5 @@
 // The tokens of ST source: what the lexer makes of the preprocessed text, each with its offset
-// in that text (the Locator turns it into the user's file, line and column).
+// in that text (the SourceLocator turns it into the user's file, line and column).
 #pragma once
 #include <cstddef>
 #include <cstdint>
