@@ -34,7 +34,7 @@ void load_gold(benchmark::State& state, Program& program, const std::string& tex
   if (!error.empty()) state.SkipWithError(error.c_str());
 }
 
-// A counting loop: INCL, LDL, PUSHI, LTI, JNZ per iteration (5 dispatches).
+// A counting loop: INCL, LDL, PUSHI, CMPI, JNZ per iteration (5 dispatches).
 void BM_DispatchLoop(benchmark::State& state) {
   Program p;
   load_assembly(state, p, R"(.routine function "main" in=0 out=0 entry=main
@@ -46,7 +46,7 @@ loop:
   INCL 0 1
   LDL 0
   PUSHI 100000
-  LTI
+  CMPI 2
   JNZ loop
   RET
 )");
@@ -68,7 +68,7 @@ loop:
 )" + nops + R"(  INCL 0 1
   LDL 0
   PUSHI 10000
-  LTI
+  CMPI 2
   JNZ loop
   RET
 )");
@@ -134,7 +134,7 @@ loop:
   INCL 0 1
   LDL 0
   PUSHI 100000
-  LTI
+  CMPI 2
   JNZ loop
   RET
 inc:

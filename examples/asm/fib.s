@@ -15,7 +15,7 @@ main:
 fib:
   LDL 0
   PUSHI 2
-  LTI
+  CMPI 2
   JZ recurse          ; n >= 2: recurse
   LDL 0
   STL 1               ; r = n

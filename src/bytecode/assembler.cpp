@@ -11,6 +11,7 @@
 
 #include "bytecode/assembly.h"
 #include "bytecode/code_builder.h"
+#include "bytecode/intrinsics.h"
 #include "bytecode/opcodes.h"
 
 namespace uprog::bytecode {
@@ -379,6 +380,7 @@ class Assembler {
       if (number(raw, n, 0, kOperandMax)) image_.code[pc] |= a_field(static_cast<uint32_t>(n));
       return;
     }
+    if (kind == Operand::Intrinsic && is_name) return intrinsic(t, pc);
     if (is_name || t.quoted) {
       if (kind != Operand::Target && kind != Operand::Routine && kind != Operand::Global)
         return error(t.column, fmt::format("'{}': a number is expected", t.text));
@@ -389,6 +391,17 @@ class Assembler {
     const bool is_signed = kind == Operand::Imm;
     if (!number(t, n, is_signed ? kImmMin : 0, is_signed ? kImmMax : kOperandMax)) return;
     image_.code[pc] |= a_field(static_cast<uint32_t>(n));
+  }
+
+  // INTRIN's function by its name (DIVU); a number is read as any other operand.
+  void intrinsic(const Token& t, size_t pc) {
+    for (uint32_t i = 0; i < kIntrinsicCount; ++i) {
+      if (t.text == kIntrinsicNames[i]) {
+        image_.code[pc] |= a_field(i);
+        return;
+      }
+    }
+    error(t.column, fmt::format("unknown intrinsic '{}'", t.text));
   }
 
   bool lookup(Operand kind, const std::string& name, uint32_t& out) {

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "bytecode/assembly.h"
+#include "bytecode/intrinsics.h"
 #include "bytecode/opcodes.h"
 
 namespace uprog::bytecode {
@@ -157,6 +158,7 @@ std::string disassemble(const Image& image, std::span<const std::string> notes) 
     if (info.a == Operand::Global && a < image.globals.size()) comment = image.globals[a].name;
     if (info.a == Operand::Routine && a < image.routines.size()) comment = image.routines[a].name;
     if (info.a == Operand::Text && a < image.texts.size()) comment = quote(image.texts[a]);
+    if (info.a == Operand::Intrinsic && a < kIntrinsicCount) comment = kIntrinsicNames[a];
     if (info.a == Operand::Const && a < image.constants.size()) {
       const auto& c = image.constants[a];
       comment = c.type == ValueType::Float ? float_text(c.bits)

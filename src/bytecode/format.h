@@ -20,8 +20,10 @@ constexpr uint8_t kMagic[4] = {'U', 'P', 'R', 'G'};
 //   4  CALLFEOL; JCMPMKEOL and ADDMLK in the numbers of DIVU and REMU; the six JNxxFEOL as
 //      JNCMPFEOL (the numbers after it moved: images made before that commit are not format 4)
 //   5  INCMLKEOL (252), a frame's word stepped by a constant; format 4 images mean the same
-//   6  the base instruction set only (122 opcodes, renumbered): the fused instructions left the
-//      stored format for the VM, which forms them when it loads an image (vm/fused.def)
+//   6  the base instruction set only (113 opcodes, renumbered): the fused instructions left the
+//      stored format for the VM, which forms them when it loads an image (vm/fused.def); one
+//      comparison a type with the relation as its operand (CMPI, CMPF, as CMPU and CMPD); INTRIN
+//      for rare functions (intrinsics.def: DIVU, REMU, PUP's sqrt, power and fixed-point reals)
 constexpr uint16_t kMinFormatVersion = 6;
 constexpr uint16_t kMaxFormatVersion = 6;
 constexpr uint16_t kFormatVersion = kMaxFormatVersion;  // the version the image writer makes

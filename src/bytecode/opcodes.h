@@ -22,7 +22,8 @@ enum class Operand : uint8_t {
   Element,
   Lines,
   Window,
-  MemoryFrame
+  MemoryFrame,
+  Intrinsic
 };
 
 // LDGW's and STGW's B: the window's first element and its size, 16 bits each.
@@ -30,6 +31,16 @@ constexpr uint32_t pack_window(uint32_t first, uint32_t size) { return first | (
 constexpr uint32_t window_first(uint32_t b) { return b & 0xFFFFu; }
 constexpr uint32_t window_size(uint32_t b) { return b >> 16; }
 enum class Flow : uint8_t { Next, Jump, Branch, Call, Stop };
+
+// The relation a comparison's A names (CMPI, CMPF, CMPU, CMPD); the compare-and-jumps JEQI..JGEI
+// and JNEQF..JNGEF are in this order too.
+constexpr uint32_t kRelEq = 0, kRelNe = 1, kRelLt = 2, kRelLe = 3, kRelGt = 4, kRelGe = 5;
+constexpr uint32_t kRelationCount = 6;
+// The relation that holds exactly when `r` does not (of ints: floats have NaN).
+constexpr uint32_t negated_relation(uint32_t r) {
+  constexpr uint32_t kNegation[kRelationCount] = {kRelNe, kRelEq, kRelGe, kRelGt, kRelLe, kRelLt};
+  return kNegation[r];
+}
 
 constexpr int kVar = -1;  // a stack effect that the operands decide
 
@@ -69,6 +80,16 @@ inline constexpr const char* kOpMeanings[] = {
 inline constexpr uint32_t kOpCount = sizeof(kOpInfo) / sizeof(kOpInfo[0]);
 inline constexpr uint32_t kBaseOpCount = static_cast<uint32_t>(Op::BREAK);
 static_assert(kBaseOpCount + 1 == kOpCount, "BREAK follows the base set");
+
+// The compare-and-jump of an int relation; the "jump unless" of a float relation.
+constexpr Op int_jump(uint32_t relation) {
+  return static_cast<Op>(static_cast<uint32_t>(Op::JEQI) + relation);
+}
+constexpr Op float_jump_unless(uint32_t relation) {
+  return static_cast<Op>(static_cast<uint32_t>(Op::JNEQF) + relation);
+}
+static_assert(int_jump(kRelGe) == Op::JGEI && float_jump_unless(kRelGe) == Op::JNGEF &&
+              int_jump(kRelLt) == Op::JLTI && float_jump_unless(kRelNe) == Op::JNNEF);
 static_assert(kOpCount <= 256, "an opcode is one byte");
 
 // CALLFEOL's B: the frame's words (1..4095) in bits 0-11, the arguments in bits 12-19, the
@@ -83,6 +104,10 @@ constexpr uint32_t memory_frame_first(uint32_t b) { return (b >> 20) & 0xFFu; }
 constexpr const OpInfo& op_info(Op op) { return kOpInfo[static_cast<uint8_t>(op)]; }
 constexpr const char* op_name(Op op) { return kOpNames[static_cast<uint8_t>(op)]; }
 constexpr uint32_t op_length(Op op) { return op_info(op).b == Operand::None ? 1u : 2u; }
+// The comparisons whose A is a relation (kRelEq..kRelGe).
+constexpr bool names_relation(Op op) {
+  return op == Op::CMPI || op == Op::CMPF || op == Op::CMPU || op == Op::CMPD;
+}
 // The instructions whose A is a catch block rather than a jump.
 constexpr bool enters_try(Op op) { return op == Op::TRY || op == Op::TRYALL; }
 // The instructions that pop B values for the host (and CMDRUNX an index below them).

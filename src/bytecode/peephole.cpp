@@ -37,28 +37,9 @@ bool decode(const std::vector<uint32_t>& code, std::vector<Instr>& out) {
   return true;
 }
 
-// Each int comparison (== != < <= > >=), its compare-and-jump and the one of its negation (for
-// JZ); each float comparison and its "jump unless" (JZ only: NaN's answers stay exact).
-struct IntCompare {
-  Op compare, when_true, when_false;
-};
-constexpr IntCompare kIntCompares[] = {
-    {Op::EQI, Op::JEQI, Op::JNEI}, {Op::NEI, Op::JNEI, Op::JEQI}, {Op::LTI, Op::JLTI, Op::JGEI},
-    {Op::LEI, Op::JLEI, Op::JGTI}, {Op::GTI, Op::JGTI, Op::JLEI}, {Op::GEI, Op::JGEI, Op::JLTI},
-};
-struct FloatCompare {
-  Op compare, jump_unless;
-};
-constexpr FloatCompare kFloatCompares[] = {
-    {Op::EQF, Op::JNEQF}, {Op::NEF, Op::JNNEF}, {Op::LTF, Op::JNLTF},
-    {Op::LEF, Op::JNLEF}, {Op::GTF, Op::JNGTF}, {Op::GEF, Op::JNGEF},
-};
-
 bool is_branch(Op op) { return op == Op::JZ || op == Op::JNZ; }
 // The branches a condition's line ends with: JZ, JNZ and the compare-and-jumps.
-bool is_condition_branch(Op op) {
-  return is_branch(op) || (op >= Op::JEQI && op <= Op::JNGEF);
-}
+bool is_condition_branch(Op op) { return is_branch(op) || (op >= Op::JEQI && op <= Op::JNGEF); }
 
 // The index of the instruction that starts at `pc`, or code.size().
 size_t index_at(const std::vector<Instr>& code, uint32_t pc) {
@@ -141,31 +122,33 @@ class Merger {
   }
   const Instr& at(size_t i) const { return in_[i]; }
 
-  // <int compare>; JZ|JNZ T | <float compare>; JZ T
+  // CMPI r; JZ|JNZ T -> the int compare-and-jump of r or of its negation; CMPF r; JZ T -> the
+  // float "jump unless r" (JZ only: NaN's answers stay exact)
   std::optional<std::pair<Instr, size_t>> compare_branch(size_t i) const {
     if (!free(i, 1) || !unmarked(i, 1) || !is_branch(at(i + 1).op)) return std::nullopt;
     const Instr& branch = at(i + 1);
-    for (const auto& c : kIntCompares) {
-      if (at(i).op != c.compare) continue;
-      const Op jump = branch.op == Op::JNZ ? c.when_true : c.when_false;
-      return std::pair{Instr{at(i).pc, jump, branch.a, 0, branch.ends_line}, size_t{2}};
-    }
-    if (branch.op != Op::JZ) return std::nullopt;
-    for (const auto& c : kFloatCompares) {
-      if (at(i).op == c.compare)
-        return std::pair{Instr{at(i).pc, c.jump_unless, branch.a, 0, branch.ends_line}, size_t{2}};
-    }
-    return std::nullopt;
+    const uint32_t relation = at(i).a;
+    if (relation >= kRelationCount) return std::nullopt;  // the verifier refuses it later
+    Op jump;
+    if (at(i).op == Op::CMPI)
+      jump = int_jump(branch.op == Op::JNZ ? relation : negated_relation(relation));
+    else if (at(i).op == Op::CMPF && branch.op == Op::JZ)
+      jump = float_jump_unless(relation);
+    else
+      return std::nullopt;
+    return std::pair{Instr{at(i).pc, jump, branch.a, 0, branch.ends_line}, size_t{2}};
   }
 
-  // PUSHI 0; NEI|EQI; JZ|JNZ T — a test against zero is the branch itself.
+  // PUSHI 0; CMPI != | ==; JZ|JNZ T — a test against zero is the branch itself.
   std::optional<std::pair<Instr, size_t>> test_zero(size_t i) const {
     if (!free(i, 2) || !unmarked(i, 2) || at(i).op != Op::PUSHI || imm_of(at(i)) != 0)
       return std::nullopt;
-    const Op compare = at(i + 1).op;
+    const Instr& compare = at(i + 1);
     const Instr& branch = at(i + 2);
-    if ((compare != Op::NEI && compare != Op::EQI) || !is_branch(branch.op)) return std::nullopt;
-    const bool jump_if_nonzero = (compare == Op::NEI) == (branch.op == Op::JNZ);
+    if (compare.op != Op::CMPI || (compare.a != kRelNe && compare.a != kRelEq) ||
+        !is_branch(branch.op))
+      return std::nullopt;
+    const bool jump_if_nonzero = (compare.a == kRelNe) == (branch.op == Op::JNZ);
     return std::pair{
         Instr{at(i).pc, jump_if_nonzero ? Op::JNZ : Op::JZ, branch.a, 0, branch.ends_line},
         size_t{3}};

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "bytecode/intrinsics.h"
 #include "bytecode/opcodes.h"
 
 namespace uprog::bytecode {
@@ -107,7 +108,9 @@ class Verifier {
         default:
           break;
       }
-      if ((word_op(word) == Op::CMPD || word_op(word) == Op::CMPU) && a > 5)
+      if (names_relation(word_op(word)) && a >= kRelationCount)
+        return fail(VerifyError::BadOperand, pc);
+      if (info.a == Operand::Intrinsic && a >= kIntrinsicCount)
         return fail(VerifyError::BadOperand, pc);
       if (info.b == Operand::Const && image_.code[pc + 1] >= image_.constants.size())
         return fail(VerifyError::BadConstant, pc);
@@ -193,6 +196,9 @@ class Verifier {
       if (std::max<uint32_t>(image_.routines[a].inputs - 1, 2) > locals)
         return fail(VerifyError::BadLocal, pc);
       pop = static_cast<int32_t>(memory_frame_arguments(image_.code[pc + 1]));
+    } else if (op == Op::INTRIN) {
+      pop = kIntrinsicInfo[a].pop;
+      push = kIntrinsicInfo[a].push;
     } else if (pops_host_arguments(op)) {
       pop = static_cast<int32_t>(image_.code[pc + 1]) + (op == Op::CMDRUNX ? 1 : 0);
     }

@@ -19,6 +19,7 @@
 #include "support/arith.h"
 #include "vm/budget_count.h"
 #include "vm/fused.h"
+#include "vm/intrinsic.h"
 #include "vm/machine.h"
 
 namespace uprog::vm {
@@ -34,22 +35,6 @@ TypedValue read_pair(const Value* at) {
 void write_pair(Value* at, TypedValue v) {
   at[0] = v.value;
   at[1] = Value::of_int(v.is_float() ? 1 : 0);
-}
-bool compare(int32_t how, float a, float b) {
-  switch (how) {
-    case 0:
-      return a == b;
-    case 1:
-      return a != b;
-    case 2:
-      return a < b;
-    case 3:
-      return a <= b;
-    case 4:
-      return a > b;
-    default:
-      return a >= b;
-  }
 }
 // A call's words copied or set to 0: frames mostly have a few, which a call of memcpy or memset
 // (what a plain loop compiles to) or a jump table would cost more than. 2 to 4 words are two
@@ -85,22 +70,6 @@ uint64_t read_wide(const Value* at) {
 void write_wide(Value* at, uint64_t v) {
   at[0].bits = static_cast<uint32_t>(v);
   at[1].bits = static_cast<uint32_t>(v >> 32);
-}
-bool compare(int32_t how, int32_t a, int32_t b) {
-  switch (how) {
-    case 0:
-      return a == b;
-    case 1:
-      return a != b;
-    case 2:
-      return a < b;
-    case 3:
-      return a <= b;
-    case 4:
-      return a > b;
-    default:
-      return a >= b;
-  }
 }
 
 // For each comparison (== != < <= > >=, four bits each), the outcomes for which it holds:
@@ -275,14 +244,14 @@ SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) 
     ++ip;                     \
     DISPATCH();               \
   }
-#define COMPARE(type, field, op) \
-  {                              \
-    const type a = sp[-2].field; \
-    const type b = sp[-1].field; \
-    sp[-2].i = a op b ? 1 : 0;   \
-    --sp;                        \
-    ++ip;                        \
-    DISPATCH();                  \
+#define COMPARE(type, field)                      \
+  {                                               \
+    const type a = sp[-2].field;                  \
+    const type b = sp[-1].field;                  \
+    sp[-2].i = relation_holds(A(), a, b) ? 1 : 0; \
+    --sp;                                         \
+    ++ip;                                         \
+    DISPATCH();                                   \
   }
 #define UNARY(expr)         \
   {                         \
@@ -480,30 +449,10 @@ op_COSF:
 op_SQRTF:
   UNARY(Value::of_float(a.f > 0.0f ? std::sqrt(a.f) : 0.0f))
 
-op_EQI:
-  COMPARE(int32_t, i, ==)
-op_NEI:
-  COMPARE(int32_t, i, !=)
-op_LTI:
-  COMPARE(int32_t, i, <)
-op_LEI:
-  COMPARE(int32_t, i, <=)
-op_GTI:
-  COMPARE(int32_t, i, >)
-op_GEI:
-  COMPARE(int32_t, i, >=)
-op_EQF:
-  COMPARE(float, f, ==)
-op_NEF:
-  COMPARE(float, f, !=)
-op_LTF:
-  COMPARE(float, f, <)
-op_LEF:
-  COMPARE(float, f, <=)
-op_GTF:
-  COMPARE(float, f, >)
-op_GEF:
-  COMPARE(float, f, >=)
+op_CMPI:
+  COMPARE(int32_t, i)
+op_CMPF:
+  COMPARE(float, f)
 op_LNOT:
   UNARY(Value::of_int(a.i == 0 ? 1 : 0))
 op_TRUTHF:
@@ -596,9 +545,8 @@ op_ABSD : {
 op_CMPD : {
   const TypedValue a = read_pair(sp - 4);
   const TypedValue b = read_pair(sp - 2);
-  const auto how = static_cast<int32_t>(A());
-  const bool r = !a.is_float() && !b.is_float() ? compare(how, a.value.i, b.value.i)
-                                                : compare(how, a.as_float(), b.as_float());
+  const bool r = !a.is_float() && !b.is_float() ? relation_holds(A(), a.value.i, b.value.i)
+                                                : relation_holds(A(), a.as_float(), b.as_float());
   sp -= 3;
   sp[-1] = Value::of_int(r ? 1 : 0);
   goto next_1;
@@ -848,7 +796,7 @@ op_RETEOL:
 #define A_AT(k) bytecode::word_a(ip[fused_offset(kShape, k)])
 #define IMM_AT(k) bytecode::word_imm(ip[fused_offset(kShape, k)])
 #define B_AT(k) (ip[fused_offset(kShape, k) + 1])
-#define RELATION_AT(k)                                                   \
+#define RELATION_AT(k)                                                     \
   (static_cast<uint32_t>(bytecode::word_op(ip[fused_offset(kShape, k)])) - \
    static_cast<uint32_t>(kShape.ops[k]))
 #define NEXT()           \
@@ -856,19 +804,19 @@ op_RETEOL:
     ip += kShape.length; \
     DISPATCH();          \
   } while (0)
-#define BRANCH_IF(condition, k)  \
-  do {                           \
-    if (condition)               \
-      JUMP_TO(code + A_AT(k));   \
-    else                         \
-      ip += kShape.length;       \
-    DISPATCH();                  \
+#define BRANCH_IF(condition, k) \
+  do {                          \
+    if (condition)              \
+      JUMP_TO(code + A_AT(k));  \
+    else                        \
+      ip += kShape.length;      \
+    DISPATCH();                 \
   } while (0)
-#define FUSED(name, pattern, when, meaning, ...)                                   \
-  fused_##name : {                                                                 \
-    [[maybe_unused]] static constexpr FusedShape kShape =                          \
-        fused_detail::kShapes[static_cast<uint32_t>(Fused::name)];                 \
-    __VA_ARGS__;                                                                   \
+#define FUSED(name, pattern, when, meaning, ...)                   \
+  fused_##name : {                                                 \
+    [[maybe_unused]] static constexpr FusedShape kShape =          \
+        fused_detail::kShapes[static_cast<uint32_t>(Fused::name)]; \
+    __VA_ARGS__;                                                   \
   }
 #include "vm/fused.def"
 #undef FUSED
@@ -930,7 +878,7 @@ op_SHRU:
   INT_BINARY(arith::shift_right_logical(a, b))
 op_CMPU : {
   // Unsigned order is signed order with the sign bits flipped.
-  const bool r = compare(static_cast<int32_t>(A()), sp[-2].i ^ INT32_MIN, sp[-1].i ^ INT32_MIN);
+  const bool r = relation_holds(A(), sp[-2].i ^ INT32_MIN, sp[-1].i ^ INT32_MIN);
   --sp;
   sp[-1] = Value::of_int(r ? 1 : 0);
   ++ip;
@@ -954,6 +902,17 @@ op_MULDIV : {
   if (!arith::mul_div(sp[-3].i, sp[-2].i, sp[-1].i, q)) FAIL(RunError::Overflow);
   sp -= 2;
   sp[-1] = Value::of_int(q);
+  goto next_1;
+}
+op_INTRIN : {
+  // Every function pushes one int; it pops one or two (intrinsics.def).
+  const auto function = static_cast<bytecode::Intrinsic>(A());
+  const bool binary = bytecode::kIntrinsicInfo[A()].pop == 2;
+  const IntrinsicResult r =
+      binary ? apply_intrinsic(function, sp[-2].i, sp[-1].i) : apply_intrinsic(function, sp[-1].i);
+  if (r.error != RunError::None) FAIL(r.error);
+  if (binary) --sp;
+  sp[-1] = Value::of_int(r.value);
   goto next_1;
 }
 

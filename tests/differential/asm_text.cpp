@@ -140,8 +140,10 @@ class Lowering {
     if (f && !fb) emit("I2F");
     static const char* const kInt[] = {"ADDI", "SUBI", "MULI", "DIVI"};
     static const char* const kFloat[] = {"ADDF", "SUBF", "MULF", "DIVF"};
-    static const char* const kCmpInt[] = {"LTI", "LEI", "GTI", "GEI", "EQI", "NEI"};
-    static const char* const kCmpFloat[] = {"LTF", "LEF", "GTF", "GEF", "EQF", "NEF"};
+    static const char* const kCmpInt[] = {"CMPI 2", "CMPI 3", "CMPI 4",
+                                          "CMPI 5", "CMPI 0", "CMPI 1"};
+    static const char* const kCmpFloat[] = {"CMPF 2", "CMPF 3", "CMPF 4",
+                                            "CMPF 5", "CMPF 0", "CMPF 1"};
     if (e.op <= Op::Div) {
       emit((f ? kFloat : kInt)[static_cast<int>(e.op) - static_cast<int>(Op::Add)]);
       return f;
@@ -154,7 +156,7 @@ class Lowering {
       emit("TRUTHF");
     } else {
       emit("PUSHI 0");
-      emit("NEI");
+      emit("CMPI 1");
     }
   }
 

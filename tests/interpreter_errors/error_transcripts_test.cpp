@@ -47,6 +47,7 @@ const std::map<int32_t, const char*> kNotFromAHostLine = {
     {114, "no Gold statement raises an error"},
     {115, "Gold has no pointers: its code generator emits no LDM or STM"},
     {116, "Gold has no MULDIV: its code generator emits none"},
+    {117, "Gold calls no intrinsic function (INTRIN): its code generator emits none"},
 };
 
 class ErrorTranscript : public ::testing::TestWithParam<fs::path> {};

@@ -154,13 +154,13 @@ main:
 top:
   LDL 0
   LDL 1
-  LEI
+  CMPI 3
   JZ done
   LDL 0
   PUSHI 3
   REMI
   PUSHI 0
-  NEI
+  CMPI 1
   JZ next
   LDG total
   LDL 0
@@ -170,11 +170,11 @@ top:
 next:
   LDL 0
   PUSHI 50
-  GTI
+  CMPI 4
   JNZ skip
   LDG x
   PUSHK 0
-  LTF
+  CMPF 2
   JZ skip
   LDG x
   PUSHK 0
@@ -194,15 +194,15 @@ TEST(Peephole, ComparesAndJumpsInOneAndEndsLinesOnTheirLastInstruction) {
       {{{"L0:", "PUSHI 1", "STL 0", "PUSHI 100", "STL.eol 1"},
         {"L0:", "PUSHI 1", "STL 0", "PUSHI 100", "STL 1", "EOL"}},
        // i <= n, or out: the branch jumps when the comparison fails
-       {{"L4:", "LDL 0", "LDL 1", "JGTI L28"}, {"L5:", "LDL 0", "LDL 1", "LEI", "JZ L36"}},
+       {{"L4:", "LDL 0", "LDL 1", "JGTI L28"}, {"L5:", "LDL 0", "LDL 1", "CMPI 3", "JZ L36"}},
        // i % 3 != 0, or next: the test against 0 is the branch itself
        {{"LDL 0", "PUSHI 3", "REMI", "JZ L15"},
-        {"LDL 0", "PUSHI 3", "REMI", "PUSHI 0", "NEI", "JZ L20"}},
+        {"LDL 0", "PUSHI 3", "REMI", "PUSHI 0", "CMPI 1", "JZ L20"}},
        // total = total + i, its line's end a mark
        {{"LDG 0", "LDL 0", "ADDI", "STG.eol 0"}, {"LDG 0", "LDL 0", "ADDI", "STG 0", "EOL"}},
        // i > 50 jumps as it was true; a float comparison jumps "unless"
        {{"L15:", "LDL 0", "PUSHI 50", "JGTI L25", "LDG 1", "PUSHK 0", "JNLTF L25"},
-        {"L20:", "LDL 0", "PUSHI 50", "GTI", "JNZ L32", "LDG 1", "PUSHK 0", "LTF", "JZ L32"}},
+        {"L20:", "LDL 0", "PUSHI 50", "CMPI 4", "JNZ L32", "LDG 1", "PUSHK 0", "CMPF 2", "JZ L32"}},
        {{"LDG 1", "PUSHK 0", "ADDF", "STG 1"}, {"LDG 1", "PUSHK 0", "ADDF", "STG 1"}},
        // the step's line ends in the jump back
        {{"L25:", "INCL 0 1", "JMP.eol L4"}, {"L32:", "INCL 0 1", "EOL", "JMP L5"}},
@@ -211,14 +211,14 @@ TEST(Peephole, ComparesAndJumpsInOneAndEndsLinesOnTheirLastInstruction) {
 }
 
 TEST(Peephole, NeverMergesAcrossAPlaceControlCanEnter) {
-  // `middle` is a jump target: the LTI before it and the JZ there stay apart.
+  // `middle` is a jump target: the CMPI before it and the JZ there stay apart.
   const char* text = R"(
 .global int "g" 1
 .routine function "main" in=0 out=0 entry=main
 main:
   LDG g
   PUSHI 3
-  LTI
+  CMPI 2
 middle:
   JZ out
   LDG g
@@ -227,15 +227,14 @@ middle:
   STG g
   LDG g
   PUSHI 3
-  LTI
+  CMPI 2
   JMP middle
 out:
   RET
 )";
-  const std::vector<std::string> unchanged = {"L0:",   "LDG 0",   "PUSHI 3", "LTI",   "L3:",
-                                              "JZ L12", "LDG 0",  "PUSHI 1", "ADDI",  "STG 0",
-                                              "LDG 0", "PUSHI 3", "LTI",     "JMP L3", "L12:",
-                                              "RET"};
+  const std::vector<std::string> unchanged = {
+      "L0:",  "LDG 0", "PUSHI 3", "CMPI 2",  "L3:",    "JZ L12", "LDG 0", "PUSHI 1",
+      "ADDI", "STG 0", "LDG 0",   "PUSHI 3", "CMPI 2", "JMP L3", "L12:",  "RET"};
   expect_listing(text, {{unchanged, unchanged}});
   EXPECT_EQ(run_and_read(optimized(text), "g"), 3);
 }

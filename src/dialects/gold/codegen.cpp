@@ -131,7 +131,7 @@ class Gen {
     switch (operand_kind(e.type)) {
       case Kind::Int:
         push_int(0);
-        emit(Op::NEI);
+        emit(Op::CMPI, bytecode::kRelNe);
         return;
       case Kind::Float:
         emit(Op::TRUTHF);
@@ -296,12 +296,10 @@ class Gen {
       emit(Op::CMPD, static_cast<uint32_t>(how));
       return;
     }
-    static constexpr Op kInt[6] = {Op::EQI, Op::NEI, Op::LTI, Op::LEI, Op::GTI, Op::GEI};
-    static constexpr Op kFloat[6] = {Op::EQF, Op::NEF, Op::LTF, Op::LEF, Op::GTF, Op::GEF};
     if (k == Kind::Float && how <= 1)
       float_equality(how == 0);
     else
-      emit(k == Kind::Int ? kInt[how] : kFloat[how]);
+      emit(k == Kind::Int ? Op::CMPI : Op::CMPF, static_cast<uint32_t>(how));
   }
 
   // Float == (or !=) at the manual's precision (1.3.2: 25000.001 == 25000 is true, 25000.01 ==
@@ -324,7 +322,7 @@ class Gen {
     emit(Op::ADDF);
     push_float(1e-7f);
     emit(Op::MULF);
-    emit(equal ? Op::LEF : Op::GTF);
+    emit(Op::CMPF, equal ? bytecode::kRelLe : bytecode::kRelGt);
   }
 
   // A variable's index as an int; a scalar indexed [0] needs none.
@@ -580,7 +578,7 @@ class Gen {
     emit(Op::DUP);
     emit(Op::ABSF);
     push_float(1e37f);
-    emit(Op::LTF);
+    emit(Op::CMPF, bytecode::kRelLt);
     cb_.emit_to(Op::JNZ, ok);
     emit(Op::RAISE, kOverflow);
     cb_.bind(ok);
@@ -873,10 +871,7 @@ class Gen {
     auto test = [&](bool up) {
       value(var);
       emit(Op::LDL, end_slot);
-      if (k == Kind::Int)
-        emit(up ? Op::LEI : Op::GEI);
-      else
-        emit(up ? Op::LEF : Op::GEF);
+      emit(k == Kind::Int ? Op::CMPI : Op::CMPF, up ? bytecode::kRelLe : bytecode::kRelGe);
     };
     if (step_sign != 0) {
       test(step_sign > 0);
@@ -885,10 +880,10 @@ class Gen {
       emit(Op::LDL, static_cast<uint32_t>(step_slot));
       if (k == Kind::Int) {
         push_int(0);
-        emit(Op::GTI);
+        emit(Op::CMPI, bytecode::kRelGt);
       } else {
         push_float(0.0f);
-        emit(Op::GTF);
+        emit(Op::CMPF, bytecode::kRelGt);
       }
       cb_.emit_to(Op::JZ, down);
       test(true);
@@ -954,7 +949,7 @@ class Gen {
         if (k == Kind::Dynamic)
           emit(Op::CMPD, 0);
         else if (k == Kind::Int)
-          emit(Op::EQI);
+          emit(Op::CMPI, bytecode::kRelEq);
         else
           float_equality(true);
         cb_.emit_to(Op::JZ, next_case);

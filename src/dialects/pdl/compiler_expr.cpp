@@ -398,10 +398,7 @@ Ty Compiler::builtin(const std::string& raw, size_t at) {
     CodeBuilder::Label second = code_.new_label(), end = code_.new_label();
     code_.emit(Op::LDL, s1);
     code_.emit(Op::LDL, s2);
-    if (f)
-      code_.emit(name == "max" ? Op::GEF : Op::LEF);
-    else
-      code_.emit(name == "max" ? Op::GEI : Op::LEI);
+    code_.emit(f ? Op::CMPF : Op::CMPI, name == "max" ? bytecode::kRelGe : bytecode::kRelLe);
     code_.emit_to(Op::JZ, second);
     code_.emit(Op::LDL, s1);
     code_.emit_to(Op::JMP, end);
@@ -523,20 +520,18 @@ void Compiler::cond_atom() {
     code_.emit(Op::SWAP);
     code_.emit(Op::SUBI);
     int_operand(expr(true), at);
-    code_.emit(Op::GEI);
+    code_.emit(Op::CMPI, bytecode::kRelGe);
     return;
   }
   static constexpr std::string_view kRelations[] = {"=", "<>", "<", "<=", ">", ">="};
-  static constexpr Op kInt[] = {Op::EQI, Op::NEI, Op::LTI, Op::LEI, Op::GTI, Op::GEI};
-  static constexpr Op kFloat[] = {Op::EQF, Op::NEF, Op::LTF, Op::LEF, Op::GTF, Op::GEF};
-  for (size_t i = 0; i < 6; ++i) {
+  for (uint32_t i = 0; i < 6; ++i) {  // in the order of the relations, kRelEq..kRelGe
     if (!at_op(kRelations[i])) continue;
     next();
     const Ty b = expr(true);
     const bool f = is_float(a) || is_float(b);
     if (f && !is_float(a)) code_.emit(Op::I2F2);
     if (f && !is_float(b)) code_.emit(Op::I2F);
-    code_.emit(f ? kFloat[i] : kInt[i]);
+    code_.emit(f ? Op::CMPF : Op::CMPI, i);
     return;
   }
   if (lone_state) return;  // already 0 or 1
@@ -544,7 +539,7 @@ void Compiler::cond_atom() {
     code_.emit(Op::TRUTHF);
   } else {
     push_int(0);
-    code_.emit(Op::NEI);
+    code_.emit(Op::CMPI, bytecode::kRelNe);
   }
 }
 

@@ -663,10 +663,7 @@ Ty Compiler::memory_reduction(const std::string& raw, size_t at, CodeBuilder::La
     const uint32_t e = scratch();
     code_.emit(Op::STL, e);
     code_.emit(Op::LDL, e);
-    if (f)
-      code_.emit(max ? Op::LTF : Op::GTF);
-    else
-      code_.emit(max ? Op::LTI : Op::GTI);
+    code_.emit(f ? Op::CMPF : Op::CMPI, max ? bytecode::kRelLt : bytecode::kRelGt);
     CodeBuilder::Label keep = code_.new_label();
     code_.emit_to(Op::JZ, keep);
     code_.emit(Op::LDL, e);

@@ -4,6 +4,8 @@
 #include <map>
 #include <optional>
 
+#include "dialects/pup/cup_math.h"
+
 namespace uprog::pup {
 
 using bytecode::Op;
@@ -31,19 +33,24 @@ bool emit_math(bytecode::CodeBuilder& b, int32_t n) {
     b.emit(*op);
     return true;
   }
+  if (const auto f = intrinsic_of(n)) {
+    b.emit(Op::INTRIN, static_cast<uint32_t>(*f));
+    return true;
+  }
   if (!is_logical(n)) return false;
   // Logical and/or: both operands to 0/1 first.
-  b.emit_imm(Op::PUSHI, 0), b.emit(Op::NEI), b.emit(Op::SWAP), b.emit_imm(Op::PUSHI, 0),
-      b.emit(Op::NEI);
+  b.emit_imm(Op::PUSHI, 0), b.emit(Op::CMPI, bytecode::kRelNe), b.emit(Op::SWAP),
+      b.emit_imm(Op::PUSHI, 0), b.emit(Op::CMPI, bytecode::kRelNe);
   b.emit(n == 20 ? Op::ANDI : Op::ORI);
   return true;
 }
 
 void emit_condition(bytecode::CodeBuilder& b, int32_t c) {
-  static const Op kOps[] = {Op::EQI, Op::NEI, Op::GTI, Op::GEI, Op::LTI, Op::LEI};
-  if (c >= 3 && c <= 8) return b.emit(kOps[c - 3]);
+  using namespace bytecode;
+  static constexpr uint32_t kRelations[] = {kRelEq, kRelNe, kRelGt, kRelGe, kRelLt, kRelLe};
+  if (c >= 3 && c <= 8) return b.emit(Op::CMPI, kRelations[c - 3]);
   b.emit_imm(Op::PUSHI, 0);
-  b.emit(c == 2 ? Op::GTI : c == 9 ? Op::EQI : Op::NEI);
+  b.emit(Op::CMPI, c == 2 ? kRelGt : c == 9 ? kRelEq : kRelNe);
 }
 
 }  // namespace uprog::pup

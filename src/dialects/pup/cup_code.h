@@ -7,9 +7,11 @@
 
 namespace uprog::pup {
 
-// Whether the VM computes AMath[n] (emit_math emits it), where the firmware does not.
+// Whether AMath[n] is VM instructions that cannot fail (a copy of lines may hold it); not the
+// intrinsic functions (INTRIN), some of which fail on their domain.
 bool math_in_vm(int32_t n);
-// AMath[n] in VM instructions; false (nothing emitted) where the firmware computes it.
+// AMath[n] in VM instructions (an intrinsic function for sqrt, power and the reals); false
+// (nothing emitted) where the firmware computes it.
 bool emit_math(bytecode::CodeBuilder& b, int32_t n);
 // Leaves 1/0 for condition c (2..10) on the stack.
 void emit_condition(bytecode::CodeBuilder& b, int32_t c);

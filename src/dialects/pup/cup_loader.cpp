@@ -227,12 +227,8 @@ class Loader {
     return kIndexedBase + static_cast<uint32_t>(out_.indexed.size() - 1);
   }
 
-  void math(bytecode::CodeBuilder& b, int32_t n) {
-    if (emit_math(b, n)) return;
-    if (math_arity(n) == 1) return b.emit(Op::CMDGETX, kMathBase + static_cast<uint32_t>(n));
-    b.emit(Op::CMDRUN, kMathBase + static_cast<uint32_t>(n), 2);
-    b.emit(Op::CMDGET, kMathResult, 0);
-  }
+  // Every AMath[n] is VM code (the loader refused a number that is no operation).
+  void math(bytecode::CodeBuilder& b, int32_t n) { emit_math(b, n); }
 
   void line_code(bytecode::CodeBuilder& b, uint32_t l,
                  std::vector<bytecode::CodeBuilder::Label>& at) {

@@ -20,8 +20,6 @@ namespace uprog::pup {
 // Host command numbers of the image, beyond the keywords' own (KeywordId): what the firmware
 // computes for a line that the VM has no opcode for.
 constexpr uint32_t kIndexedBase = 0x1000;  // + k: indexed access k (APushParamIdx / APopParamIdx)
-constexpr uint32_t kMathBase = 0x2000;     // + n: AMath[n] done by the firmware
-constexpr uint32_t kMathResult = 0x2FFF;   // the last binary AMath's result of the running thread
 constexpr uint32_t kFailBase = 0x3000;     // + code: the line fails with this controller error
 constexpr uint32_t kReturnCheck = 0x3FFF;  // AReturn: error 29 when the thread is in no call
 constexpr uint32_t kStatusBase = 0x4000;   // + s: AGetStatus[s] of the index v, 1 or 0

@@ -1,37 +1,13 @@
 // AMath, ACompare and AJump's numbered operations (cup_math.h).
 #include "dialects/pup/cup_math.h"
 
-#include <cmath>
-
 #include "support/arith.h"
+#include "vm/intrinsic.h"
 
 namespace uprog::pup {
 namespace {
 
 using namespace arith;
-
-// A real result in thousandths (or mrad), rounded, saturating.
-int32_t milli(double v) { return saturate_to_int(std::round(v * 1000.0)); }
-double real(int32_t v) { return static_cast<double>(v) / 1000.0; }
-
-int32_t int_sqrt(int32_t v) {
-  auto r = static_cast<int64_t>(std::sqrt(static_cast<double>(v)));
-  while (r * r > v) --r;
-  while ((r + 1) * (r + 1) <= v) ++r;
-  return static_cast<int32_t>(r);
-}
-
-int32_t int_power(int32_t base, int32_t exponent) {
-  int64_t result = 1;
-  for (int32_t i = 0; i < exponent; ++i) {
-    result *= base;
-    if (result > INT32_MAX) return INT32_MAX;
-    if (result < INT32_MIN) return INT32_MIN;
-    if (result == 0 || result == 1) break;  // stays there
-  }
-  if (result == 1 && base == -1) return exponent % 2 == 0 ? 1 : -1;
-  return static_cast<int32_t>(result);
-}
 
 int32_t fail(int32_t code, int32_t* error) {
   *error = code;
@@ -39,6 +15,39 @@ int32_t fail(int32_t code, int32_t* error) {
 }
 
 }  // namespace
+
+// The AMath operations the VM computes as an intrinsic function (INTRIN), by the same code.
+std::optional<bytecode::Intrinsic> intrinsic_of(int32_t n) {
+  using bytecode::Intrinsic;
+  switch (n) {
+    case 8:
+      return Intrinsic::ISQRT;
+    case 9:
+      return Intrinsic::IPOW;
+    case 30:
+      return Intrinsic::SINM;
+    case 31:
+      return Intrinsic::COSM;
+    case 32:
+      return Intrinsic::TANM;
+    case 33:
+      return Intrinsic::ASINM;
+    case 34:
+      return Intrinsic::ACOSM;
+    case 35:
+      return Intrinsic::ATANM;
+    case 36:
+      return Intrinsic::ATAN2M;
+    case 40:
+      return Intrinsic::LNM;
+    case 41:
+      return Intrinsic::LOG10M;
+    case 42:
+      return Intrinsic::EXPM;
+    default:
+      return std::nullopt;
+  }
+}
 
 int math_arity(int32_t n) {
   switch (n) {
@@ -79,6 +88,14 @@ int math_arity(int32_t n) {
 
 int32_t apply_math(int32_t n, int32_t second, int32_t first, int32_t* error) {
   *error = 0;
+  if (const auto f = intrinsic_of(n)) {
+    // A binary function's first argument is the one below (`second`), a unary one's the top.
+    const vm::IntrinsicResult r = math_arity(n) == 2 ? vm::apply_intrinsic(*f, second, first)
+                                                     : vm::apply_intrinsic(*f, first);
+    if (r.error == vm::RunError::DivisionByZero) return fail(30, error);
+    if (r.error != vm::RunError::None) return fail(31, error);
+    return r.value;
+  }
   switch (n) {
     case 1:
       return wrap_add(second, first);
@@ -94,10 +111,6 @@ int32_t apply_math(int32_t n, int32_t second, int32_t first, int32_t* error) {
       return saturating_neg(first);
     case 7:
       return saturating_abs(first);
-    case 8:
-      return first < 0 ? fail(31, error) : int_sqrt(first);
-    case 9:
-      return first < 0 ? fail(31, error) : int_power(second, first);
     case 10:
       return second & first;
     case 11:
@@ -116,26 +129,6 @@ int32_t apply_math(int32_t n, int32_t second, int32_t first, int32_t* error) {
       return (second != 0 || first != 0) ? 1 : 0;
     case 22:
       return first == 0 ? 1 : 0;
-    case 30:
-      return milli(std::sin(real(first)));
-    case 31:
-      return milli(std::cos(real(first)));
-    case 32:
-      return milli(std::tan(real(first)));
-    case 33:
-      return first < -1000 || first > 1000 ? fail(31, error) : milli(std::asin(real(first)));
-    case 34:
-      return first < -1000 || first > 1000 ? fail(31, error) : milli(std::acos(real(first)));
-    case 35:
-      return milli(std::atan(real(first)));
-    case 36:
-      return milli(std::atan2(static_cast<double>(second), static_cast<double>(first)));
-    case 40:
-      return first <= 0 ? fail(31, error) : milli(std::log(real(first)));
-    case 41:
-      return first <= 0 ? fail(31, error) : milli(std::log10(real(first)));
-    case 42:
-      return milli(std::exp(real(first)));
     default:
       return fail(31, error);
   }

@@ -31,6 +31,8 @@ int32_t code_of(vm::RunError e, int32_t detail) {
       return detail;
     case vm::RunError::DivisionByZero:
       return 30;
+    case vm::RunError::Domain:  // an intrinsic's argument (AMath[8], [9], [33], ...)
+      return 31;
     case vm::RunError::StackOverflow:
       return 26;
     case vm::RunError::CallDepth:
@@ -278,20 +280,15 @@ uint32_t Firmware::running_thread() const {
   return t == scheduling::kNoThread ? 0 : t;
 }
 
-// --- Host: the program's keywords, indexed accesses, math and statuses ---
+// --- Host: the program's keywords, indexed accesses and statuses ---
 
 vm::CommandStatus Firmware::read(uint32_t command, int32_t index, Value& out) {
   int32_t v = 0, code = 0;
-  const uint32_t thread = running_thread();
-  if (command == kMathResult) {
-    v = math_result_[thread];
-  } else if (command >= kStatusBase && command < kStatusBase + 16) {
+  if (command >= kStatusBase && command < kStatusBase + 16) {
     code = status_of(static_cast<int32_t>(command - kStatusBase), index);
     v = code >= 0 ? code : 0;
     code = code < 0 ? -code : 0;
-  } else if (command >= kMathBase && command < kMathResult) {
-    v = apply_math(static_cast<int32_t>(command - kMathBase), 0, index, &code);
-  } else if (command >= kIndexedBase && command < kMathBase) {
+  } else if (command >= kIndexedBase && command < kFailBase) {
     const IndexedAccess& a = cup_.indexed.at(command - kIndexedBase);
     if (index < 1 || index > a.size) return 4;
     code = read_key(a.key, a.base + index - 1, v);
@@ -305,7 +302,7 @@ vm::CommandStatus Firmware::read(uint32_t command, int32_t index, Value& out) {
 }
 
 vm::CommandStatus Firmware::write(uint32_t command, int32_t index, Value value) {
-  if (command >= kIndexedBase && command < kMathBase) {
+  if (command >= kIndexedBase && command < kFailBase) {
     const IndexedAccess& a = cup_.indexed.at(command - kIndexedBase);
     if (index < 1 || index > a.size) return 4;
     return write_key(a.key, a.base + index - 1, value.i);
@@ -320,13 +317,6 @@ vm::CommandStatus Firmware::execute(uint32_t command, int32_t index, const Value
   if (command == kReturnCheck) return program_->machine().frame_count(thread) <= 1 ? 29 : 0;
   if (command >= kFailBase && command < kReturnCheck)
     return static_cast<int32_t>(command - kFailBase);
-  if (command >= kMathBase && command < kMathResult) {
-    if (count != 2) return 2;
-    int32_t code = 0;
-    math_result_[thread] =
-        apply_math(static_cast<int32_t>(command - kMathBase), args[0].i, args[1].i, &code);
-    return code;
-  }
   if (command >= static_cast<uint32_t>(KeywordId::kCount)) return 1;
   return run_key(static_cast<KeywordId>(command), index, count > 0, count > 0 ? args[0].i : 0,
                  thread);

@@ -141,7 +141,6 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::array<int32_t, 4> timers_{};
   uint32_t timer_us_ = 0;
   std::array<int32_t, kThreads + 1> thread_error_{};
-  std::array<int32_t, kThreads + 1> math_result_{};
   std::vector<int32_t> line_stack_;              // thread 0: the CUP keywords sent over the line
   std::vector<std::array<int32_t, 3>> err_log_;  // newest first: code, source, line
   struct Single {

@@ -140,22 +140,22 @@ class Generator {
     expression(e.b);
     switch (e.op) {
       case Op::Gt:
-        b_.emit(bytecode::Op::GTI);
+        b_.emit(bytecode::Op::CMPI, bytecode::kRelGt);
         break;
       case Op::Ge:
-        b_.emit(bytecode::Op::GEI);
+        b_.emit(bytecode::Op::CMPI, bytecode::kRelGe);
         break;
       case Op::Lt:
-        b_.emit(bytecode::Op::LTI);
+        b_.emit(bytecode::Op::CMPI, bytecode::kRelLt);
         break;
       case Op::Le:
-        b_.emit(bytecode::Op::LEI);
+        b_.emit(bytecode::Op::CMPI, bytecode::kRelLe);
         break;
       case Op::Eq:
-        b_.emit(bytecode::Op::EQI);
+        b_.emit(bytecode::Op::CMPI, bytecode::kRelEq);
         break;
       default:
-        b_.emit(bytecode::Op::NEI);
+        b_.emit(bytecode::Op::CMPI, bytecode::kRelNe);
         break;
     }
   }
@@ -170,7 +170,7 @@ class Generator {
   void truth(int i) {
     expression(i);
     b_.emit(bytecode::Op::PUSHI, 0);
-    b_.emit(bytecode::Op::NEI);
+    b_.emit(bytecode::Op::CMPI, bytecode::kRelNe);
   }
 
   // The quotient on top must fit 16 bits, or the run stops with Overflow.
@@ -179,7 +179,7 @@ class Generator {
     b_.emit(bytecode::Op::DUP);
     b_.emit(bytecode::Op::DUP);
     b_.emit(bytecode::Op::SEXT, 16);
-    b_.emit(bytecode::Op::EQI);
+    b_.emit(bytecode::Op::CMPI, bytecode::kRelEq);
     b_.emit_to(bytecode::Op::JNZ, ok);
     b_.emit(bytecode::Op::RAISE, static_cast<uint32_t>(vm::RunError::Overflow));
     b_.bind(ok);
@@ -424,7 +424,7 @@ class Generator {
     } else {
       b_.emit(bytecode::Op::LDL, bound);
     }
-    b_.emit(s.step > 0 ? bytecode::Op::LEI : bytecode::Op::GEI);
+    b_.emit(bytecode::Op::CMPI, s.step > 0 ? bytecode::kRelLe : bytecode::kRelGe);
     branch_ending_line(bytecode::Op::JNZ, again);
   }
 
@@ -499,7 +499,7 @@ class Generator {
     scratch(bytecode::Op::STL, kScratchA);
     scratch(bytecode::Op::LDL, kScratchA);
     b_.emit(bytecode::Op::LDG, max);
-    b_.emit(bytecode::Op::GTI);
+    b_.emit(bytecode::Op::CMPI, bytecode::kRelGt);
     b_.emit_to(bytecode::Op::JZ, below);
     b_.emit(bytecode::Op::LDG, max);
     scratch(bytecode::Op::STL, kScratchA);
@@ -510,7 +510,7 @@ class Generator {
     scratch(bytecode::Op::STL, kScratchB);
     scratch(bytecode::Op::LDL, kScratchA);
     scratch(bytecode::Op::LDL, kScratchB);
-    b_.emit(bytecode::Op::LTI);
+    b_.emit(bytecode::Op::CMPI, bytecode::kRelLt);
     b_.emit_to(bytecode::Op::JZ, done);
     scratch(bytecode::Op::LDL, kScratchB);
     scratch(bytecode::Op::STL, kScratchA);

@@ -37,7 +37,7 @@ main:
 fib:
   LDL 0
   PUSHI 2
-  LTI
+  CMPI 2
   JZ more
   LDL 0
   STL 1

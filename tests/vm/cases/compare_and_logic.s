@@ -7,62 +7,62 @@ main:
   PUSHI 0
   PUSHI 3
   PUSHI 3
-  EQI
+  CMPI 0
   STGX c
   PUSHI 1
   PUSHI 3
   PUSHI 5
-  NEI
+  CMPI 1
   STGX c
   PUSHI 2
   PUSHI 1
   PUSHI 2
-  LTI
+  CMPI 2
   STGX c
   PUSHI 3
   PUSHI 3
   PUSHI 2
-  LEI
+  CMPI 3
   STGX c
   PUSHI 4
   PUSHI 3
   PUSHI 2
-  GTI
+  CMPI 4
   STGX c
   PUSHI 5
   PUSHI 1
   PUSHI 2
-  GEI
+  CMPI 5
   STGX c
   PUSHI 6
   PUSHK 0
   PUSHK 0
-  EQF
+  CMPF 0
   STGX c
   PUSHI 7
   PUSHK 0
   PUSHK 1
-  NEF
+  CMPF 1
   STGX c
   PUSHI 8
   PUSHK 1
   PUSHK 0
-  LTF
+  CMPF 2
   STGX c
   PUSHI 9
   PUSHK 0
   PUSHK 1
-  LEF
+  CMPF 3
   STGX c
   PUSHI 10
   PUSHK 0
   PUSHK 1
-  GTF
+  CMPF 4
   STGX c
   PUSHI 11
   PUSHK 1
   PUSHK 0
-  GEF
+  CMPF 5
   STGX c
   PUSHI 12
   PUSHI 4

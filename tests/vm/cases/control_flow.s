@@ -10,7 +10,7 @@ main:
 loop:
   LDL 0
   PUSHI 100
-  GTI
+  CMPI 4
   JNZ done
   LDL 0
   PUSHI 3

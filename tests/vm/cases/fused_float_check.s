@@ -15,7 +15,7 @@ main:
   DUP
   ABSF
   PUSHK 2
-  LTF
+  CMPF 2
   JNZ ok
   RAISE 16
 ok:
@@ -26,7 +26,7 @@ ok:
   DUP
   ABSF
   PUSHK 2
-  LTF
+  CMPF 2
   JNZ ok2
   RAISE 16
 ok2:

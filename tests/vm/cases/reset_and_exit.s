@@ -9,7 +9,7 @@ main:
   STG passes
   LDG passes
   PUSHI 3
-  LTI
+  CMPI 2
   JZ finish
   CALL deep 0
   RET
@@ -19,7 +19,7 @@ finish:
 deep:
   LDG passes
   PUSHI 3
-  LTI
+  CMPI 2
   JZ stop
   RESET main        ; start main again, from inside a call
 stop:

@@ -23,7 +23,7 @@ main:
 up:
   LDL 0
   PUSHI 10
-  GEI
+  CMPI 5
   JNZ counted
   LDG sum
   LDL 0
@@ -37,7 +37,7 @@ counted:
 down:
   LDL 2
   PUSHI 0
-  LEI
+  CMPI 3
   JNZ stored
   LDG down
   LDL 2

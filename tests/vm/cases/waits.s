@@ -19,7 +19,7 @@ spin:
   YIELD
   LDG spins
   PUSHI 3
-  LTI
+  CMPI 2
   JNZ spin
   RET
 ; expect end: finished
