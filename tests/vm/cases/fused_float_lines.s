@@ -1,7 +1,7 @@
 ; Gold's float condition lines without an else (`if (d >= 0)`): the branch "unless", then the
-; EOL that ends the line where it falls through; base code that the machine fuses at load into
-; JNRELFLKEOL (a local with a constant) and JNRELFLLEOL (with a local), one instruction for the
-; six relations (vm/fused.def). fell[k] is 1 when test k falls through, that is when its
+; EOL that ends the line where it falls through. The machine fuses the test at load into
+; JNRELFLK (a local with a constant) or JNRELFLL (with a local) and runs the EOL on its own (the
+; fused forms with the EOL went: bench/fusion_census found them in one bench program only). fell[k] is 1 when test k falls through, that is when its
 ; relation holds (src/bytecode/opcodes.def: JNxxF jumps unless float a <rel> b; a NaN holds only
 ; for !=). Locals: x = 1.5, y = 4.0, q = NaN; constant k1 = 4.0.
 .global int "fell" 24

@@ -1,6 +1,7 @@
-; The folded compare-and-jumps of vm/fused.def (JRELGC, JRELGG, JNRELFGK, JNRELFGG): one fused
-; instruction each for the six relations, which it reads from its jump's own opcode. Base code
-; that the machine fuses at load; every relation of each form, the left side below, equal to and
+; The folded compare-and-jumps of vm/fused.def (JRELGC, JRELGG, JNRELFGK): one fused
+; instruction each for the six relations, which it reads from its jump's own opcode; two float
+; globals compared are LDG2 and the base JNxxF since JNRELFGG went. Base code that the machine
+; fuses at load; every relation of each form, the left side below, equal to and
 ; above the right (and a NaN). taken[k] is 1 when test k jumps; each comment gives the
 ; comparison and its answer by the relation's meaning (src/bytecode/opcodes.def: JxxI jumps
 ; when int a <rel> b, JNxxF unless float a <rel> b, so a NaN jumps for every relation but !=).
