@@ -34,6 +34,7 @@ GOLD_EC_TEXTS = {
     114: 'error raised by the program',
     115: 'data memory address out of range',
     116: 'result out of range',
+    117: "argument outside the function's domain",
     201: 'No program is loaded',
     202: 'The program has no such function, label or auto-routine',
     203: 'The program is running',

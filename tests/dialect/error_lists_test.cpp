@@ -36,7 +36,8 @@ const std::map<std::string, std::map<int32_t, std::string>> kNotFromATranscript 
       {112, "a line's image always has its one routine"},
       {113, "no event enters a line's machine"},
       {114, "no Gold statement raises an error"},
-      {115, "Gold has no pointers"}}},
+      {115, "Gold has no pointers"},
+      {117, "Gold calls no intrinsic function (INTRIN)"}}},
     {"pdl",
      {{12,
        "no host line makes the simulated axis refuse an enable today: with `fault feedback` "
