@@ -35,12 +35,18 @@ constexpr bool fused_op_matches(const FusedShape& s, uint32_t k, bytecode::Op op
 template <typename T>
 constexpr bool relation_holds(uint32_t relation, T a, T b) {
   switch (relation) {
-    case 0: return a == b;
-    case 1: return a != b;
-    case 2: return a < b;
-    case 3: return a <= b;
-    case 4: return a > b;
-    default: return a >= b;
+    case 0:
+      return a == b;
+    case 1:
+      return a != b;
+    case 2:
+      return a < b;
+    case 3:
+      return a <= b;
+    case 4:
+      return a > b;
+    default:
+      return a >= b;
   }
 }
 static_assert(relation_holds(0, 2, 2) && relation_holds(1, 2, 3) && relation_holds(2, 2, 3) &&

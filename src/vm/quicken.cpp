@@ -56,10 +56,10 @@ class Quickener {
 #define IMM_AT(k) bytecode::word_imm(at[fused_offset(fused_detail::kShapes[index], k)])
 #define B_AT(k) (at[fused_offset(fused_detail::kShapes[index], k) + 1])
     switch (f) {
-#define FUSED(name, pattern, when, meaning, ...)                  \
-  case Fused::name: {                                             \
+#define FUSED(name, pattern, when, meaning, ...)                                \
+  case Fused::name: {                                                           \
     [[maybe_unused]] constexpr auto index = static_cast<uint32_t>(Fused::name); \
-    return (when);                                                \
+    return (when);                                                              \
   }
 #include "vm/fused.def"
 #undef FUSED

@@ -23,8 +23,7 @@ namespace fs = std::filesystem;
 
 // The first instruction of `code` that is no base instruction, or "" when there is none.
 std::string first_not_base(std::span<const uint32_t> code) {
-  for (size_t pc = 0; pc < code.size();
-       pc += bytecode::op_length(bytecode::word_op(code[pc]))) {
+  for (size_t pc = 0; pc < code.size(); pc += bytecode::op_length(bytecode::word_op(code[pc]))) {
     if ((code[pc] & 0xFFu) >= bytecode::kBaseOpCount)
       return "opcode " + std::to_string(code[pc] & 0xFFu) + " at " + std::to_string(pc);
   }
@@ -56,15 +55,14 @@ std::vector<uint32_t> stored_code(const dialect::Dialect& d, const dialect::Comp
 
 TEST(BaseOnly, EveryExampleAndWorkloadIsStoredInBaseInstructions) {
   std::vector<fs::path> files;
-  for (const char* dir : {"examples/gold", "examples/pdl", "examples/pup", "examples/st",
-                          "bench/peers"})
+  for (const char* dir :
+       {"examples/gold", "examples/pdl", "examples/pup", "examples/st", "bench/peers"})
     for (const fs::path& f : source_files(dir)) files.push_back(f);
   int compiled = 0;
   for (const fs::path& f : files) {
     const dialect::Dialect* d = dialects::for_file(f.string());
     if (d == nullptr) continue;  // a transcript, a Lua peer, a script
-    const dialect::CompileOutput out =
-        d->compile_source(SourceFile{f.string(), read_whole(f)}, {});
+    const dialect::CompileOutput out = d->compile_source(SourceFile{f.string(), read_whole(f)}, {});
     ASSERT_TRUE(out.ok()) << f;
     const std::vector<uint32_t> code = stored_code(*d, out, f);
     EXPECT_FALSE(code.empty()) << f;

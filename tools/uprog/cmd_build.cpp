@@ -41,8 +41,8 @@ std::vector<std::string> quickened_notes(const bytecode::Image& image) {
   vm::quicken(code.data(), size, view, scratch.data());
   for (uint32_t pc = 0; pc < size; pc += vm::instruction_length(code[pc]))
     if (vm::is_fused(code[pc]))
-      notes[pc] = fmt::format("quickened: {}",
-                              vm::kFusedNames[(code[pc] & 0xFFu) - vm::kFirstFused]);
+      notes[pc] =
+          fmt::format("quickened: {}", vm::kFusedNames[(code[pc] & 0xFFu) - vm::kFirstFused]);
   return notes;
 }
 
@@ -74,9 +74,9 @@ int build(const BuildOptions& o) {
                  d->name());
       return 1;
     }
-    const std::string text =
-        o.quickened ? bytecode::disassemble(*r.image, quickened_notes(*r.image))
-                    : bytecode::disassemble(*r.image);
+    const std::string text = o.quickened
+                                 ? bytecode::disassemble(*r.image, quickened_notes(*r.image))
+                                 : bytecode::disassemble(*r.image);
     written = write_file_atomically(o.output.empty() ? o.input + ".s" : o.output, text.data(),
                                     text.size(), &error);
   } else {
