@@ -104,6 +104,7 @@ class Merger {
   std::optional<std::pair<Instr, size_t>> match(size_t i) const {
     if (auto r = test_zero(i)) return r;
     if (auto r = compare_branch(i)) return r;
+    if (auto r = local_increment(i)) return r;
     return eol_jump(i);
   }
 
@@ -137,6 +138,16 @@ class Merger {
     else
       return std::nullopt;
     return std::pair{Instr{at(i).pc, jump, branch.a, 0, branch.ends_line}, size_t{2}};
+  }
+
+  // LDL a; PUSHI k; ADDI; STL a -> INCL a k: a local stepped by a constant (`n = n + 1`), one
+  // instruction of every dialect's base set (ADDI and INCL both wrap).
+  std::optional<std::pair<Instr, size_t>> local_increment(size_t i) const {
+    if (!free(i, 3) || !unmarked(i, 3) || at(i).op != Op::LDL || at(i + 1).op != Op::PUSHI ||
+        at(i + 2).op != Op::ADDI || at(i + 3).op != Op::STL || at(i + 3).a != at(i).a)
+      return std::nullopt;
+    const auto step = static_cast<uint32_t>(imm_of(at(i + 1)));
+    return std::pair{Instr{at(i).pc, Op::INCL, at(i).a, step, at(i + 3).ends_line}, size_t{4}};
   }
 
   // PUSHI 0; CMPI != | ==; JZ|JNZ T — a test against zero is the branch itself.

@@ -239,6 +239,64 @@ out:
   EXPECT_EQ(run_and_read(optimized(text), "g"), 3);
 }
 
+TEST(Peephole, StepsALocalByAConstantInOneInstruction) {
+  // `n = n + 3` of a local is INCL, the line's end its mark (both wrap); `m = n + 1` stays as it
+  // is. n counts 5 + 3 and 2147483647 + 1 wraps to -2147483648.
+  const char* text = R"(
+.global int "r" 3
+.const int 2147483647
+.routine function "main" in=0 out=0 entry=main
+.local int "n"
+.local int "m"
+main:
+  PUSHI 5
+  STL 0
+  LDL 0
+  PUSHI 3
+  ADDI
+  STL.eol 0
+  LDL 0
+  PUSHI 1
+  ADDI
+  STL 1
+  PUSHI 0
+  LDL 0
+  STGX r
+  PUSHI 1
+  LDL 1
+  STGX r
+  PUSHK 0
+  STL 0
+  LDL 0
+  PUSHI 1
+  ADDI
+  STL 0
+  PUSHI 2
+  LDL 0
+  STGX r
+  RET
+)";
+  const std::vector<std::string> first = {"L0:", "PUSHI 5", "STL 0"};
+  const std::vector<std::string> other = {"LDL 0",   "PUSHI 1", "ADDI",    "STL 1",
+                                          "PUSHI 0", "LDL 0",   "STGX 0",  "PUSHI 1",
+                                          "LDL 1",   "STGX 0",  "PUSHK 0", "STL 0"};
+  const std::vector<std::string> last = {"PUSHI 2", "LDL 0", "STGX 0", "RET"};
+  const bytecode::Image image =
+      expect_listing(text, {{first, first},
+                            {{"INCL.eol 0 3"}, {"LDL 0", "PUSHI 3", "ADDI", "STL.eol 0"}},
+                            {other, other},
+                            {{"INCL 0 1"}, {"LDL 0", "PUSHI 1", "ADDI", "STL 0"}},
+                            {last, last}});
+  EXPECT_TRUE(base_only(image));
+  LoadedProgram loaded;
+  ASSERT_TRUE(loaded.load(bytecode::disassemble(image)));
+  loaded.machine.start(0, 0);
+  loaded.run_to_end();
+  EXPECT_EQ(loaded.global("r", 0).i, 8);
+  EXPECT_EQ(loaded.global("r", 1).i, 9);
+  EXPECT_EQ(loaded.global("r", 2).i, INT32_MIN);
+}
+
 TEST(Peephole, DropsWhatNothingReachesAndThreadsJumps) {
   // `if (r) s = 1`: the condition's branch ends its line on both paths and jumps past the EOL at
   // its target, which then nothing reaches; the jump over it and the one after `end` end their
