@@ -152,9 +152,13 @@ TEST(st_codegen, AConditionsLineIsOneBranchThatEndsIt) {
   // in the jump back.
   EXPECT_EQ(last_ops(image, 13, 4), "LDG JZ JMP.eol EOL");
   EXPECT_EQ(last_ops(image, 17, 2), "LDG JZ.eol");  // IF S
-  // FOR: the test is at the bottom, after the body's last line and the step; a pass ends with
-  // the branch back against the literal bound, a constant.
-  EXPECT_EQ(last_ops(image, 15, 3), "LDG PUSHK JLEI.eol");
+  // FOR, inverted: the bound into the hidden local and the test on the FOR line, once a loop:
+  // into the body through the EOL at its top, or (no pass) past the loop by the jump that ends
+  // the line. After the body's last line, on every pass, the step and the same test, nothing
+  // between them that control enters, so that the VM fuses them into one INCGJRELGL at load;
+  // that branch back ends the line itself and jumps past the EOL.
+  EXPECT_EQ(last_ops(image, 14, 100), "PUSHI STG PUSHK STL LDG LDL JLEI JMP.eol EOL");
+  EXPECT_EQ(last_ops(image, 15, 7), "LDG PUSHI ADDI STG LDG LDL JLEI.eol");
   // (UNTIL's line keeps the EOL at its way out.)
   for (uint32_t line : {3u, 8u, 15u, 17u})
     for (const std::string& op : ops_on_line(image, line))

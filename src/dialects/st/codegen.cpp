@@ -393,39 +393,41 @@ class Generator {
     taken_path_ends_line(done);
   }
 
-  // The test is at the bottom, entered by a jump from the FOR line's start, so that a pass
-  // pays the step and one branch (a JMP back to a test at the top cannot fuse with the step).
-  // The FOR line ends after the test, as a condition's line does. A literal bound is compared
-  // as a constant (a global-constant branch, JLEGKEOL); any other is evaluated once into the
-  // loop's hidden local.
+  // The loop is inverted: the test runs once on the FOR line before the body (a loop whose
+  // bound is passed already runs no pass, its line ending before the jump past the loop) and
+  // again at the bottom after the step, with no place between them that control arrives at,
+  // so that a pass pays one fused step-and-test, INCGJRELGL (docs/architecture.md, "Fusion at
+  // load"). The FOR line ends once on every path: the top test goes into the body through the
+  // EOL at `again`, or (no pass) past the loop by a jump that ends the line; the bottom one
+  // ends it on both paths itself (the peephole's JNZ.eol, which jumps past that EOL). The
+  // bound, literal or not, goes once into the loop's hidden local, so that every FOR has the
+  // one shape.
   void for_loop(const Stmt& s) {
-    const Expr& to = ex(s.expr2);
-    const bool literal_bound = to.kind == Expr::Kind::Const;
     const uint32_t bound = kFirstForLocal + static_cast<uint32_t>(s.scratch);
-    const L again = b_.new_label(), test = b_.new_label();
+    const L again = b_.new_label(), done = b_.new_label();
     line(s.offset);
     expression(s.expr);
     store(s.target);
-    if (!literal_bound) {
-      expression(s.expr2);
-      b_.emit(bytecode::Op::STL, bound);
-    }
-    b_.emit_to(bytecode::Op::JMP, test);
+    expression(s.expr2);
+    b_.emit(bytecode::Op::STL, bound);
+    for_test(s, bound);
+    branch_ending_line(bytecode::Op::JNZ, again);
+    b_.emit_to(bytecode::Op::JMP, done);
     taken_path_ends_line(again);
     body(s.body);
     b_.emit(bytecode::Op::LDG, s.target);
     push(s.step);
     b_.emit(bytecode::Op::ADDI);
     store(s.target);
-    b_.bind(test);
-    b_.emit(bytecode::Op::LDG, s.target);
-    if (literal_bound) {
-      push(to.value);
-    } else {
-      b_.emit(bytecode::Op::LDL, bound);
-    }
-    b_.emit(bytecode::Op::CMPI, s.step > 0 ? bytecode::kRelLe : bytecode::kRelGe);
+    for_test(s, bound);
     branch_ending_line(bytecode::Op::JNZ, again);
+    b_.bind(done);
+  }
+  // Whether a FOR loop's variable is still within its bound (1 on the stack when it is).
+  void for_test(const Stmt& s, uint32_t bound) {
+    b_.emit(bytecode::Op::LDG, s.target);
+    b_.emit(bytecode::Op::LDL, bound);
+    b_.emit(bytecode::Op::CMPI, s.step > 0 ? bytecode::kRelLe : bytecode::kRelGe);
   }
 
   void ldg(const Arg& a) { b_.emit(bytecode::Op::LDG, a.global); }

@@ -1,0 +1,103 @@
+; A counted loop as ST's FOR is compiled (inverted: the test before the loop and again after the
+; step, the bound in a local): the step and the bottom test are base code that the machine fuses
+; at load into INCGJRELGL (vm/fused.def), for <= (step +1), >= (step -2) and != (step +3).
+; up: 1..4 is 4 passes, ending at 5; down: 10, 8, 6, 4 is 4 passes, ending at 2; ne: 0, 3, 6
+; is 3 passes, ending at 9; none: 7 > 4, no pass, 7 stays.
+.global int "up" 1
+.global int "up_passes" 1
+.global int "down" 1
+.global int "down_passes" 1
+.global int "ne" 1
+.global int "ne_passes" 1
+.global int "none" 1
+.global int "none_passes" 1
+.routine function "main" in=0 out=0 entry=main
+.local int "bound"
+main:
+  PUSHI 1
+  STG up
+  PUSHI 4
+  STL 0  ; bound
+  LDG up
+  LDL 0  ; bound
+  JLEI up_body
+  JMP up_done
+up_body:
+  LDG up_passes
+  PUSHI 1
+  ADDI
+  STG up_passes
+  LDG up
+  PUSHI 1
+  ADDI
+  STG up
+  LDG up
+  LDL 0  ; bound
+  JLEI up_body
+up_done:
+  PUSHI 10
+  STG down
+  PUSHI 3
+  STL 0  ; bound
+  LDG down
+  LDL 0  ; bound
+  JGEI down_body
+  JMP down_done
+down_body:
+  LDG down_passes
+  PUSHI 1
+  ADDI
+  STG down_passes
+  LDG down
+  PUSHI -2
+  ADDI
+  STG down
+  LDG down
+  LDL 0  ; bound
+  JGEI down_body
+down_done:
+  PUSHI 9
+  STL 0  ; bound
+ne_body:
+  LDG ne_passes
+  PUSHI 1
+  ADDI
+  STG ne_passes
+  LDG ne
+  PUSHI 3
+  ADDI
+  STG ne
+  LDG ne
+  LDL 0  ; bound
+  JNEI ne_body
+  PUSHI 7
+  STG none
+  PUSHI 4
+  STL 0  ; bound
+  LDG none
+  LDL 0  ; bound
+  JLEI none_body
+  JMP none_done
+none_body:
+  LDG none_passes
+  PUSHI 1
+  ADDI
+  STG none_passes
+  LDG none
+  PUSHI 1
+  ADDI
+  STG none
+  LDG none
+  LDL 0  ; bound
+  JLEI none_body
+none_done:
+  RET
+; expect end: finished
+; expect up = 5
+; expect up_passes = 4
+; expect down = 2
+; expect down_passes = 4
+; expect ne = 9
+; expect ne_passes = 3
+; expect none = 7
+; expect none_passes = 0
