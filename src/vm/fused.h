@@ -9,7 +9,7 @@
 
 namespace uprog::vm {
 
-constexpr uint32_t kMostFusedInstructions = 10;
+constexpr uint32_t kMostFusedInstructions = 14;
 
 // One fused instruction's pattern: its base instructions and the words they take together.
 // A folded family's pattern has one compare-and-jump that stands for its six relations
