@@ -80,6 +80,7 @@ class PupCompiler {
   Block* innermost(bool loops_only);
   void close_function();
   void finish();
+  void refuse_what_the_loader_refuses(const std::string& path);
 
   PupOutput out_;
   std::vector<OutLine> lines_;

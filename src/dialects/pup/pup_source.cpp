@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "dialects/pup/builtin_header.h"
+#include "dialects/pup/cup_loader.h"
 #include "dialects/pup/keywords.h"
 #include "dialects/pup/message.h"
 #include "dialects/pup/pup_compiler_impl.h"
@@ -53,8 +54,20 @@ PupOutput PupCompiler::run(const std::string& path, const std::string& text) {
       !why.empty()) {
     error(Error::ProgramTooLarge, Location{path, 1, 1}, why);
   }
+  if (out_.ok()) refuse_what_the_loader_refuses(path);
   out_.vars = vars_;
   return std::move(out_);
+}
+
+// Message lines pass into the CUP as written (`AJump[1],301`), so the program the compiler made
+// may still be one the controller's loader refuses: its refusal, at the source of the CUP line.
+void PupCompiler::refuse_what_the_loader_refuses(const std::string& path) {
+  std::string why;
+  uint32_t line = 0;
+  if (load_cup(out_.program, &why, &line)) return;
+  const bool placed = line >= 1 && line <= out_.places.size();
+  error(Error::LoaderRefuses, placed ? out_.places[line - 1] : Location{path, 1, 1},
+        "CUP " + why);
 }
 
 // Lines end at CR LF, LF or CR.
