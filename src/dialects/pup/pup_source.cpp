@@ -66,8 +66,7 @@ void PupCompiler::refuse_what_the_loader_refuses(const std::string& path) {
   uint32_t line = 0;
   if (load_cup(out_.program, &why, &line)) return;
   const bool placed = line >= 1 && line <= out_.places.size();
-  error(Error::LoaderRefuses, placed ? out_.places[line - 1] : Location{path, 1, 1},
-        "CUP " + why);
+  error(Error::LoaderRefuses, placed ? out_.places[line - 1] : Location{path, 1, 1}, "CUP " + why);
 }
 
 // Lines end at CR LF, LF or CR.
