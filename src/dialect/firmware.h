@@ -127,6 +127,12 @@ class Firmware {
     (void)name;
     return std::nullopt;
   }
+  // A program word by the dialect's own name, counted as its manual counts (the AG300's
+  // "AGenData[3]", a #definevar name); nullopt: the neutral lookup, a global as name[element].
+  virtual std::optional<drive::ProgramWords::Word> recorder_word(std::string_view name) const {
+    (void)name;
+    return std::nullopt;
+  }
 
   // --- for the debugger (src/debug); the defaults offer nothing, so a dialect adds them as it can
   // --- The program in RAM (its machine and hosted image: line table, locals), or nullptr.

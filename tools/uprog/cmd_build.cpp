@@ -2,6 +2,7 @@
 // keeps (Gold: a binary image, .upi), or with --emit asm into the image's uprog assembly text.
 #include <fmt/core.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <memory>
@@ -52,6 +53,8 @@ int build(const BuildOptions& o) {
       return 1;
     }
     const std::string text = bytecode::disassemble(*r.image);
+    if (o.output == "-")
+      return std::fwrite(text.data(), 1, text.size(), stdout) == text.size() ? 0 : 1;
     written = write_file_atomically(o.output.empty() ? o.input + ".s" : o.output, text.data(),
                                     text.size(), &error);
   } else {
@@ -75,7 +78,7 @@ void add_build(Options& cmd, Action& action) {
   cmd.option("FILE", o->input, "source file").required();
   cmd.option("-o,--output", o->output,
              "output file (default FILE plus the stored form's extension, "
-             "e.g. FILE.upi, or FILE.s with --emit asm)");
+             "e.g. FILE.upi, or FILE.s with --emit asm; - writes the assembly to stdout)");
   cmd.option("--emit", o->emit, "image (the stored form) or asm").one_of({"image", "asm"});
   add_dialect_option(cmd, o->dialect);
   cmd.on_chosen([&action, o] { action = [o] { return build(*o); }; });

@@ -68,6 +68,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::vector<dialect::ThreadInfo> threads() const override;
 
   // --- the debugger's hooks (debug_hooks.cpp)
+  const dialect::LoadedProgram* loaded_program() const override { return program_.get(); }
   dialect::LoadedProgram* debug_program() override { return program_.get(); }
   dialect::Evaluation evaluate(uint32_t thread, uint32_t depth,
                                std::string_view expression) override;

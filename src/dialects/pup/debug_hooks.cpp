@@ -1,7 +1,9 @@
 // What the AG300 firmware offers the debugger (dialect::Firmware's debug hooks): the program in
 // RAM with the PUP source's line table from the debug map, a PUP expression evaluated on the
-// controller's values now, and the #definevar variables by name.
+// controller's values now, and the #definevar variables by name (for the recorder too).
 #include <fmt/core.h>
+
+#include <charconv>
 
 #include "dialects/pup/firmware.h"
 #include "dialects/pup/pup_lexer.h"
@@ -88,6 +90,35 @@ dialect::Evaluation Firmware::evaluate(uint32_t, uint32_t, std::string_view expr
   out.value = std::to_string(value);
   out.is_true = value != 0;
   return out;
+}
+
+// "AGenData[n]" (n from 1, as the manual counts), a #definevar name, or an element "arr[i]" of
+// a #definevar array (i from 1): the word of the controller's general data it names.
+std::optional<drive::ProgramWords::Word> Firmware::recorder_word(std::string_view name) const {
+  std::string_view base = name;
+  int32_t index = 0;
+  if (const size_t open = name.find('['); open != std::string_view::npos) {
+    const std::string_view digits = name.substr(open + 1, name.size() - open - 2);
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
+    if (name.back() != ']' || ec != std::errc() || end != digits.data() + digits.size())
+      return std::nullopt;
+    base = name.substr(0, open);
+  }
+  int32_t slot = 0;  // AGenData[slot]
+  const Keyword* k = find_keyword(std::string(base));
+  if (k != nullptr && k->id == KeywordId::GenData && index >= 1) {
+    slot = index;
+  } else if (debug_map_) {
+    const auto var = debug_map_->vars.find(std::string(base));
+    if (var == debug_map_->vars.end()) return std::nullopt;
+    const Var& v = var->second;
+    if (v.array != (index != 0) || (v.array && index > v.size)) return std::nullopt;
+    slot = v.base + (v.array ? index - 1 : 0);
+  }
+  if (slot < 1 || slot > static_cast<int32_t>(kGenDataSize)) return std::nullopt;
+  drive::ProgramWords::Word word;
+  word.bound = &gen_data_[static_cast<size_t>(slot - 1)];
+  return word;
 }
 
 std::vector<dialect::DebugVariable> Firmware::debug_variables() {

@@ -48,7 +48,9 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::vector<dialect::ThreadInfo> threads() const override;
 
   // --- debug_hooks.cpp: the debugger's hooks (dialect/firmware.h) ---
+  const dialect::LoadedProgram* loaded_program() const override { return program_.get(); }
   dialect::LoadedProgram* debug_program() override { return program_.get(); }
+  std::optional<drive::ProgramWords::Word> recorder_word(std::string_view name) const override;
   dialect::Evaluation evaluate(uint32_t thread, uint32_t depth,
                                std::string_view expression) override;
   void set_debug_map(std::string_view map) override;

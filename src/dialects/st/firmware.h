@@ -77,6 +77,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::string state_summary() const override;
   std::vector<dialect::ThreadInfo> threads() const override;
   // The debugger (docs/debugging.md): the PLC programs are its threads; an expression in ST.
+  const dialect::LoadedProgram* loaded_program() const override { return program_.get(); }
   dialect::LoadedProgram* debug_program() override { return program_.get(); }
   // {"source": PATH}: the name of the file the source just stored came from (debug_hooks.cpp).
   void set_debug_map(std::string_view map) override;
