@@ -8,13 +8,15 @@
 #include <vector>
 
 #include "lsp/text_document.h"
+#include "lsp/workspace.h"
 #include "support/diagnostic.h"
 
 namespace uprog::lsp {
 
-// `compiled_as` is the file name the document was compiled under (its path, or its URI).
+// `compiled_as` is the file name the document was compiled under (its path, or its URI);
+// `workspace`, when given, has the included files' texts (open or on disk) for their ranges.
 nlohmann::json to_lsp_diagnostics(const TextDocument& doc, const std::string& compiled_as,
                                   const std::vector<Diagnostic>& diagnostics,
-                                  PositionEncoding encoding);
+                                  PositionEncoding encoding, const Workspace* workspace = nullptr);
 
 }  // namespace uprog::lsp

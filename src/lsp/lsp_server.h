@@ -17,6 +17,7 @@
 #include "lsp/analysis.h"
 #include "lsp/reference_index.h"
 #include "lsp/text_document.h"
+#include "lsp/workspace.h"
 
 namespace uprog::lsp {
 
@@ -58,6 +59,10 @@ class LspServer {
   void did_close(const json& params);
   void did_save(const json& params);
   void check_all_again();
+  void check_includers(const Document& header, int64_t due_ms);
+  void change_folders(const json& event);
+  // The workspace as it is: its folders and the open documents.
+  Workspace workspace() const;
 
   // A feature's request on an open document: its position, the document as analysed.
   json feature(const std::string& method, const json& params);
@@ -77,6 +82,7 @@ class LspServer {
   bool shutdown_ = false;
   bool done_ = false;
   std::map<std::string, Document> documents_;  // by URI
+  std::vector<std::string> folders_;           // the workspace's, as paths
   std::map<const dialect::Dialect*, std::unique_ptr<ReferenceIndex>> references_;
   ClientSupport client_;
 };
