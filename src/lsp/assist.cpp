@@ -51,6 +51,8 @@ int completion_kind(ReferenceKind k) {
       return 6;  // Variable
     case ReferenceKind::Function:
       return 3;  // Function
+    case ReferenceKind::Constant:
+      return 21;  // Constant
     case ReferenceKind::Keyword:
     case ReferenceKind::Directive:
       return 14;  // Keyword
@@ -224,32 +226,31 @@ json completion(const Analysis& a, const Workspace& ws, Position p, const Client
 json signature_help(const Analysis& a, const Workspace& ws, Position p) {
   const std::string& text = a.doc().text;
   const size_t cursor = std::min(a.offset(p), text.size());
-  // Back to the '(' this argument list opened, counting the commas before the cursor.
+  // Back to the '(' of the call whose arguments the cursor is in, counting the commas before the
+  // cursor; a '(' with no name before it groups an expression and is passed over.
   int depth = 0;
   size_t commas = 0;
-  size_t open = std::string::npos;
-  for (size_t i = cursor; i > 0 && cursor - i < 2000; --i) {
+  std::string name;
+  for (size_t i = cursor; i > 0 && cursor - i < 2000 && name.empty(); --i) {
     const char c = text[i - 1];
     if (c == '\n' || c == ';') break;
     if (c == ')') ++depth;
-    if (c == '(') {
-      if (depth == 0) {
-        open = i - 1;
-        break;
-      }
-      --depth;
-    }
     if (c == ',' && depth == 0) ++commas;
+    if (c != '(') continue;
+    if (depth > 0) {
+      --depth;
+      continue;
+    }
+    size_t end = i - 1;
+    while (end > 0 && text[end - 1] == ' ') --end;
+    size_t begin = end;
+    while (begin > 0 && (std::isalnum(static_cast<unsigned char>(text[begin - 1])) != 0 ||
+                         text[begin - 1] == '_'))
+      --begin;
+    name = text.substr(begin, end - begin);
+    if (name.empty()) commas = 0;  // a group's commas are not the call's
   }
-  if (open == std::string::npos) return nullptr;
-  size_t end = open;
-  while (end > 0 && text[end - 1] == ' ') --end;
-  size_t begin = end;
-  while (begin > 0 &&
-         (std::isalnum(static_cast<unsigned char>(text[begin - 1])) != 0 || text[begin - 1] == '_'))
-    --begin;
-  if (begin == end) return nullptr;
-  const std::string name = text.substr(begin, end - begin);
+  if (name.empty()) return nullptr;
   std::string label, documentation;
   std::optional<IncludedSymbol> inc;
   const SourceSymbol* s = a.symbol_for(name, static_cast<int>(p.line) + 1);

@@ -68,6 +68,10 @@ json semantic_tokens(const Analysis& a) {
             type = kFunction;
             modifiers |= kDefaultLibrary;
             break;
+          case dialect::ReferenceKind::Constant:
+            type = kMacro;
+            modifiers |= kDefaultLibrary | kReadonly;
+            break;
           case dialect::ReferenceKind::Command:
           case dialect::ReferenceKind::SystemVariable:
             type = kProperty;
