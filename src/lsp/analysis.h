@@ -92,6 +92,8 @@ nlohmann::json references(const Analysis& a, const Workspace& w, Position p,
                           bool include_declaration);
 nlohmann::json rename(const Analysis& a, const Workspace& w, Position p,
                       const std::string& new_name);
+// LSP 3.17 prepareRename: the name's range and text, or FeatureError when it is not renamed.
+nlohmann::json prepare_rename(const Analysis& a, const Workspace& w, Position p);
 nlohmann::json document_symbols(const Analysis& a, const ClientSupport& client);
 nlohmann::json folding_ranges(const Analysis& a);
 

@@ -104,6 +104,33 @@ int severity_of(Severity s) {
 
 }  // namespace
 
+std::map<std::string, json> included_file_diagnostics(const TextDocument& doc,
+                                                      const std::string& compiled_as,
+                                                      const std::vector<Diagnostic>& diagnostics,
+                                                      PositionEncoding encoding,
+                                                      const Workspace& workspace) {
+  std::map<std::string, json> out;
+  for (const Diagnostic& d : diagnostics) {
+    if (d.where.file.empty() || d.where.file == compiled_as) continue;
+    const TextDocument* file = workspace.load(d.where.file, doc);
+    if (file == nullptr) continue;  // PUP's built-in akribis.puh, a file gone since
+    const int line = include_line(doc, compiled_as, d.where.file);
+    json& list = out[file->uri];
+    if (list.is_null()) list = json::array();
+    list.push_back(
+        {{"range", range_in(file->text, d.where.line, d.where.column, encoding)},
+         {"severity", severity_of(d.severity)},
+         {"code", d.code},
+         {"source", "uprog " + d.scheme},
+         {"message", d.message},
+         {"relatedInformation",
+          json::array(
+              {{{"location", {{"uri", doc.uri}, {"range", range_in(doc.text, line, 0, encoding)}}},
+                {"message", "included from here"}}})}});
+  }
+  return out;
+}
+
 json to_lsp_diagnostics(const TextDocument& doc, const std::string& compiled_as,
                         const std::vector<Diagnostic>& diagnostics, PositionEncoding encoding,
                         const Workspace* workspace) {

@@ -166,7 +166,7 @@ json LspServer::initialize(const json& params) {
       {"signatureHelpProvider", {{"triggerCharacters", json::array({"(", ","})}}},
       {"definitionProvider", true},
       {"referencesProvider", true},
-      {"renameProvider", true},
+      {"renameProvider", {{"prepareProvider", true}}},
       {"documentSymbolProvider", true},
       {"foldingRangeProvider", true},
       {"semanticTokensProvider", {{"legend", semantic_token_legend()}, {"full", true}}},
@@ -185,15 +185,12 @@ const ReferenceIndex* LspServer::reference_of(const dialect::Dialect* d) {
 
 json LspServer::feature(const std::string& method, const json& params) {
   using namespace jsonrpc;
-  static const char* const kMethods[] = {"textDocument/hover",
-                                         "textDocument/completion",
-                                         "textDocument/signatureHelp",
-                                         "textDocument/definition",
-                                         "textDocument/references",
-                                         "textDocument/rename",
-                                         "textDocument/documentSymbol",
-                                         "textDocument/foldingRange",
-                                         "textDocument/semanticTokens/full"};
+  static const char* const kMethods[] = {
+      "textDocument/hover",         "textDocument/completion",
+      "textDocument/signatureHelp", "textDocument/definition",
+      "textDocument/references",    "textDocument/rename",
+      "textDocument/prepareRename", "textDocument/documentSymbol",
+      "textDocument/foldingRange",  "textDocument/semanticTokens/full"};
   if (std::find(std::begin(kMethods), std::end(kMethods), method) == std::end(kMethods))
     throw RequestError{ErrorCode::MethodNotFound, "no method '" + method + "' here"};
   const std::string uri = required_string(required_object(params, "textDocument"), "uri");
@@ -215,6 +212,7 @@ json LspServer::feature(const std::string& method, const json& params) {
     return references(analysis, w, at,
                       bool_or(object_or_empty(params, "context"), "includeDeclaration", true));
   }
+  if (method == "textDocument/prepareRename") return prepare_rename(analysis, w, at);
   return rename(analysis, w, at, required_string(params, "newName"));
 }
 
@@ -300,6 +298,7 @@ void LspServer::did_close(const json& params) {
   const auto it = documents_.find(jsonrpc::required_string(id, "uri"));
   if (it == documents_.end()) return;
   check_includers(it->second, now());  // they read the file on disk again
+  publish_included(it->first, {});     // what it found in its headers goes with it
   // Its diagnostics go with it (LSP 3.17: the server clears what it published).
   send(jsonrpc::rpc_notification("textDocument/publishDiagnostics",
                                  {{"uri", it->first}, {"diagnostics", json::array()}}));
@@ -367,10 +366,12 @@ void LspServer::publish_diagnostics(Document& doc) {
   const Workspace w = workspace();
   settings.includes = w.include_search();
   json diagnostics = json::array();
+  std::map<std::string, json> in_includes;
   try {
     const dialect::CompileOutput out =
         doc.text.dialect->compile_source(SourceFile{compiled_as, doc.text.text}, settings);
     diagnostics = to_lsp_diagnostics(doc.text, compiled_as, out.diagnostics, encoding_, &w);
+    in_includes = included_file_diagnostics(doc.text, compiled_as, out.diagnostics, encoding_, w);
   } catch (const std::exception& e) {
     log(1, "checking " + doc.text.uri + " failed: " + e.what());
   }
@@ -378,6 +379,32 @@ void LspServer::publish_diagnostics(Document& doc) {
                                  {{"uri", doc.text.uri},
                                   {"version", doc.text.version},
                                   {"diagnostics", std::move(diagnostics)}}));
+  publish_included(doc.text.uri, std::move(in_includes));
+}
+
+// An included file that is not open shows what its includers' compiles found in it (all of
+// them, each once); one that is open shows its own. A file they no longer find errors in is
+// cleared.
+void LspServer::publish_included(const std::string& includer, std::map<std::string, json> by_file) {
+  std::vector<std::string> touched;
+  for (auto& [file, by_includer] : from_includers_) {
+    if (by_includer.erase(includer) > 0) touched.push_back(file);
+  }
+  for (auto& [file, list] : by_file) {
+    from_includers_[file][includer] = std::move(list);
+    if (std::find(touched.begin(), touched.end(), file) == touched.end()) touched.push_back(file);
+  }
+  for (const std::string& file : touched) {
+    json all = json::array();
+    for (const auto& [from, list] : from_includers_[file]) {
+      for (const json& d : list)
+        if (std::find(all.begin(), all.end(), d) == all.end()) all.push_back(d);
+    }
+    if (from_includers_[file].empty()) from_includers_.erase(file);
+    if (documents_.count(file) > 0) continue;  // open: its own diagnostics stand
+    send(jsonrpc::rpc_notification("textDocument/publishDiagnostics",
+                                   {{"uri", file}, {"diagnostics", std::move(all)}}));
+  }
 }
 
 }  // namespace uprog::lsp

@@ -60,6 +60,7 @@ class LspServer {
   void did_save(const json& params);
   void check_all_again();
   void check_includers(const Document& header, int64_t due_ms);
+  void publish_included(const std::string& includer, std::map<std::string, json> by_file);
   void change_folders(const json& event);
   // The workspace as it is: its folders and the open documents.
   Workspace workspace() const;
@@ -83,6 +84,8 @@ class LspServer {
   bool done_ = false;
   std::map<std::string, Document> documents_;  // by URI
   std::vector<std::string> folders_;           // the workspace's, as paths
+  // Diagnostics in included files that are not open: by the file's URI, by the includer's.
+  std::map<std::string, std::map<std::string, json>> from_includers_;
   std::map<const dialect::Dialect*, std::unique_ptr<ReferenceIndex>> references_;
   ClientSupport client_;
 };

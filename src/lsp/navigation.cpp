@@ -184,11 +184,13 @@ json references(const Analysis& a, const Workspace& w, Position p, bool include_
   return out;
 }
 
-json rename(const Analysis& a, const Workspace& w, Position p, const std::string& new_name) {
+// What a rename at `p` renames; FeatureError saying why when there is nothing the program may
+// rename there.
+Target renamed_at(const Analysis& a, const Workspace& w, Position p) {
   const dialect::SourceWord* word = a.word_at(p);
   if (word == nullptr) throw FeatureError("there is no name here to rename");
   const std::string old_name(Analysis::name_of(*word));
-  const std::optional<Target> t = target_at(a, w, p);
+  std::optional<Target> t = target_at(a, w, p);
   if (!t) {
     const dialect::ReferenceEntry* e =
         a.reference() != nullptr ? a.reference()->find(old_name) : nullptr;
@@ -200,6 +202,18 @@ json rename(const Analysis& a, const Workspace& w, Position p, const std::string
                        "' is declared neither in this document nor in a file it includes");
   }
   if (t->symbol.kind == SymbolKind::Task) throw FeatureError("a task is named by its number");
+  return std::move(*t);
+}
+
+json prepare_rename(const Analysis& a, const Workspace& w, Position p) {
+  const Target t = renamed_at(a, w, p);
+  const dialect::SourceWord* word = a.word_at(p);
+  return {{"range", a.name_range(*word)}, {"placeholder", t.symbol.name}};
+}
+
+json rename(const Analysis& a, const Workspace& w, Position p, const std::string& new_name) {
+  const Target t = renamed_at(a, w, p);
+  const std::string old_name = t.symbol.name;
   if (!is_name(new_name))
     throw FeatureError("'" + new_name +
                        "' is not a name (a letter or '_', then letters, digits "
@@ -209,10 +223,10 @@ json rename(const Analysis& a, const Workspace& w, Position p, const std::string
     throw FeatureError("'" + new_name + "' is a " + kind_name(e->kind) +
                        " of the language or the drive: a program's name cannot be it");
   if (new_name != old_name)
-    refuse_clash(Analysis(*t->file, a.reference(), a.encoding()), w, t->symbol, new_name);
+    refuse_clash(Analysis(*t.file, a.reference(), a.encoding()), w, t.symbol, new_name);
   std::deque<Analysis> analyses;
   json changes = json::object();
-  for (const Occurrence& o : occurrences(*t, a, w, analyses)) {
+  for (const Occurrence& o : occurrences(t, a, w, analyses)) {
     json& edits = changes[o.in->doc().uri];
     if (edits.is_null()) edits = json::array();
     edits.push_back({{"range", o.in->name_range(*o.word)}, {"newText", new_name}});

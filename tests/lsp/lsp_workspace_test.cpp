@@ -165,6 +165,43 @@ TEST(LspWorkspace, AnOpenHeadersUnsavedTextIsCompiled) {
   EXPECT_EQ(after_close, json::array());
 }
 
+// The publishDiagnostics params for `uri` among `messages` (null when none came).
+json published_for(const std::vector<json>& messages, const std::string& uri) {
+  json found;
+  for (const json& m : messages)
+    if (m.value("method", "") == "textDocument/publishDiagnostics" && m["params"]["uri"] == uri)
+      found = m["params"];
+  return found;
+}
+
+TEST(LspWorkspace, AnErrorInAClosedHeaderIsShownInTheHeaderToo) {
+  TempDir d("uprog_lsp_ws_header_diagnostics");
+  // PDL 20 "unknown name" at `y`, twice.h's line 3, column 10.
+  d.write("twice.h", "#long shared\nproc twice(long x, long* out) do\n  *out=x*y;\nend;\n");
+  LspClient c;
+  initialize_in(c, {{"rootUri", "file://" + d.path.string()}});
+  const std::vector<json> opened = c.notify("textDocument/didOpen", {{"textDocument",
+                                                                      {{"uri", d.uri("main.pdl")},
+                                                                       {"languageId", "hiwin-pdl"},
+                                                                       {"version", 1},
+                                                                       {"text", kTwiceUser}}}});
+  const json header = published_for(opened, d.uri("twice.h"));
+  ASSERT_FALSE(header.is_null());
+  ASSERT_EQ(header["diagnostics"].size(), 1u) << header.dump();
+  const json& diag = header["diagnostics"][0];
+  EXPECT_EQ(diag["code"], 20);
+  EXPECT_EQ(diag["range"], range(2, 9, 10));
+  EXPECT_EQ(diag["relatedInformation"][0]["location"]["uri"], d.uri("main.pdl"));
+  EXPECT_EQ(diag["relatedInformation"][0]["location"]["range"]["start"]["line"], 0);
+  // Fixed on disk: the header's diagnostics are cleared.
+  d.write("twice.h", kTwiceHeader);
+  c.notify("workspace/didChangeWatchedFiles",
+           {{"changes", {{{"uri", d.uri("twice.h")}, {"type", 2}}}}});
+  const json cleared = published_for(c.wait(0), d.uri("twice.h"));
+  ASSERT_FALSE(cleared.is_null());
+  EXPECT_EQ(cleared["diagnostics"], json::array());
+}
+
 // twice.h and two open documents that include it, one of them also naming `shared`.
 struct TwoIncluders {
   TempDir d{"uprog_lsp_ws_rename"};
@@ -240,6 +277,12 @@ TEST(LspWorkspace, RenameRefusesWordsOfTheLanguageAndBadNames) {
   expect_refused(w.c, at(w.first, 1, 6), "shared", "already declared");
   // A word of the language or the drive is not the program's to rename.
   expect_refused(w.c, at(w.first, 4, 1), "stop", "not a name of the program's");  // halt
+  // prepareRename (LSP 3.17) answers the same before the user types a new name.
+  std::vector<json> out = w.c.request("textDocument/prepareRename", at(w.first, 3, 2));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0]["result"], (json{{"range", range(3, 0, 5)}, {"placeholder", "twice"}}));
+  out = w.c.request("textDocument/prepareRename", at(w.first, 4, 1));
+  EXPECT_EQ(out.at(0)["error"]["code"], -32803) << out.at(0).dump();
   LspClient g;
   g.initialize();
   const std::string gold = "file:///w/r.ehl";
