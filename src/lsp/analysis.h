@@ -100,6 +100,6 @@ nlohmann::json folding_ranges(const Analysis& a);
 // The semantic token legend the server announces, and the tokens of a document (LSP 3.17's
 // relative encoding: five integers per token).
 nlohmann::json semantic_token_legend();
-nlohmann::json semantic_tokens(const Analysis& a);
+nlohmann::json semantic_tokens(const Analysis& a, const Workspace& w);
 
 }  // namespace uprog::lsp

@@ -202,7 +202,7 @@ json LspServer::feature(const std::string& method, const json& params) {
   const Workspace w = workspace();
   if (method == "textDocument/documentSymbol") return document_symbols(analysis, client_);
   if (method == "textDocument/foldingRange") return folding_ranges(analysis);
-  if (method == "textDocument/semanticTokens/full") return semantic_tokens(analysis);
+  if (method == "textDocument/semanticTokens/full") return semantic_tokens(analysis, w);
   const Position at = position_from(required_object(params, "position"));
   if (method == "textDocument/hover") return hover(analysis, w, at);
   if (method == "textDocument/completion") return completion(analysis, w, at, client_);

@@ -65,13 +65,18 @@ IncludeSearch Workspace::include_search() const {
 }
 
 std::optional<std::string> Workspace::find_include(const std::string& includer,
-                                                   const std::string& name) const {
+                                                   const std::string& name,
+                                                   const std::string& root) const {
   const fs::path given(name);
   std::vector<fs::path> candidates;
   if (given.is_absolute()) {
     candidates.push_back(given);
   } else {
     candidates.push_back(fs::path(includer).parent_path() / given);
+    // PUP (whose headers are .puh): a header's #include without a folder is also looked for
+    // beside the .pup (pup_source.cpp); PDL's preprocessor looks beside the includer only.
+    if (includer != root && given.parent_path().empty() && given.extension() == ".puh")
+      candidates.push_back(fs::path(root).parent_path() / given);
     for (const std::string& folder : folders_) candidates.push_back(fs::path(folder) / given);
   }
   for (const fs::path& c : candidates) {
@@ -89,7 +94,7 @@ std::vector<std::string> Workspace::includes_of(const TextDocument& doc, int dep
     const auto [includer, level] = pending.back();
     pending.pop_back();
     for (const std::string& name : include_names(*includer)) {
-      const std::optional<std::string> file = find_include(includer->path, name);
+      const std::optional<std::string> file = find_include(includer->path, name, doc.path);
       if (!file || *file == normal_path(doc.path) ||
           std::find(files.begin(), files.end(), *file) != files.end())
         continue;

@@ -38,8 +38,9 @@ class Workspace {
   const TextDocument* load(const std::string& path, const TextDocument& like) const;
 
  private:
-  std::optional<std::string> find_include(const std::string& includer,
-                                          const std::string& name) const;
+  // Where `includer`'s `#include name` is found, for the document at `root` (a normal path).
+  std::optional<std::string> find_include(const std::string& includer, const std::string& name,
+                                          const std::string& root) const;
 
   std::vector<std::string> folders_;
   std::vector<const TextDocument*> open_;

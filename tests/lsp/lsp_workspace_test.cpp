@@ -124,6 +124,21 @@ TEST(LspWorkspace, PupHeaderIsFoundInTheRootFolder) {
   bool offers_moves = false;
   for (const json& item : done[0]["result"]["items"]) offers_moves |= item["label"] == "Moves";
   EXPECT_TRUE(offers_moves);
+  // Its semantic token is the header's variable's: (line, character, length, type) decoded from
+  // LSP's relative encoding; type 2 is "variable" in the legend.
+  const std::vector<json> tokens =
+      c.request("textDocument/semanticTokens/full", {{"textDocument", {{"uri", uri}}}});
+  const json& data = tokens.at(0)["result"]["data"];
+  int64_t line = 0, character = 0;
+  bool target_is_variable = false;
+  for (size_t i = 0; i + 4 < data.size(); i += 5) {
+    line += data[i].get<int64_t>();
+    character = data[i].get<int64_t>() == 0 ? character + data[i + 1].get<int64_t>()
+                                            : data[i + 1].get<int64_t>();
+    if (line == 8 && character == 0)
+      target_is_variable = data[i + 2] == 6 && data[i + 3] == 2;  // "Target", variable
+  }
+  EXPECT_TRUE(target_is_variable) << data.dump();
 }
 
 TEST(LspWorkspace, AnOpenHeadersUnsavedTextIsCompiled) {
