@@ -250,6 +250,10 @@ TEST(LspWorkspace, ReferencesOfAHeadersNameReachEveryIncluder) {
   const json uses = json::array({{{"uri", w.second}, {"range", range(2, 10, 16)}},
                                  {{"uri", w.first}, {"range", range(3, 10, 16)}}});
   EXPECT_EQ(out[0]["result"], uses) << out[0]["result"].dump();
+  // Asked from the header itself, open in the editor: the same places.
+  w.c.open(w.header, "hiwin-pdl", kTwiceHeader);
+  out = w.c.request("textDocument/references", at(w.header, 1, 6));
+  EXPECT_EQ(out[0]["result"], expected) << out[0]["result"].dump();
 }
 
 TEST(LspWorkspace, RenameOfAHeadersNameEditsEveryFile) {
