@@ -148,6 +148,31 @@ TEST(LspDialectFeatures, Gold) {
   EXPECT_EQ(s.signature(15, 33), (std::pair<std::string, int>{"fix(x)", 0}));
 }
 
+// Gold's declarations come from its compiler's front end when the source parses: an array's
+// dimension (manual 2.6: `float speeds[4]`) is in its type, and a declaration a #define writes
+// (2.9.1: the identifier is replaced by its string) is found where the macro stands. While the
+// source does not parse, the word scanner's outline stands in (docs/editors.md).
+TEST(LspDialectFeatures, GoldDeclarationsFromTheCompiler) {
+  const std::string text =
+      "#define DECLARE_LIMIT int limit\n"  // 0
+      "float speeds[4]\n"                  // 1
+      "DECLARE_LIMIT\n"                    // 2
+      "function main()\n"                  // 3
+      "limit = 3\n"                        // 4
+      "speeds[1] = limit\n"                // 5
+      "return\n";                          // 6
+  Session s("file:///w/compiled.ehl", "elmo-gold", text);
+  ASSERT_EQ(s.diagnostics(), json::array()) << s.diagnostics().dump();
+  EXPECT_TRUE(has(s.hover(5, 1), "float[4] (global)")) << s.hover(5, 1);
+  EXPECT_EQ(s.outline(), (Names{"DECLARE_LIMIT", "speeds", "limit", "main"}));
+  EXPECT_EQ(s.definition(4, 1), (std::pair<int, int>{2, 0}));  // where the macro declares it
+  // A syntax error (Gold 7, "x = 1 +"): the scanner's outline, the same names.
+  Session broken("file:///w/broken.ehl", "elmo-gold",
+                 "int count\nfunction main()\nint k\nk = 1 +\nreturn\n");
+  ASSERT_FALSE(broken.diagnostics().empty());
+  EXPECT_EQ(broken.outline(), (Names{"count", "main(k)"}));
+}
+
 // PDL: manual 2.5.1's add3 with its temporary (`#long tmp;` inside the procedure), 2.2.3's goto
 // and label, #define (2.5.3), a built-in (2.3.1; PDL calls nest in no expression: a call is the
 // whole right side, its arguments variables, the last may be a constant, 2.1).
