@@ -31,7 +31,10 @@ struct ClientSupport {
 
 class Analysis {
  public:
-  Analysis(const TextDocument& doc, const ReferenceIndex* reference, PositionEncoding encoding);
+  // `outline`: the document's declarations when the caller has them already (the server keeps
+  // them per version); null: the dialect's outline of the text, made here.
+  Analysis(const TextDocument& doc, const ReferenceIndex* reference, PositionEncoding encoding,
+           const std::vector<dialect::SourceSymbol>* outline = nullptr);
 
   const TextDocument& doc() const { return doc_; }
   const ReferenceIndex* reference() const { return reference_; }

@@ -198,7 +198,9 @@ json LspServer::feature(const std::string& method, const json& params) {
   if (it == documents_.end())
     throw RequestError{ErrorCode::InvalidParams, "no open document " + uri};
   const TextDocument& doc = it->second.text;
-  const Analysis analysis(doc, reference_of(doc.dialect), encoding_);
+  std::optional<std::vector<dialect::SourceSymbol>>& outline = it->second.outline;
+  if (!outline && doc.dialect != nullptr) outline = doc.dialect->outline(doc.text);
+  const Analysis analysis(doc, reference_of(doc.dialect), encoding_, outline ? &*outline : nullptr);
   const Workspace w = workspace();
   if (method == "textDocument/documentSymbol") return document_symbols(analysis, client_);
   if (method == "textDocument/foldingRange") return folding_ranges(analysis);
@@ -275,6 +277,7 @@ void LspServer::did_change(const json& params) {
       doc.text.text = replacement;
     }
   }
+  doc.outline.reset();  // made again from the new text when a feature asks
   doc.text.version = integer_or(id, "version", doc.text.version + 1);
   doc.due_ms = now() + options_.debounce_ms;
   check_includers(doc, *doc.due_ms);

@@ -49,6 +49,9 @@ class LspServer {
   struct Document {
     TextDocument text;
     std::optional<int64_t> due_ms;  // when its diagnostics are to be published
+    // Its declarations (Dialect::outline: Gold's parses the text) for the features, made once
+    // per text: an editor asks several features of each version.
+    std::optional<std::vector<dialect::SourceSymbol>> outline;
   };
 
   void request(const json& id, const std::string& method, const json& params);

@@ -22,6 +22,11 @@ class Session {
     diagnostics_ = c_.open(uri_, language_id, text)["diagnostics"];
   }
   const json& diagnostics() const { return diagnostics_; }
+  // The whole text replaced, as a client without incremental sync sends it.
+  void change(const std::string& text) {
+    c_.notify("textDocument/didChange", {{"textDocument", {{"uri", uri_}, {"version", ++version_}}},
+                                         {"contentChanges", {{{"text", text}}}}});
+  }
   json result(const std::string& method, int line = -1, int character = -1) {
     json params = {{"textDocument", {{"uri", uri_}}}};
     if (line >= 0) params["position"] = {{"line", line}, {"character", character}};
@@ -84,6 +89,7 @@ class Session {
   LspClient c_;
   std::string uri_;
   json diagnostics_;
+  int version_ = 1;
 };
 
 bool has(const std::string& text, const std::string& part) {
@@ -166,6 +172,9 @@ TEST(LspDialectFeatures, GoldDeclarationsFromTheCompiler) {
   EXPECT_TRUE(has(s.hover(5, 1), "float[4] (global)")) << s.hover(5, 1);
   EXPECT_EQ(s.outline(), (Names{"DECLARE_LIMIT", "speeds", "limit", "main"}));
   EXPECT_EQ(s.definition(4, 1), (std::pair<int, int>{2, 0}));  // where the macro declares it
+  // The server keeps the declarations per text: a change makes them again.
+  s.change(text + "\nfunction more()\nreturn\n");
+  EXPECT_EQ(s.outline(), (Names{"DECLARE_LIMIT", "speeds", "limit", "main", "more"}));
   // A syntax error (Gold 7, "x = 1 +"): the scanner's outline, the same names.
   Session broken("file:///w/broken.ehl", "elmo-gold",
                  "int count\nfunction main()\nint k\nk = 1 +\nreturn\n");
