@@ -92,13 +92,13 @@ async function runCase(browser, c) {
   try {
     await languageServerSteps(page, c, shot);
 
-    // A breakpoint on the line (a condition or hit count by right click), then run at x2: Run
+    // A breakpoint on the line (a condition or hit count by right click), then run at x5: Run
     // builds and downloads the editor's text first.
     const line = lineOf(c.file, c.breakAt);
     const special = c.condition || c.hits;
     await clickGutter(page, line, special ? [c.condition ?? "", c.hits ?? ""] : null);
     await page.locator(".cm-breakpoint-gutter .bp:visible").waitFor();
-    await page.selectOption("[data-testid=speed]", "2");
+    await page.selectOption("[data-testid=speed]", "5");
     await page.click("[data-testid=run]");
     await expectText(page, "output", /build: downloaded\nprogram started/);
 
