@@ -13,18 +13,26 @@ async function setValue(page, testid, value) {
   await page.dispatchEvent(`[data-testid=${testid}]`, "change");
 }
 
-// A program's global is a channel once the program runs (its image is loaded).
-async function pickChannels(page) {
+async function pickSignals(page) {
   await page.check("[data-testid=channel-velocity]");
-  await page.fill("[data-testid=channel-add]", "moves");  // the example's global
+  await page.waitForFunction(() => window.studio.scope.channels.map((c) => c.name).join() ===
+    "position,velocity", null, { timeout: 10000 });
+}
+
+// A program's global is a channel once the program runs (its image is loaded): first_move.txt
+// has moves = 1 once the move has settled.
+async function pickAGlobal(page) {
+  await page.fill("[data-testid=channel-add]", "moves");
   await page.press("[data-testid=channel-add]", "Enter");
   await page.waitForFunction(() => window.studio.scope.channels.map((c) => c.name).join() ===
     "position,velocity,moves", null, { timeout: 10000 });
+  await page.waitForFunction(() => window.studio.scope.latest("moves") === 1, null,
+    { timeout: 20000 });
 }
 
-// Rising through kLevel on position: the window starts kPretrigger of it before the crossing. The
-// channels are picked as the program starts, before the move (it waits for the loop to close).
+// Rising through kLevel on position: the window starts kPretrigger of it before the crossing.
 async function triggerCatchesTheMove(page) {
+  await pickSignals(page);
   await page.selectOption("[data-testid=trigger-mode]", "rising");
   await page.selectOption("[data-testid=trigger-channel]", { label: "position" });
   await setValue(page, "trigger-level", kLevel);
@@ -33,15 +41,18 @@ async function triggerCatchesTheMove(page) {
   await page.selectOption("[data-testid=speed]", "2");
   await page.click("[data-testid=run]");
   await expectText(page, "output", /program started/);
-  await pickChannels(page);
-  await page.waitForFunction(() => window.studio.scope.shown != null, null, { timeout: 20000 });
+  // The window on display is the trigger's (free run drew others before).
+  await page.waitForFunction((pre) => {
+    const s = window.studio.scope;
+    return s.triggerAt >= 0 && s.shown?.[0] === s.triggerAt - pre;
+  }, Math.round(kWindowS / kPeriodS * kPretrigger), { timeout: 30000 });
 }
 
 // The CSV: a header, every servo cycle of the window (none skipped), the crossing where the
 // pre-trigger puts it.
 function checkCsv(text, shownPoints) {
   const rows = text.trim().split("\n");
-  if (rows[0] !== "time_s,position,velocity,moves") throw new Error(`CSV head: ${rows[0]}`);
+  if (rows[0] !== "time_s,position,velocity") throw new Error(`CSV head: ${rows[0]}`);
   const samples = rows.slice(1).map((r) => r.split(",").map(Number));
   const expected = Math.round(kWindowS / kPeriodS);
   if (samples.length !== expected) throw new Error(`CSV: ${samples.length} samples, not ${expected}`);
@@ -79,7 +90,6 @@ async function cursors(page) {
 // 8 channels at x1 for 1.5 s: every cycle between the first and the last sample arrived, in order,
 // and the drive's time kept up with the wall clock.
 async function eightChannelsAtFullRate(page) {
-  await page.click("[data-testid=scope-pause]");  // resume
   await page.selectOption("[data-testid=trigger-mode]", "free");
   for (const name of ["position_error", "reference_position", "reference_velocity",
     "current_command", "active_current"]) {
@@ -124,11 +134,14 @@ export async function scopeCase(browser) {
   try {
     await named("triggerCatchesTheMove", triggerCatchesTheMove(page));
     await named("pauseHoldsThePlot", pauseHoldsThePlot(page));
+    step = "export";
     const shownPoints = await page.evaluate(() => window.studio.scope.plot.data[0].length);
     checkCsv((await download(page, "export-csv")).toString("utf8"), shownPoints);
     const png = await download(page, "export-png");
     if (png.subarray(1, 4).toString() !== "PNG") throw new Error("PNG export is not a PNG");
     await named("cursors", cursors(page));
+    await page.click("[data-testid=scope-pause]");  // resume
+    await named("pickAGlobal", pickAGlobal(page));
     await page.screenshot({ path: join(shots, "gold_7_scope.png") });
     const rate = await named("eightChannelsAtFullRate", eightChannelsAtFullRate(page));
     if (errors.length) throw new Error(`page errors: ${errors.join("; ")}`);
