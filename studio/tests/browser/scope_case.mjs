@@ -140,9 +140,9 @@ export async function scopeCase(browser) {
     const png = await download(page, "export-png");
     if (png.subarray(1, 4).toString() !== "PNG") throw new Error("PNG export is not a PNG");
     await named("cursors", cursors(page));
+    await page.screenshot({ path: join(shots, "gold_7_scope.png") });
     await page.click("[data-testid=scope-pause]");  // resume
     await named("pickAGlobal", pickAGlobal(page));
-    await page.screenshot({ path: join(shots, "gold_7_scope.png") });
     const rate = await named("eightChannelsAtFullRate", eightChannelsAtFullRate(page));
     if (errors.length) throw new Error(`page errors: ${errors.join("; ")}`);
     return rate;
