@@ -12,7 +12,8 @@
 import { existsSync, mkdirSync } from "node:fs";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
-import { clickGutter, expectText, lineOf, openStudio, shots, variableText } from "./browser/helpers.mjs";
+import { clickGutter, expectText, lineOf, openStudio, shots, variableText }
+  from "./browser/helpers.mjs";
 import { languageServerSteps } from "./browser/editor_steps.mjs";
 import { stepCase } from "./browser/step_case.mjs";
 import { scopeCase } from "./browser/scope_case.mjs";
@@ -37,7 +38,8 @@ const cases = [
   { dialect: "gold", file: "examples/gold/first_move.ehl", target: 100000,  // PA=100000
     thread: "program", breakAt: "moves = moves + 1", read: ["moves", "0"], step: ["moves", "1"],
     lsp: { broken: "moves = moves + 1",
-      hover: { text: "UM = 5", word: "UM", shows: /unit mode.*1 current.*2 velocity.*5 position/is },
+      hover: { text: "UM = 5", word: "UM",
+        shows: /unit mode.*1 current.*2 velocity.*5 position/is },  // gold-drive.md
       complete: { prefix: "mo", labels: ["moves", "MO"] },  // gold-drive.md: MO, motor enable
       definition: { text: "moves = moves + 1", name: "moves", declared: "int moves" } } },
   // The move ended in time (move_with_timeout.txt: result 1), so line 21 runs and sets t0.
@@ -52,7 +54,8 @@ const cases = [
     thread: "thread 1", breakAt: "Moves = Moves + 1", hits: "3", read: ["Moves", "2"],
     step: ["Moves", "3"],
     lsp: { broken: "Moves = Moves + 1",
-      hover: { text: "AMotorOn = 1", word: "AMotorOn", shows: /motor enable/i },  // akribis-drive.md
+      // akribis-drive.md: AMotorOn is Gold's MO, the motor enable
+      hover: { text: "AMotorOn = 1", word: "AMotorOn", shows: /motor enable/i },
       complete: { prefix: "AMo", labels: ["AMotorOn", "AMotionMode"] },
       definition: { text: "Moves = Moves + 1", name: "Moves", declared: "#definevar Moves" } } },
   // A conditional breakpoint: the second round's (ROUNDS counts 3 rounds, move_sequence.st).
@@ -114,7 +117,7 @@ async function runCase(browser, c) {
       for (let i = s.oldest(); i < s.total; ++i) max = Math.max(max, s.at(0, i));
       return max >= 0.99 * target;
     }, c.target);
-    if (!moved) throw new Error(`${c.dialect}: the position never reached ${c.target} in the scope`);
+    if (!moved) throw new Error(`${c.dialect}: the position never reached ${c.target}`);
     await expectText(page, "scope", /position = -?\d/);
     await page.locator("[data-testid=variables] .variable").first().waitFor();
     const text = await variableText(page, c.read[0]);
@@ -194,14 +197,15 @@ async function check(name, run) {
   const t0 = Date.now();
   try {
     const note = await run();
-    console.log(`ok ${name} (${((Date.now() - t0) / 1000).toFixed(1)} s)${note ? " " + JSON.stringify(note) : ""}`);
+    const seconds = ((Date.now() - t0) / 1000).toFixed(1);
+    console.log(`ok ${name} (${seconds} s)${note ? " " + JSON.stringify(note) : ""}`);
   } catch (e) {
     failed = true;
     console.log(`FAILED ${name}: ${e.message}`);
   }
 }
-// The parts are independent (a studio each): JOBS of them at once (default 2), since most of a
-// part's time is waiting for the drive's time to pass.
+// The parts are independent (a studio each): STUDIO_BROWSER_JOBS of them at once (default 2),
+// since most of a part's time is waiting for the drive's time to pass.
 const parts = [];
 for (const c of cases) {
   if (!only || only === c.dialect) parts.push([c.dialect, () => runCase(browser, c)]);
@@ -212,7 +216,7 @@ for (const c of stepCases) {
 if (!only || only === "scope") parts.push(["gold scope", () => scopeCase(browser)]);
 if (!only || only === "input") parts.push(["gold input", () => inputCase(browser)]);
 const t0 = Date.now();
-const jobs = Math.max(1, Number(process.env.JOBS ?? 2));
+const jobs = Math.max(1, Number(process.env.STUDIO_BROWSER_JOBS ?? 2));
 const worker = async () => {
   for (let part = parts.shift(); part; part = parts.shift()) await check(...part);
 };

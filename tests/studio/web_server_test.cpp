@@ -370,7 +370,7 @@ TEST(StudioServer, APageGoneMidProgramDownloadLeavesTheStoredProgram) {
       b.send(json({{"op", "line"}, {"text", lines[i]}}).dump());
     }
     ASSERT_TRUE(b.read_type("answers").is_object());  // the server has read them
-    beast::get_lowest_layer(b.ws).socket().close();  // gone, mid-download
+    beast::get_lowest_layer(b.ws).socket().close();   // gone, mid-download
   }
   Client c(server.port(), "/ws/drive");
   c.read();

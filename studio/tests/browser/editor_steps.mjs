@@ -10,7 +10,7 @@ async function brokenLineIsMarkedAndCleared(page, line, shot) {
   await page.locator("[data-testid=diagnostics] li").first().waitFor({ timeout: 10000 });
   await page.locator("[data-testid=editor] .cm-lintRange-error").first().waitFor();
   const text = await page.locator("[data-testid=diagnostics] li").first().textContent();
-  if (!text.startsWith(`${line}:`)) throw new Error(`the diagnostic is not on line ${line}: ${text}`);
+  if (!text.startsWith(`${line}:`)) throw new Error(`the diagnostic is not on ${line}: ${text}`);
   await shot("1_diagnostic");
   // Backspace rather than undo: a slow machine's typing may fall into several undo groups.
   for (let i = 0; i < 3; ++i) await page.keyboard.press("Backspace");

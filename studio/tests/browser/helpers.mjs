@@ -132,7 +132,8 @@ export async function stoppedFrame(page, timeout = 10000) {
 
 // Clicks `testid` and returns what the browser downloads, as a Buffer.
 export async function download(page, testid) {
-  const [file] = await Promise.all([page.waitForEvent("download"), page.click(`[data-testid=${testid}]`)]);
+  const [file] = await Promise.all([page.waitForEvent("download"),
+    page.click(`[data-testid=${testid}]`)]);
   const stream = await file.createReadStream();
   const chunks = [];
   for await (const chunk of stream) chunks.push(chunk);

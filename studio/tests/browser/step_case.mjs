@@ -3,7 +3,8 @@
 // callee's first line with its arguments in `variables` and two frames in `call-stack`; step out
 // is back in the caller, on the statement after the call (docs/debugging.md: "out: back in main at
 // line 12"); step over goes on to the caller's next statement.
-import { clickGutter, expectVariable, lineOf, openStudio, shots, stoppedFrame } from "./helpers.mjs";
+import { clickGutter, expectVariable, lineOf, openStudio, shots, stoppedFrame }
+  from "./helpers.mjs";
 import { join } from "node:path";
 
 // The paused line's text once the program stands on `line`.
@@ -51,7 +52,7 @@ export async function stepCase(browser, c) {
     const on = await stoppedFrame(page);
     const after = lineOf(c.file, ...c.after);
     if (on.depth !== back.depth || on.line !== after) {
-      throw new Error(`${c.dialect}: step over stopped at ${on.line} (depth ${on.depth}), not ${after}`);
+      throw new Error(`${c.dialect}: step over stopped at ${on.line} (${on.depth} frames)`);
     }
     await page.click("[data-testid=debug-continue]");
     await page.waitForFunction(() => !document.querySelector(".cm-paused-line"), null,
@@ -59,7 +60,8 @@ export async function stepCase(browser, c) {
     if (errors.length) throw new Error(`page errors: ${errors.join("; ")}`);
   } catch (e) {
     await page.screenshot({ path: join(shots, `${c.dialect}_steps_failed.png`) });
-    throw new Error(`${e.message}\noutput panel:\n${await page.locator("[data-testid=output]").textContent()}`);
+    const output = await page.locator("[data-testid=output]").textContent();
+    throw new Error(`${e.message}\noutput panel:\n${output}`);
   } finally {
     await close();
   }
