@@ -157,6 +157,10 @@ class Firmware {
   // The number of frames debug_frames() would give, for stepping over and out: asked at each line
   // start while a step runs, so cheaper than the frames. nullopt: the VM's frame count.
   virtual std::optional<uint32_t> debug_call_depth(uint32_t /*thread*/) { return std::nullopt; }
+  // A step runs its thread outside the firmware's schedule (the debugger's own slices): while it
+  // does, `thread` names it, so that the host calls made meanwhile know whose they are (PUP's
+  // return check, PDL's lock); scheduling::kNoThread when the step's slice is over.
+  virtual void debug_runs(uint32_t /*thread*/) {}
   // The code word where a function breakpoint on `name` stands, for a routine of the dialect's
   // that is no image routine (a PDL procedure); nullopt (the default): none.
   virtual std::optional<uint32_t> debug_function_entry(std::string_view /*name*/) {

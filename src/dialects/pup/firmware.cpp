@@ -274,7 +274,7 @@ uint32_t Firmware::next_line(uint32_t thread) const {
 }
 
 uint32_t Firmware::running_thread() const {
-  const uint32_t t = schedule_.running();
+  const uint32_t t = scheduling::running_now(schedule_.running(), debugger_runs_);
   return t == scheduling::kNoThread ? 0 : t;
 }
 

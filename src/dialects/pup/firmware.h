@@ -75,6 +75,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   void log_error(int32_t code, int32_t source, int32_t line);
   vm::Machine* machine() { return program_ ? &program_->machine() : nullptr; }
   uint32_t running_thread() const;
+  void debug_runs(uint32_t thread) override { debugger_runs_ = thread; }
   uint32_t next_line(uint32_t thread) const;
 
   // --- events.cpp: latching, masks, entering thread 1 and leaving ---
@@ -129,6 +130,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   dialect::Runtime& runtime_;
   PupWire wire_;
   scheduling::RatePriorities schedule_;
+  uint32_t debugger_runs_ = scheduling::kNoThread;  // debug_runs()
   drive::Axis* axis_ = nullptr;
 
   std::optional<std::string> stored_;

@@ -309,8 +309,9 @@ vm::CommandStatus Firmware::read(uint32_t command, int32_t, Value& out) {
                         : v <= -2147483648.0 ? INT32_MIN
                                              : static_cast<int32_t>(v));
   } else if (!a.empty() && msg_ >= 1) {
-    say(running_place(*program_, schedule_.running(), threads_) + ": " +
-        answer_text(a[0]).substr(1));
+    say(running_place(*program_, scheduling::running_now(schedule_.running(), debugger_runs_),
+                      threads_) +
+        ": " + answer_text(a[0]).substr(1));
   }
   return vm::kCommandEndSlice;
 }
@@ -324,8 +325,9 @@ vm::CommandStatus Firmware::write(uint32_t command, int32_t, Value value) {
       command_line(std::string(e->name) + " " + std::to_string(value.i));
   in_program_ = false;
   if (!a.empty() && a[0].is_error() && msg_ >= 1)
-    say(running_place(*program_, schedule_.running(), threads_) + ": " +
-        answer_text(a[0]).substr(1));
+    say(running_place(*program_, scheduling::running_now(schedule_.running(), debugger_runs_),
+                      threads_) +
+        ": " + answer_text(a[0]).substr(1));
   return vm::kCommandEndSlice;
 }
 
@@ -338,8 +340,9 @@ vm::CommandStatus Firmware::execute(uint32_t command, int32_t, const Value* args
   in_program_ = false;
   for (const dialect::Answer& a : answers) {
     if (a.is_error() && msg_ >= 1)
-      say(running_place(*program_, schedule_.running(), threads_) + ": " +
-          answer_text(a).substr(1));
+      say(running_place(*program_, scheduling::running_now(schedule_.running(), debugger_runs_),
+                        threads_) +
+          ": " + answer_text(a).substr(1));
   }
   return vm::kCommandEndSlice;
 }
