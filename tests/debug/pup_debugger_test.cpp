@@ -139,7 +139,6 @@ TEST(PupDebugger, SteppingOneThreadLeavesTheOtherHalted) {
   EXPECT_GT(s.count("One"), one);
 }
 
-
 // examples/pup/library_user.pup: task 1 calls MOVE_TO (line 10), which calls WAIT_SETTLED. A step
 // out of MOVE_TO's line 21 returns to the task after its call, at line 11, and the program goes on.
 TEST(PupDebugger, StepOutOfAFunctionReturnsAfterItsCall) {
