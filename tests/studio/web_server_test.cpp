@@ -188,10 +188,19 @@ TEST(StudioServer, AnOversizedFrameClosesWith1009AndOthersGoOn) {
   {
     Client c(server.port(), "/ws/drive");
     c.read();
-    c.send(std::string(100 * 1024, ' '));
-    while (!c.read().is_null()) {
+    // The server may close before the client has written the whole frame (its write then fails
+    // with a broken pipe or a reset); else the client reads the close frame, 1009.
+    beast::error_code write_error;
+    c.ws.write(asio::buffer(std::string(100 * 1024, ' ')), write_error);
+    if (!write_error) {
+      while (!c.read().is_null()) {
+      }
+      EXPECT_EQ(c.ws.reason().code, websocket::close_code::too_big) << c.error.message();
+    } else {
+      EXPECT_TRUE(write_error == asio::error::broken_pipe ||
+                  write_error == asio::error::connection_reset)
+          << write_error.message();
     }
-    EXPECT_EQ(c.ws.reason().code, websocket::close_code::too_big) << c.error.message();
   }
   Client d(server.port(), "/ws/drive");
   EXPECT_EQ(d.read()["type"], "hello");
