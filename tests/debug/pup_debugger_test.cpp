@@ -147,6 +147,7 @@ TEST(PupDebugger, StepOutOfAFunctionReturnsAfterItsCall) {
   ASSERT_TRUE(s.debugger.set_line_breakpoints(program, {at(21)}).at(0).verified);
   ASSERT_EQ(s.debugger.run(kSecond), RunState::Stopped);
   EXPECT_EQ(s.line(kThread1), 21u);
+  EXPECT_EQ(s.debugger.threads().at(0).where, "library_user.pup:21");  // the source's line too
   s.debugger.set_line_breakpoints(program, {});
   s.debugger.step(kThread1, StepKind::Out, true);
   ASSERT_EQ(s.debugger.run(kSecond), RunState::Stopped);

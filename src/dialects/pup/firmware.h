@@ -75,6 +75,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   void log_error(int32_t code, int32_t source, int32_t line);
   vm::Machine* machine() { return program_ ? &program_->machine() : nullptr; }
   uint32_t running_thread() const;
+  std::string place_of(uint32_t cup_line) const;
   void debug_runs(uint32_t thread) override { debugger_runs_ = thread; }
   uint32_t next_line(uint32_t thread) const;
 
