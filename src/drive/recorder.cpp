@@ -65,21 +65,28 @@ Channel signal_channel(Signal signal, std::string name) {
   return c;
 }
 
+std::optional<ElementName> split_element_name(std::string_view text) {
+  const size_t open = text.find('[');
+  if (open == std::string_view::npos) return ElementName{text, std::nullopt};
+  const std::string_view digits = text.substr(open + 1, text.size() - open - 2);
+  uint32_t index = 0;
+  const auto [p, e] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
+  if (text.back() != ']' || digits.empty() || e != std::errc() ||
+      p != digits.data() + digits.size()) {
+    return std::nullopt;
+  }
+  return ElementName{text.substr(0, open), index};
+}
+
 std::optional<Channel> global_channel(const ProgramWords& words, std::string_view text,
                                       std::string* why) {
-  std::string_view name = text;
-  uint32_t element = 0;
-  if (const size_t open = text.find('['); open != std::string_view::npos) {
-    const std::string_view digits = text.substr(open + 1, text.size() - open - 2);
-    const auto [p, e] = std::from_chars(digits.data(), digits.data() + digits.size(), element);
-    if (text.back() != ']' || digits.empty() || e != std::errc() ||
-        p != digits.data() + digits.size()) {
-      if (why) *why = "'" + std::string(text) + "': expected name[index] with a number";
-      return std::nullopt;
-    }
-    name = text.substr(0, open);
+  const std::optional<ElementName> element = split_element_name(text);
+  if (!element) {
+    if (why) *why = "'" + std::string(text) + "': expected name[index] with a number";
+    return std::nullopt;
   }
-  const std::optional<ProgramWords::Word> word = words.find_global(name, element);
+  const std::optional<ProgramWords::Word> word =
+      words.find_global(element->name, element->index.value_or(0));
   if (!word) {
     if (why) *why = "'" + std::string(text) + "' is no signal and no global of the program";
     return std::nullopt;

@@ -76,6 +76,13 @@ struct Channel {
 };
 
 Channel signal_channel(Signal signal, std::string name);
+// "name" or "name[i]" split into the name and the index (none without brackets); nullopt when
+// the brackets do not hold a number alone.
+struct ElementName {
+  std::string_view name;
+  std::optional<uint32_t> index;
+};
+std::optional<ElementName> split_element_name(std::string_view text);
 // A channel of one program word, named as the user named it.
 Channel word_channel(const ProgramWords::Word& word, std::string name);
 // "name" or "name[i]" as a program global; nullopt with `why` when there is none.

@@ -3,8 +3,6 @@
 // controller's values now, and the #definevar variables by name (for the recorder too).
 #include <fmt/core.h>
 
-#include <charconv>
-
 #include "dialects/pup/firmware.h"
 #include "dialects/pup/pup_lexer.h"
 
@@ -95,21 +93,16 @@ dialect::Evaluation Firmware::evaluate(uint32_t, uint32_t, std::string_view expr
 // "AGenData[n]" (n from 1, as the manual counts), a #definevar name, or an element "arr[i]" of
 // a #definevar array (i from 1): the word of the controller's general data it names.
 std::optional<drive::ProgramWords::Word> Firmware::recorder_word(std::string_view name) const {
-  std::string_view base = name;
-  int32_t index = 0;
-  if (const size_t open = name.find('['); open != std::string_view::npos) {
-    const std::string_view digits = name.substr(open + 1, name.size() - open - 2);
-    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
-    if (name.back() != ']' || ec != std::errc() || end != digits.data() + digits.size())
-      return std::nullopt;
-    base = name.substr(0, open);
-  }
-  int32_t slot = 0;  // AGenData[slot]
-  const Keyword* k = find_keyword(std::string(base));
+  const std::optional<drive::ElementName> element = drive::split_element_name(name);
+  if (!element || element->index.value_or(1) > kGenDataSize) return std::nullopt;
+  const std::string base(element->name);
+  const auto index = static_cast<int32_t>(element->index.value_or(0));  // from 1; 0: none
+  int32_t slot = 0;                                                     // AGenData[slot]
+  const Keyword* k = find_keyword(base);
   if (k != nullptr && k->id == KeywordId::GenData && index >= 1) {
     slot = index;
   } else if (debug_map_) {
-    const auto var = debug_map_->vars.find(std::string(base));
+    const auto var = debug_map_->vars.find(base);
     if (var == debug_map_->vars.end()) return std::nullopt;
     const Var& v = var->second;
     if (v.array != (index != 0) || (v.array && index > v.size)) return std::nullopt;

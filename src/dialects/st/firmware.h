@@ -192,7 +192,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::vector<bytecode::Global> globals_;  // the loaded program's, for the command line
   std::vector<uint8_t> global_bits_;       // their widths (CompileResult::global_bits)
   scheduling::CyclicTasks schedule_;
-  uint32_t debugger_runs_ = scheduling::kNoThread;         // debug_runs()
+  uint32_t debugger_runs_ = scheduling::kNoThread;  // debug_runs()
+  std::string running_here() const;
   std::vector<std::pair<uint32_t, std::string>> threads_;  // thread, program name
   bool compile_failed_ = false;
   bool plc_started_ = false;
