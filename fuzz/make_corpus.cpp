@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
   for (const auto& p : files_in(src / "tests/bytecode", ".s")) asm_files.push_back(p);
   for (const auto& p : files_in(src / "examples/asm", ".s")) asm_files.push_back(p);
 
-  Corpus preproc(out / "fuzz_preproc"), compile(out / "fuzz_gold_compile"),
+  Corpus preproc(out / "fuzz_preproc"), compile(out / "fuzz_compile_gold"),
       line(out / "fuzz_gold_line"), image(out / "fuzz_image"),
       command_line(out / "fuzz_gold_command_line"), transcript(out / "fuzz_transcript"),
       transport(out / "fuzz_transport");
@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
     if (r.ok()) image.add(as_string(r.stored_form));
   }
   std::printf(
-      "seeds: fuzz_preproc %zu, fuzz_gold_compile %zu, fuzz_gold_line %zu, fuzz_image %zu, "
+      "seeds: fuzz_preproc %zu, fuzz_compile_gold %zu, fuzz_gold_line %zu, fuzz_image %zu, "
       "fuzz_gold_command_line %zu, fuzz_transcript %zu, fuzz_transport %zu\n",
       preproc.size(), compile.size(), line.size(), image.size(), command_line.size(),
       transcript.size(), transport.size());

@@ -3,6 +3,7 @@
 #include "controller/controller.h"
 
 #include <algorithm>
+#include <functional>
 
 #include "controller/flash.h"
 #include "drive/axis.h"
@@ -122,16 +123,21 @@ std::optional<drive::ProgramWords::Word> Controller::Drive::find_global(std::str
                                                                         uint32_t element) const {
   const dialect::LoadedProgram* program = firmware_->loaded_program();
   if (program == nullptr) return std::nullopt;
-  uint32_t address =
-      0;  // the globals' words lie in table order (architecture.md, "The data memory")
-  for (const bytecode::Global& g : program->image().globals) {
-    if (g.name == name) {
-      if (element >= g.length) return std::nullopt;
-      return Word{address + element, g.type == ValueType::Float};
-    }
-    address += g.length;
-  }
-  return std::nullopt;
+  const int g = program->image().find_global(std::string(name));
+  if (g < 0) return std::nullopt;
+  const std::span<const Value> words = program->machine().global_words(static_cast<uint32_t>(g));
+  const std::span<const Value> memory = program->machine().memory();
+  if (element >= words.size()) return std::nullopt;
+  Word word;
+  word.is_float = program->image().globals[static_cast<size_t>(g)].type == ValueType::Float;
+  // A global in the data memory is read by its address there (a new program brings a new memory);
+  // one the firmware binds elsewhere, where it lives.
+  const std::less<const Value*> before;  // pointers into different objects compare only so
+  if (!before(words.data(), memory.data()) && before(words.data(), memory.data() + memory.size()))
+    word.address = static_cast<uint32_t>(words.data() - memory.data()) + element;
+  else
+    word.bound = words.data() + element;
+  return word;
 }
 
 std::span<const Value> Controller::Drive::memory() const {
@@ -257,6 +263,8 @@ std::optional<drive::Channel> Controller::recorder_channel(std::string_view name
   }
   if (const drive::SignalInfo* info = drive::find_signal(name))
     return drive::signal_channel(info->signal, std::string(name));
+  if (const auto word = drive_->firmware_->recorder_word(name))
+    return drive::word_channel(*word, std::string(name));
   return drive::global_channel(*drive_, name, why);
 }
 

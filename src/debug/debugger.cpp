@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "debug/source_lines.h"
+#include "dialect/scheduling/report.h"
 #include "vm/run_error.h"
 
 namespace uprog::debug {
@@ -250,7 +251,9 @@ uint64_t Debugger::step_slice() {
   vm::Machine& m = program()->machine();
   const uint32_t t = stepping_->thread;
   for (uint32_t i = 0; i < kStepInstructionsPerCycle; ++i) {
+    drive_.firmware().debug_runs(t);
     const vm::SliceResult r = m.run_slice(t, vm::Budget{1, 1, 0});
+    drive_.firmware().debug_runs(scheduling::kNoThread);
     if (r.end == vm::SliceEnd::BudgetSpent) {
       if (step_done(t)) {
         stop(StopReason::Step, t);

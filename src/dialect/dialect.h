@@ -17,6 +17,7 @@
 #include "dialect/reference.h"
 #include "dialect/runtime.h"
 #include "support/diagnostic.h"
+#include "support/include_search.h"
 #include "support/source.h"
 
 namespace uprog::dialect {
@@ -34,6 +35,8 @@ struct CompileSettings {
   // `uprog check -D NAME=value`: names the preprocessor sees with a value (ST: a drive parameter's
   // value for #IF instead of its default); a dialect without such names ignores them.
   std::vector<std::pair<std::string, std::string>> defines;
+  // #include (PDL, PUP): folders searched after the includer's, and an editor's unsaved texts.
+  IncludeSearch includes;
 };
 
 struct CompileOutput {

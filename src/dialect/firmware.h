@@ -127,6 +127,12 @@ class Firmware {
     (void)name;
     return std::nullopt;
   }
+  // A program word by the dialect's own name, counted as its manual counts (the AG300's
+  // "AGenData[3]", a #definevar name); nullopt: the neutral lookup, a global as name[element].
+  virtual std::optional<drive::ProgramWords::Word> recorder_word(std::string_view name) const {
+    (void)name;
+    return std::nullopt;
+  }
 
   // --- for the debugger (src/debug); the defaults offer nothing, so a dialect adds them as it can
   // --- The program in RAM (its machine and hosted image: line table, locals), or nullptr.
@@ -151,6 +157,10 @@ class Firmware {
   // The number of frames debug_frames() would give, for stepping over and out: asked at each line
   // start while a step runs, so cheaper than the frames. nullopt: the VM's frame count.
   virtual std::optional<uint32_t> debug_call_depth(uint32_t /*thread*/) { return std::nullopt; }
+  // A step runs its thread outside the firmware's schedule (the debugger's own slices): while it
+  // does, `thread` names it, so that the host calls made meanwhile know whose they are (PUP's
+  // return check, PDL's lock); scheduling::kNoThread when the step's slice is over.
+  virtual void debug_runs(uint32_t /*thread*/) {}
   // The code word where a function breakpoint on `name` stands, for a routine of the dialect's
   // that is no image routine (a PDL procedure); nullopt (the default): none.
   virtual std::optional<uint32_t> debug_function_entry(std::string_view /*name*/) {

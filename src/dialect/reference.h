@@ -13,6 +13,7 @@ enum class ReferenceKind : uint8_t {
   Function,        // a built-in function (sin, tdif)
   Keyword,         // a word of the language (while, END_IF)
   Directive,       // a preprocessor directive (#define)
+  Constant,        // a name the dialect gives a number (PUP's akribis.puh: MOTOR_READY is 8)
 };
 
 struct ReferenceEntry {

@@ -65,30 +65,42 @@ Channel signal_channel(Signal signal, std::string name) {
   return c;
 }
 
+std::optional<ElementName> split_element_name(std::string_view text) {
+  const size_t open = text.find('[');
+  if (open == std::string_view::npos) return ElementName{text, std::nullopt};
+  const std::string_view digits = text.substr(open + 1, text.size() - open - 2);
+  uint32_t index = 0;
+  const auto [p, e] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
+  if (text.back() != ']' || digits.empty() || e != std::errc() ||
+      p != digits.data() + digits.size()) {
+    return std::nullopt;
+  }
+  return ElementName{text.substr(0, open), index};
+}
+
 std::optional<Channel> global_channel(const ProgramWords& words, std::string_view text,
                                       std::string* why) {
-  std::string_view name = text;
-  uint32_t element = 0;
-  if (const size_t open = text.find('['); open != std::string_view::npos) {
-    const std::string_view digits = text.substr(open + 1, text.size() - open - 2);
-    const auto [p, e] = std::from_chars(digits.data(), digits.data() + digits.size(), element);
-    if (text.back() != ']' || digits.empty() || e != std::errc() ||
-        p != digits.data() + digits.size()) {
-      if (why) *why = "'" + std::string(text) + "': expected name[index] with a number";
-      return std::nullopt;
-    }
-    name = text.substr(0, open);
+  const std::optional<ElementName> element = split_element_name(text);
+  if (!element) {
+    if (why) *why = "'" + std::string(text) + "': expected name[index] with a number";
+    return std::nullopt;
   }
-  const std::optional<ProgramWords::Word> word = words.find_global(name, element);
+  const std::optional<ProgramWords::Word> word =
+      words.find_global(element->name, element->index.value_or(0));
   if (!word) {
     if (why) *why = "'" + std::string(text) + "' is no signal and no global of the program";
     return std::nullopt;
   }
+  return word_channel(*word, std::string(text));
+}
+
+Channel word_channel(const ProgramWords::Word& word, std::string name) {
   Channel c;
-  c.name = std::string(text);
+  c.name = std::move(name);
   c.is_global = true;
-  c.address = word->address;
-  c.is_float = word->is_float;
+  c.address = word.address;
+  c.is_float = word.is_float;
+  c.bound = word.bound;
   return c;
 }
 
@@ -149,11 +161,16 @@ bool Recorder::arm(const RecorderSettings& settings, std::string* why) {
 void Recorder::plan_sampling() {
   row_words_ = static_cast<uint32_t>(settings_.channels.size());
   global_channels_.clear();
+  bound_channels_.clear();
   repeated_channels_.clear();
   needed_signals_ = 0;
   for (size_t c = 0; c < settings_.channels.size(); ++c) {
     const Channel& channel = settings_.channels[c];
     const auto here = static_cast<uint8_t>(c);
+    if (channel.bound != nullptr) {
+      bound_channels_.emplace_back(here, channel.bound);
+      continue;
+    }
     if (channel.is_global) {
       global_channels_.emplace_back(here, channel.address);
       continue;
@@ -231,6 +248,7 @@ void write_signals(uint32_t needed, const Axis& axis, const uint8_t* channel, ui
 }  // namespace
 
 uint32_t Recorder::read_bits(const Channel& c, const Axis& axis) const {
+  if (c.bound != nullptr) return static_cast<uint32_t>(c.bound->i);
   if (c.is_global) return word_bits(program_memory(), c.address);
   return kSignalReaders[static_cast<size_t>(c.signal)](axis);
 }
@@ -302,6 +320,7 @@ void Recorder::write_row(uint32_t* out, const Axis& axis) const {
     const std::span<const Value> memory = program_memory();
     for (const auto& [c, address] : global_channels_) out[c] = word_bits(memory, address);
   }
+  for (const auto& [c, word] : bound_channels_) out[c] = static_cast<uint32_t>(word->i);
   for (const auto& [to, from] : repeated_channels_) out[to] = out[from];
 }
 

@@ -51,6 +51,9 @@ class ProgramWords {
   struct Word {
     uint32_t address = 0;  // in the data memory (architecture.md, "The data memory")
     bool is_float = false;
+    // A global the firmware keeps outside the data memory (Machine::bind_global: PUP's AGenData),
+    // read where it lives; such words outlive every program, so the pointer stays valid.
+    const Value* bound = nullptr;
   };
   // A global's element by name; nullopt when the program has no such global or element.
   virtual std::optional<Word> find_global(std::string_view name, uint32_t element) const = 0;
@@ -69,9 +72,19 @@ struct Channel {
   Signal signal = Signal::kPosition;
   uint32_t address = 0;  // a global's word
   bool is_float = false;
+  const Value* bound = nullptr;  // a global's word the firmware keeps (ProgramWords::Word)
 };
 
 Channel signal_channel(Signal signal, std::string name);
+// "name" or "name[i]" split into the name and the index (none without brackets); nullopt when
+// the brackets do not hold a number alone.
+struct ElementName {
+  std::string_view name;
+  std::optional<uint32_t> index;
+};
+std::optional<ElementName> split_element_name(std::string_view text);
+// A channel of one program word, named as the user named it.
+Channel word_channel(const ProgramWords::Word& word, std::string name);
 // "name" or "name[i]" as a program global; nullopt with `why` when there is none.
 std::optional<Channel> global_channel(const ProgramWords& words, std::string_view text,
                                       std::string* why);
@@ -182,6 +195,7 @@ class Recorder {
   uint32_t needed_signals_ = 0;  // bit n: Signal n
   std::array<uint8_t, kSignalCount> channel_of_signal_{};
   std::vector<std::pair<uint8_t, uint32_t>> global_channels_;
+  std::vector<std::pair<uint8_t, const Value*>> bound_channels_;
   std::vector<std::pair<uint8_t, uint8_t>> repeated_channels_;
   uint32_t pre_ = 0;          // samples before the trigger sample
   uint64_t pre_taken_ = 0;    // samples written into the pre-trigger ring

@@ -16,13 +16,13 @@ using dialect::SourceWord;
 }  // namespace
 
 Analysis::Analysis(const TextDocument& doc, const ReferenceIndex* reference,
-                   PositionEncoding encoding)
+                   PositionEncoding encoding, const std::vector<SourceSymbol>* outline)
     : doc_(doc), reference_(reference), encoding_(encoding) {
   line_starts_.push_back(0);
   for (size_t i = 0; i < doc.text.size(); ++i)
     if (doc.text[i] == '\n') line_starts_.push_back(i + 1);
   if (doc.dialect != nullptr) {
-    symbols_ = doc.dialect->outline(doc.text);
+    symbols_ = outline != nullptr ? *outline : doc.dialect->outline(doc.text);
     words_ = dialect::source_words(doc.text, doc.dialect->word_syntax());
   }
   for (size_t i = 0; i < symbols_.size(); ++i) {

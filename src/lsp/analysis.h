@@ -14,6 +14,7 @@
 #include "dialect/outline.h"
 #include "lsp/reference_index.h"
 #include "lsp/text_document.h"
+#include "lsp/workspace.h"
 
 namespace uprog::lsp {
 
@@ -30,10 +31,14 @@ struct ClientSupport {
 
 class Analysis {
  public:
-  Analysis(const TextDocument& doc, const ReferenceIndex* reference, PositionEncoding encoding);
+  // `outline`: the document's declarations when the caller has them already (the server keeps
+  // them per version); null: the dialect's outline of the text, made here.
+  Analysis(const TextDocument& doc, const ReferenceIndex* reference, PositionEncoding encoding,
+           const std::vector<dialect::SourceSymbol>* outline = nullptr);
 
   const TextDocument& doc() const { return doc_; }
   const ReferenceIndex* reference() const { return reference_; }
+  PositionEncoding encoding() const { return encoding_; }
   const std::vector<dialect::SourceSymbol>& symbols() const { return symbols_; }
   const std::vector<dialect::SourceWord>& words() const { return words_; }
 
@@ -69,18 +74,35 @@ class Analysis {
   std::vector<size_t> scopes_;  // the functions and tasks with a body, by their first line
 };
 
-nlohmann::json hover(const Analysis& a, Position p);
-nlohmann::json completion(const Analysis& a, Position p, const ClientSupport& client);
-nlohmann::json signature_help(const Analysis& a, Position p);
-nlohmann::json definition(const Analysis& a, Position p);
-nlohmann::json references(const Analysis& a, Position p, bool include_declaration);
-nlohmann::json rename(const Analysis& a, Position p, const std::string& new_name);
+// A name declared at the top level of a file the document includes (a PDL procedure in its
+// header, a PUP #define in a .puh): that file and the declaration.
+struct IncludedSymbol {
+  const TextDocument* file = nullptr;
+  dialect::SourceSymbol symbol;
+};
+std::optional<IncludedSymbol> included_symbol(const Analysis& a, const Workspace& w,
+                                              std::string_view name);
+std::vector<IncludedSymbol> included_symbols(const Analysis& a, const Workspace& w);
+
+// The features. A name the document does not declare may come from a file it includes; the
+// references to a global name reach the open documents that include its file.
+nlohmann::json hover(const Analysis& a, const Workspace& w, Position p);
+nlohmann::json completion(const Analysis& a, const Workspace& w, Position p,
+                          const ClientSupport& client);
+nlohmann::json signature_help(const Analysis& a, const Workspace& w, Position p);
+nlohmann::json definition(const Analysis& a, const Workspace& w, Position p);
+nlohmann::json references(const Analysis& a, const Workspace& w, Position p,
+                          bool include_declaration);
+nlohmann::json rename(const Analysis& a, const Workspace& w, Position p,
+                      const std::string& new_name);
+// LSP 3.17 prepareRename: the name's range and text, or FeatureError when it is not renamed.
+nlohmann::json prepare_rename(const Analysis& a, const Workspace& w, Position p);
 nlohmann::json document_symbols(const Analysis& a, const ClientSupport& client);
 nlohmann::json folding_ranges(const Analysis& a);
 
 // The semantic token legend the server announces, and the tokens of a document (LSP 3.17's
 // relative encoding: five integers per token).
 nlohmann::json semantic_token_legend();
-nlohmann::json semantic_tokens(const Analysis& a);
+nlohmann::json semantic_tokens(const Analysis& a, const Workspace& w);
 
 }  // namespace uprog::lsp

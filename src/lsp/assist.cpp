@@ -2,6 +2,7 @@
 // names and the language's words, the document's declarations for the user's.
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 
 #include "lsp/analysis.h"
 
@@ -50,6 +51,8 @@ int completion_kind(ReferenceKind k) {
       return 6;  // Variable
     case ReferenceKind::Function:
       return 3;  // Function
+    case ReferenceKind::Constant:
+      return 21;  // Constant
     case ReferenceKind::Keyword:
     case ReferenceKind::Directive:
       return 14;  // Keyword
@@ -147,12 +150,15 @@ json hover_in_text(const Analysis& a, Position p) {
 
 }  // namespace
 
-json hover(const Analysis& a, Position p) {
+json hover(const Analysis& a, const Workspace& ws, Position p) {
   const dialect::SourceWord* w = a.word_at(p);
   if (w == nullptr) return hover_in_text(a, p);
   std::string markdown;
   if (const SourceSymbol* s = a.symbol_for(Analysis::name_of(*w), w->line)) {
     markdown = symbol_markdown(*s);
+  } else if (std::optional<IncludedSymbol> inc = included_symbol(a, ws, Analysis::name_of(*w))) {
+    markdown = symbol_markdown(inc->symbol) + " of " +
+               std::filesystem::path(inc->file->path).filename().string();
   } else if (a.reference() != nullptr) {
     const dialect::ReferenceEntry* e = a.reference()->find(w->text);
     if (e == nullptr) return nullptr;
@@ -163,7 +169,7 @@ json hover(const Analysis& a, Position p) {
   return {{"contents", {{"kind", "markdown"}, {"value", markdown}}}, {"range", a.name_range(*w)}};
 }
 
-json completion(const Analysis& a, Position p, const ClientSupport& client) {
+json completion(const Analysis& a, const Workspace& ws, Position p, const ClientSupport& client) {
   // The prefix typed so far: the word the cursor ends.
   std::string_view prefix;
   if (const dialect::SourceWord* w = a.word_at(p)) {
@@ -190,6 +196,17 @@ json completion(const Analysis& a, Position p, const ClientSupport& client) {
                  {"sortText", "0" + s.name}};
     add(s.name, std::move(item));
   }
+  // Then those the included files declare at their top.
+  for (const IncludedSymbol& inc : included_symbols(a, ws)) {
+    if (inc.symbol.kind == SymbolKind::Task || inc.symbol.kind == SymbolKind::Label) continue;
+    const std::string file = std::filesystem::path(inc.file->path).filename().string();
+    json item = {{"kind", completion_kind(inc.symbol.kind)},
+                 {"detail", (inc.symbol.detail.empty() ? symbol_kind_name(inc.symbol.kind)
+                                                       : inc.symbol.detail) +
+                                " (" + file + ")"},
+                 {"sortText", "0" + inc.symbol.name}};
+    add(inc.symbol.name, std::move(item));
+  }
   if (a.reference() != nullptr) {
     for (const dialect::ReferenceEntry& e : a.reference()->entries()) {
       json item = {{"kind", completion_kind(e.kind)},
@@ -206,38 +223,39 @@ json completion(const Analysis& a, Position p, const ClientSupport& client) {
   return {{"isIncomplete", false}, {"items", std::move(items)}};
 }
 
-json signature_help(const Analysis& a, Position p) {
+json signature_help(const Analysis& a, const Workspace& ws, Position p) {
   const std::string& text = a.doc().text;
   const size_t cursor = std::min(a.offset(p), text.size());
-  // Back to the '(' this argument list opened, counting the commas before the cursor.
+  // Back to the '(' of the call whose arguments the cursor is in, counting the commas before the
+  // cursor; a '(' with no name before it groups an expression and is passed over.
   int depth = 0;
   size_t commas = 0;
-  size_t open = std::string::npos;
-  for (size_t i = cursor; i > 0 && cursor - i < 2000; --i) {
+  std::string name;
+  for (size_t i = cursor; i > 0 && cursor - i < 2000 && name.empty(); --i) {
     const char c = text[i - 1];
     if (c == '\n' || c == ';') break;
     if (c == ')') ++depth;
-    if (c == '(') {
-      if (depth == 0) {
-        open = i - 1;
-        break;
-      }
-      --depth;
-    }
     if (c == ',' && depth == 0) ++commas;
+    if (c != '(') continue;
+    if (depth > 0) {
+      --depth;
+      continue;
+    }
+    size_t end = i - 1;
+    while (end > 0 && text[end - 1] == ' ') --end;
+    size_t begin = end;
+    while (begin > 0 && (std::isalnum(static_cast<unsigned char>(text[begin - 1])) != 0 ||
+                         text[begin - 1] == '_'))
+      --begin;
+    name = text.substr(begin, end - begin);
+    if (name.empty()) commas = 0;  // a group's commas are not the call's
   }
-  if (open == std::string::npos) return nullptr;
-  size_t end = open;
-  while (end > 0 && text[end - 1] == ' ') --end;
-  size_t begin = end;
-  while (begin > 0 &&
-         (std::isalnum(static_cast<unsigned char>(text[begin - 1])) != 0 || text[begin - 1] == '_'))
-    --begin;
-  if (begin == end) return nullptr;
-  const std::string name = text.substr(begin, end - begin);
+  if (name.empty()) return nullptr;
   std::string label, documentation;
-  if (const SourceSymbol* s = a.symbol_for(name, static_cast<int>(p.line) + 1);
-      s != nullptr && s->kind == SymbolKind::Function) {
+  std::optional<IncludedSymbol> inc;
+  const SourceSymbol* s = a.symbol_for(name, static_cast<int>(p.line) + 1);
+  if (s == nullptr && (inc = included_symbol(a, ws, name))) s = &inc->symbol;
+  if (s != nullptr && s->kind == SymbolKind::Function) {
     label = s->detail.empty() ? s->name + "()" : s->detail;
     // A Gold function's label is its whole form: the parameters are after the name.
     const size_t at = label.find(s->name + "(");

@@ -37,7 +37,8 @@ json range_in(std::string_view text, int line, int column, PositionEncoding enco
 
 // A place in another file: its line's text, when the diagnostic carries it, places the column.
 json range_elsewhere(const Location& where, const std::optional<SourceLine>& line,
-                     PositionEncoding encoding) {
+                     PositionEncoding encoding, const std::string* file_text) {
+  if (file_text != nullptr) return range_in(*file_text, where.line, where.column, encoding);
   if (line && line->first_column == 1) {
     std::string text(static_cast<size_t>(std::max(where.line - 1, 0)), '\n');
     text += line->text;
@@ -103,8 +104,41 @@ int severity_of(Severity s) {
 
 }  // namespace
 
+std::map<std::string, json> included_file_diagnostics(const TextDocument& doc,
+                                                      const std::string& compiled_as,
+                                                      const std::vector<Diagnostic>& diagnostics,
+                                                      PositionEncoding encoding,
+                                                      const Workspace& workspace) {
+  std::map<std::string, json> out;
+  for (const Diagnostic& d : diagnostics) {
+    if (d.where.file.empty() || d.where.file == compiled_as) continue;
+    const TextDocument* file = workspace.load(d.where.file, doc);
+    if (file == nullptr) continue;  // PUP's built-in akribis.puh, a file gone since
+    const int line = include_line(doc, compiled_as, d.where.file);
+    json& list = out[file->uri];
+    if (list.is_null()) list = json::array();
+    list.push_back(
+        {{"range", range_in(file->text, d.where.line, d.where.column, encoding)},
+         {"severity", severity_of(d.severity)},
+         {"code", d.code},
+         {"source", "uprog " + d.scheme},
+         {"message", d.message},
+         {"relatedInformation",
+          json::array(
+              {{{"location", {{"uri", doc.uri}, {"range", range_in(doc.text, line, 0, encoding)}}},
+                {"message", "included from here"}}})}});
+  }
+  return out;
+}
+
 json to_lsp_diagnostics(const TextDocument& doc, const std::string& compiled_as,
-                        const std::vector<Diagnostic>& diagnostics, PositionEncoding encoding) {
+                        const std::vector<Diagnostic>& diagnostics, PositionEncoding encoding,
+                        const Workspace* workspace) {
+  // The text of an included file, as the compiler read it (an open document's, else the disk's).
+  const auto text_of = [&](const std::string& file) -> const std::string* {
+    const TextDocument* d = workspace != nullptr ? workspace->load(file, doc) : nullptr;
+    return d != nullptr ? &d->text : nullptr;
+  };
   json out = json::array();
   for (const Diagnostic& d : diagnostics) {
     json related = json::array();
@@ -118,13 +152,14 @@ json to_lsp_diagnostics(const TextDocument& doc, const std::string& compiled_as,
                 std::to_string(d.where.line) + ": " + d.message;
       related.push_back(
           {{"location",
-            {{"uri", uri_of(d.where.file)}, {"range", range_elsewhere(d.where, d.line, encoding)}}},
+            {{"uri", uri_of(d.where.file)},
+             {"range", range_elsewhere(d.where, d.line, encoding, text_of(d.where.file))}}},
            {"message", d.message}});
     }
     for (const DiagnosticNote& n : d.notes) {
       const bool here = n.where.file.empty() || n.where.file == compiled_as;
       json note_range = here ? range_in(doc.text, n.where.line, n.where.column, encoding)
-                             : range_elsewhere(n.where, n.line, encoding);
+                             : range_elsewhere(n.where, n.line, encoding, text_of(n.where.file));
       related.push_back(
           {{"location", {{"uri", here ? doc.uri : uri_of(n.where.file)}, {"range", note_range}}},
            {"message", n.message}});

@@ -124,6 +124,8 @@ void LspServer::notification(const std::string& method, const json& params) {
   if (method == "textDocument/didSave") return did_save(p);
   // A header changed on disk (the client watches them): every open document is checked again.
   if (method == "workspace/didChangeWatchedFiles") return check_all_again();
+  if (method == "workspace/didChangeWorkspaceFolders")
+    return change_folders(jsonrpc::required_object(p, "event"));
   // initialized, $/cancelRequest, $/setTrace, workspace/didChangeConfiguration, ...: nothing to do.
 }
 
@@ -142,6 +144,20 @@ json LspServer::initialize(const json& params) {
               "snippetSupport", false);
   client_.hierarchical_symbols = bool_or(object_or_empty(text_document, "documentSymbol"),
                                          "hierarchicalDocumentSymbolSupport", false);
+  // The workspace: its folders (LSP 3.17), else the deprecated rootUri and rootPath.
+  if (const json* folders = find(params, "workspaceFolders"); folders && folders->is_array()) {
+    for (const json& f : *folders) {
+      if (!f.is_object()) continue;
+      if (std::optional<std::string> path = path_from_uri(peek_string(f, "uri").value_or("")))
+        folders_.push_back(normal_path(*path));
+    }
+  } else if (std::optional<std::string> root =
+                 path_from_uri(peek_string(params, "rootUri").value_or(""))) {
+    folders_.push_back(normal_path(*root));
+  } else if (const std::string root_path = peek_string(params, "rootPath").value_or("");
+             !root_path.empty()) {
+    folders_.push_back(normal_path(root_path));
+  }
   json capabilities = {
       {"positionEncoding", encoding_ == PositionEncoding::Utf8 ? "utf-8" : "utf-16"},
       {"textDocumentSync", {{"openClose", true}, {"change", 2}, {"save", true}}},
@@ -150,10 +166,11 @@ json LspServer::initialize(const json& params) {
       {"signatureHelpProvider", {{"triggerCharacters", json::array({"(", ","})}}},
       {"definitionProvider", true},
       {"referencesProvider", true},
-      {"renameProvider", true},
+      {"renameProvider", {{"prepareProvider", true}}},
       {"documentSymbolProvider", true},
       {"foldingRangeProvider", true},
       {"semanticTokensProvider", {{"legend", semantic_token_legend()}, {"full", true}}},
+      {"workspace", {{"workspaceFolders", {{"supported", true}, {"changeNotifications", true}}}}},
   };
   return {{"capabilities", std::move(capabilities)},
           {"serverInfo", {{"name", "uprog"}, {"version", "0.1"}}}};
@@ -168,15 +185,12 @@ const ReferenceIndex* LspServer::reference_of(const dialect::Dialect* d) {
 
 json LspServer::feature(const std::string& method, const json& params) {
   using namespace jsonrpc;
-  static const char* const kMethods[] = {"textDocument/hover",
-                                         "textDocument/completion",
-                                         "textDocument/signatureHelp",
-                                         "textDocument/definition",
-                                         "textDocument/references",
-                                         "textDocument/rename",
-                                         "textDocument/documentSymbol",
-                                         "textDocument/foldingRange",
-                                         "textDocument/semanticTokens/full"};
+  static const char* const kMethods[] = {
+      "textDocument/hover",         "textDocument/completion",
+      "textDocument/signatureHelp", "textDocument/definition",
+      "textDocument/references",    "textDocument/rename",
+      "textDocument/prepareRename", "textDocument/documentSymbol",
+      "textDocument/foldingRange",  "textDocument/semanticTokens/full"};
   if (std::find(std::begin(kMethods), std::end(kMethods), method) == std::end(kMethods))
     throw RequestError{ErrorCode::MethodNotFound, "no method '" + method + "' here"};
   const std::string uri = required_string(required_object(params, "textDocument"), "uri");
@@ -184,20 +198,24 @@ json LspServer::feature(const std::string& method, const json& params) {
   if (it == documents_.end())
     throw RequestError{ErrorCode::InvalidParams, "no open document " + uri};
   const TextDocument& doc = it->second.text;
-  const Analysis analysis(doc, reference_of(doc.dialect), encoding_);
+  std::optional<std::vector<dialect::SourceSymbol>>& outline = it->second.outline;
+  if (!outline && doc.dialect != nullptr) outline = doc.dialect->outline(doc.text);
+  const Analysis analysis(doc, reference_of(doc.dialect), encoding_, outline ? &*outline : nullptr);
+  const Workspace w = workspace();
   if (method == "textDocument/documentSymbol") return document_symbols(analysis, client_);
   if (method == "textDocument/foldingRange") return folding_ranges(analysis);
-  if (method == "textDocument/semanticTokens/full") return semantic_tokens(analysis);
+  if (method == "textDocument/semanticTokens/full") return semantic_tokens(analysis, w);
   const Position at = position_from(required_object(params, "position"));
-  if (method == "textDocument/hover") return hover(analysis, at);
-  if (method == "textDocument/completion") return completion(analysis, at, client_);
-  if (method == "textDocument/signatureHelp") return signature_help(analysis, at);
-  if (method == "textDocument/definition") return definition(analysis, at);
+  if (method == "textDocument/hover") return hover(analysis, w, at);
+  if (method == "textDocument/completion") return completion(analysis, w, at, client_);
+  if (method == "textDocument/signatureHelp") return signature_help(analysis, w, at);
+  if (method == "textDocument/definition") return definition(analysis, w, at);
   if (method == "textDocument/references") {
-    return references(analysis, at,
+    return references(analysis, w, at,
                       bool_or(object_or_empty(params, "context"), "includeDeclaration", true));
   }
-  return rename(analysis, at, required_string(params, "newName"));
+  if (method == "textDocument/prepareRename") return prepare_rename(analysis, w, at);
+  return rename(analysis, w, at, required_string(params, "newName"));
 }
 
 const dialect::Dialect* LspServer::dialect_for(const std::string& language_id,
@@ -231,6 +249,7 @@ void LspServer::did_open(const json& params) {
   }
   Document& stored = documents_[doc.text.uri] = std::move(doc);
   publish_diagnostics(stored);
+  check_includers(stored, now());
 }
 
 void LspServer::did_change(const json& params) {
@@ -258,14 +277,31 @@ void LspServer::did_change(const json& params) {
       doc.text.text = replacement;
     }
   }
+  doc.outline.reset();  // made again from the new text when a feature asks
   doc.text.version = integer_or(id, "version", doc.text.version + 1);
   doc.due_ms = now() + options_.debounce_ms;
+  check_includers(doc, *doc.due_ms);
+}
+
+// An open header's text, saved or not, is what the documents that include it compile with: they
+// are checked again at `due_ms`.
+void LspServer::check_includers(const Document& header, int64_t due_ms) {
+  if (header.text.path.empty()) return;
+  const Workspace w = workspace();
+  const std::string changed = normal_path(header.text.path);
+  for (auto& [uri, other] : documents_) {
+    if (&other == &header) continue;
+    const std::vector<std::string> files = w.includes_of(other.text, kIncludeDepth);
+    if (std::find(files.begin(), files.end(), changed) != files.end()) other.due_ms = due_ms;
+  }
 }
 
 void LspServer::did_close(const json& params) {
   const json& id = jsonrpc::required_object(params, "textDocument");
   const auto it = documents_.find(jsonrpc::required_string(id, "uri"));
   if (it == documents_.end()) return;
+  check_includers(it->second, now());  // they read the file on disk again
+  publish_included(it->first, {});     // what it found in its headers goes with it
   // Its diagnostics go with it (LSP 3.17: the server clears what it published).
   send(jsonrpc::rpc_notification("textDocument/publishDiagnostics",
                                  {{"uri", it->first}, {"diagnostics", json::array()}}));
@@ -280,6 +316,34 @@ void LspServer::did_save(const json& params) {
 
 void LspServer::check_all_again() {
   for (auto& [uri, doc] : documents_) doc.due_ms = now();
+}
+
+// LSP 3.17 WorkspaceFoldersChangeEvent: its removed folders go, its added ones come last; the
+// open documents' includes may now be found elsewhere, so they are checked again.
+void LspServer::change_folders(const json& event) {
+  using namespace jsonrpc;
+  const auto paths_of = [&](const char* key) {
+    std::vector<std::string> paths;
+    for (const json& f : array_or_empty(event, key)) {
+      require_object(f, key);
+      if (std::optional<std::string> path = path_from_uri(required_string(f, "uri")))
+        paths.push_back(normal_path(*path));
+    }
+    return paths;
+  };
+  const std::vector<std::string> removed = paths_of("removed"), added = paths_of("added");
+  std::erase_if(folders_, [&](const std::string& f) {
+    return std::find(removed.begin(), removed.end(), f) != removed.end();
+  });
+  for (const std::string& f : added)
+    if (std::find(folders_.begin(), folders_.end(), f) == folders_.end()) folders_.push_back(f);
+  check_all_again();
+}
+
+Workspace LspServer::workspace() const {
+  std::vector<const TextDocument*> open;
+  for (const auto& [uri, doc] : documents_) open.push_back(&doc.text);
+  return Workspace(folders_, std::move(open));
 }
 
 std::optional<int64_t> LspServer::poll() {
@@ -302,11 +366,15 @@ void LspServer::publish_diagnostics(Document& doc) {
   const std::string compiled_as = doc.text.path.empty() ? doc.text.uri : doc.text.path;
   dialect::CompileSettings settings;
   settings.check_only = true;
+  const Workspace w = workspace();
+  settings.includes = w.include_search();
   json diagnostics = json::array();
+  std::map<std::string, json> in_includes;
   try {
     const dialect::CompileOutput out =
         doc.text.dialect->compile_source(SourceFile{compiled_as, doc.text.text}, settings);
-    diagnostics = to_lsp_diagnostics(doc.text, compiled_as, out.diagnostics, encoding_);
+    diagnostics = to_lsp_diagnostics(doc.text, compiled_as, out.diagnostics, encoding_, &w);
+    in_includes = included_file_diagnostics(doc.text, compiled_as, out.diagnostics, encoding_, w);
   } catch (const std::exception& e) {
     log(1, "checking " + doc.text.uri + " failed: " + e.what());
   }
@@ -314,6 +382,32 @@ void LspServer::publish_diagnostics(Document& doc) {
                                  {{"uri", doc.text.uri},
                                   {"version", doc.text.version},
                                   {"diagnostics", std::move(diagnostics)}}));
+  publish_included(doc.text.uri, std::move(in_includes));
+}
+
+// An included file that is not open shows what its includers' compiles found in it (all of
+// them, each once); one that is open shows its own. A file they no longer find errors in is
+// cleared.
+void LspServer::publish_included(const std::string& includer, std::map<std::string, json> by_file) {
+  std::vector<std::string> touched;
+  for (auto& [file, by_includer] : from_includers_) {
+    if (by_includer.erase(includer) > 0) touched.push_back(file);
+  }
+  for (auto& [file, list] : by_file) {
+    from_includers_[file][includer] = std::move(list);
+    if (std::find(touched.begin(), touched.end(), file) == touched.end()) touched.push_back(file);
+  }
+  for (const std::string& file : touched) {
+    json all = json::array();
+    for (const auto& [from, list] : from_includers_[file]) {
+      for (const json& d : list)
+        if (std::find(all.begin(), all.end(), d) == all.end()) all.push_back(d);
+    }
+    if (from_includers_[file].empty()) from_includers_.erase(file);
+    if (documents_.count(file) > 0) continue;  // open: its own diagnostics stand
+    send(jsonrpc::rpc_notification("textDocument/publishDiagnostics",
+                                   {{"uri", file}, {"diagnostics", std::move(all)}}));
+  }
 }
 
 }  // namespace uprog::lsp

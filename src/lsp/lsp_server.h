@@ -17,6 +17,7 @@
 #include "lsp/analysis.h"
 #include "lsp/reference_index.h"
 #include "lsp/text_document.h"
+#include "lsp/workspace.h"
 
 namespace uprog::lsp {
 
@@ -48,6 +49,9 @@ class LspServer {
   struct Document {
     TextDocument text;
     std::optional<int64_t> due_ms;  // when its diagnostics are to be published
+    // Its declarations (Dialect::outline: Gold's parses the text) for the features, made once
+    // per text: an editor asks several features of each version.
+    std::optional<std::vector<dialect::SourceSymbol>> outline;
   };
 
   void request(const json& id, const std::string& method, const json& params);
@@ -58,6 +62,11 @@ class LspServer {
   void did_close(const json& params);
   void did_save(const json& params);
   void check_all_again();
+  void check_includers(const Document& header, int64_t due_ms);
+  void publish_included(const std::string& includer, std::map<std::string, json> by_file);
+  void change_folders(const json& event);
+  // The workspace as it is: its folders and the open documents.
+  Workspace workspace() const;
 
   // A feature's request on an open document: its position, the document as analysed.
   json feature(const std::string& method, const json& params);
@@ -77,6 +86,9 @@ class LspServer {
   bool shutdown_ = false;
   bool done_ = false;
   std::map<std::string, Document> documents_;  // by URI
+  std::vector<std::string> folders_;           // the workspace's, as paths
+  // Diagnostics in included files that are not open: by the file's URI, by the includer's.
+  std::map<std::string, std::map<std::string, json>> from_includers_;
   std::map<const dialect::Dialect*, std::unique_ptr<ReferenceIndex>> references_;
   ClientSupport client_;
 };

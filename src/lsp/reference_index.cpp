@@ -41,6 +41,8 @@ std::string kind_name(dialect::ReferenceKind kind) {
       return "keyword";
     case dialect::ReferenceKind::Directive:
       return "directive";
+    case dialect::ReferenceKind::Constant:
+      return "constant";
   }
   return "";
 }

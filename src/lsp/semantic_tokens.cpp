@@ -1,6 +1,8 @@
 // Semantic tokens (analysis.h): each word coloured as the dialect knows it — a drive command or
 // system variable, a built-in, a keyword, or the user's function, variable, macro or label —
 // rather than as a regular expression guesses.
+#include <map>
+
 #include "lsp/analysis.h"
 
 namespace uprog::lsp {
@@ -48,7 +50,11 @@ json semantic_token_legend() {
       {"tokenModifiers", {"declaration", "defaultLibrary", "readonly"}}};
 }
 
-json semantic_tokens(const Analysis& a) {
+json semantic_tokens(const Analysis& a, const Workspace& ws) {
+  // The names the included files declare at their top (a header's procedure, a .puh's #define).
+  std::map<std::string, dialect::SymbolKind, std::less<>> included;
+  for (const IncludedSymbol& s : included_symbols(a, ws))
+    included.emplace(s.symbol.name, s.symbol.kind);
   std::vector<int64_t> data;
   int64_t last_line = 0, last_char = 0;
   for (const dialect::SourceWord& w : a.words()) {
@@ -57,6 +63,8 @@ json semantic_tokens(const Analysis& a) {
     if (const dialect::SourceSymbol* s = a.symbol_for(name, w.line)) {
       type = type_of(s->kind);
       if (s->line == w.line) modifiers |= kDeclaration;
+    } else if (const auto inc = included.find(name); inc != included.end()) {
+      type = type_of(inc->second);
     } else if (a.reference() != nullptr) {
       if (const dialect::ReferenceEntry* e = a.reference()->find(w.text)) {
         switch (e->kind) {
@@ -67,6 +75,10 @@ json semantic_tokens(const Analysis& a) {
           case dialect::ReferenceKind::Function:
             type = kFunction;
             modifiers |= kDefaultLibrary;
+            break;
+          case dialect::ReferenceKind::Constant:
+            type = kMacro;
+            modifiers |= kDefaultLibrary | kReadonly;
             break;
           case dialect::ReferenceKind::Command:
           case dialect::ReferenceKind::SystemVariable:

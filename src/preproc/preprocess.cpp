@@ -283,10 +283,21 @@ class Preprocessor {
     if (options_.backslash_separates) std::replace(name.begin(), name.end(), '\\', '/');
     const std::filesystem::path given(name);
     const std::filesystem::path dir = std::filesystem::path(source_->name).parent_path();
-    const std::string path = given.is_absolute() || dir.empty() ? name : (dir / given).string();
+    std::string path = given.is_absolute() || dir.empty() ? name : (dir / given).string();
     std::string why;
-    std::optional<std::string> text =
-        options_.read_file ? options_.read_file(path, &why) : read_text_file(path, &why);
+    const auto read_one = [&](const std::string& p) {
+      return options_.read_file ? options_.read_file(p, &why) : read_text_file(p, &why);
+    };
+    std::optional<std::string> text = read_one(path);
+    for (size_t f = 0; !text && !given.is_absolute() && f < options_.include_folders.size(); ++f) {
+      std::string elsewhere = (std::filesystem::path(options_.include_folders[f]) / given).string();
+      std::string first_why = why;
+      if ((text = read_one(elsewhere))) {
+        path = std::move(elsewhere);
+      } else {
+        why = std::move(first_why);  // the includer's folder's reason is the one to tell
+      }
+    }
     if (!text)
       return report(PreprocError::IncludeNotFound, here(b), {{here(b), "'" + path + "': " + why}});
     const SourceFile inner{path, std::move(*text)};

@@ -88,6 +88,8 @@ struct PreprocOptions {
   int max_include_depth = 20;
   bool backslash_separates = false;  // `#include "..\common.h"` (HIWIN's manual, 2.5.6)
   std::function<std::optional<std::string>(const std::string& path, std::string* why)> read_file;
+  // Folders where a relative #include name not found beside its includer is looked for next.
+  std::vector<std::string> include_folders;
   bool allow_function_macros = false;  // #define F(a, b) ... with `\` continuation (HIWIN PDL)
   bool allow_elifdef = false;          // #elifdef / #elifndef (HIWIN PDL): implemented
   bool allow_definevar = false;        // #definevar NAME GenData[N] (Akribis PUP)

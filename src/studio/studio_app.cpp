@@ -1,6 +1,8 @@
 // `uprog studio`'s server (studio_app.h).
 #include "studio/studio_app.h"
 
+#include <algorithm>
+
 namespace uprog::studio {
 
 std::string unframed(const std::string& framed) {
@@ -42,6 +44,7 @@ void StudioApp::stop() {
 
 WebSocketHandler StudioApp::drive_socket(const std::shared_ptr<WebSocketPeer>& peer) {
   std::weak_ptr<WebSocketPeer> weak = peer;
+  drive_peers_.push_back(weak);
   const uint64_t page = drive_.connect(PageSink{[weak](const std::string& text) {
                                                   if (auto p = weak.lock()) p->send_text(text);
                                                 },
@@ -106,7 +109,7 @@ void StudioApp::end_debug_session() {
 
 void StudioApp::schedule() {
   if (stopped_) return;
-  const bool flat_out = drive_.speed() == StudioDrive::kMaxSpeed;
+  const bool flat_out = drive_.speed() == StudioDrive::kMaxSpeed && !pages_behind();
   timer_.expires_after(flat_out ? Clock::duration::zero() : Clock::duration(kTickPeriod));
   timer_.async_wait([this](const boost::system::error_code& ec) {
     if (ec || stopped_) return;
@@ -115,11 +118,19 @@ void StudioApp::schedule() {
   });
 }
 
+bool StudioApp::pages_behind() {
+  std::erase_if(drive_peers_, [](const auto& weak) { return weak.expired(); });
+  return std::any_of(drive_peers_.begin(), drive_peers_.end(), [](const auto& weak) {
+    const auto peer = weak.lock();
+    return peer && peer->queued_bytes() > kBehindBytes;
+  });
+}
+
 void StudioApp::tick() {
   const auto now = Clock::now();
   const auto wall_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(now - last_tick_);
   last_tick_ = now;
-  drive_.tick(static_cast<uint64_t>(wall_ns.count()));
+  drive_.tick(static_cast<uint64_t>(wall_ns.count()), pages_behind());
   for (auto& [id, server] : language_servers_) server->poll();
   if (now - last_status_ >= kStatusPeriod) {
     last_status_ = now;

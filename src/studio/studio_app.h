@@ -29,6 +29,9 @@ class StudioApp {
   // The wall-clock pacing's period (as fast as it goes: no wait between steps).
   static constexpr auto kTickPeriod = std::chrono::milliseconds(10);
   static constexpr auto kStatusPeriod = std::chrono::milliseconds(100);
+  // A drive page with more than this queued is behind: "as fast as possible" waits for it at
+  // the wall clock's pace (a browser would otherwise be dropped at WebLimits' unread limit).
+  static constexpr size_t kBehindBytes = size_t{1} << 20;
 
   // Binds and listens at once (throws boost::system::system_error if it cannot).
   StudioApp(boost::asio::io_context& io, StudioOptions options);
@@ -45,6 +48,7 @@ class StudioApp {
   void end_debug_session();
   void schedule();
   void tick();
+  bool pages_behind();
 
   boost::asio::io_context& io_;
   StudioOptions options_;
@@ -53,6 +57,7 @@ class StudioApp {
   boost::asio::steady_timer timer_;
   Clock::time_point last_tick_;
   Clock::time_point last_status_;
+  std::vector<std::weak_ptr<WebSocketPeer>> drive_peers_;
   std::map<uint64_t, std::unique_ptr<lsp::LspServer>> language_servers_;
   uint64_t next_language_server_ = 1;
   std::unique_ptr<debug::DapServer> debugger_;

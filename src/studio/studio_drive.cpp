@@ -249,10 +249,11 @@ void StudioDrive::set_scope(uint64_t page, const json& request) {
       {{"type", "scope"}, {"channels", channels}, {"period_us", controller_->axis().period_us()}});
 }
 
-void StudioDrive::tick(uint64_t wall_ns) {
+void StudioDrive::tick(uint64_t wall_ns, bool pages_behind) {
   if (speed_ != 0.0) {
+    const double factor = speed_ == kMaxSpeed ? 1.0 : speed_;
     const double virtual_ns =
-        speed_ == kMaxSpeed ? double(kMaxSpeedStepNs) : double(wall_ns) * speed_;
+        speed_ == kMaxSpeed && !pages_behind ? double(kMaxSpeedStepNs) : double(wall_ns) * factor;
     pending_ns_ += std::min(kMaxStepNs, static_cast<uint64_t>(virtual_ns));
     const uint64_t us = pending_ns_ / 1000;
     pending_ns_ %= 1000;

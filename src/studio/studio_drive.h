@@ -50,8 +50,9 @@ class StudioDrive {
   void handle(uint64_t page, const std::string& text);
 
   // `wall_ns` of wall time has passed: virtual time passes at the chosen speed, the scope's
-  // samples and the drive's output go to every page.
-  void tick(uint64_t wall_ns);
+  // samples and the drive's output go to every page. `pages_behind`: a page has not read what
+  // it was sent, so "as fast as possible" keeps to the wall clock until it has.
+  void tick(uint64_t wall_ns, bool pages_behind = false);
   // Status (time, program, threads, inputs, faults) to every page.
   void broadcast_status();
   // 0 paused; 1 the wall clock; up to 10; kMaxSpeed as fast as it goes.

@@ -51,6 +51,7 @@ class WebSocketSession final : public WebSocketPeer,
 
   void send_text(std::string text) override { queue(std::move(text), false); }
   void send_binary(std::string bytes) override { queue(std::move(bytes), true); }
+  size_t queued_bytes() const override { return queued_bytes_; }
 
   void close(uint16_t code, std::string reason) override {
     if (closing_) return;

@@ -25,6 +25,8 @@ class WebSocketPeer {
   virtual ~WebSocketPeer() = default;
   virtual void send_text(std::string text) = 0;
   virtual void send_binary(std::string bytes) = 0;
+  // What is queued for the peer and not yet written to its socket.
+  virtual size_t queued_bytes() const = 0;
   // Closes with a WebSocket close code and reason; nothing more is sent or received.
   virtual void close(uint16_t code, std::string reason) = 0;
 };

@@ -155,6 +155,10 @@ class Machine {
     if (global >= global_count_) return {};
     return {global_data_[global], global_length_[global]};
   }
+  std::span<const Value> global_words(uint32_t global) const {
+    if (global >= global_count_) return {};
+    return {global_data_[global], global_length_[global]};
+  }
   // The data memory: every global's words in table order, global 0's element 0 at address 0,
   // as LDM and STM see it. Checked: false when the address is past the last word.
   uint32_t memory_words() const { return memory_words_; }

@@ -1,9 +1,10 @@
 // The editor: CodeMirror 6 with the language server over /ws/lsp (@codemirror/lsp-client:
-// diagnostics, hover, completion, go to definition), the breakpoint gutter and the paused line.
+// diagnostics, hover, completion, go to definition by F12 or Ctrl-click), the breakpoint gutter
+// and the paused line.
 // The server's diagnostics also reach `onDiagnostics` for the Problems panel.
 import { basicSetup, EditorView } from "codemirror";
 import { keymap } from "@codemirror/view";
-import { LSPClient, languageServerExtensions } from "@codemirror/lsp-client";
+import { LSPClient, jumpToDefinition, languageServerExtensions } from "@codemirror/lsp-client";
 import { socketUrl } from "./socket.js";
 import { breakpointGutter } from "./breakpoints.js";
 
@@ -31,8 +32,23 @@ function lspTransport(onDiagnostics) {
   });
 }
 
-// The document's URI: the file's name under a virtual folder (the server compiles from memory).
+// Ctrl-click (Cmd-click) on a name goes to its definition, as F12 does.
+const definitionOnModClick = EditorView.domEventHandlers({
+  mousedown(event, view) {
+    if (event.button !== 0 || !(event.ctrlKey || event.metaKey)) return false;
+    const pos = view.posAtCoords({ x: event.clientX, y: event.clientY });
+    if (pos == null) return false;
+    view.dispatch({ selection: { anchor: pos } });
+    jumpToDefinition(view);
+    event.preventDefault();
+    return true;
+  },
+});
+
+// The document's URI: the file's own (so the server finds its #include files beside it), or a
+// name under a virtual folder for a program without an absolute path.
 export function documentUri(file) {
+  if (file?.startsWith("/")) return `file://${file.split("/").map(encodeURIComponent).join("/")}`;
   const name = (file || "program").split("/").pop();
   return `file:///studio/${encodeURIComponent(name)}`;
 }
@@ -43,11 +59,14 @@ export async function createEditor(parent, { source, file, dialect, onDiagnostic
     basicSetup,
     breakpointGutter(() => onBreakpoints()),
     keymap.of([{ key: "Mod-b", run: () => { onBuild(); return true; } }]),
+    definitionOnModClick,
+    EditorView.lineWrapping,  // the pane is narrow; every word stays in view
     EditorView.theme({ "&": { height: "100%" }, ".cm-scroller": { overflow: "auto" } }),
   ];
   try {
     const transport = await lspTransport(onDiagnostics);
-    const client = new LSPClient({ rootUri: "file:///studio/", extensions: languageServerExtensions() })
+    const client = new LSPClient({ rootUri: documentUri(file).replace(/[^/]*$/, ""),
+      extensions: languageServerExtensions() })
       .connect(transport);
     extensions.push(client.plugin(documentUri(file), dialect));
   } catch (e) {

@@ -111,11 +111,18 @@ function showStatus(m) {
   studio.status = m;
 }
 
+// Whether a stack frame stands in the editor's document (not in an #include'd file).
+function inEditor(frame) {
+  const path = frame.source?.path;
+  return !path || path === studio.file || path.split("/").pop() === studio.file.split("/").pop();
+}
+
 function showStopped({ frames, variables }) {
   const stack = $("call-stack");
   stack.replaceChildren(...frames.map((f) => {
     const li = document.createElement("li");
-    li.textContent = `${f.name} — line ${f.line}`;
+    const where = inEditor(f) ? `line ${f.line}` : `${f.source.name ?? f.source.path}:${f.line}`;
+    li.textContent = `${f.name} — ${where}`;
     return li;
   }));
   const vars = $("variables");
@@ -132,7 +139,8 @@ function showStopped({ frames, variables }) {
       vars.append(row);
     }
   }
-  if (frames.length) showPausedLine(studio.editor, frames[0].line);
+  // The paused line is highlighted only where the editor shows it (not inside an include).
+  showPausedLine(studio.editor, frames.length && inEditor(frames[0]) ? frames[0].line : null);
   refreshWatches();
 }
 
@@ -159,7 +167,8 @@ function download(name, href) {
 
 function build(run) {
   showDiagnostics("build", []);
-  studio.drive.send({ op: "build", source: studio.editor.state.doc.toString(), run });
+  studio.building = studio.editor.state.doc.toString();
+  studio.drive.send({ op: "build", source: studio.building, run });
 }
 
 async function hello(m) {
@@ -205,7 +214,13 @@ function nextMessage(type) {
 
 // Start the program with the debugger attached before any of its time passes: time is paused
 // while the program starts and the debugger sets its breakpoints, then runs at the chosen speed.
+// Run builds and downloads first when the editor's text is not what this page stored last.
 async function runProgram() {
+  if (studio.editor.state.doc.toString() !== studio.downloaded) {
+    const built = nextMessage("build");
+    build(false);
+    if (!(await built).ok) return;
+  }
   const speed = $("speed").value;
   studio.drive.send({ op: "speed", factor: 0 });
   const started = nextMessage("started");
@@ -237,6 +252,7 @@ function driveMessage(m) {
       }
       return;
     case "build":
+      if (m.ok) studio.downloaded = studio.building;
       showDiagnostics("build", m.diagnostics);
       appendOutput(m.ok ? "build: downloaded" : `build failed${m.error ? ": " + m.error : ""}`);
       return;

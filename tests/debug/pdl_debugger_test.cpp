@@ -142,6 +142,24 @@ TEST(PdlDebugger, FramesOfProceduresWithTheirParametersAndLocals) {
   EXPECT_EQ(c.eval(task, "fclk"), c.eval(twice, "fclk"));
 }
 
+// examples/pdl/move_with_timeout.pdl: the move ends within its 2 s, so the `else do` branch runs
+// and a breakpoint on its first command (line 20) stops there with result still 0.
+TEST(PdlDebugger, ABreakpointOnTheFirstCommandOfABranch) {
+  Client c;
+  const std::string example = UPROG_SOURCE_DIR "/examples/pdl/move_with_timeout.pdl";
+  c.request("initialize", {{"adapterID", "uprog"}});
+  c.request("launch", {{"program", example}});
+  c.body("setBreakpoints",
+         {{"source", {{"path", example}}}, {"breakpoints", json::array({{{"line", 20}}})}});
+  c.request("configurationDone");
+  const json stop = c.stopped();
+  EXPECT_EQ(stop["reason"], "breakpoint");
+  const json frames = c.frames(kTask1);
+  ASSERT_FALSE(frames.empty());
+  EXPECT_EQ(frames[0]["line"], 20);
+  EXPECT_EQ(c.value(frames[0]["id"], "Globals", "result"), "0");
+}
+
 TEST(PdlDebugger, StepOverAndOutOfProcedureCalls) {
   Client c;
   c.start(json::array({{{"line", 12}}}));  // scale's call of twice

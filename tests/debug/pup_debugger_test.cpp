@@ -1,6 +1,6 @@
 // The debugger on the AG300's PUP (tests/debug/programs/two_threads.pup): a breakpoint at a PUP
 // source line through the debug map, threads 1..8 by name, the #definevar variables, a PUP
-// expression, and stepping one thread while the other stays halted.
+// expression, stepping one thread while the other stays halted, and a step out of a function.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -23,9 +23,9 @@ struct Session {
   }()};
   Debugger debugger{drive};
 
-  Session() {
+  explicit Session(const std::string& program = kProgram) {
     std::vector<Diagnostic> diagnostics;
-    EXPECT_TRUE(drive.download_source_file(kProgram, diagnostics));
+    EXPECT_TRUE(drive.download_source_file(program, diagnostics));
     EXPECT_EQ(drive.start_program(""), "");
     debugger.program_changed();
   }
@@ -137,6 +137,23 @@ TEST(PupDebugger, SteppingOneThreadLeavesTheOtherHalted) {
   // All threads: thread 1 counts on while thread 2 takes one step.
   ASSERT_EQ(s.step(kThread2, false), RunState::Stopped);
   EXPECT_GT(s.count("One"), one);
+}
+
+// examples/pup/library_user.pup: task 1 calls MOVE_TO (line 10), which calls WAIT_SETTLED. A step
+// out of MOVE_TO's line 21 returns to the task after its call, at line 11, and the program goes on.
+TEST(PupDebugger, StepOutOfAFunctionReturnsAfterItsCall) {
+  const std::string program = UPROG_SOURCE_DIR "/examples/pup/library_user.pup";
+  Session s(program);
+  ASSERT_TRUE(s.debugger.set_line_breakpoints(program, {at(21)}).at(0).verified);
+  ASSERT_EQ(s.debugger.run(kSecond), RunState::Stopped);
+  EXPECT_EQ(s.line(kThread1), 21u);
+  EXPECT_EQ(s.debugger.threads().at(0).where, "library_user.pup:21");  // the source's line too
+  s.debugger.set_line_breakpoints(program, {});
+  s.debugger.step(kThread1, StepKind::Out, true);
+  ASSERT_EQ(s.debugger.run(kSecond), RunState::Stopped);
+  EXPECT_EQ(s.debugger.last_stop().reason, StopReason::Step);
+  EXPECT_EQ(s.line(kThread1), 11u);
+  EXPECT_EQ(s.count("Moves"), 1);
 }
 
 }  // namespace

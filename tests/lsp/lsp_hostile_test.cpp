@@ -60,6 +60,16 @@ const Hostile kHostile[] = {
     {R"({"jsonrpc":"2.0","id":9,"result":null})", 0},
     {R"({"jsonrpc":"2.0","id":9,"error":{"code":1,"message":"x"}})", 0},
     {R"({"jsonrpc":"2.0","method":"$/cancelRequest","params":{"id":[]}})", 0},
+    {R"({"jsonrpc":"2.0","method":"workspace/didChangeWorkspaceFolders","params":{"event":5}})", 0},
+    {R"({"jsonrpc":"2.0","method":"workspace/didChangeWorkspaceFolders",
+        "params":{"event":{"added":[5],"removed":[]}}})",
+     0},
+    {R"({"jsonrpc":"2.0","method":"workspace/didChangeWorkspaceFolders",
+        "params":{"event":{"added":[{"uri":5}],"removed":{"uri":"file:///w"}}}})",
+     0},
+    {R"({"jsonrpc":"2.0","id":5,"method":"textDocument/prepareRename",
+        "params":{"textDocument":{"uri":"file:///w/ok.ehl"},"position":{"line":0}}})",
+     -32602},
 };
 
 TEST(LspHostile, EveryHostileMessageIsAnsweredOrDroppedAndTheServerGoesOn) {
@@ -107,6 +117,21 @@ TEST(LspHostile, AWrongParamsFieldIsInvalidParams) {
   EXPECT_EQ(out[0]["error"]["code"], -32602);
   // And it may be sent again, well formed.
   EXPECT_TRUE(fresh.initialize().contains("result"));
+}
+
+TEST(LspHostile, WorkspaceFoldersThatAreNoFoldersAreSkipped) {
+  // Folders that are not objects or name no file URI, a rootUri of the wrong type: initialize
+  // still answers, and a document is checked.
+  LspClient c;
+  const std::vector<json> out = c.raw(
+      R"({"jsonrpc":"2.0","id":1,"method":"initialize","params":{"capabilities":{},
+          "rootUri":7,"workspaceFolders":[5,{"uri":5},{"uri":"http://x/"},{"name":"n"}]}})");
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].contains("result")) << out[0].dump();
+  c.notify("initialized");
+  const json p = c.open("file:///w/ok.ehl", "gold", "function main()\nx = 1 +\nreturn\n");
+  ASSERT_FALSE(p.is_null());
+  EXPECT_EQ(p["diagnostics"].at(0)["code"], 7);  // Gold 7 "Value is expected"
 }
 
 }  // namespace

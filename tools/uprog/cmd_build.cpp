@@ -2,6 +2,7 @@
 // keeps (Gold: a binary image, .upi), or with --emit asm into the image's uprog assembly text.
 #include <fmt/core.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <memory>
@@ -77,6 +78,8 @@ int build(const BuildOptions& o) {
     const std::string text = o.quickened
                                  ? bytecode::disassemble(*r.image, quickened_notes(*r.image))
                                  : bytecode::disassemble(*r.image);
+    if (o.output == "-")
+      return std::fwrite(text.data(), 1, text.size(), stdout) == text.size() ? 0 : 1;
     written = write_file_atomically(o.output.empty() ? o.input + ".s" : o.output, text.data(),
                                     text.size(), &error);
   } else {
@@ -100,7 +103,7 @@ void add_build(Options& cmd, Action& action) {
   cmd.option("FILE", o->input, "source file").required();
   cmd.option("-o,--output", o->output,
              "output file (default FILE plus the stored form's extension, "
-             "e.g. FILE.upi, or FILE.s with --emit asm)");
+             "e.g. FILE.upi, or FILE.s with --emit asm; - writes the assembly to stdout)");
   cmd.option("--emit", o->emit, "image (the stored form) or asm").one_of({"image", "asm"});
   cmd.flag("--quickened", o->quickened,
            "with --emit asm: name the fused instruction the VM forms at load where one starts");

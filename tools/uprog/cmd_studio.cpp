@@ -47,7 +47,8 @@ int run_studio(const StudioCliOptions& o) {
   studio::StudioOptions options;
   options.drive.dialect = choose_dialect(o.dialect, o.file, "studio");
   if (options.drive.dialect == nullptr) return 2;
-  options.drive.file = o.file;
+  // Absolute, so that the page's language server finds the program's #include files beside it.
+  options.drive.file = o.file.empty() ? "" : std::filesystem::absolute(o.file).string();
   if (!o.file.empty()) {
     std::string error;
     const auto text = read_text_file(o.file, &error);

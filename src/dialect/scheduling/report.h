@@ -9,6 +9,12 @@ namespace uprog::scheduling {
 constexpr uint32_t kMaxThreads = 32;
 constexpr uint32_t kNoThread = UINT32_MAX;
 
+// The thread whose code runs now: the schedule's, else the one a debugger's step runs outside it
+// (dialect::Firmware::debug_runs), else kNoThread (a host line).
+constexpr uint32_t running_now(uint32_t scheduled, uint32_t stepped) {
+  return scheduled != kNoThread ? scheduled : stepped;
+}
+
 // One bit each, so that a report holds every event a thread had in one call.
 enum class ThreadEvent : uint8_t {
   Finished = 1,    // the program ended (its outermost routine returned, or it exited)

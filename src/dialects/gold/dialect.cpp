@@ -80,7 +80,10 @@ class GoldDialect final : public dialect::Dialect {
   const dialect::SampleProgram& sample_program() const override { return kSample; }
   std::vector<dialect::ReferenceEntry> reference() const override { return gold::reference(); }
   bool names_ignore_case() const override { return true; }  // PX and px (commands.h)
+  // The compiler's declarations; the word scanner's while the source does not parse.
   std::vector<dialect::SourceSymbol> outline(std::string_view text) const override {
+    if (std::optional<std::vector<dialect::SourceSymbol>> s = gold::compiled_outline(text))
+      return std::move(*s);
     return gold::outline(text);
   }
   dialect::WordSyntax word_syntax() const override { return gold::word_syntax(); }

@@ -1,7 +1,10 @@
 // Gold's outline (outline.h): one pass over the words. A function runs from its `function` line
-// to the line before the next one (manual 2.4: a program is a row of functions).
+// to its first `return` outside a block (manual 2.5: "return //end the definition of the
+// function"), or to the line before the next function when it has none.
 #include "dialects/gold/outline.h"
 
+#include <algorithm>
+#include <cctype>
 #include <string>
 
 namespace uprog::gold {
@@ -52,6 +55,30 @@ void add_function(std::string_view text, const std::vector<SourceWord>& words, s
   }
 }
 
+bool same_folded(std::string_view word, std::string_view keyword) {
+  if (word.size() != keyword.size()) return false;
+  for (size_t i = 0; i < word.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(word[i])) != keyword[i]) return false;
+  return true;
+}
+
+// A word that starts a statement: first on its line or after ';' (keywords compare ignoring
+// case, gold.md decision 1).
+bool starts_statement(std::string_view text, const SourceWord& w) {
+  if (w.line_start) return true;
+  size_t at = w.offset;
+  while (at > 0 && (text[at - 1] == ' ' || text[at - 1] == '\t')) --at;
+  return at > 0 && text[at - 1] == ';';
+}
+
+// How a statement's first word changes the block depth inside a function: the parser's blocks
+// (parser.cpp: if, while, for, switch, try ... end).
+int depth_change(std::string_view word) {
+  for (std::string_view opener : {"if", "while", "for", "switch", "try"})
+    if (same_folded(word, opener)) return 1;
+  return same_folded(word, "end") ? -1 : 0;
+}
+
 }  // namespace
 
 dialect::WordSyntax word_syntax() {
@@ -63,16 +90,29 @@ dialect::WordSyntax word_syntax() {
 std::vector<dialect::SourceSymbol> outline(std::string_view text) {
   const std::vector<SourceWord> words = dialect::source_words(text, word_syntax());
   std::vector<SourceSymbol> out;
-  std::string function;  // the function the words are in; "" before the first
+  std::string function;  // the function the words are in; "" outside them
   size_t function_index = 0;
+  int depth = 0;  // the blocks open in the function
   int last_line = 1;
   for (size_t i = 0; i < words.size(); ++i) {
     const SourceWord& w = words[i];
     last_line = w.line;
+    if (!function.empty() && starts_statement(text, w)) {
+      // The body ends at its first `return` outside a block, as the parser ends it
+      // (parser.cpp, kStopReturn): what follows is the top level's again.
+      if (depth == 0 && same_folded(w.text, "return")) {
+        out[function_index].end_line = w.line;
+        function.clear();
+        continue;
+      }
+      depth = std::max(depth + depth_change(w.text), 0);
+    }
     if (w.line_start && w.text == "function") {
       if (!function.empty()) out[function_index].end_line = w.line - 1;
       const size_t before = out.size();
       add_function(text, words, i, out);
+      function.clear();
+      depth = 0;
       if (out.size() > before) {
         function = out[before].name;
         function_index = before;

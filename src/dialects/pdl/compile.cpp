@@ -107,7 +107,13 @@ CompileResult compile(const SourceFile& source, const CompileOptions& options) {
   po.allow_include = true;
   po.max_include_depth = 20;  // 1.1
   po.backslash_separates = true;
-  po.read_file = options.read_includes ? read_include : no_include;
+  po.read_file = no_include;
+  if (options.read_includes) {
+    po.include_folders = options.includes.folders;
+    po.read_file = [&includes = options.includes](const std::string& path, std::string* why) {
+      return includes.read(path, why, read_include);
+    };
+  }
   DiagnosticList pre_diags;
   const bool preprocess = source.text.find('#') != std::string::npos;
   preproc::Preprocessed pre;

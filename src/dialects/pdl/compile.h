@@ -7,6 +7,7 @@
 #include "bytecode/image.h"
 #include "dialects/pdl/debug_info.h"
 #include "support/diagnostic.h"
+#include "support/include_search.h"
 #include "support/source.h"
 
 namespace uprog::pdl {
@@ -18,6 +19,8 @@ struct CompileOptions {
   // #include reads files from disk (regular files up to kMaxIncludeBytes); false: none is read
   // (every #include is [pdl 102]), for fuzzing and for text that is not the user's.
   bool read_includes = true;
+  // Where #include looks after the includer's folder, and what an editor holds open unsaved.
+  IncludeSearch includes;
 };
 
 constexpr uintmax_t kMaxIncludeBytes = 1u << 20;

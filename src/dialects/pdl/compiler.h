@@ -168,7 +168,8 @@ class Compiler {
 
   // --- commands (compiler_commands.cpp)
   void command(int depth, bool in_proc);
-  void begin_command(uint32_t slots);
+  // A command starting at `offset` (default: the next token) taking `slots` slots.
+  void begin_command(uint32_t slots, std::optional<size_t> offset = std::nullopt);
   void line_entry(size_t offset);
   void end_line() { code_.emit(Op::EOL); }
   void if_command(int depth, bool in_proc);

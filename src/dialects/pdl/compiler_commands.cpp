@@ -18,9 +18,9 @@ void Compiler::line_entry(size_t offset) {
     image_.lines.push_back(e);
 }
 
-void Compiler::begin_command(uint32_t slots) {
+void Compiler::begin_command(uint32_t slots, std::optional<size_t> offset) {
   if (!in_short_if_) {
-    line_entry(peek().offset);
+    line_entry(offset.value_or(peek().offset));
     const CodeBuilder::Label start = code_.new_label();
     code_.bind(start);
     commands_.push_back({slots_, start, scope_, loop_depth_});
@@ -172,9 +172,10 @@ void Compiler::if_command(int depth, bool in_proc) {
     end_line();
     statement_list(depth + 1, in_proc);
     if (at_word("else") && at_word("do", 1)) {
+      // `else do` is a command of its own line: the then-branch's jump past the else-branch.
+      const size_t else_at = next().offset;
       next();
-      next();
-      begin_command(1);
+      begin_command(1, else_at);
       code_.emit_to(Op::JMP, end);
       code_.bind(f);
       end_line();

@@ -55,6 +55,7 @@ class PdlDialect final : public dialect::Dialect {
     CompileOptions options;
     options.check_only = settings.check_only;
     options.created_unix_s = settings.created_unix_s;
+    options.includes = settings.includes;
     CompileResult r = pdl::compile(source, options);
     dialect::CompileOutput out;
     out.diagnostics = std::move(r.diagnostics);

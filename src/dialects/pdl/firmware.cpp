@@ -497,7 +497,7 @@ vm::CommandStatus Firmware::write(uint32_t command, int32_t index, Value value) 
 
 vm::CommandStatus Firmware::execute(uint32_t command, int32_t index, const Value* args,
                                     uint32_t count) {
-  const uint32_t self = schedule_.running();
+  const uint32_t self = scheduling::running_now(schedule_.running(), debugger_runs_);
   switch (command) {
     case kLockCommand:
       schedule_.lock(self);

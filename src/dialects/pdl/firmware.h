@@ -68,7 +68,9 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::vector<dialect::ThreadInfo> threads() const override;
 
   // --- the debugger's hooks (debug_hooks.cpp)
+  const dialect::LoadedProgram* loaded_program() const override { return program_.get(); }
   dialect::LoadedProgram* debug_program() override { return program_.get(); }
+  void debug_runs(uint32_t thread) override { debugger_runs_ = thread; }
   dialect::Evaluation evaluate(uint32_t thread, uint32_t depth,
                                std::string_view expression) override;
   std::optional<std::vector<dialect::DebugFrame>> debug_frames(uint32_t thread) override;
@@ -130,6 +132,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   dialect::Runtime& runtime_;
   dialect::SemicolonWire wire_;
   scheduling::PhaseRoundRobin schedule_;
+  uint32_t debugger_runs_ = scheduling::kNoThread;  // debug_runs()
   uint32_t phase_us_ = 50;
   std::optional<std::vector<uint8_t>> stored_;
   bool flash_read_ = false;

@@ -51,8 +51,10 @@ std::vector<dialect::SourceSymbol> outline(std::string_view text) {
       depth = 0;
       for (size_t j = i + 2; j + 1 < words.size() && words[j].line == w.line; ++j) {
         if (!is_type(words[j].text) || words[j + 1].line != w.line) continue;
-        out.push_back({std::string(words[j + 1].text), SymbolKind::Parameter,
-                       std::string(words[j].text), w.line, words[j + 1].column, w.line, proc});
+        // `long * sum` (manual 2.5.1's add3): a pointer's type says so.
+        const std::string type = std::string(words[j].text) + (words[j].next == '*' ? "*" : "");
+        out.push_back({std::string(words[j + 1].text), SymbolKind::Parameter, type, w.line,
+                       words[j + 1].column, w.line, proc});
       }
     } else if (w.line_start && w.text == "#task" && same_line_next) {
       if (task_index != SIZE_MAX) out[task_index].end_line = w.line - 1;
@@ -67,13 +69,14 @@ std::vector<dialect::SourceSymbol> outline(std::string_view text) {
                      w.line, ""});
     } else if (w.line_start && (w.text == "#long" || w.text == "#short" || w.text == "#float" ||
                                 (!proc.empty() && is_type(w.text)))) {
+      // Declared inside a procedure's body, `#long tmp;` is its temporary (manual 2.5.1's add3:
+      // "Define temporary user variable"); outside, a global.
       const std::string type(w.text.substr(w.text[0] == '#' ? 1 : 0));
       const std::string_view rest = dialect::rest_of_line(text, w.offset + w.text.size());
       for (const auto& [name, at] : dialect::declared_names(rest)) {
         out.push_back({std::string(name), SymbolKind::Variable,
-                       type + (w.text[0] == '#' ? " (global)" : ""), w.line,
-                       w.column + static_cast<int>(w.text.size() + at), w.line,
-                       w.text[0] == '#' ? "" : proc});
+                       type + (proc.empty() ? " (global)" : " (temporary)"), w.line,
+                       w.column + static_cast<int>(w.text.size() + at), w.line, proc});
       }
     } else if (w.line_start && w.next == ':' && !w.text.empty() && w.text[0] != '#' &&
                w.text != "default") {

@@ -130,9 +130,10 @@ class Loader {
  public:
   explicit Loader(const CupProgram& p) : p_(p), ops_(p.lines.size() + 1) {}
 
-  std::optional<LoadedCup> run(std::string* error) {
+  std::optional<LoadedCup> run(std::string* error, uint32_t* refused_line) {
     if (auto r = parse(); r || (r = markers()) || (r = analyse())) {
       if (error) *error = fmt::format("line {}: {}", r->line, r->why);
+      if (refused_line) *refused_line = r->line;
       return std::nullopt;
     }
     generate();
@@ -523,8 +524,9 @@ uint32_t LoadedCup::line_of(uint32_t pc) const {
   return line;
 }
 
-std::optional<LoadedCup> load_cup(const CupProgram& program, std::string* error) {
-  return Loader(program).run(error);
+std::optional<LoadedCup> load_cup(const CupProgram& program, std::string* error,
+                                  uint32_t* refused_line) {
+  return Loader(program).run(error, refused_line);
 }
 
 }  // namespace uprog::pup

@@ -61,8 +61,10 @@ uint32_t gen_data_element_global(bytecode::Image& image, int32_t n);
 // LDGW's and STGW's window of AGenData for APushParamIdx[k],AGenData[n] (elements n..n+k-1).
 uint32_t gen_data_window(const Message& m);
 
-// nullopt with `error` "line N: why" (the download's error 45) when the program is unsafe.
-std::optional<LoadedCup> load_cup(const CupProgram& program, std::string* error);
+// nullopt with `error` "line N: why" (the download's error 45) when the program is unsafe;
+// `refused_line` gets N (0 for the program's tables), so that a compiler can name its source.
+std::optional<LoadedCup> load_cup(const CupProgram& program, std::string* error,
+                                  uint32_t* refused_line = nullptr);
 
 // Places the image's AGenData (if it has one) on the general data the host keeps.
 bool bind_gen_data(vm::Machine& machine, const LoadedCup& cup,

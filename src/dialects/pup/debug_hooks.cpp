@@ -1,6 +1,6 @@
 // What the AG300 firmware offers the debugger (dialect::Firmware's debug hooks): the program in
 // RAM with the PUP source's line table from the debug map, a PUP expression evaluated on the
-// controller's values now, and the #definevar variables by name.
+// controller's values now, and the #definevar variables by name (for the recorder too).
 #include <fmt/core.h>
 
 #include "dialects/pup/firmware.h"
@@ -88,6 +88,30 @@ dialect::Evaluation Firmware::evaluate(uint32_t, uint32_t, std::string_view expr
   out.value = std::to_string(value);
   out.is_true = value != 0;
   return out;
+}
+
+// "AGenData[n]" (n from 1, as the manual counts), a #definevar name, or an element "arr[i]" of
+// a #definevar array (i from 1): the word of the controller's general data it names.
+std::optional<drive::ProgramWords::Word> Firmware::recorder_word(std::string_view name) const {
+  const std::optional<drive::ElementName> element = drive::split_element_name(name);
+  if (!element || element->index.value_or(1) > kGenDataSize) return std::nullopt;
+  const std::string base(element->name);
+  const auto index = static_cast<int32_t>(element->index.value_or(0));  // from 1; 0: none
+  int32_t slot = 0;                                                     // AGenData[slot]
+  const Keyword* k = find_keyword(base);
+  if (k != nullptr && k->id == KeywordId::GenData && index >= 1) {
+    slot = index;
+  } else if (debug_map_) {
+    const auto var = debug_map_->vars.find(base);
+    if (var == debug_map_->vars.end()) return std::nullopt;
+    const Var& v = var->second;
+    if (v.array != (index != 0) || (v.array && index > v.size)) return std::nullopt;
+    slot = v.base + (v.array ? index - 1 : 0);
+  }
+  if (slot < 1 || slot > static_cast<int32_t>(kGenDataSize)) return std::nullopt;
+  drive::ProgramWords::Word word;
+  word.bound = &gen_data_[static_cast<size_t>(slot - 1)];
+  return word;
 }
 
 std::vector<dialect::DebugVariable> Firmware::debug_variables() {

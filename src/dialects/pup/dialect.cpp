@@ -67,8 +67,9 @@ class PupDialect final : public dialect::Dialect {
                                         const dialect::CompileSettings& settings) const override {
     dialect::CompileOutput out;
     const bool cup = is_cup(source.name);
-    PupOutput r = cup ? rebuild_cup(source.name, source.text, settings.created_unix_s)
-                      : compile_pup(source.name, source.text, settings.created_unix_s);
+    PupOutput r =
+        cup ? rebuild_cup(source.name, source.text, settings.created_unix_s)
+            : compile_pup(source.name, source.text, settings.created_unix_s, settings.includes);
     out.diagnostics = std::move(r.diagnostics);
     if (out.ok() && !settings.check_only) {
       const std::string text = write_cup(r.program);

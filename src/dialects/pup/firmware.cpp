@@ -4,6 +4,8 @@
 
 #include <fmt/core.h>
 
+#include <filesystem>
+
 #include "bytecode/opcodes.h"
 #include "dialect/program_store.h"
 #include "dialects/pup/cup_math.h"
@@ -249,12 +251,22 @@ std::vector<dialect::ThreadInfo> Firmware::threads() const {
     info.thread = t;
     info.name = fmt::format("thread {}", t);
     info.status = m.status(t);
-    if (info.status != vm::ThreadStatus::Idle)
-      info.where = fmt::format("{}:{}", cup_.image.source_name, cup_.line_of(m.pc(t)));
+    if (info.status != vm::ThreadStatus::Idle) info.where = place_of(cup_.line_of(m.pc(t)));
     info.error = thread_error_[t];
     out.push_back(std::move(info));
   }
   return out;
+}
+
+// Where a CUP line comes from: its PUP source line when the debug map is the program's, as the
+// debugger speaks, else the CUP file's line.
+std::string Firmware::place_of(uint32_t cup_line) const {
+  if (debug_map_ && stored_ && *stored_ == debug_map_cup_ && cup_line >= 1 &&
+      cup_line <= debug_map_->places.size()) {
+    const Location& at = debug_map_->places[cup_line - 1];
+    return fmt::format("{}:{}", std::filesystem::path(at.file).filename().string(), at.line);
+  }
+  return fmt::format("{}:{}", cup_.image.source_name, cup_line);
 }
 
 // The CUP line a thread executes next: a pc on the EOL that closes a line after its code (a
@@ -276,7 +288,7 @@ uint32_t Firmware::next_line(uint32_t thread) const {
 }
 
 uint32_t Firmware::running_thread() const {
-  const uint32_t t = schedule_.running();
+  const uint32_t t = scheduling::running_now(schedule_.running(), debugger_runs_);
   return t == scheduling::kNoThread ? 0 : t;
 }
 

@@ -48,7 +48,9 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::vector<dialect::ThreadInfo> threads() const override;
 
   // --- debug_hooks.cpp: the debugger's hooks (dialect/firmware.h) ---
+  const dialect::LoadedProgram* loaded_program() const override { return program_.get(); }
   dialect::LoadedProgram* debug_program() override { return program_.get(); }
+  std::optional<drive::ProgramWords::Word> recorder_word(std::string_view name) const override;
   dialect::Evaluation evaluate(uint32_t thread, uint32_t depth,
                                std::string_view expression) override;
   void set_debug_map(std::string_view map) override;
@@ -73,6 +75,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   void log_error(int32_t code, int32_t source, int32_t line);
   vm::Machine* machine() { return program_ ? &program_->machine() : nullptr; }
   uint32_t running_thread() const;
+  std::string place_of(uint32_t cup_line) const;
+  void debug_runs(uint32_t thread) override { debugger_runs_ = thread; }
   uint32_t next_line(uint32_t thread) const;
 
   // --- events.cpp: latching, masks, entering thread 1 and leaving ---
@@ -127,6 +131,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   dialect::Runtime& runtime_;
   PupWire wire_;
   scheduling::RatePriorities schedule_;
+  uint32_t debugger_runs_ = scheduling::kNoThread;  // debug_runs()
   drive::Axis* axis_ = nullptr;
 
   std::optional<std::string> stored_;

@@ -7,6 +7,7 @@
 #include "dialects/pup/cup_file.h"
 #include "dialects/pup/pup_expr.h"
 #include "support/diagnostic.h"
+#include "support/include_search.h"
 
 namespace uprog::pup {
 
@@ -19,7 +20,10 @@ struct PupOutput {
 };
 
 // `text` is the file's content; `path` names it (for diagnostics and #include).
-PupOutput compile_pup(const std::string& path, const std::string& text, uint64_t created_unix_s);
+// `includes`: where #include looks after the includer's and the .pup's folders, and what an
+// editor holds open unsaved (the command line's default: the disk only).
+PupOutput compile_pup(const std::string& path, const std::string& text, uint64_t created_unix_s,
+                      const IncludeSearch& includes = {});
 PupOutput compile_pup_file(const std::string& path, uint64_t created_unix_s);
 
 }  // namespace uprog::pup

@@ -45,7 +45,9 @@ struct Block {
 
 class PupCompiler {
  public:
-  explicit PupCompiler(uint64_t created_unix_s) { out_.program.date = cup_date(created_unix_s); }
+  PupCompiler(uint64_t created_unix_s, const IncludeSearch& includes) : includes_(includes) {
+    out_.program.date = cup_date(created_unix_s);
+  }
   PupOutput run(const std::string& path, const std::string& text);
 
  private:
@@ -80,6 +82,7 @@ class PupCompiler {
   Block* innermost(bool loops_only);
   void close_function();
   void finish();
+  void refuse_what_the_loader_refuses(const std::string& path);
 
   PupOutput out_;
   std::vector<OutLine> lines_;
@@ -88,6 +91,7 @@ class PupCompiler {
   std::map<std::string, Define> defines_;
   VarTable vars_;
   std::vector<std::string> include_stack_;
+  const IncludeSearch& includes_;
   std::map<int32_t, Location> tasks_, functions_;
   std::vector<std::pair<int32_t, Location>> calls_, events_;
   std::optional<std::pair<int32_t, Location>> open_function_;

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "dialects/pup/builtin_header.h"
+#include "dialects/pup/cup_loader.h"
 #include "dialects/pup/keywords.h"
 #include "dialects/pup/message.h"
 #include "dialects/pup/pup_compiler_impl.h"
@@ -53,8 +54,19 @@ PupOutput PupCompiler::run(const std::string& path, const std::string& text) {
       !why.empty()) {
     error(Error::ProgramTooLarge, Location{path, 1, 1}, why);
   }
+  if (out_.ok()) refuse_what_the_loader_refuses(path);
   out_.vars = vars_;
   return std::move(out_);
+}
+
+// Message lines pass into the CUP as written (`AJump[1],301`), so the program the compiler made
+// may still be one the controller's loader refuses: its refusal, at the source of the CUP line.
+void PupCompiler::refuse_what_the_loader_refuses(const std::string& path) {
+  std::string why;
+  uint32_t line = 0;
+  if (load_cup(out_.program, &why, &line)) return;
+  const bool placed = line >= 1 && line <= out_.places.size();
+  error(Error::LoaderRefuses, placed ? out_.places[line - 1] : Location{path, 1, 1}, "CUP " + why);
 }
 
 // Lines end at CR LF, LF or CR.
@@ -155,10 +167,21 @@ void PupCompiler::include(const std::string& raw, const Location& at, const std:
   // Beside the includer, then (a header's #include without a path) beside the .pup.
   std::filesystem::path full = std::filesystem::path(path).parent_path() / name;
   std::string why;
-  std::optional<std::string> text = read_text_file(full.string(), &why);
+  const auto read_one = [&](const std::filesystem::path& p) {
+    return includes_.read(p.string(), &why, [](const std::string& f, std::string* w) {
+      return read_text_file(f, w);
+    });
+  };
+  std::optional<std::string> text = read_one(full);
   if (!text && include_stack_.size() > 1 && std::filesystem::path(name).parent_path().empty()) {
     full = std::filesystem::path(include_stack_.front()).parent_path() / name;
-    text = read_text_file(full.string(), &why);
+    text = read_one(full);
+  }
+  // Then the folders an editor's workspace gives (`uprog lsp`).
+  for (size_t f = 0;
+       !text && std::filesystem::path(name).is_relative() && f < includes_.folders.size(); ++f) {
+    const std::filesystem::path elsewhere = std::filesystem::path(includes_.folders[f]) / name;
+    if ((text = read_one(elsewhere))) full = elsewhere;
   }
   std::string shown = full.string();
   if (!text && name == kBuiltinHeaderName) {
@@ -248,8 +271,9 @@ void PupCompiler::event(const std::string& rest, const Location& at) {
   events_.push_back({*function, function_at});
 }
 
-PupOutput compile_pup(const std::string& path, const std::string& text, uint64_t created_unix_s) {
-  return PupCompiler(created_unix_s).run(path, text);
+PupOutput compile_pup(const std::string& path, const std::string& text, uint64_t created_unix_s,
+                      const IncludeSearch& includes) {
+  return PupCompiler(created_unix_s, includes).run(path, text);
 }
 
 PupOutput compile_pup_file(const std::string& path, uint64_t created_unix_s) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "dialects/pup/builtin_header.h"
 #include "dialects/pup/keywords.h"
 
 namespace uprog::pup {
@@ -213,6 +214,37 @@ constexpr Word kWords[] = {
     {"#information", ReferenceKind::Directive, "A text AProgInfo answers.", ""},
 };
 
+// The names `#include akribis.puh` gives (builtin_header.h, the compiler's own header): each
+// with its number and the table the number is for, the header's groups in their order.
+void add_builtin_header(std::vector<ReferenceEntry>& out) {
+  static constexpr std::pair<std::string_view, const char*> kGroups[] = {
+      {"ADD", "a Math[] operation"},
+      {"ALWAYS", "a Compare[]/Jump[] condition"},
+      {"MOTION_ENDED", "an AWaitStatus[] condition"},
+      {"EV_FAULT", "an event ID (#event)"}};
+  const char* group = kGroups[0].second;
+  std::string_view text = kBuiltinHeader;
+  while (!text.empty()) {
+    const size_t eol = text.find('\n');
+    std::string_view line = text.substr(0, eol);
+    text.remove_prefix(eol == std::string_view::npos ? text.size() : eol + 1);
+    if (!line.starts_with("#define ")) continue;
+    line.remove_prefix(8);
+    const size_t space = line.find(' ');
+    const std::string_view name = line.substr(0, space);
+    const std::string_view value = space == std::string_view::npos ? "" : line.substr(space + 1);
+    for (const auto& [first, what] : kGroups)
+      if (name == first) group = what;
+    out.push_back({std::string(name), ReferenceKind::Constant,
+                   std::string(name) + " is " + std::string(value) + ": " + group +
+                       ", as `#include akribis.puh` names it.",
+                   "", "", "",
+                   "akribis.puh, built into the compiler (docs/dialects/pup.md, builtin_header.h); "
+                   "shared/spec/akribis-drive.md, #include",
+                   ""});
+  }
+}
+
 }  // namespace
 
 std::vector<dialect::ReferenceEntry> reference() {
@@ -237,6 +269,7 @@ std::vector<dialect::ReferenceEntry> reference() {
     out.push_back(
         {w.name, w.kind, w.summary, "", "", "", "shared/spec/akribis-drive.md, PUP", w.signature});
   }
+  add_builtin_header(out);
   return out;
 }
 

@@ -295,6 +295,12 @@ std::string running_place(const dialect::LoadedProgram& program, uint32_t thread
 
 }  // namespace
 
+// The running program and its line, for the messages a refused call gives.
+std::string Firmware::running_here() const {
+  return running_place(*program_, scheduling::running_now(schedule_.running(), debugger_runs_),
+                       threads_);
+}
+
 vm::CommandStatus Firmware::read(uint32_t command, int32_t, Value& out) {
   schedule_.charge(kCostlyCallLines);
   const AsciiEntry* e = ascii_by_id(command);
@@ -309,8 +315,7 @@ vm::CommandStatus Firmware::read(uint32_t command, int32_t, Value& out) {
                         : v <= -2147483648.0 ? INT32_MIN
                                              : static_cast<int32_t>(v));
   } else if (!a.empty() && msg_ >= 1) {
-    say(running_place(*program_, schedule_.running(), threads_) + ": " +
-        answer_text(a[0]).substr(1));
+    say(running_here() + ": " + answer_text(a[0]).substr(1));
   }
   return vm::kCommandEndSlice;
 }
@@ -324,8 +329,7 @@ vm::CommandStatus Firmware::write(uint32_t command, int32_t, Value value) {
       command_line(std::string(e->name) + " " + std::to_string(value.i));
   in_program_ = false;
   if (!a.empty() && a[0].is_error() && msg_ >= 1)
-    say(running_place(*program_, schedule_.running(), threads_) + ": " +
-        answer_text(a[0]).substr(1));
+    say(running_here() + ": " + answer_text(a[0]).substr(1));
   return vm::kCommandEndSlice;
 }
 
@@ -337,9 +341,7 @@ vm::CommandStatus Firmware::execute(uint32_t command, int32_t, const Value* args
   const std::vector<dialect::Answer> answers = command_line(text);
   in_program_ = false;
   for (const dialect::Answer& a : answers) {
-    if (a.is_error() && msg_ >= 1)
-      say(running_place(*program_, schedule_.running(), threads_) + ": " +
-          answer_text(a).substr(1));
+    if (a.is_error() && msg_ >= 1) say(running_here() + ": " + answer_text(a).substr(1));
   }
   return vm::kCommandEndSlice;
 }

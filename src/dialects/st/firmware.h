@@ -77,7 +77,9 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::string state_summary() const override;
   std::vector<dialect::ThreadInfo> threads() const override;
   // The debugger (docs/debugging.md): the PLC programs are its threads; an expression in ST.
+  const dialect::LoadedProgram* loaded_program() const override { return program_.get(); }
   dialect::LoadedProgram* debug_program() override { return program_.get(); }
+  void debug_runs(uint32_t thread) override { debugger_runs_ = thread; }
   // {"source": PATH}: the name of the file the source just stored came from (debug_hooks.cpp).
   void set_debug_map(std::string_view map) override;
   // The name the stored source compiles under: its file's, when the controller said it.
@@ -190,6 +192,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::vector<bytecode::Global> globals_;  // the loaded program's, for the command line
   std::vector<uint8_t> global_bits_;       // their widths (CompileResult::global_bits)
   scheduling::CyclicTasks schedule_;
+  uint32_t debugger_runs_ = scheduling::kNoThread;  // debug_runs()
+  std::string running_here() const;
   std::vector<std::pair<uint32_t, std::string>> threads_;  // thread, program name
   bool compile_failed_ = false;
   bool plc_started_ = false;
