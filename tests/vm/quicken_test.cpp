@@ -43,6 +43,19 @@ Quickened quickened(const std::string& text) {
 
 uint32_t opcode(vm::Fused f) { return vm::fused_number(f); }
 
+// The quickened code as the execute loop dispatches it, one line an instruction: its pc and
+// its name, a fused one's name where it was formed, a base one's elsewhere.
+std::vector<std::string> dispatched(const Quickened& q) {
+  std::vector<std::string> lines;
+  for (uint32_t pc = 0; pc < q.code.size(); pc += vm::instruction_length(q.code[pc])) {
+    const std::string name = vm::is_fused(q.code[pc])
+                                 ? vm::kFusedNames[(q.code[pc] & 0xFFu) - vm::kFirstFused]
+                                 : bytecode::op_name(bytecode::word_op(q.code[pc]));
+    lines.push_back(std::to_string(pc) + " " + name);
+  }
+  return lines;
+}
+
 TEST(Quicken, OnlyTheFirstWordOfTheSequenceChanges) {
   const Quickened q = quickened(R"(
 .global int "g" 1
@@ -127,10 +140,54 @@ main:
   STG a
   RET
 )");
-  // a + 1 into b is no INCG (the globals differ): ADDGK and a plain STG; into a it is.
-  EXPECT_EQ(q.code[0] & 0xFFu, opcode(vm::Fused::ADDGK));
+  // a + 1 into b is no INCG (the globals differ) but the assignment ADDGKS; into a it is.
+  EXPECT_EQ(q.code[0] & 0xFFu, opcode(vm::Fused::ADDGKS));
   EXPECT_EQ(q.code[3], q.base[3]);
   EXPECT_EQ(q.code[4] & 0xFFu, opcode(vm::Fused::INCG));
+}
+
+TEST(Quicken, AnAssignmentOfOneOperatorWithAnImmediateIsOneInstruction) {
+  const Quickened q = quickened(R"(
+.global int "i" 1
+.global int "r" 1
+.routine function "main" in=0 out=0 entry=main
+.local int "a"
+.local int "b"
+main:
+  LDG i
+  PUSHI 3
+  REMI
+  STG r
+  LDG i
+  PUSHI 1
+  ADDI
+  STG i
+  LDG i
+  PUSHI 0
+  DIVI
+  STG r
+  LDL 0
+  PUSHI 7
+  DIVI
+  STL 1
+  LDL 0
+  PUSHI 0
+  REMI
+  STL 0
+  LDG i
+  PUSHI 2
+  SUBI
+  STL 0
+  RET
+)");
+  // r = i % 3 is REMGKS; i = i + 1 stays INCG (the earlier of two patterns as long); i / 0
+  // is no DIVGKS (the base DIVI raises the error), nor a % 0 anything; b = a / 7 is DIVLKS;
+  // a global's result stored to a local is neither (no pattern starts LDG; PUSHI; SUBI).
+  EXPECT_EQ(dispatched(q),
+            (std::vector<std::string>{"0 REMGKS", "4 INCG", "8 LDG", "9 PUSHI", "10 DIVI", "11 STG",
+                                      "12 DIVLKS", "16 LDL", "17 PUSHI", "18 REMI", "19 STL",
+                                      "20 LDG", "21 PUSHI", "22 SUBI", "23 STL", "24 RET"}));
+  EXPECT_EQ(q.formed, 3u);
 }
 
 const char* kCountUp = R"(
