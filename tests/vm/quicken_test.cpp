@@ -182,12 +182,32 @@ main:
 )");
   // r = i % 3 is REMGKS; i = i + 1 stays INCG (the earlier of two patterns as long); i / 0
   // is no DIVGKS (the base DIVI raises the error), nor a % 0 anything; b = a / 7 is DIVLKS;
-  // a global's result stored to a local is neither (no pattern starts LDG; PUSHI; SUBI).
+  // a global's difference stored to a local is SUBGK, pushed, and a base STL.
   EXPECT_EQ(dispatched(q),
             (std::vector<std::string>{"0 REMGKS", "4 INCG", "8 LDG", "9 PUSHI", "10 DIVI", "11 STG",
                                       "12 DIVLKS", "16 LDL", "17 PUSHI", "18 REMI", "19 STL",
-                                      "20 LDG", "21 PUSHI", "22 SUBI", "23 STL", "24 RET"}));
-  EXPECT_EQ(q.formed, 3u);
+                                      "20 SUBGK", "23 STL", "24 RET"}));
+  EXPECT_EQ(q.formed, 4u);
+}
+
+TEST(Quicken, AGlobalLessAnImmediateIsPushedAsOne) {
+  const Quickened q = quickened(R"(
+.global int "i" 1
+.global int "a" 8
+.routine function "main" in=0 out=0 entry=main
+main:
+  LDG i
+  PUSHI 1
+  SUBI
+  PUSHI 7919
+  MULI
+  PUSHI 7
+  STGX a
+  RET
+)");
+  // PUP's 1-based index made 0-based (`(I - 1) * 7919`): SUBGK, then MULIK.
+  EXPECT_EQ(dispatched(q),
+            (std::vector<std::string>{"0 SUBGK", "3 MULIK", "5 PUSHI", "6 STGX", "7 RET"}));
 }
 
 const char* kCountUp = R"(

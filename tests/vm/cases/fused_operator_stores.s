@@ -1,7 +1,7 @@
 ; Assignments of one int operator with an immediate, of a global and of a local (`r3=i%3;`,
 ; `v=i*7919;`, `n%=7;`): base code the machine fuses at load into ADDGKS, SUBGKS, DIVGKS,
-; REMGKS, ADDLKS and DIVLKS (vm/fused.def; the other operators stay base code); and REMGK, a
-; remainder pushed. Each operator as opcodes.def defines its base instruction: + - * wrap, /
+; REMGKS, ADDLKS and DIVLKS (vm/fused.def; the other operators stay base code); and REMGK and
+; SUBGK, a remainder and a difference pushed. Each operator as opcodes.def defines its base instruction: + - * wrap, /
 ; truncates toward zero (INT32_MIN / -1 saturates: support/arith.h), % takes the dividend's sign.
 ; x = 17, y = -17, big = 2147483647 (k0), least = -2147483648 (k1).
 .global int "x" 1
@@ -20,6 +20,7 @@
 .global int "gsat" 1
 .global int "inplace" 1
 .global int "pushed" 1
+.global int "pushedsub" 1
 .global int "ladd" 1
 .global int "lsub" 1
 .global int "lmul" 1
@@ -91,6 +92,12 @@ main:
   PUSHI 1
   ADDI
   STG pushed     ; 17 % 5 + 1 = 3: a remainder pushed (REMGK), no assignment of one operator
+  LDG x
+  PUSHI 20
+  SUBI
+  PUSHI 2
+  MULI
+  STG pushedsub  ; (17 - 20) * 2 = -6: a difference pushed (SUBGK, PUP's `Arr[(I - 1) * 2]`)
   PUSHI 17
   STL 0
   LDL 0
@@ -137,6 +144,7 @@ main:
 ; expect gsat = 2147483647
 ; expect inplace = 2
 ; expect pushed = 3
+; expect pushedsub = -6
 ; expect ladd = 22
 ; expect lsub = -3
 ; expect lmul = -51
