@@ -210,6 +210,49 @@ main:
             (std::vector<std::string>{"0 SUBGK", "3 MULIK", "5 PUSHI", "6 STGX", "7 RET"}));
 }
 
+// A CUP loop's copy whose path ends in the loop's step, the step's line counted by the JMPLN
+// (dialects/pup/line_runs.cpp): the step and the way out are one instruction, INCGJLN, and the
+// lines are counted as when the store's mark counts one (tests/vm/machine_test.cpp's kLineRun,
+// whose copy this is with the mark moved into the JMPLN's count).
+TEST(Quicken, ACopiedLoopsStepAndItsWayOutAreOneInstruction) {
+  const char* text = R"(
+.global int "a" 1
+.global int "fast" 1
+.routine function "main" in=0 out=0 entry=main
+main:
+  JLINES fused 4
+  LDG.eol a
+  PUSHI.eol 1
+  ADDI.eol
+  STG.eol a
+next:
+  JMP.eol main
+fused:
+  LDG fast
+  PUSHI 1
+  ADDI
+  STG fast
+  LDG a
+  PUSHI 1
+  ADDI
+  STG a
+  JMPLN next 4
+)";
+  const Quickened q = quickened(text);
+  EXPECT_EQ(dispatched(q), (std::vector<std::string>{"0 JLINES", "2 LDG", "3 PUSHI", "4 ADDI",
+                                                     "5 STG", "6 JMP", "7 INCG", "11 INCGJLN"}));
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(text));
+  p.machine.start(0, 0);
+  // Ten lines: two loops of five (the run's four and the JMP's), both through the fused copy.
+  const vm::SliceResult r = p.machine.run_slice(0, vm::Budget::of_lines(10));
+  EXPECT_EQ(r.end, vm::SliceEnd::LineEnd);
+  EXPECT_EQ(r.lines, 10u);
+  EXPECT_EQ(p.global("a").i, 2);
+  EXPECT_EQ(p.global("fast").i, 2);
+  EXPECT_EQ(p.machine.pc(0), 0u);
+}
+
 const char* kCountUp = R"(
 .global int "n" 1
 .routine function "main" in=0 out=0 entry=main

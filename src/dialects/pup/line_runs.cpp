@@ -67,35 +67,46 @@ struct PathCost {
   bool lost = false;  // code that does not end in a JMPLN: not a copy this file made
 };
 
-// One instruction of quickened code as a path sees it: its words, the lines it ends, and its
-// branch or jump (a fused one's, where its pattern has one), if any.
+// One instruction of quickened code as a path sees it: its words, the lines it ends, its
+// branch or jump (a fused one's, where its pattern has one), if any, and whether it leaves the
+// copy (a JMPLN, alone or as a fused instruction's last) with how many lines that counts.
 struct Step {
   uint32_t length = 1, ended = 0;
   bytecode::Flow flow = bytecode::Flow::Next;
   uint32_t target = 0;
+  bool leaves = false;
+  uint32_t leaving_lines = 0;
 };
 Step step_at(const std::vector<uint32_t>& code, uint32_t pc) {
   const uint32_t word = code[pc];
   Step s;
   s.ended = bytecode::word_ends_line(word) ? 1 : 0;
+  const auto leaving = [&](Op op, uint32_t at) {
+    if (op != Op::JMPLN) return;
+    s.leaves = true;
+    s.leaving_lines = code[at + 1];
+  };
   if (!vm::is_fused(word)) {
     const Op op = bytecode::word_op(word);
     s.length = bytecode::op_length(op);
     s.ended += bytecode::ends_line_itself(op) ? 1 : 0;
     s.flow = bytecode::op_info(op).flow;
     s.target = bytecode::word_a(word);
+    leaving(op, pc);
     return s;
   }
   const vm::FusedShape& shape = vm::kFusedShapes[(word & 0xFFu) - vm::kFirstFused];
   s.length = shape.length;
   for (uint32_t k = 0; k < shape.count; ++k) {
     const Op op = shape.ops[k];
+    const uint32_t at = pc + vm::fused_offset(shape, k);
     s.ended += bytecode::ends_line_itself(op) ? 1 : 0;
     const bytecode::Flow flow = bytecode::op_info(op).flow;
     if (flow == bytecode::Flow::Branch || flow == bytecode::Flow::Jump) {
       s.flow = flow;
-      s.target = bytecode::word_a(code[pc + vm::fused_offset(shape, k)]);
+      s.target = bytecode::word_a(code[at]);
     }
+    leaving(op, at);
   }
   return s;
 }
@@ -106,15 +117,41 @@ void walk(const std::vector<uint32_t>& code, uint32_t pc, uint32_t instructions,
     const Step s = step_at(code, pc);
     ++instructions;
     ended += s.ended;
-    if (bytecode::word_op(code[pc]) == Op::JMPLN) {
+    if (s.leaves) {
       cost.instructions += instructions + 1;
-      cost.lines += code[pc + 1] + ended;
+      cost.lines += s.leaving_lines + ended;
       return;
     }
     if (s.flow == bytecode::Flow::Branch) walk(code, s.target, instructions, ended, cost);
     pc = s.flow == bytecode::Flow::Jump ? s.target : pc + s.length;
   }
   cost.lost = true;
+}
+
+// The line a copy's path ends last, when its last instruction before the way out (JMPLN) is a
+// store or another that falls through, ends in the JMPLN's count instead of that instruction's
+// mark, so that the two may fuse at load (INCGJLN: a loop's step and the way out). The VM takes
+// a copy only with more lines left in the slice than a path of it runs (JLINES), so no line
+// budget runs out inside it, and where its lines are counted changes nothing else.
+void count_last_line_in_exit(std::vector<uint32_t>& code) {
+  std::vector<bool> entered(code.size(), false);
+  for (uint32_t pc = 0; pc < code.size(); pc += bytecode::op_length(bytecode::word_op(code[pc]))) {
+    const Op op = bytecode::word_op(code[pc]);
+    const uint32_t target = bytecode::word_a(code[pc]);
+    if (bytecode::op_info(op).a == bytecode::Operand::Target && target < code.size())
+      entered[target] = true;
+  }
+  uint32_t before = UINT32_MAX;
+  for (uint32_t pc = 0; pc < code.size(); pc += bytecode::op_length(bytecode::word_op(code[pc]))) {
+    if (bytecode::word_op(code[pc]) == Op::JMPLN && before != UINT32_MAX && !entered[pc] &&
+        bytecode::word_ends_line(code[before]) &&
+        bytecode::op_info(bytecode::word_op(code[before])).flow == bytecode::Flow::Next &&
+        !bytecode::ends_line_itself(bytecode::word_op(code[before]))) {
+      code[before] &= ~bytecode::kLineEndBit;
+      ++code[pc + 1];
+    }
+    before = pc;
+  }
 }
 
 // The piece's code as the VM will run it: fused where nothing enters (its lines' starts are
@@ -155,6 +192,7 @@ class Copier {
     r.name = "copy";
     piece.routines.push_back(r);
     bytecode::optimize(piece);
+    count_last_line_in_exit(piece.code);
     PathCost cost;
     walk(quickened(piece), 0, 0, 0, cost);
     if (cost.lost || cost.instructions >= cost.lines) return {};
