@@ -144,7 +144,11 @@ SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) 
 #include "bytecode/opcodes.def"
 #undef OP
 #define FUSED(name, pattern, when, meaning, ...) &&fused_##name,
+#define FUSED_PER_RELATION(name, pattern, when, meaning, ...)                     \
+  &&fused_##name##_0, &&fused_##name##_1, &&fused_##name##_2, &&fused_##name##_3, \
+      &&fused_##name##_4, &&fused_##name##_5,
 #include "vm/fused.def"
+#undef FUSED_PER_RELATION
 #undef FUSED
   };
   static const void* const kCountThenDispatch[] = {
@@ -152,9 +156,14 @@ SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) 
 #include "bytecode/opcodes.def"
 #undef OP
 #define FUSED(name, pattern, when, meaning, ...) &&count_then_dispatch,
+#define FUSED_PER_RELATION(name, pattern, when, meaning, ...)                                 \
+  &&count_then_dispatch, &&count_then_dispatch, &&count_then_dispatch, &&count_then_dispatch, \
+      &&count_then_dispatch, &&count_then_dispatch,
 #include "vm/fused.def"
+#undef FUSED_PER_RELATION
 #undef FUSED
   };
+  static_assert(sizeof(kDispatch) / sizeof(kDispatch[0]) == kFirstFused + kFusedOpcodeCount);
   const bool counted = budget.instructions != 0;
   const void* const* const dispatch = counted ? kCountThenDispatch : kDispatch;
 
@@ -796,9 +805,13 @@ op_RETEOL:
 #define A_AT(k) bytecode::word_a(ip[fused_offset(kShape, k)])
 #define IMM_AT(k) bytecode::word_imm(ip[fused_offset(kShape, k)])
 #define B_AT(k) (ip[fused_offset(kShape, k) + 1])
-#define RELATION_AT(k)                                                     \
-  (static_cast<uint32_t>(bytecode::word_op(ip[fused_offset(kShape, k)])) - \
-   static_cast<uint32_t>(kShape.ops[k]))
+// A folded family's relation: in a FUSED_PER_RELATION family the constant of the handler the
+// quickener chose for the site, elsewhere read from the compare-and-jump's opcode.
+#define RELATION_AT(k)                                                           \
+  (kRelation != kNoRelation                                                      \
+       ? kRelation                                                               \
+       : static_cast<uint32_t>(bytecode::word_op(ip[fused_offset(kShape, k)])) - \
+             static_cast<uint32_t>(kShape.ops[k]))
 #define NEXT()           \
   do {                   \
     ip += kShape.length; \
@@ -812,13 +825,28 @@ op_RETEOL:
       ip += kShape.length;      \
     DISPATCH();                 \
   } while (0)
-#define FUSED(name, pattern, when, meaning, ...)                   \
-  fused_##name : {                                                 \
-    [[maybe_unused]] static constexpr FusedShape kShape =          \
+#define FUSED(name, pattern, when, meaning, ...)                        \
+  fused_##name : {                                                      \
+    [[maybe_unused]] static constexpr FusedShape kShape =               \
+        fused_detail::kShapes[static_cast<uint32_t>(Fused::name)];      \
+    [[maybe_unused]] static constexpr uint32_t kRelation = kNoRelation; \
+    __VA_ARGS__;                                                        \
+  }
+#define FUSED_MEMBER(name, relation, ...)                          \
+  fused_##name##_##relation : {                                    \
+    static constexpr FusedShape kShape =                           \
         fused_detail::kShapes[static_cast<uint32_t>(Fused::name)]; \
+    static constexpr uint32_t kRelation = relation;                \
     __VA_ARGS__;                                                   \
   }
+#define FUSED_PER_RELATION(name, pattern, when, meaning, ...)               \
+  FUSED_MEMBER(name, 0, __VA_ARGS__)                                        \
+  FUSED_MEMBER(name, 1, __VA_ARGS__) FUSED_MEMBER(name, 2, __VA_ARGS__)     \
+      FUSED_MEMBER(name, 3, __VA_ARGS__) FUSED_MEMBER(name, 4, __VA_ARGS__) \
+          FUSED_MEMBER(name, 5, __VA_ARGS__)
 #include "vm/fused.def"
+#undef FUSED_PER_RELATION
+#undef FUSED_MEMBER
 #undef FUSED
 #undef BRANCH_IF
 #undef NEXT

@@ -20,6 +20,7 @@ struct FusedShape {
   bytecode::Op ops[kMostFusedInstructions];
   uint8_t length;
   uint8_t relation_at = kNoRelation;
+  bool per_relation = false;  // a handler for each relation (FUSED_PER_RELATION), else a switch
 };
 // Whether base opcode `op` is the pattern's k-th instruction (any of the six relations where
 // the pattern takes one).
@@ -28,7 +29,9 @@ constexpr bool fused_op_matches(const FusedShape& s, uint32_t k, bytecode::Op op
   const uint32_t rel = static_cast<uint32_t>(op) - static_cast<uint32_t>(s.ops[k]);
   return rel < 6u;
 }
-// A folded compare-and-jump's relation, 0..5 for == != < <= > >=, holds of a and b. A switch:
+// A folded compare-and-jump's relation, 0..5 for == != < <= > >=, holds of a and b. In a family
+// declared FUSED_PER_RELATION each relation has a handler of its own (kFamilyMembers, below),
+// in which the relation is a constant: the switch is the compiler's. Elsewhere the switch runs:
 // its jump is one a handler (each inlines its own), which predicts well where a program's
 // sites of it share a relation; on ST's loop it measured 8% faster than a branch-free table of
 // the four states (<, ==, >, unordered), 0.489 s against 0.532 s (medians of 5, alternated).
@@ -73,6 +76,10 @@ constexpr void add(FusedShape& s, AnyRelation r) {
   s.relation_at = s.count;
   s.ops[s.count++] = r.first;
 }
+constexpr FusedShape per_relation(FusedShape s) {
+  s.per_relation = true;
+  return s;
+}
 template <typename... Ops>
 constexpr FusedShape shape(Ops... ops) {
   FusedShape s{};
@@ -86,7 +93,10 @@ constexpr FusedShape shape(Ops... ops) {
 #define UPROG_UNPAREN(...) __VA_ARGS__
 inline constexpr FusedShape kShapes[] = {
 #define FUSED(name, pattern, when, meaning, ...) shape(UPROG_UNPAREN pattern),
+#define FUSED_PER_RELATION(name, pattern, when, meaning, ...) \
+  per_relation(shape(UPROG_UNPAREN pattern)),
 #include "vm/fused.def"
+#undef FUSED_PER_RELATION
 #undef FUSED
 };
 }  // namespace fused_detail
@@ -102,26 +112,56 @@ enum class Fused : uint8_t {
 inline constexpr const FusedShape* kFusedShapes = fused_detail::kShapes;
 inline constexpr uint32_t kFusedCount = sizeof(fused_detail::kShapes) / sizeof(FusedShape);
 inline constexpr uint32_t kFirstFused = bytecode::kOpCount;
-static_assert(kFirstFused + kFusedCount <= 256, "an opcode is one byte");
 
-// Of each fused instruction, its pattern's first opcode and its words: two bytes each, what
-// the machine needs to see base code.
+// The opcodes, from kFirstFused: one for each fused instruction, and for a folded family
+// declared FUSED_PER_RELATION one for each relation, which the quickener picks from the
+// pattern's compare-and-jump. One declaration, six handlers: a run-time switch on the relation,
+// shared by every site of the family, measured 8-16% slower on bench/peers' loops
+// (docs/architecture.md); the families that no such loop runs keep the switch, as the six
+// handlers take room in the embeddable core (scripts/footprint).
+constexpr uint32_t kFamilyMembers = 6;
+constexpr uint32_t opcodes_of(const FusedShape& s) { return s.per_relation ? kFamilyMembers : 1u; }
+constexpr uint32_t count_fused_opcodes() {
+  uint32_t n = 0;
+  for (const FusedShape& s : fused_detail::kShapes) n += opcodes_of(s);
+  return n;
+}
+inline constexpr uint32_t kFusedOpcodeCount = count_fused_opcodes();
+static_assert(kFirstFused + kFusedOpcodeCount <= 256, "an opcode is one byte");
+
+// Of each fused opcode, its instruction, its pattern's first opcode and its words; of each
+// instruction, its first opcode: what the machine needs to see base code.
 struct FusedBases {
-  uint8_t first[kFusedCount];
-  uint8_t length[kFusedCount];
+  uint8_t instruction[kFusedOpcodeCount];
+  uint8_t first[kFusedOpcodeCount];
+  uint8_t length[kFusedOpcodeCount];
+  uint8_t first_opcode[kFusedCount];
 };
 constexpr FusedBases make_fused_bases() {
   FusedBases b{};
+  uint32_t op = 0;
   for (uint32_t f = 0; f < kFusedCount; ++f) {
-    b.first[f] = static_cast<uint8_t>(fused_detail::kShapes[f].ops[0]);
-    b.length[f] = fused_detail::kShapes[f].length;
+    const FusedShape& s = fused_detail::kShapes[f];
+    b.first_opcode[f] = static_cast<uint8_t>(op);
+    for (uint32_t m = 0; m < opcodes_of(s); ++m, ++op) {
+      b.instruction[op] = static_cast<uint8_t>(f);
+      b.first[op] = static_cast<uint8_t>(s.ops[0]);
+      b.length[op] = s.length;
+    }
   }
   return b;
 }
 inline constexpr FusedBases kFusedBases = make_fused_bases();
 
-constexpr uint32_t fused_number(Fused f) { return kFirstFused + static_cast<uint32_t>(f); }
+// The opcode of fused instruction f, a folded family's for `relation` (0..5).
+constexpr uint32_t fused_number(Fused f, uint32_t relation = 0) {
+  return kFirstFused + kFusedBases.first_opcode[static_cast<uint32_t>(f)] + relation;
+}
 constexpr bool is_fused(uint32_t word) { return (word & 0xFFu) >= kFirstFused; }
+// Which fused instruction a fused word's opcode is (a folded family's for any relation).
+constexpr uint32_t fused_of(uint32_t word) {
+  return kFusedBases.instruction[(word & 0xFFu) - kFirstFused];
+}
 // The base word a fused instruction's first word was: its pattern's first opcode, no mark (a
 // word inside a fused sequence carries none). Any other word as it is.
 constexpr uint32_t base_word(uint32_t word) {

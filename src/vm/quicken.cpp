@@ -31,11 +31,18 @@ class Quickener {
     return best;
   }
 
-  // Forms the fused instruction f at pc: its opcode, and the mark of its last word.
+  // Forms the fused instruction f at pc: its opcode (of a FUSED_PER_RELATION family, the one for
+  // the relation of its compare-and-jump), and the mark of its last word.
   void form(uint32_t pc, uint32_t f) {
     const FusedShape& s = kFusedShapes[f];
     const uint32_t last = code_[pc + fused_offset(s, s.count - 1u)];
-    code_[pc] = (code_[pc] & ~0x1FFu) | (kFirstFused + f) | (last & bytecode::kLineEndBit);
+    uint32_t relation = 0;
+    if (s.per_relation) {
+      const bytecode::Op jump = bytecode::word_op(code_[pc + fused_offset(s, s.relation_at)]);
+      relation = static_cast<uint32_t>(jump) - static_cast<uint32_t>(s.ops[s.relation_at]);
+    }
+    code_[pc] = (code_[pc] & ~0x1FFu) | fused_number(static_cast<Fused>(f), relation) |
+                (last & bytecode::kLineEndBit);
   }
 
  private:

@@ -49,7 +49,7 @@ std::vector<std::string> dispatched(const Quickened& q) {
   std::vector<std::string> lines;
   for (uint32_t pc = 0; pc < q.code.size(); pc += vm::instruction_length(q.code[pc])) {
     const std::string name = vm::is_fused(q.code[pc])
-                                 ? vm::kFusedNames[(q.code[pc] & 0xFFu) - vm::kFirstFused]
+                                 ? vm::kFusedNames[vm::fused_of(q.code[pc])]
                                  : bytecode::op_name(bytecode::word_op(q.code[pc]));
     lines.push_back(std::to_string(pc) + " " + name);
   }
@@ -253,6 +253,41 @@ fused:
   EXPECT_EQ(p.machine.pc(0), 0u);
 }
 
+// A family declared FUSED_PER_RELATION has an opcode for each relation, and each site gets the
+// one of its compare-and-jump; a family that keeps the switch has one for all six.
+TEST(Quicken, AFamilysSiteGetsTheOpcodeOfItsRelationWhereEachHasAHandler) {
+  const Quickened q = quickened(R"(
+.global int "g" 1
+.const int 30000000
+.const float 1.5
+.routine function "main" in=0 out=0 entry=main
+.local float "f"
+main:
+  LDG g
+  PUSHK 0
+  JLTI done
+  LDG g
+  PUSHK 0
+  JGEI done
+  LDL 0
+  PUSHK 1
+  JNLTF done
+  LDL 0
+  PUSHK 1
+  JNGEF done
+done:
+  RET
+)");
+  EXPECT_EQ(dispatched(q), (std::vector<std::string>{"0 JRELGC", "3 JRELGC", "6 JNRELFLK",
+                                                     "9 JNRELFLK", "12 RET"}));
+  EXPECT_EQ(q.code[0] & 0xFFu, vm::fused_number(vm::Fused::JRELGC, 2));  // <
+  EXPECT_EQ(q.code[3] & 0xFFu, vm::fused_number(vm::Fused::JRELGC, 5));  // >=
+  EXPECT_EQ(q.code[6] & 0xFFu, vm::fused_number(vm::Fused::JNRELFLK));
+  EXPECT_EQ(q.code[9] & 0xFFu, vm::fused_number(vm::Fused::JNRELFLK));
+  EXPECT_EQ(vm::base_word(q.code[3]), q.base[3]);
+  EXPECT_EQ(vm::instruction_length(q.code[3]), 3u);
+}
+
 const char* kCountUp = R"(
 .global int "n" 1
 .routine function "main" in=0 out=0 entry=main
@@ -311,8 +346,8 @@ TEST(Quicken, ASliceThatCountsInstructionsCountsBaseOnes) {
   EXPECT_EQ(pcs, (std::vector<uint32_t>{1, 2, 3, 4, 5, 6, 7, 0}));
 }
 
-// The VM cases together form every fused instruction of fused.def: each is then run by the case
-// runner, which checks what its base code must do.
+// The VM cases together form every fused instruction of fused.def, a folded family for each of
+// its relations: each is then run by the case runner, which checks what its base code must do.
 TEST(Quicken, TheCasesTogetherFormEveryFusedInstruction) {
   std::set<uint32_t> formed;
   for (const auto& f : source_files("tests/vm/cases", ".s")) {
@@ -320,9 +355,12 @@ TEST(Quicken, TheCasesTogetherFormEveryFusedInstruction) {
     for (uint32_t pc = 0; pc < q.code.size(); pc += vm::instruction_length(q.code[pc]))
       if (vm::is_fused(q.code[pc])) formed.insert(q.code[pc] & 0xFFu);
   }
-  for (uint32_t f = 0; f < vm::kFusedCount; ++f)
-    EXPECT_TRUE(formed.count(vm::kFirstFused + f))
-        << "no case in tests/vm/cases forms " << vm::kFusedNames[f];
+  // Every opcode: a folded family's six handlers each run in some case.
+  for (uint32_t op = vm::kFirstFused; op < vm::kFirstFused + vm::kFusedOpcodeCount; ++op)
+    EXPECT_TRUE(formed.count(op)) << "no case in tests/vm/cases forms "
+                                  << vm::kFusedNames[vm::fused_of(op)] << ", relation "
+                                  << op -
+                                         vm::fused_number(static_cast<vm::Fused>(vm::fused_of(op)));
 }
 
 }  // namespace

@@ -42,8 +42,7 @@ std::vector<std::string> quickened_notes(const bytecode::Image& image) {
   vm::quicken(code.data(), size, view, scratch.data());
   for (uint32_t pc = 0; pc < size; pc += vm::instruction_length(code[pc]))
     if (vm::is_fused(code[pc]))
-      notes[pc] =
-          fmt::format("quickened: {}", vm::kFusedNames[(code[pc] & 0xFFu) - vm::kFirstFused]);
+      notes[pc] = fmt::format("quickened: {}", vm::kFusedNames[vm::fused_of(code[pc])]);
   return notes;
 }
 

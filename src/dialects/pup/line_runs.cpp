@@ -95,7 +95,7 @@ Step step_at(const std::vector<uint32_t>& code, uint32_t pc) {
     leaving(op, pc);
     return s;
   }
-  const vm::FusedShape& shape = vm::kFusedShapes[(word & 0xFFu) - vm::kFirstFused];
+  const vm::FusedShape& shape = vm::kFusedShapes[vm::fused_of(word)];
   s.length = shape.length;
   for (uint32_t k = 0; k < shape.count; ++k) {
     const Op op = shape.ops[k];
