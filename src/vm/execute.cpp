@@ -839,11 +839,13 @@ op_RETEOL:
     static constexpr uint32_t kRelation = relation;                \
     __VA_ARGS__;                                                   \
   }
-#define FUSED_PER_RELATION(name, pattern, when, meaning, ...)               \
-  FUSED_MEMBER(name, 0, __VA_ARGS__)                                        \
-  FUSED_MEMBER(name, 1, __VA_ARGS__) FUSED_MEMBER(name, 2, __VA_ARGS__)     \
-      FUSED_MEMBER(name, 3, __VA_ARGS__) FUSED_MEMBER(name, 4, __VA_ARGS__) \
-          FUSED_MEMBER(name, 5, __VA_ARGS__)
+// Not clang-formatted: it formats this macro differently each time it runs.
+// clang-format off
+#define FUSED_PER_RELATION(name, pattern, when, meaning, ...)                                     \
+  FUSED_MEMBER(name, 0, __VA_ARGS__) FUSED_MEMBER(name, 1, __VA_ARGS__)                           \
+  FUSED_MEMBER(name, 2, __VA_ARGS__) FUSED_MEMBER(name, 3, __VA_ARGS__)                           \
+  FUSED_MEMBER(name, 4, __VA_ARGS__) FUSED_MEMBER(name, 5, __VA_ARGS__)
+// clang-format on
 #include "vm/fused.def"
 #undef FUSED_PER_RELATION
 #undef FUSED_MEMBER
