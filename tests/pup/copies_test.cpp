@@ -188,6 +188,39 @@ TEST(CupCopies, ALoopsCopyTakesSeveralTurnsAndLeavesAtAnyOfThem) {
   }
 }
 
+// An accumulation of an expression, S = S + I % 3 * 2 for I from 1 to 10 (AMath[5] %, [2] *,
+// [1] +): the copies end as the lines do, S = 2 * (1 + 2 + 0 + ... + 1) = 20.
+TEST(CupCopies, AnAccumulationOfAnExpressionRunsAsItsLines) {
+  const LoadedCup cup = load({
+      "AProgTask[1]",            //  1
+      "AGenData[1]=1",           //  2 I = 1
+      "APushParam,AGenData[1]",  //  3 loop: I >= 11 ends it
+      "APushConstant,11",        //  4
+      "AJump[6],19",             //  5
+      "APushParam,AGenData[2]",  //  6 S = S + I % 3 * 2
+      "APushParam,AGenData[1]",  //  7
+      "APushConstant,3",         //  8
+      "AMath[5]",                //  9
+      "APushConstant,2",         // 10
+      "AMath[2]",                // 11
+      "AMath[1]",                // 12
+      "APopParam,AGenData[2]",   // 13
+      "APushParam,AGenData[1]",  // 14 I = I + 1
+      "APushConstant,1",         // 15
+      "AMath[1]",                // 16
+      "APopParam,AGenData[1]",   // 17
+      "AJump[1],3",              // 18
+      "APushParam,AGenData[2]",  // 19 done: AGenData[3] = S
+      "APopParam,AGenData[3]",   // 20
+  });
+  const Outcome lines = run(cup, vm::Budget::of_lines(1));
+  ASSERT_EQ(lines.end, vm::SliceEnd::Finished);
+  EXPECT_EQ(lines.gen_data[0].i, 11);
+  EXPECT_EQ(lines.gen_data[1].i, 20);
+  EXPECT_EQ(lines.gen_data[2].i, 20);
+  expect_same_runs(cup, lines);
+}
+
 // An index out of its window inside a copy (I reaches 4, the window has 3 places): error 4 at
 // line 8 however the program runs, the stores before it made.
 TEST(CupCopies, AnErrorInACopyNamesItsLine) {
