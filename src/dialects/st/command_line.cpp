@@ -229,10 +229,7 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
                                                                   : "needs enabled")};
   }
   if (name == "STOP") {
-    next_pending_ = false;
-    end_homing();
-    jog_until_ns_ = 0;
-    axis_->stop();
+    stop_motion();
     return {};
   }
   if (name == "MTMUX") {

@@ -192,6 +192,22 @@ int32_t Firmware::within_turn(double motor) const {
 }
 
 // Each axis step: a jog's time ends; a finished task with a next one starts it after FT ms.
+void Firmware::stop_axis_with(double decel) {
+  axis_->parameters().stop_decel_counts_per_s2 = to_axis(decel);
+  axis_->stop();
+}
+
+// The spec's STOP: "decelerate (task's d, else DECSTOP)"; a task's d was set when it began.
+void Firmware::stop_motion() {
+  const bool task = axis_->motion_kind() == drive::Axis::MotionKind::kPointToPoint && !homing_ &&
+                    switch_homing_.phase == SwitchHoming::kIdle;
+  const double task_decel = axis_->parameters().decel_counts_per_s2;
+  next_pending_ = false;
+  end_homing();
+  jog_until_ns_ = 0;
+  stop_axis_with(task ? task_decel : ramp_counts_per_s2(values_.at("DECSTOP")));
+}
+
 void Firmware::step_motion() {
   if (deferred_.kind != Deferred::kNone && !axis_->motor_on()) deferred_ = Deferred{};  // a fault
   if (deferred_.kind != Deferred::kNone && axis_->servo_ready()) {
@@ -203,7 +219,7 @@ void Firmware::step_motion() {
   }
   if (jog_until_ns_ != 0 && runtime_.now_ns() >= jog_until_ns_) {
     jog_until_ns_ = 0;
-    axis_->stop();
+    stop_axis_with(ramp_counts_per_s2(values_.at("DEC")));  // J v t: its ramps are ACC and DEC
   }
   // Each is a call only while it has work (the usual cycle has neither): a search under way,
   // OPMODE 1 or the speed it last commanded to forget.
