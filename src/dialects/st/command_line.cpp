@@ -109,7 +109,7 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   const auto faulted = [&] { return !faults_.empty() || fault_bits() != 0; };
 
   // The loaded program's globals, by name (DLONG as one 64-bit number).
-  if (program_ && !find_ascii(name)) {
+  if (const AsciiEntry* e = find_ascii(name); program_ && (e == nullptr || !reserves_name(*e))) {
     for (size_t g = kUserVariables; g < globals_.size(); ++g) {
       if (globals_[g].name != name) continue;
       vm::Machine& m = program_->machine();
@@ -278,6 +278,9 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   if (name == "V") {
     const double rpm = axis_->velocity() * 60.0 / axis_->parameters().counts_per_revolution();
     return {Answer{fmt::format("{:.3f}", rpm), 0}};
+  }
+  if (name == "I") {  // the reference's I: "the actual current value in amperes", positive
+    return {Answer{fmt::format("{:.3f}", std::fabs(axis_->motor_state().current_a)), 0}};
   }
   if (name == "INPOS") {
     const int64_t off =
