@@ -145,7 +145,8 @@ TEST(st_diagnostics, IfReadsDriveParametersAtCompileTime) {
 // command, ERRCODE a text), and names an unknown one alone.
 TEST(st_diagnostics, Error25SaysWhyAKnownParameterIsRefused) {
   const std::string text = slurp(kDir / "25_unknown_parameter.st") +
-                           "PROGRAM PLCINIT\n  XREAD('EN', A);\n  XREAD('ERRCODE', A);\nEND_PROGRAM\n";
+                           "PROGRAM PLCINIT\n  XREAD('EN', A);\n"
+                           "  XREAD('ERRCODE', A);\nEND_PROGRAM\n";
   const st::CompileResult r = st::compile(SourceFile{"x.st", text});
   std::vector<std::string> notes;
   for (const Diagnostic& d : r.diagnostics)
