@@ -64,6 +64,7 @@ constexpr FaultName kAxisFaults[] = {
 std::pair<int64_t, int64_t> range_of(const std::string& name) {
   if (name == "PGEARI" || name == "PGEARO") return {1, INT32_MAX};
   if (name == "SRND" || name == "ERND" || name == "ROFFS") return {INT32_MIN, INT32_MAX};
+  if (name == "ACC" || name == "DEC" || name == "DECSTOP") return {1, 32767};  // ms
   if (name == "ANCNFG") return {0, 14};
   if (name == "NREF") return {0, 20};
   if (name == "DREF") return {0, 2};
