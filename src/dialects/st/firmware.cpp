@@ -42,6 +42,7 @@ Firmware::Firmware(dialect::Runtime& runtime, dialect::WireStyle wire_style)
 }
 
 void Firmware::boot(std::vector<std::string>& messages) {
+  ++boots_;
   axis_ = &runtime_.axis();
   axis_->set_period_us(static_cast<int32_t>(kStepNs / 1000));
   stop_plc();

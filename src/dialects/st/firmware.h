@@ -65,6 +65,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   // --- dialect::Firmware ---
   const dialect::WireForm& wire() const override { return wire_; }
   void boot(std::vector<std::string>& messages) override;
+  // How often the drive has booted: a host's PLCDL transfer begun before a reboot is gone.
+  uint64_t boot_count() const { return boots_; }
   uint64_t cycle_ns() const override { return kStepNs; }
   void cycle(const std::vector<uint32_t>& drive_events) override;
   std::unique_ptr<dialect::Session> open_session() override;
@@ -200,6 +202,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::string running_here() const;
   std::vector<std::pair<uint32_t, std::string>> threads_;  // thread, program name
   bool compile_failed_ = false;
+  uint64_t boots_ = 0;
   bool plc_started_ = false;
   vm::RunError run_error_ = vm::RunError::None;
   std::set<int> faults_;  // F31, F32 (the firmware's); the axis' come from its MF

@@ -49,6 +49,11 @@ class Session final : public dialect::Session {
   }
 
   std::vector<Answer> download(std::string_view rest) {
+    // The transfer is in the drive's RAM: a reboot (COLDSTART) since BEGIN dropped it.
+    if (transfer_boot_ != firmware_.boot_count()) {
+      transfer_.abort();
+      transfer_boot_ = firmware_.boot_count();
+    }
     rest = trimmed(rest);
     if (rest.empty()) return {Answer{"syntax error", kErrSyntax}};
     const std::string word = upper(rest.substr(0, rest.find_first_of(" \t")));
@@ -67,6 +72,7 @@ class Session final : public dialect::Session {
 
   Firmware& firmware_;
   dialect::DownloadReceiver transfer_{kMaxStoredSource, kPlcdlCodes};
+  uint64_t transfer_boot_ = 0;  // the boot the transfer began in
 };
 
 }  // namespace
