@@ -54,6 +54,7 @@ void Firmware::boot(std::vector<std::string>& messages) {
   mtmux_ = last_move_ = 0;
   next_pending_ = false;
   jog_until_ns_ = 0;
+  deferred_ = Deferred{};  // a J or MOVE that waited for EN's delay is gone with the reboot
   defaults();
   load();
   apply_limits();
