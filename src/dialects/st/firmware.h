@@ -172,7 +172,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   int32_t jog(int32_t rpm, int32_t ms);
   // STOP: a motion task decelerates with its own d, a jog, homing or analog speed with DECSTOP.
   void stop_motion();
-  // The axis decelerates to a stop at `decel` counts/s² (its own stop ramp is Gold's SD).
+  // The axis decelerates to a stop at `decel` counts/s² (its own stop ramp, Gold's SD, stays).
   void stop_axis_with(double decel);
   double rpm_to_counts(double rpm) const;
   double ramp_counts_per_s2(int32_t ms) const;

@@ -193,8 +193,11 @@ int32_t Firmware::within_turn(double motor) const {
 
 // Each axis step: a jog's time ends; a finished task with a next one starts it after FT ms.
 void Firmware::stop_axis_with(double decel) {
-  axis_->parameters().stop_decel_counts_per_s2 = to_axis(decel);
+  // The stop is planned at once; the axis' own ramp stays for its other stops (homing's).
+  drive::Parameters& p = axis_->parameters();
+  const int32_t own = std::exchange(p.stop_decel_counts_per_s2, to_axis(decel));
   axis_->stop();
+  p.stop_decel_counts_per_s2 = own;
 }
 
 // The spec's STOP: "decelerate (task's d, else DECSTOP)"; a task's d was set when it began.
