@@ -319,7 +319,13 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     if (faulted()) w1 |= 1u << 3;
     record_axis_faults();
     for (int f : faults_) w2 |= 1u << (f - 1);
+    // Word 5 (the reference's STATUS): bit 0 a task, homing or jog under way, bit 1 the
+    // reference point set, bit 2 the reference switch (INxMODE 12) on, bit 3 in position.
     if (axis_->profiler_moving()) w5 |= 1u;
+    if (reference_set_) w5 |= 1u << 1;
+    for (size_t n = 0; n < input_modes_.size(); ++n)
+      if (input_modes_[n] == kModeReference && axis_->input_level(static_cast<int>(n) + 1))
+        w5 |= 1u << 2;
     if (command_line("INPOS")[0].text == "1") w5 |= 1u << 3;
     return {Answer{fmt::format("{:08X} {:08X} {:08X} {:08X} {:08X}", w1, w2, 0, 0, w5), 0}};
   }

@@ -55,6 +55,7 @@ void Firmware::boot(std::vector<std::string>& messages) {
   next_pending_ = false;
   jog_until_ns_ = 0;
   deferred_ = Deferred{};  // a J or MOVE that waited for EN's delay is gone with the reboot
+  reference_set_ = false;
   defaults();
   load();
   apply_limits();

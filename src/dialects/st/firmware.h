@@ -51,6 +51,7 @@ bool is_debug_command(std::string_view name);
 
 constexpr uint64_t kStepNs = 125'000;  // the axis steps every 125 µs, two 62.5 µs ticks
 constexpr size_t kMaxStoredSource = 61'440;
+constexpr int32_t kModeReference = 12;  // INxMODE 12: the input is the reference switch
 
 // A motion task (ORDER): target, speed, control word, ramps, next task and its delay.
 struct MotionTask {
@@ -217,6 +218,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   bool homing_ = false;       // MH's move to a zero mark is under way
   double homing_mark_ = 0;    // that mark, in motor counts
   SwitchHoming switch_homing_;
+  bool reference_set_ = false;  // STATUS word 5 bit 1: a homing (MH, SETREF) set the point
   double refpos_motor_ = 0;  // REFPOS: where the last homing saw its criterion (motor counts)
   std::array<int32_t, 4> input_modes_{};  // IN1MODE…IN4MODE as the last boot took them
   int32_t ancnfg_ = 0;                    // ANCNFG as the last boot took it

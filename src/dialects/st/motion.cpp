@@ -131,8 +131,13 @@ int32_t Firmware::start_homing() {
   if (opmode_ != 8) return kErrOpmode;
   if (!axis_->motor_on()) return kErrNeedsEnabled;
   const int32_t nref = values_.at("NREF");
-  if ((nref >= 1 && nref <= 4) || nref == 7 || nref == 9) return start_switch_homing(nref);
+  if ((nref >= 1 && nref <= 4) || nref == 7 || nref == 9) {
+    const int32_t code = start_switch_homing(nref);
+    if (code == 0) reference_set_ = false;  // until this homing sets it
+    return code;
+  }
   if (nref != 0 && nref != 5 && nref != 6) return kErrRange;
+  reference_set_ = false;
   end_homing();
   next_pending_ = false;
   refpos_motor_ = axis_->motor_state().position_counts;  // REFPOS: where it started
@@ -172,6 +177,7 @@ void Firmware::set_reference(double at_motor) {
   axis_->set_position(saturate(std::round(roffs + (motor - at_motor))));
   target_counts_ += shift;
   homing_ = false;
+  reference_set_ = true;
 }
 
 void Firmware::set_reference() { set_reference(axis_->motor_state().position_counts); }
