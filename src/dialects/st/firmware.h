@@ -219,7 +219,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   double homing_mark_ = 0;    // that mark, in motor counts
   SwitchHoming switch_homing_;
   bool reference_set_ = false;  // STATUS word 5 bit 1: a homing (MH, SETREF) set the point
-  double refpos_motor_ = 0;  // REFPOS: where the last homing saw its criterion (motor counts)
+  double refpos_motor_ = 0;     // REFPOS: where the last homing saw its criterion (motor counts)
   std::array<int32_t, 4> input_modes_{};  // IN1MODE…IN4MODE as the last boot took them
   int32_t ancnfg_ = 0;                    // ANCNFG as the last boot took it
   std::array<int32_t, 2> analog_mv_{};    // SW1, SW2: the world's levels (a reboot keeps them)
