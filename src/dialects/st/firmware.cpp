@@ -73,6 +73,8 @@ void Firmware::boot(std::vector<std::string>& messages) {
   compile_and_start();
 }
 
+bool Firmware::stage_on() const { return axis_ != nullptr && axis_->motor_on(); }
+
 std::string Firmware::source_name() const {
   if (source_ && !source_name_.empty() && *source_ == named_source_) return source_name_;
   return std::string(kSourceStore.record());

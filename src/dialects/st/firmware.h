@@ -102,6 +102,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   // One host line: its answers (command_line.cpp); a session also lets one axis step pass.
   std::vector<dialect::Answer> command_line(std::string_view line);
   void spend_line_time() { runtime_.advance_ns(kStepNs); }
+  // The output stage is on: the page lets the program be modified only while it is not.
+  bool stage_on() const;
 
  private:
   friend class CommandLine;

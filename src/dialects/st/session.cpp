@@ -57,6 +57,11 @@ class Session final : public dialect::Session {
     rest = trimmed(rest);
     if (rest.empty()) return {Answer{"syntax error", kErrSyntax}};
     const std::string word = upper(rest.substr(0, rest.find_first_of(" \t")));
+    // The page: "If the amplifier is not enabled the program can be modified and recompiled".
+    if ((word == "BEGIN" || word == "END") && firmware_.stage_on()) {
+      transfer_.abort();
+      return {Answer{"needs disabled", kErrNeedsDisabled}};
+    }
     if (word == "BEGIN") return answered(transfer_.begin(trimmed(rest.substr(5))));
     if (word == "ABORT") {
       transfer_.abort();
