@@ -197,14 +197,8 @@ int32_t Firmware::within_turn(double motor) const {
   return std::clamp(static_cast<int32_t>(steps), 0, 1048575);
 }
 
-// Each axis step: a jog's time ends; a finished task with a next one starts it after FT ms.
-void Firmware::stop_axis_with(double decel) {
-  // The stop is planned at once; the axis' own ramp stays for its other stops (homing's).
-  drive::Parameters& p = axis_->parameters();
-  const int32_t own = std::exchange(p.stop_decel_counts_per_s2, to_axis(decel));
-  axis_->stop();
-  p.stop_decel_counts_per_s2 = own;
-}
+// The axis' own stop ramp (SD) stays for its other stops (homing's).
+void Firmware::stop_axis_with(double decel) { axis_->stop_with(to_axis(decel)); }
 
 // The spec's STOP: "decelerate (task's d, else DECSTOP)"; a task's d was set when it began.
 void Firmware::stop_motion() {
@@ -217,6 +211,7 @@ void Firmware::stop_motion() {
   stop_axis_with(task ? task_decel : ramp_counts_per_s2(values_.at("DECSTOP")));
 }
 
+// Each axis step: a jog's time ends; a finished task with a next one starts it after FT ms.
 void Firmware::step_motion() {
   if (deferred_.kind != Deferred::kNone && !axis_->motor_on()) deferred_ = Deferred{};  // a fault
   if (deferred_.kind != Deferred::kNone && axis_->servo_ready()) {
