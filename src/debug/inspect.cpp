@@ -9,6 +9,12 @@
 namespace uprog::debug {
 namespace {
 
+// What a compiler adds for itself ("$t0", Gold's "$tag1", PDL's "(stack 1)"): no dialect's name
+// starts so, and a user debugging the program never declared it.
+bool compiler_made(std::string_view name) {
+  return !name.empty() && (name.front() == '$' || name.front() == '(');
+}
+
 const char* type_name(ValueType t) { return t == ValueType::Int ? "int" : "float"; }
 
 }  // namespace
@@ -70,7 +76,7 @@ std::vector<Variable> Debugger::locals(uint32_t thread, uint32_t depth) const {
   const bytecode::Routine& r = p->image().routines[m.frame(thread, depth).routine];
   for (uint32_t i = 0; i < r.locals.size(); ++i) {
     Value v;
-    if (!m.read_local(thread, depth, i, v)) continue;
+    if (compiler_made(r.locals[i].name) || !m.read_local(thread, depth, i, v)) continue;
     out.push_back(
         {r.locals[i].name, show_value(v, r.locals[i].type), type_name(r.locals[i].type), 0});
   }
@@ -83,6 +89,7 @@ std::vector<Variable> Debugger::globals() const {
   if (p == nullptr) return out;
   const std::vector<bytecode::Global>& gs = p->image().globals;
   for (uint32_t g = 0; g < gs.size(); ++g) {
+    if (compiler_made(gs[g].name)) continue;
     Variable var{gs[g].name, {}, type_name(gs[g].type), 0};
     if (gs[g].length > 1) {
       var.elements = gs[g].length;

@@ -45,7 +45,8 @@ void LineFramer::feed(std::string_view bytes, std::vector<Frame>& out) {
     if (c == '\r' || c == '\n') {
       end_expression(out);
       in_comment_ = false;
-      if (physical_line_has_content_) out.push_back({Frame::Kind::kLineBreak, {}});
+      if (physical_line_has_content_ || (options_.break_empty_lines && !lf_of_cr_lf))
+        out.push_back({Frame::Kind::kLineBreak, {}});
       physical_line_has_content_ = false;
       continue;
     }

@@ -19,6 +19,10 @@ struct FramerOptions {
   // An empty expression ended by `;`, CR or a lone LF is a line of its own (kLine with no text), as
   // a real Elmo drive answers it; LF right after CR ends nothing. False: blank lines are dropped.
   bool answer_empty_expressions = false;
+  // An empty physical line (CR or a lone LF) still ends with a kLineBreak, so a drive that
+  // prompts gives its prompt again (the S300: a host sends CR and waits for `-->`); the LF of a
+  // CR LF ends nothing.
+  bool break_empty_lines = false;
 };
 
 // One thing the framer recognised in the byte stream.

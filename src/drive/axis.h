@@ -96,6 +96,8 @@ class Axis {
   // ST (and the motion side of KL): the profiler decelerates to a stop with SD; the motor stays
   // on and holds where it stops. Nothing happens at rest.
   void stop();
+  // The same stop at `decel_counts_per_s2` instead of SD (a drive whose STOP has its own ramp).
+  void stop_with(double decel_counts_per_s2);
   void set_torque_command(float current_a) { torque_command_a_ = current_a; }  // TC
   float torque_command() const { return torque_command_a_; }
 
@@ -227,7 +229,6 @@ class Axis {
   void motor_off();
   Status begin_motion();
   void start_profile(const Profile& profile, bool stopping);
-  void stop_with(double decel_counts_per_s2);
   uint32_t scan_inputs();
   void follow_position_switches();
   void meet_end_stops();

@@ -93,6 +93,18 @@ TEST(Debugger, LineBreakpointStopsBeforeTheLineRuns) {
   EXPECT_EQ(s.global("divisor"), "4");
 }
 
+// main's `for i = 1:5` keeps its bound in a compiler temporary ($t0 in the image): the Locals
+// show what the program declared, i alone.
+TEST(Debugger, LocalsAreWhatTheProgramDeclared) {
+  Session s;
+  s.debugger.set_line_breakpoints(kScenario, {at(10)});
+  ASSERT_EQ(s.run(), RunState::Stopped);
+  const std::vector<Variable> locals = s.debugger.locals(0, 0);
+  ASSERT_EQ(locals.size(), 1u);
+  EXPECT_EQ(locals[0].name, "i");
+  EXPECT_EQ(s.debugger.globals().size(), 3u);  // total, divisor, ratio
+}
+
 TEST(Debugger, ALineWithoutCodeMovesToTheNextLineWithCode) {
   Session s;
   const auto states = s.debugger.set_line_breakpoints(kScenario, {at(16), at(1), at(99)});

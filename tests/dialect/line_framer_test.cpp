@@ -180,5 +180,19 @@ TEST(transport_framer, DriveFormAnswersEmptyExpressions) {
   EXPECT_EQ(frame("PX;\r"), (std::vector<Frame>{line("PX"), kBreak}));
 }
 
+// A drive that prompts after every physical line (the S300): an empty line still ends with a
+// break, CR, LF or CR LF alike (the LF of a CR LF ends nothing), and gives no line to answer.
+TEST(transport_framer, BreakEmptyLinesEndsEveryPhysicalLine) {
+  FramerOptions o;
+  o.break_empty_lines = true;
+  EXPECT_EQ(frame("\r", o), (std::vector<Frame>{kBreak}));
+  EXPECT_EQ(frame("\r\n", o), (std::vector<Frame>{kBreak}));
+  EXPECT_EQ(frame("\n\n", o), (std::vector<Frame>{kBreak, kBreak}));
+  EXPECT_EQ(frame("  \r", o), (std::vector<Frame>{kBreak}));
+  EXPECT_EQ(frame("PFB\r\n\r", o), (std::vector<Frame>{line("PFB"), kBreak, kBreak}));
+  // Without the option an empty line gives nothing.
+  EXPECT_EQ(frame("\r\n\r", FramerOptions{}), (std::vector<Frame>{}));
+}
+
 }  // namespace
 }  // namespace uprog::dialect

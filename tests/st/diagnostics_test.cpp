@@ -139,3 +139,19 @@ TEST(st_diagnostics, IfReadsDriveParametersAtCompileTime) {
   ASSERT_TRUE(other.ok());
   EXPECT_EQ(other.sizes.sizes[0].size, 3u);
 }
+
+// Error 25's note says why a parameter the drive knows cannot be read or written by XREAD or
+// XWRITE (the spec: XREAD/XWRITE "go through the ASCII interpreter"; PFB is read-only, EN a
+// command, ERRCODE a text), and names an unknown one alone.
+TEST(st_diagnostics, Error25SaysWhyAKnownParameterIsRefused) {
+  const std::string text = slurp(kDir / "25_unknown_parameter.st") +
+                           "PROGRAM PLCINIT\n  XREAD('EN', A);\n"
+                           "  XREAD('ERRCODE', A);\nEND_PROGRAM\n";
+  const st::CompileResult r = st::compile(SourceFile{"x.st", text});
+  std::vector<std::string> notes;
+  for (const Diagnostic& d : r.diagnostics)
+    if (d.code == 25 && !d.notes.empty()) notes.push_back(d.notes[0].message);
+  EXPECT_EQ(notes, (std::vector<std::string>{"'NOSUCH'", "'PFB' is read-only", "'FLY'",
+                                             "'EN' is a command (COMMAND runs it)",
+                                             "'ERRCODE' answers text, not a number"}));
+}

@@ -62,6 +62,33 @@ TEST(st_wire, PromptOneEchoesAndPrompts) {
   EXPECT_EQ(d.say("PROMPT 0\r"), "PROMPT 0\r\n");
 }
 
+// A host sends CR alone and waits for the prompt (the reference's PROMPT=1: "the prompt (-->)
+// symbol is given for inputting data"; PROMPT=2, which repeats the last command on a CR at the
+// start of a line, is the spec's 1): an empty line gives CR LF and `-->` again, whether it ends
+// with CR, CR LF or LF; with PROMPT=0 nothing comes back.
+TEST(st_wire, AnEmptyLineGivesThePromptAgain) {
+  Drive d;
+  EXPECT_EQ(d.say("\r"), "\r\n-->");
+  EXPECT_EQ(d.say("\r\n"), "\r\n-->");
+  EXPECT_EQ(d.say("\n"), "\r\n-->");
+  EXPECT_EQ(d.say("  \r"), "  \r\n-->");
+  EXPECT_EQ(d.say("PROMPT 0\r"), "PROMPT 0\r\n");
+  EXPECT_EQ(d.say("\r\n"), "");
+}
+
+// A line ended by LF alone comes back with CR LF as one ended by CR does, so a host that waits
+// for its echo line reads the answer on a line of its own (it read "pfb0" before); the LF of a
+// CR LF adds nothing, also when the CR came while PROMPT was 0.
+TEST(st_wire, ALineEndedByLfAloneEchoesCrLf) {
+  Drive d;
+  EXPECT_EQ(d.say("pfb\n"), "pfb\r\n0\r\n-->");
+  EXPECT_EQ(d.say("PFB\r\n"), "PFB\r\n0\r\n-->");
+  EXPECT_EQ(d.say("PROMPT 0\r"), "PROMPT 0\r\n");
+  EXPECT_EQ(d.say("PROMPT 1\r"), "-->");
+  EXPECT_EQ(d.say("\n"), "");  // the LF of the CR LF that ended `PROMPT 1`
+  EXPECT_EQ(d.say("VER\n"), "VER\r\nuprog S300 sim 1.0\r\n-->");
+}
+
 // `T a` commands a amperes, fraction and all (spec: "OPMODE 2: a amperes"; issue 39: `T 0.5`
 // commanded 0 A): the axis' torque command is 0.5 A, and -1.25 A after `T -1.25`.
 TEST(st_wire, TorqueTakesAFraction) {

@@ -35,6 +35,7 @@ constexpr AsciiEntry kTable[] = {
     {"PE", K::Int, A::Read, 0, false, false},
     {"PV", K::Int, A::Read, 0, false, false},
     {"V", K::Float, A::Read, 0, false, false},
+    {"I", K::Float, A::Read, 0, false, false},
     {"ACC", K::Int, A::ReadWrite, 10, false, true},
     {"DEC", K::Int, A::ReadWrite, 10, false, true},
     {"DECSTOP", K::Int, A::ReadWrite, 10, false, true},
@@ -151,6 +152,8 @@ std::optional<int> user_variable_number(std::string_view name) {
 }
 
 std::string user_variable_name(int n) { return (n <= 16 ? "DPRVAR" : "DPV") + std::to_string(n); }
+
+bool reserves_name(const AsciiEntry& e) { return e.name != "I"; }
 
 const AsciiEntry* find_ascii(std::string_view name) {
   for (const AsciiEntry& e : kTable)

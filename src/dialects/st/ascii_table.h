@@ -27,6 +27,9 @@ std::span<const AsciiEntry> ascii_table();
 const AsciiEntry* find_ascii(std::string_view name);
 // An entry's number (its index in the table): what CMDGET/CMDSET carry in a compiled program.
 uint32_t ascii_id(const AsciiEntry& entry);
+// False for `I` (the actual current), a name programs use for their loop counters: a program may
+// declare it, and its global then hides the drive's `I` from the command line.
+bool reserves_name(const AsciiEntry& entry);
 const AsciiEntry* ascii_by_id(uint32_t id);
 bool readable(const AsciiEntry& e);
 bool writable(const AsciiEntry& e);

@@ -161,11 +161,9 @@ class Checker {
       case Builtin::Xread:
       case Builtin::Xwrite:
         if (!count(2) || !string_arg(a[0])) return;
-        if (const AsciiEntry* e = find_ascii(a[0].text);
-            e == nullptr || e->kind == AsciiKind::Command || e->kind == AsciiKind::Text ||
-            !(s.builtin == Builtin::Xread ? readable(*e) : writable(*e))) {
-          r_.error(Error::UnknownParameter, a[0].offset, "'" + a[0].text + "'");
-        }
+        if (const std::string why = not_a_value(a[0].text, s.builtin == Builtin::Xread);
+            !why.empty())
+          r_.error(Error::UnknownParameter, a[0].offset, why);
         plain_variable(a[1]);
         return;
       case Builtin::Command:
@@ -176,6 +174,18 @@ class Checker {
         printf_args(s);
         return;
     }
+  }
+
+  // Why XREAD (or XWRITE) cannot take the parameter NAME, as the note says it; "" when it can.
+  static std::string not_a_value(const std::string& name, bool read) {
+    const AsciiEntry* e = find_ascii(name);
+    const std::string quoted = "'" + name + "'";
+    if (e == nullptr) return quoted;
+    if (e->kind == AsciiKind::Command) return quoted + " is a command (COMMAND runs it)";
+    if (e->kind == AsciiKind::Text) return quoted + " answers text, not a number";
+    if (read && !readable(*e)) return quoted + " cannot be read";
+    if (!read && !writable(*e)) return quoted + " is read-only";
+    return "";
   }
 
   void command(const Arg& a) {

@@ -64,6 +64,7 @@ constexpr FaultName kAxisFaults[] = {
 std::pair<int64_t, int64_t> range_of(const std::string& name) {
   if (name == "PGEARI" || name == "PGEARO") return {1, INT32_MAX};
   if (name == "SRND" || name == "ERND" || name == "ROFFS") return {INT32_MIN, INT32_MAX};
+  if (name == "ACC" || name == "DEC" || name == "DECSTOP") return {1, 32767};  // ms
   if (name == "ANCNFG") return {0, 14};
   if (name == "NREF") return {0, 20};
   if (name == "DREF") return {0, 2};
@@ -109,7 +110,7 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
   const auto faulted = [&] { return !faults_.empty() || fault_bits() != 0; };
 
   // The loaded program's globals, by name (DLONG as one 64-bit number).
-  if (program_ && !find_ascii(name)) {
+  if (const AsciiEntry* e = find_ascii(name); program_ && (e == nullptr || !reserves_name(*e))) {
     for (size_t g = kUserVariables; g < globals_.size(); ++g) {
       if (globals_[g].name != name) continue;
       vm::Machine& m = program_->machine();
@@ -229,10 +230,7 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
                                                                   : "needs enabled")};
   }
   if (name == "STOP") {
-    next_pending_ = false;
-    end_homing();
-    jog_until_ns_ = 0;
-    axis_->stop();
+    stop_motion();
     return {};
   }
   if (name == "MTMUX") {
@@ -282,6 +280,9 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     const double rpm = axis_->velocity() * 60.0 / axis_->parameters().counts_per_revolution();
     return {Answer{fmt::format("{:.3f}", rpm), 0}};
   }
+  if (name == "I") {  // the reference's I: "the actual current value in amperes", positive
+    return {Answer{fmt::format("{:.3f}", std::fabs(axis_->motor_state().current_a)), 0}};
+  }
   if (name == "INPOS") {
     const int64_t off =
         std::llabs(int64_t{user_of(target_counts_)} - user_of(axis_->position_exact()));
@@ -318,7 +319,13 @@ std::vector<Answer> Firmware::command_line(std::string_view line) {
     if (faulted()) w1 |= 1u << 3;
     record_axis_faults();
     for (int f : faults_) w2 |= 1u << (f - 1);
+    // Word 5 (the reference's STATUS): bit 0 a task, homing or jog under way, bit 1 the
+    // reference point set, bit 2 the reference switch (INxMODE 12) on, bit 3 in position.
     if (axis_->profiler_moving()) w5 |= 1u;
+    if (reference_set_) w5 |= 1u << 1;
+    for (size_t n = 0; n < input_modes_.size(); ++n)
+      if (input_modes_[n] == kModeReference && axis_->input_level(static_cast<int>(n) + 1))
+        w5 |= 1u << 2;
     if (command_line("INPOS")[0].text == "1") w5 |= 1u << 3;
     return {Answer{fmt::format("{:08X} {:08X} {:08X} {:08X} {:08X}", w1, w2, 0, 0, w5), 0}};
   }

@@ -42,6 +42,7 @@ Firmware::Firmware(dialect::Runtime& runtime, dialect::WireStyle wire_style)
 }
 
 void Firmware::boot(std::vector<std::string>& messages) {
+  ++boots_;
   axis_ = &runtime_.axis();
   axis_->set_period_us(static_cast<int32_t>(kStepNs / 1000));
   stop_plc();
@@ -53,6 +54,8 @@ void Firmware::boot(std::vector<std::string>& messages) {
   mtmux_ = last_move_ = 0;
   next_pending_ = false;
   jog_until_ns_ = 0;
+  deferred_ = Deferred{};  // a J or MOVE that waited for EN's delay is gone with the reboot
+  reference_set_ = false;
   defaults();
   load();
   apply_limits();
@@ -69,6 +72,8 @@ void Firmware::boot(std::vector<std::string>& messages) {
     source_ = std::string(bytes->begin(), bytes->end());
   compile_and_start();
 }
+
+bool Firmware::stage_on() const { return axis_ != nullptr && axis_->motor_on(); }
 
 std::string Firmware::source_name() const {
   if (source_ && !source_name_.empty() && *source_ == named_source_) return source_name_;

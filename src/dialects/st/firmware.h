@@ -51,6 +51,7 @@ bool is_debug_command(std::string_view name);
 
 constexpr uint64_t kStepNs = 125'000;  // the axis steps every 125 µs, two 62.5 µs ticks
 constexpr size_t kMaxStoredSource = 61'440;
+constexpr int32_t kModeReference = 12;  // INxMODE 12: the input is the reference switch
 
 // A motion task (ORDER): target, speed, control word, ramps, next task and its delay.
 struct MotionTask {
@@ -65,6 +66,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   // --- dialect::Firmware ---
   const dialect::WireForm& wire() const override { return wire_; }
   void boot(std::vector<std::string>& messages) override;
+  // How often the drive has booted: a host's PLCDL transfer begun before a reboot is gone.
+  uint64_t boot_count() const { return boots_; }
   uint64_t cycle_ns() const override { return kStepNs; }
   void cycle(const std::vector<uint32_t>& drive_events) override;
   std::unique_ptr<dialect::Session> open_session() override;
@@ -99,6 +102,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   // One host line: its answers (command_line.cpp); a session also lets one axis step pass.
   std::vector<dialect::Answer> command_line(std::string_view line);
   void spend_line_time() { runtime_.advance_ns(kStepNs); }
+  // The output stage is on: the page lets the program be modified only while it is not.
+  bool stage_on() const;
 
  private:
   friend class CommandLine;
@@ -168,6 +173,10 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   int32_t start_task(int32_t nr);
   void step_motion();
   int32_t jog(int32_t rpm, int32_t ms);
+  // STOP: a motion task decelerates with its own d, a jog, homing or analog speed with DECSTOP.
+  void stop_motion();
+  // The axis decelerates to a stop at `decel` counts/s² (its own stop ramp, Gold's SD, stays).
+  void stop_axis_with(double decel);
   double rpm_to_counts(double rpm) const;
   double ramp_counts_per_s2(int32_t ms) const;
 
@@ -196,6 +205,7 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   std::string running_here() const;
   std::vector<std::pair<uint32_t, std::string>> threads_;  // thread, program name
   bool compile_failed_ = false;
+  uint64_t boots_ = 0;
   bool plc_started_ = false;
   vm::RunError run_error_ = vm::RunError::None;
   std::set<int> faults_;  // F31, F32 (the firmware's); the axis' come from its MF
@@ -210,7 +220,8 @@ class Firmware final : public dialect::Firmware, public vm::Host {
   bool homing_ = false;       // MH's move to a zero mark is under way
   double homing_mark_ = 0;    // that mark, in motor counts
   SwitchHoming switch_homing_;
-  double refpos_motor_ = 0;  // REFPOS: where the last homing saw its criterion (motor counts)
+  bool reference_set_ = false;  // STATUS word 5 bit 1: a homing (MH, SETREF) set the point
+  double refpos_motor_ = 0;     // REFPOS: where the last homing saw its criterion (motor counts)
   std::array<int32_t, 4> input_modes_{};  // IN1MODE…IN4MODE as the last boot took them
   int32_t ancnfg_ = 0;                    // ANCNFG as the last boot took it
   std::array<int32_t, 2> analog_mv_{};    // SW1, SW2: the world's levels (a reboot keeps them)

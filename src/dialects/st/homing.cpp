@@ -17,7 +17,6 @@ namespace {
 
 constexpr int32_t kModePositiveStop = 2;  // PSTOP: low blocks the positive direction
 constexpr int32_t kModeNegativeStop = 3;  // NSTOP: low blocks the negative direction
-constexpr int32_t kModeReference = 12;    // the reference switch
 constexpr double kSearchCounts = 1e9;     // how far a search may run before it gives up
 
 }  // namespace

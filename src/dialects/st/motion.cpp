@@ -131,8 +131,13 @@ int32_t Firmware::start_homing() {
   if (opmode_ != 8) return kErrOpmode;
   if (!axis_->motor_on()) return kErrNeedsEnabled;
   const int32_t nref = values_.at("NREF");
-  if ((nref >= 1 && nref <= 4) || nref == 7 || nref == 9) return start_switch_homing(nref);
+  if ((nref >= 1 && nref <= 4) || nref == 7 || nref == 9) {
+    const int32_t code = start_switch_homing(nref);
+    if (code == 0) reference_set_ = false;  // until this homing sets it
+    return code;
+  }
   if (nref != 0 && nref != 5 && nref != 6) return kErrRange;
+  reference_set_ = false;
   end_homing();
   next_pending_ = false;
   refpos_motor_ = axis_->motor_state().position_counts;  // REFPOS: where it started
@@ -172,6 +177,7 @@ void Firmware::set_reference(double at_motor) {
   axis_->set_position(saturate(std::round(roffs + (motor - at_motor))));
   target_counts_ += shift;
   homing_ = false;
+  reference_set_ = true;
 }
 
 void Firmware::set_reference() { set_reference(axis_->motor_state().position_counts); }
@@ -191,6 +197,20 @@ int32_t Firmware::within_turn(double motor) const {
   return std::clamp(static_cast<int32_t>(steps), 0, 1048575);
 }
 
+// The axis' own stop ramp (SD) stays for its other stops (homing's).
+void Firmware::stop_axis_with(double decel) { axis_->stop_with(to_axis(decel)); }
+
+// The spec's STOP: "decelerate (task's d, else DECSTOP)"; a task's d was set when it began.
+void Firmware::stop_motion() {
+  const bool task = axis_->motion_kind() == drive::Axis::MotionKind::kPointToPoint && !homing_ &&
+                    switch_homing_.phase == SwitchHoming::kIdle;
+  const double task_decel = axis_->parameters().decel_counts_per_s2;
+  next_pending_ = false;
+  end_homing();
+  jog_until_ns_ = 0;
+  stop_axis_with(task ? task_decel : ramp_counts_per_s2(values_.at("DECSTOP")));
+}
+
 // Each axis step: a jog's time ends; a finished task with a next one starts it after FT ms.
 void Firmware::step_motion() {
   if (deferred_.kind != Deferred::kNone && !axis_->motor_on()) deferred_ = Deferred{};  // a fault
@@ -203,7 +223,7 @@ void Firmware::step_motion() {
   }
   if (jog_until_ns_ != 0 && runtime_.now_ns() >= jog_until_ns_) {
     jog_until_ns_ = 0;
-    axis_->stop();
+    stop_axis_with(ramp_counts_per_s2(values_.at("DEC")));  // J v t: its ramps are ACC and DEC
   }
   // Each is a call only while it has work (the usual cycle has neither): a search under way,
   // OPMODE 1 or the speed it last commanded to forget.

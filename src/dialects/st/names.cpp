@@ -102,7 +102,8 @@ std::optional<Error> name_problem(std::string_view name) {
   const std::string u = upper(name);
   if (is_keyword(u) || is_unsupported_word(u) || builtin_of(u) || program_of(u))
     return Error::ReservedName;
-  if (const AsciiEntry* e = find_ascii(u); e != nullptr && !user_variable_number(u))
+  if (const AsciiEntry* e = find_ascii(u);
+      e != nullptr && !user_variable_number(u) && reserves_name(*e))
     return Error::ReservedName;
   return std::nullopt;
 }

@@ -53,6 +53,7 @@ constexpr Meaning kMeanings[] = {
     {"PE", "Following error.", "counts x PGEARI/PGEARO", kSpec},
     {"PV", "Velocity.", "", kSpec},
     {"V", "Velocity (a float).", "rpm", kSpec},
+    {"I", "The actual current, always positive (a float).", "A", kHost},
     {"ACC", "Acceleration: ms from 0 to VLIM, default 10.", "ms", kSpec},
     {"DEC", "Deceleration: ms from VLIM to 0, default 10.", "ms", kSpec},
     {"DECSTOP", "Stop deceleration: ms from VLIM to 0, default 10.", "ms", kSpec},

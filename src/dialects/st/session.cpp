@@ -49,9 +49,19 @@ class Session final : public dialect::Session {
   }
 
   std::vector<Answer> download(std::string_view rest) {
+    // The transfer is in the drive's RAM: a reboot (COLDSTART) since BEGIN dropped it.
+    if (transfer_boot_ != firmware_.boot_count()) {
+      transfer_.abort();
+      transfer_boot_ = firmware_.boot_count();
+    }
     rest = trimmed(rest);
     if (rest.empty()) return {Answer{"syntax error", kErrSyntax}};
     const std::string word = upper(rest.substr(0, rest.find_first_of(" \t")));
+    // The page: "If the amplifier is not enabled the program can be modified and recompiled".
+    if ((word == "BEGIN" || word == "END") && firmware_.stage_on()) {
+      transfer_.abort();
+      return {Answer{"needs disabled", kErrNeedsDisabled}};
+    }
     if (word == "BEGIN") return answered(transfer_.begin(trimmed(rest.substr(5))));
     if (word == "ABORT") {
       transfer_.abort();
@@ -67,6 +77,7 @@ class Session final : public dialect::Session {
 
   Firmware& firmware_;
   dialect::DownloadReceiver transfer_{kMaxStoredSource, kPlcdlCodes};
+  uint64_t transfer_boot_ = 0;  // the boot the transfer began in
 };
 
 }  // namespace

@@ -12,7 +12,12 @@ dialect::FramerOptions framing_options() {
 S300Wire::S300Wire(const int32_t& prompt, dialect::WireStyle style)
     : prompt_(prompt), style_(style), readable_(framing_options()) {}
 
-dialect::FramerOptions S300Wire::framing() const { return framing_options(); }
+// The drive's wire answers CR alone with the prompt again; the readable form drops empty lines.
+dialect::FramerOptions S300Wire::framing() const {
+  dialect::FramerOptions o = framing_options();
+  o.break_empty_lines = drive_style();
+  return o;
+}
 
 std::string answer_text(const dialect::Answer& a) {
   if (a.error == 0) return a.text;
@@ -35,11 +40,16 @@ void S300Wire::write_line_end(std::string& out) const {
   if (prompt_ != 0) out += "-->";
 }
 
-// An LF is not echoed: after a CR it is the same line end, and a CR LF went back already.
+// A line's end comes back as CR LF, whether it was CR, LF or CR LF: the LF after a CR is the
+// same line end, and its CR LF went back already. PROMPT is read at each byte; the bytes are
+// followed with PROMPT=0 too, so a CR LF split by `PROMPT 1` is still one line end.
 void S300Wire::write_echo(std::string_view bytes, std::string& out) const {
-  if (!echoes()) return;
+  if (!drive_style()) return;
   for (char c : bytes) {
-    if (c == '\r')
+    const bool lf_of_cr_lf = c == '\n' && after_cr_;
+    after_cr_ = c == '\r';
+    if (prompt_ == 0) continue;
+    if (c == '\r' || (c == '\n' && !lf_of_cr_lf))
       out += "\r\n";
     else if (c != '\n')
       out.push_back(c);

@@ -21,9 +21,10 @@ class S300Wire final : public dialect::WireForm {
   void write_answer(const dialect::Answer& answer, std::string& out) const override;
   void write_silent_line(std::string& out) const override;
   void write_line_end(std::string& out) const override;
-  // PROMPT=1: every byte comes back as it arrives, the CR that ends a line as CR LF.
+  // PROMPT=1: every byte comes back as it arrives, the CR or LF that ends a line as CR LF.
   void write_echo(std::string_view bytes, std::string& out) const override;
-  bool echoes() const override { return drive_style() && prompt_ != 0; }
+  // The drive's wire takes the bytes one by one whatever PROMPT is (write_echo decides).
+  bool echoes() const override { return drive_style(); }
   void write_output(std::string_view text, std::string& out) const override;
 
  private:
@@ -32,6 +33,7 @@ class S300Wire final : public dialect::WireForm {
   const int32_t& prompt_;
   dialect::WireStyle style_;
   dialect::SemicolonWire readable_;
+  mutable bool after_cr_ = false;  // the last byte was a CR (an LF right after it adds nothing)
 };
 
 // One answer as the wire writes it, without the line end: "\aERR 1 unknown" or the text.
