@@ -802,8 +802,10 @@ op_RETEOL:
 // The fused instructions (vm/fused.def), formed at load: each reads its operands in the base
 // words of its pattern, where they stay, and goes on past them. Their dispatch is the same as
 // every other instruction's: the fused word carries the line-end mark of its pattern's last.
-#define A_AT(k) bytecode::word_a(ip[fused_offset(kShape, k)])
-#define IMM_AT(k) bytecode::word_imm(ip[fused_offset(kShape, k)])
+// The first word is `word` itself (its operand bits are the base instruction's): no load.
+#define WORD_AT(k) ((k) == 0 ? word : ip[fused_offset(kShape, k)])
+#define A_AT(k) bytecode::word_a(WORD_AT(k))
+#define IMM_AT(k) bytecode::word_imm(WORD_AT(k))
 #define B_AT(k) (ip[fused_offset(kShape, k) + 1])
 // A folded family's relation: in a FUSED_PER_RELATION family the constant of the handler the
 // quickener chose for the site, elsewhere read from the compare-and-jump's opcode.
@@ -853,6 +855,7 @@ op_RETEOL:
 #undef BRANCH_IF
 #undef NEXT
 #undef A_AT
+#undef WORD_AT
 #undef IMM_AT
 #undef B_AT
 #undef RELATION_AT

@@ -155,7 +155,7 @@ TEST(st_codegen, AConditionsLineIsOneBranchThatEndsIt) {
   // FOR, inverted: the bound into the hidden local and the test on the FOR line, once a loop:
   // into the body through the EOL at its top, or (no pass) past the loop by the jump that ends
   // the line. After the body's last line, on every pass, the step and the same test, nothing
-  // between them that control enters, so that the VM fuses them into one INCGJRELGL at load;
+  // between them that control enters, so that the VM fuses them into one INCGJLEGL at load;
   // that branch back ends the line itself and jumps past the EOL.
   EXPECT_EQ(last_ops(image, 14, 100), "PUSHI STG PUSHK STL LDG LDL JLEI JMP.eol EOL");
   EXPECT_EQ(last_ops(image, 15, 7), "LDG PUSHI ADDI STG LDG LDL JLEI.eol");
