@@ -71,6 +71,21 @@ void Compiler::emit_post_increments(const Place& p) {
   for (const Var* v : p.post_increments) emit_increment(*v, 1);
 }
 
+// An index on the stack made the address of its word in array v: the index first, so that the
+// VM fuses a global index with the array's address (ADDGK), and nothing added for the array at
+// the user memory's word 0.
+void Compiler::add_base_address(const Var& v) {
+  if (v.local) {
+    code_.emit(Op::LDL, kFp);
+    push_int(v.address);
+    code_.emit(Op::ADDI);
+    code_.emit(Op::ADDI);
+  } else if (v.address != 0) {
+    push_int(v.address);
+    code_.emit(Op::ADDI);
+  }
+}
+
 // A flat address in the user memory, else BadAddress.
 void Compiler::emit_user_check() {
   CodeBuilder::Label ok = code_.new_label();
@@ -236,26 +251,12 @@ std::optional<Place> Compiler::parse_place(bool for_store) {
         constant = false;
         p.post_increments.push_back(nv);
         if (nv->kind == Kind::Float && !nv->pointer) error(Error::IntegerNeeded, n.offset, n.text);
-        if (v->local) {
-          code_.emit(Op::LDL, kFp);
-          push_int(v->address);
-          code_.emit(Op::ADDI);
-        } else {
-          push_int(v->address);
-        }
         read_var(*nv);
-        code_.emit(Op::ADDI);
+        add_base_address(*v);
       } else {
         constant = false;
-        if (v->local) {
-          code_.emit(Op::LDL, kFp);
-          push_int(v->address);
-          code_.emit(Op::ADDI);
-        } else {
-          push_int(v->address);
-        }
         int_operand(expr(), t.offset);
-        code_.emit(Op::ADDI);
+        add_base_address(*v);
       }
       expect_op("]");
     }
