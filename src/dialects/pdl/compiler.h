@@ -238,7 +238,7 @@ class Compiler {
   void emit_increment(const Var& v, int32_t by);
   void emit_pointer_check(bool float_address);  // a program's address, bit 29 cleared (checked)
   void emit_word_check(bool ignore_float_bit);
-  void add_base_address(const Var& v);  // index on the stack + array v's address
+  void add_base_address(const Var& v);   // index on the stack + array v's address
   void emit_user_check();                // flat address in user memory (checked)
   bool logical_address(bool for_store);  // pushes a memory place's logical address
   void read_var(const Var& v);
