@@ -2,6 +2,7 @@
 // flow control of 2.11-2.13, functions with several outputs, nargout, recursion, try/catch.
 #include <gtest/gtest.h>
 
+#include "bytecode/assembly.h"
 #include "gold_runner.h"
 
 namespace uprog::gold_test {
@@ -40,6 +41,28 @@ return
   EXPECT_FLOAT_EQ(p.f("z"), 33.03f);
   EXPECT_FLOAT_EQ(p.f("q"), 2.5f);
   EXPECT_EQ(p.i("w"), 31);
+}
+
+// A negative literal is one constant: `-1.5` and `-7` compile to no NEGF or NEGI (the values
+// as the operators give them, -0x80000000 saturating as NEGI does).
+TEST(gold_run, NegativeLiteralsAreConstants) {
+  GoldRun p;
+  ASSERT_TRUE(p.compile(R"(
+int a, b
+float x
+function main()
+x = -1.5
+a = -7
+b = -0x80000000
+return
+)"));
+  const std::string code = bytecode::disassemble(p.image);
+  EXPECT_EQ(code.find("NEGF"), std::string::npos) << code;
+  EXPECT_EQ(code.find("NEGI"), std::string::npos) << code;
+  EXPECT_EQ(p.run("main"), vm::SliceEnd::Finished);
+  EXPECT_FLOAT_EQ(p.f("x"), -1.5f);
+  EXPECT_EQ(p.i("a"), -7);
+  EXPECT_EQ(p.i("b"), 2147483647);
 }
 
 TEST(gold_run, AssignmentConversions) {

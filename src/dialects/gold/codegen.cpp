@@ -10,6 +10,7 @@
 #include "dialects/gold/builtins.h"
 #include "dialects/gold/commands.h"
 #include "dialects/gold/keywords.h"
+#include "support/arith.h"
 
 namespace uprog::gold {
 
@@ -188,6 +189,11 @@ class Gen {
     const Kind k = operand_kind(e.lhs->type);
     switch (e.op) {
       case Tok::Minus:
+        // A negative literal (`-1.0`) is a constant of its own, as NEGI/NEGF would make it.
+        if (e.lhs->kind == ExprKind::FloatLit && k == Kind::Float)
+          return push_float(-e.lhs->float_value);
+        if (e.lhs->kind == ExprKind::IntLit && k == Kind::Int)
+          return push_int(arith::saturating_neg(e.lhs->int_value));
         value(*e.lhs);
         emit(k == Kind::Int ? Op::NEGI : k == Kind::Float ? Op::NEGF : Op::NEGD);
         return;
