@@ -26,7 +26,7 @@ class Quickener {
       const FusedShape& s = kFusedShapes[f];
       if (s.ops[0] != bytecode::word_op(code_[pc])) continue;
       if (best != kFusedCount && kFusedShapes[best].count >= s.count) continue;
-      if (fits(pc, s) && holds(static_cast<Fused>(f), code_ + pc)) best = f;
+      if (fits(pc, s) && holds(static_cast<Fused>(f), code_ + pc, pc)) best = f;
     }
     return best;
   }
@@ -58,7 +58,8 @@ class Quickener {
   }
 
   // The pattern's condition on its operands (fused.def's WHEN).
-  static bool holds(Fused f, const uint32_t* at) {
+  static bool holds(Fused f, const uint32_t* at, [[maybe_unused]] uint32_t pc) {
+#define PC_AT(k) (pc + fused_offset(fused_detail::kShapes[index], k))
 #define A_AT(k) bytecode::word_a(at[fused_offset(fused_detail::kShapes[index], k)])
 #define IMM_AT(k) bytecode::word_imm(at[fused_offset(fused_detail::kShapes[index], k)])
 #define B_AT(k) (at[fused_offset(fused_detail::kShapes[index], k) + 1])
@@ -71,6 +72,7 @@ class Quickener {
 #include "vm/fused.def"
 #undef FUSED
     }
+#undef PC_AT
 #undef A_AT
 #undef IMM_AT
 #undef B_AT
@@ -86,13 +88,26 @@ class Quickener {
 
 namespace {
 
+// Whether the instruction at pc is a check's way past its error: a conditional jump over one
+// RAISE to the instruction after it. Its target is not entered from elsewhere by that jump: a
+// pattern that holds the target past its first word holds the RAISE before it and the jump,
+// and its WHEN demands that the jump goes there (PC_AT).
+bool jumps_over_raise(const uint32_t* code, uint32_t size, uint32_t pc) {
+  const bytecode::Op op = bytecode::word_op(code[pc]);
+  const uint32_t next = pc + bytecode::op_length(op);
+  return (op == bytecode::Op::JZ || op == bytecode::Op::JNZ) && next < size &&
+         bytecode::word_op(code[next]) == bytecode::Op::RAISE &&
+         bytecode::word_a(code[pc]) == next + bytecode::op_length(bytecode::Op::RAISE);
+}
+
 // Marks every jump and catch target of the code; the caller marks the entries and line starts.
 Quickener entered_targets(uint32_t* code, uint32_t size, uint32_t* scratch) {
   for (uint32_t i = 0; i < quicken_scratch_words(size); ++i) scratch[i] = 0;
   Quickener q(code, size, scratch);
   for (uint32_t pc = 0; pc < size; pc += bytecode::op_length(bytecode::word_op(code[pc]))) {
     const bytecode::OpInfo& info = bytecode::op_info(bytecode::word_op(code[pc]));
-    if (info.a == bytecode::Operand::Target) q.mark_entered(bytecode::word_a(code[pc]));
+    if (info.a == bytecode::Operand::Target && !jumps_over_raise(code, size, pc))
+      q.mark_entered(bytecode::word_a(code[pc]));
   }
   return q;
 }
