@@ -93,11 +93,13 @@ namespace {
 // pattern that holds the target past its first word holds the RAISE before it and the jump,
 // and its WHEN demands that the jump goes there (PC_AT).
 bool jumps_over_raise(const uint32_t* code, uint32_t size, uint32_t pc) {
+  static_assert(bytecode::op_length(bytecode::Op::JZ) == 1 &&
+                bytecode::op_length(bytecode::Op::JNZ) == 1 &&
+                bytecode::op_length(bytecode::Op::RAISE) == 1);
   const bytecode::Op op = bytecode::word_op(code[pc]);
-  const uint32_t next = pc + bytecode::op_length(op);
-  return (op == bytecode::Op::JZ || op == bytecode::Op::JNZ) && next < size &&
-         bytecode::word_op(code[next]) == bytecode::Op::RAISE &&
-         bytecode::word_a(code[pc]) == next + bytecode::op_length(bytecode::Op::RAISE);
+  return (op == bytecode::Op::JZ || op == bytecode::Op::JNZ) && pc + 1 < size &&
+         bytecode::word_op(code[pc + 1]) == bytecode::Op::RAISE &&
+         bytecode::word_a(code[pc]) == pc + 2;
 }
 
 // Marks every jump and catch target of the code; the caller marks the entries and line starts.
