@@ -40,14 +40,6 @@ constexpr bool fused_op_matches(const FusedShape& s, uint32_t k, bytecode::Op op
 // Gold's profile (docs/architecture.md).
 template <typename T>
 constexpr bool relation_holds(uint32_t relation, T a, T b) {
-  if constexpr (static_cast<T>(0.5) != 0) {
-    if (!__builtin_constant_p(relation)) {
-      // The outcomes (unordered, <, ==, >) for which each relation holds, a bit each.
-      constexpr uint8_t kHolds[6] = {0b0100, 0b1011, 0b0010, 0b0110, 0b1000, 0b1100};
-      const uint32_t outcome = a < b ? 1u : a == b ? 2u : a > b ? 3u : 0u;
-      return ((kHolds[relation] >> outcome) & 1u) != 0;  // 0..5: the quickener's (fused_op_matches)
-    }
-  }
   switch (relation) {
     case 0:
       return a == b;

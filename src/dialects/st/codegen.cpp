@@ -396,8 +396,8 @@ class Generator {
   // The loop is inverted: the test runs once on the FOR line before the body (a loop whose
   // bound is passed already runs no pass, its line ending before the jump past the loop) and
   // again at the bottom after the step, with no place between them that control arrives at,
-  // so that a pass pays one fused step-and-test, INCGJLEGL up or INCGJGEGL down
-  // (docs/architecture.md, "Fusion at load"). The FOR line ends once on every path: the top
+  // so that a pass counting up pays one fused step-and-test, INCGJLEGL (docs/architecture.md,
+  // "Fusion at load"). The FOR line ends once on every path: the top
   // test goes into the body through the EOL at `again`, or (no pass) past the loop by a jump
   // that ends the line; the bottom one ends it on both paths itself (the peephole's JNZ.eol,
   // which jumps past that EOL). The bound, literal or not, goes once into the loop's hidden

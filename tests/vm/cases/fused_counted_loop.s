@@ -1,7 +1,7 @@
 ; A counted loop as ST's FOR is compiled (inverted: the test before the loop and again after the
 ; step, the bound in a local): the step and the bottom test are base code that the machine fuses
-; at load into INCGJLEGL for <= (step +1) and INCGJGEGL for >= (step -2), the two relations a
-; FOR compiles to; the others stay base code: != (step +3), and bottom tests only (as ne's) for
+; at load into INCGJLEGL for <= (step +1), a FOR counting up; the others stay base code: >=
+; (step -2, counting down), != (step +3), and bottom tests only (as ne's) for
 ; < (step +2), > (step -3) and == (step +1), so that every relation runs. up: 1..4 is 4 passes,
 ; ending at 5; down: 10, 8, 6, 4 is 4 passes, ending at 2; ne: 0, 3, 6 is 3 passes, ending at 9;
 ; none: 7 > 4, no pass, 7 stays; lt: 0, 2, 4 while < 5 is 3 passes, ending at 6; gt: 10, 7, 4
