@@ -72,22 +72,6 @@ void write_wide(Value* at, uint64_t v) {
   at[1].bits = static_cast<uint32_t>(v >> 32);
 }
 
-// For each comparison (== != < <= > >=, four bits each), the outcomes for which it holds:
-// bit 0 a < b, bit 1 a == b, bit 2 a > b, bit 3 unordered (a NaN; only != holds).
-constexpr uint32_t kCompareMasks =
-    0x2u | (0xDu << 4) | (0x1u << 8) | (0x3u << 12) | (0x4u << 16) | (0x6u << 20);
-// Whether comparison `how` (0..5: == != < <= > >=) holds for an outcome: 0 a < b, 1 a == b,
-// 2 a > b, 3 unordered.
-constexpr bool holds(uint32_t how, uint32_t outcome) {
-  return ((kCompareMasks >> (4 * how + outcome)) & 1u) != 0;
-}
-// The outcome of comparing two floats; a NaN on either side is unordered, and then only !=
-// holds, as C++'s operators say.
-inline uint32_t float_outcome(float a, float b) {
-  return a < b ? 0u : a == b ? 1u : a > b ? 2u : 3u;
-}
-inline uint32_t int_outcome(int32_t a, int32_t b) { return a < b ? 0u : a == b ? 1u : 2u; }
-
 }  // namespace
 
 SliceResult Machine::run_other_slice(uint32_t thread, const Budget& budget) {
