@@ -635,6 +635,7 @@ op_CALLFEOL : {
   // Each step reads again what it needs (B, local 0, the routine's record): the loop's
   // registers hold its own state, and a value kept across a step's stores went through the
   // stack.
+  const RoutineInfo* const r = routines_ + A();
   {
     const uint32_t shape = B();
     const auto at = static_cast<uint32_t>(locals[0].i);
@@ -645,7 +646,7 @@ op_CALLFEOL : {
       FAIL(RunError::CallDepth);
     if (tp->frame_count >= config_.frames) [[unlikely]]
       FAIL(RunError::CallDepth);
-    if (routines_[A()].locals > static_cast<size_t>(tp->locals_end - tp->locals_top)) [[unlikely]]
+    if (r->locals > static_cast<size_t>(tp->locals_end - tp->locals_top)) [[unlikely]]
       FAIL(RunError::LocalsExhausted);
     if (sp - bytecode::memory_frame_arguments(shape) > call_limit) [[unlikely]]
       FAIL(RunError::StackOverflow);
@@ -660,14 +661,13 @@ op_CALLFEOL : {
     zero_words(parameters + arguments, bytecode::memory_frame_words(shape) - first - arguments);
   }
   {
-    const RoutineInfo& r = routines_[A()];
-    const uint32_t inputs = r.inputs;
+    const uint32_t inputs = r->inputs;
     Value* const callee = tp->locals_top;
     const auto at = static_cast<uint32_t>(locals[0].i);
     callee[inputs - 1].i = static_cast<int32_t>(at);
     callee[0].i = static_cast<int32_t>(at + bytecode::memory_frame_words(B()));
     copy_words(callee + 1, locals + 1, inputs - 2);
-    zero_words(callee + inputs, r.locals - inputs);
+    zero_words(callee + inputs, r->locals - inputs);
   }
   {
     const uint32_t depth = tp->frame_count;
@@ -680,10 +680,9 @@ op_CALLFEOL : {
     f.nargout = 0;
     f.kind = FrameKind::Call;
     tp->frame_count = depth + 1;
-    const RoutineInfo& r = routines_[A()];
-    tp->locals_top = callee + r.locals;
+    tp->locals_top = callee + r->locals;
     locals = callee;
-    ip = code + r.entry;
+    ip = code + r->entry;
   }
   if (--back_jumps.now == 0) goto out_of_back_jumps_at_line_end;
   if (--lines.now == 0) goto out_of_lines;
