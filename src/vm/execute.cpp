@@ -695,7 +695,13 @@ op_RET : {
   tp->locals_top = f->locals;
   while (tp->handler_count > 0 && tp->handlers[tp->handler_count - 1].frame_count > depth)
     tp->handler_count--;
-  if (f->kind == FrameKind::Event) {
+  // A call's frame that wants no outputs (every procedure's): its two bytes side by side, one
+  // test.
+  if ((f->nargout | (static_cast<uint32_t>(f->kind) << 8)) == 0 && depth != 0) {
+    sp = f->stack_base;
+    ip = code + f->return_pc;
+    locals = f[-1].locals;  // the caller's frame, just below
+  } else if (f->kind == FrameKind::Event) {
     sp = f->stack_base;
     ip = code + f->return_pc;
     locals = f[-1].locals;
@@ -712,7 +718,7 @@ op_RET : {
   } else {
     Value* base = f->stack_base;
     const uint32_t nargout = f->nargout;
-    if (nargout != 0) {  // a procedure's call (PDL's, ST's) wants none
+    if (nargout != 0) {  // a function's call (Gold's)
       const Value* outputs = f->locals + routines_[f->routine].inputs;
       if (nargout == 1) {
         base[0] = outputs[0];
@@ -723,7 +729,7 @@ op_RET : {
     sp = base + nargout;
     if (depth == 0) goto finished;
     ip = code + f->return_pc;
-    locals = f[-1].locals;  // the caller's frame, just below
+    locals = f[-1].locals;
   }
   if (lines.now == 0) goto out_of_lines;
   DISPATCH();
