@@ -632,9 +632,10 @@ op_CALL : {
 op_CALLFEOL : {
   // A frame in the data memory at the memory stack's pointer (local 0), below its limit (local
   // 1): the arguments into it, its other words after them to 0, the line's end, then the call.
-  // Each step reads again what it needs (B, local 0, the routine's record): the loop's
-  // registers hold its own state, and a value kept across a step's stores went through the
-  // stack.
+  // Each step reads again what it needs (B, local 0, the routine's record) rather than keep it
+  // across the step before: the loop's registers hold its own state, and what was kept went
+  // through the stack. So the return pc counts from code_, not from the loop's copy `code`:
+  // with it the compiler shared `ip - code` with the errors' SAVE, computed before the checks.
   const RoutineInfo* const r = routines_ + A();
   {
     const uint32_t shape = B();
@@ -655,17 +656,17 @@ op_CALLFEOL : {
     const uint32_t shape = B();
     const uint32_t arguments = bytecode::memory_frame_arguments(shape);
     const uint32_t first = bytecode::memory_frame_first(shape);
-    Value* const parameters = memory_ + static_cast<uint32_t>(locals[0].i) + first;
+    const auto at = static_cast<uint32_t>(locals[0].i);
+    Value* const parameters = memory_ + at + first;
     sp -= arguments;
     copy_words(parameters, sp, arguments);
     zero_words(parameters + arguments, bytecode::memory_frame_words(shape) - first - arguments);
+    tp->locals_top[0].i = static_cast<int32_t>(at + bytecode::memory_frame_words(shape));
   }
   {
     const uint32_t inputs = r->inputs;
     Value* const callee = tp->locals_top;
-    const auto at = static_cast<uint32_t>(locals[0].i);
-    callee[inputs - 1].i = static_cast<int32_t>(at);
-    callee[0].i = static_cast<int32_t>(at + bytecode::memory_frame_words(B()));
+    callee[inputs - 1].i = locals[0].i;
     copy_words(callee + 1, locals + 1, inputs - 2);
     zero_words(callee + inputs, r->locals - inputs);
   }
@@ -673,7 +674,7 @@ op_CALLFEOL : {
     const uint32_t depth = tp->frame_count;
     Frame& f = tp->frames[depth];
     Value* const callee = tp->locals_top;
-    f.return_pc = static_cast<uint32_t>(ip - code) + 2;
+    f.return_pc = static_cast<uint32_t>(ip + 2 - code_);
     f.routine = A();
     f.locals = callee;
     f.stack_base = sp;
