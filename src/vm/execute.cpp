@@ -37,10 +37,14 @@ void write_pair(Value* at, TypedValue v) {
   at[1] = Value::of_int(v.is_float() ? 1 : 0);
 }
 // A call's words copied or set to 0: frames mostly have a few, which a call of memcpy or memset
-// (what a plain loop compiles to) or a jump table would cost more than. 2 to 4 words are two
-// 8-byte moves that may overlap.
+// (what a plain loop compiles to) or a jump table would cost more than. 2 words are one 8-byte
+// move, 3 or 4 two that may overlap.
 void copy_words(Value* to, const Value* from, uint32_t n) {
-  if (n - 2 <= 2) {
+  if (n == 2) {  // PDL's stack registers, limit and base; a call's two arguments or locals
+    uint64_t both = 0;
+    std::memcpy(&both, from, sizeof both);
+    std::memcpy(static_cast<void*>(to), &both, sizeof both);
+  } else if (n - 3 <= 1) {
     uint64_t head = 0, tail = 0;
     std::memcpy(&head, from, sizeof head);
     std::memcpy(&tail, from + n - 2, sizeof tail);
@@ -53,7 +57,10 @@ void copy_words(Value* to, const Value* from, uint32_t n) {
   }
 }
 void zero_words(Value* to, uint32_t n) {
-  if (n - 2 <= 2) {
+  if (n == 2) {
+    const uint64_t zero = 0;
+    std::memcpy(static_cast<void*>(to), &zero, sizeof zero);
+  } else if (n - 3 <= 1) {
     const uint64_t zero = 0;
     std::memcpy(static_cast<void*>(to), &zero, sizeof zero);
     std::memcpy(static_cast<void*>(to + n - 2), &zero, sizeof zero);
@@ -609,53 +616,82 @@ op_CALL : {
 op_CALLFEOL : {
   // A frame in the data memory at the memory stack's pointer (local 0), below its limit (local
   // 1): the arguments into it, its other words after them to 0, the line's end, then the call.
-  const RoutineInfo& r = routines_[A()];
-  const uint32_t shape = B();
-  const uint32_t arguments = bytecode::memory_frame_arguments(shape);
-  const uint32_t first = bytecode::memory_frame_first(shape);
-  const auto at = static_cast<uint32_t>(locals[0].i);
-  const uint32_t frame_end = at + bytecode::memory_frame_words(shape);
-  if (frame_end < at || frame_end > memory_words_) FAIL(RunError::BadAddress);
-  if (frame_end > static_cast<uint32_t>(locals[1].i)) FAIL(RunError::CallDepth);
-  Value* base = sp - arguments;
-  Value* callee = tp->locals_top;
-  if (tp->frame_count >= config_.frames) FAIL(RunError::CallDepth);
-  if (r.locals > static_cast<size_t>(tp->locals_end - callee)) FAIL(RunError::LocalsExhausted);
-  if (base > call_limit) FAIL(RunError::StackOverflow);
-  Value* frame = memory_ + at;
-  copy_words(frame + first, base, arguments);
-  zero_words(frame + first + arguments, frame_end - at - first - arguments);
-  Frame& f = tp->frames[tp->frame_count++];
-  f.return_pc = static_cast<uint32_t>(ip - code) + 2;
-  f.routine = A();
-  f.locals = callee;
-  f.stack_base = base;
-  f.nargout = 0;
-  f.kind = FrameKind::Call;
-  callee[0].i = static_cast<int32_t>(frame_end);
-  copy_words(callee + 1, locals + 1, r.inputs - 2);
-  callee[r.inputs - 1].i = static_cast<int32_t>(at);
-  zero_words(callee + r.inputs, r.locals - r.inputs);
-  tp->locals_top = callee + r.locals;
-  sp = base;
-  locals = callee;
-  ip = code + r.entry;
+  // Each step reads again what it needs (B, local 0, the routine's record) rather than keep it
+  // across the step before: the loop's registers hold its own state, and what was kept went
+  // through the stack. So the return pc counts from code_, not from the loop's copy `code`:
+  // with it the compiler shared `ip - code` with the errors' SAVE, computed before the checks.
+  const RoutineInfo* const r = routines_ + A();
+  {
+    const uint32_t shape = B();
+    const auto at = static_cast<uint32_t>(locals[0].i);
+    const uint64_t frame_end = uint64_t{at} + bytecode::memory_frame_words(shape);  // no wrap
+    if (frame_end > memory_words_) [[unlikely]]
+      FAIL(RunError::BadAddress);
+    if (frame_end > static_cast<uint32_t>(locals[1].i)) [[unlikely]]
+      FAIL(RunError::CallDepth);
+    if (tp->frame_count >= config_.frames) [[unlikely]]
+      FAIL(RunError::CallDepth);
+    if (r->locals > static_cast<size_t>(tp->locals_end - tp->locals_top)) [[unlikely]]
+      FAIL(RunError::LocalsExhausted);
+    if (sp - bytecode::memory_frame_arguments(shape) > call_limit) [[unlikely]]
+      FAIL(RunError::StackOverflow);
+  }
+  {
+    const uint32_t shape = B();
+    const uint32_t arguments = bytecode::memory_frame_arguments(shape);
+    const uint32_t first = bytecode::memory_frame_first(shape);
+    const auto at = static_cast<uint32_t>(locals[0].i);
+    Value* const parameters = memory_ + at + first;
+    sp -= arguments;
+    copy_words(parameters, sp, arguments);
+    zero_words(parameters + arguments, bytecode::memory_frame_words(shape) - first - arguments);
+    tp->locals_top[0].i = static_cast<int32_t>(at + bytecode::memory_frame_words(shape));
+  }
+  {
+    const uint32_t inputs = r->inputs;
+    Value* const callee = tp->locals_top;
+    callee[inputs - 1].i = locals[0].i;
+    copy_words(callee + 1, locals + 1, inputs - 2);
+    zero_words(callee + inputs, r->locals - inputs);
+  }
+  {
+    const uint32_t depth = tp->frame_count;
+    Frame& f = tp->frames[depth];
+    Value* const callee = tp->locals_top;
+    f.return_pc = static_cast<uint32_t>(ip + 2 - code_);
+    f.routine = A();
+    f.locals = callee;
+    f.stack_base = sp;
+    f.nargout = 0;
+    f.kind = FrameKind::Call;
+    tp->frame_count = depth + 1;
+    tp->locals_top = callee + r->locals;
+    locals = callee;
+    ip = code + r->entry;
+  }
   if (--back_jumps.now == 0) goto out_of_back_jumps_at_line_end;
   if (--lines.now == 0) goto out_of_lines;
   DISPATCH_NEXT();
 }
 op_RET : {
-  const Frame& f = tp->frames[tp->frame_count - 1];
-  tp->frame_count--;
-  tp->locals_top = f.locals;
-  while (tp->handler_count > 0 && tp->handlers[tp->handler_count - 1].frame_count > tp->frame_count)
+  const uint32_t depth = tp->frame_count - 1;  // the frames that stay
+  const Frame* const f = tp->frames + depth;
+  tp->frame_count = depth;
+  tp->locals_top = f->locals;
+  while (tp->handler_count > 0 && tp->handlers[tp->handler_count - 1].frame_count > depth)
     tp->handler_count--;
-  if (f.kind == FrameKind::Event) {
-    sp = f.stack_base;
-    ip = code + f.return_pc;
-    locals = tp->frames[tp->frame_count - 1].locals;
-    set_status(*tp, f.saved_status);
-    tp->wake_us = f.saved_wake_us;
+  // A call's frame that wants no outputs (every procedure's): its two bytes side by side, one
+  // test.
+  if ((f->nargout | (static_cast<uint32_t>(f->kind) << 8)) == 0 && depth != 0) {
+    sp = f->stack_base;
+    ip = code + f->return_pc;
+    locals = f[-1].locals;  // the caller's frame, just below
+  } else if (f->kind == FrameKind::Event) {
+    sp = f->stack_base;
+    ip = code + f->return_pc;
+    locals = f[-1].locals;
+    set_status(*tp, f->saved_status);
+    tp->wake_us = f->saved_wake_us;
     if (tp->status == ThreadStatus::Waiting) {
       end = SliceEnd::Waiting;
       goto stop;
@@ -665,19 +701,20 @@ op_RET : {
       goto stop;
     }
   } else {
-    Value* base = f.stack_base;
-    if (f.nargout != 0) {  // a procedure's call (PDL's, ST's) wants none
-      const Value* outputs = f.locals + routines_[f.routine].inputs;
-      if (f.nargout == 1) {
+    Value* base = f->stack_base;
+    const uint32_t nargout = f->nargout;
+    if (nargout != 0) {  // a function's call (Gold's)
+      const Value* outputs = f->locals + routines_[f->routine].inputs;
+      if (nargout == 1) {
         base[0] = outputs[0];
       } else {
-        for (uint32_t i = 0; i < f.nargout; ++i) base[i] = outputs[i];
+        for (uint32_t i = 0; i < nargout; ++i) base[i] = outputs[i];
       }
     }
-    sp = base + f.nargout;
-    if (tp->frame_count == 0) goto finished;
-    ip = code + f.return_pc;
-    locals = tp->frames[tp->frame_count - 1].locals;
+    sp = base + nargout;
+    if (depth == 0) goto finished;
+    ip = code + f->return_pc;
+    locals = f[-1].locals;
   }
   if (lines.now == 0) goto out_of_lines;
   DISPATCH();
