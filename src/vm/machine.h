@@ -319,7 +319,7 @@ inline SliceResult Machine::run_round(Round& round, const Budget& budget) {
   return execute(threads_[round.at], budget, &round);
 }
 // The frame of `routine` on t: its inputs, which end at `base` on the stack, become its first
-// locals and the others start at zero. The checks are the caller's (enter(), start()).
+// locals and the others start at zero. The checks are the caller's (enter(), start(), restart()).
 inline void Machine::push_frame(Thread& t, uint32_t routine, Value* base, uint32_t return_pc,
                                 uint8_t nargout, FrameKind kind) {
   const RoutineInfo& r = routines_[routine];
