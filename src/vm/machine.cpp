@@ -153,6 +153,7 @@ LoadStatus Machine::load(const uint8_t* bytes, size_t size, const MachineConfig&
   for (uint32_t i = 0; i < thread_count_; ++i) {
     Thread& t = threads_[i];
     t = Thread{};
+    t.status_bit = i < 32 ? 1u << i : 0u;
     t.stack = a.take<Value>(config.stack);
     t.locals = a.take<Value>(config.locals);
     t.locals_end = t.locals + config.locals;
@@ -174,40 +175,6 @@ LoadStatus Machine::load(const uint8_t* bytes, size_t size, const MachineConfig&
   max_depth_ = verified.max_depth;
   loaded_ = true;
   return status;
-}
-
-void Machine::reset_thread(Thread& t) {
-  set_status(t, ThreadStatus::Idle);
-  t.pc = 0;
-  t.wake_us = 0;
-  t.sp = t.stack;
-  t.locals_top = t.locals;
-  t.frame_count = 0;
-  t.handler_count = 0;
-  t.step_over = false;
-  t.status_before_halt = ThreadStatus::Running;
-}
-
-// The frame of `routine` on t: its inputs, which end at `base` on the stack, become its first
-// locals and the others start at zero. The checks are the caller's (enter(), start()).
-inline void Machine::push_frame(Thread& t, uint32_t routine, Value* base, uint32_t return_pc,
-                                uint8_t nargout, FrameKind kind) {
-  const RoutineInfo& r = routines_[routine];
-  Frame& f = t.frames[t.frame_count++];
-  f.return_pc = return_pc;
-  f.routine = routine;
-  f.locals = t.locals_top;
-  f.stack_base = base;
-  f.saved_wake_us = t.wake_us;
-  f.nargout = nargout;
-  f.kind = kind;
-  f.saved_status = t.status;
-  Value* locals = t.locals_top;
-  for (uint32_t i = 0; i < r.inputs; ++i) locals[i] = base[i];
-  for (uint32_t i = r.inputs; i < r.locals; ++i) locals[i] = Value::of_bits(0);
-  t.locals_top = locals + r.locals;
-  t.sp = base;
-  t.pc = r.entry;
 }
 
 bool Machine::enter(Thread& t, uint32_t routine, uint32_t return_pc, uint8_t nargout,
@@ -239,7 +206,9 @@ RunError Machine::start(uint32_t thread, uint32_t routine, const Value* args, ui
   const RoutineInfo& r = routines_[routine];
   if (arg_count != r.inputs) return RunError::BadArguments;
   Thread& t = threads_[thread];
-  reset_thread(t);
+  // Only reset_thread() makes a thread idle: one that finished or was killed is reset already
+  // (a cyclic task's next run starts here).
+  if (t.status != ThreadStatus::Idle) reset_thread(t);
   const RunError refused = arg_count > config_.stack    ? RunError::StackOverflow
                            : config_.frames == 0        ? RunError::CallDepth
                            : r.locals > config_.locals  ? RunError::LocalsExhausted

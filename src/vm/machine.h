@@ -102,6 +102,10 @@ class Machine {
   // Starts routine `routine` on `thread` afresh, with `arg_count` inputs.
   RunError start(uint32_t thread, uint32_t routine, const Value* args = nullptr,
                  uint32_t arg_count = 0);
+  // start(thread, routine), inline for the usual case: a routine without inputs on a thread that
+  // is idle (it finished, or was killed). A cyclic task begins every run so (the S300's PLC62
+  // 16 000 times a virtual second).
+  RunError restart(uint32_t thread, uint32_t routine);
   // Enters routine `routine` (no inputs) on top of what the thread is doing; when it returns,
   // the thread continues where it was, as it was (running, waiting or halted). An idle or
   // failed thread simply starts the routine; a failed one keeps its last_error() for it.
@@ -224,6 +228,7 @@ class Machine {
     Value* locals_end;
     Frame* frames;
     uint32_t frame_count;
+    uint32_t status_bit;  // its bit in threads_in()'s masks (none from thread 32 on)
     Handler* handlers;
     uint32_t handler_count;
     bool step_over;  // resumed at a breakpoint: run the original instruction first
@@ -249,7 +254,7 @@ class Machine {
                   FrameKind kind);  // enter()'s frame, its checks made
   // Delivers a run-time error: true when a try block caught it and the thread continues.
   bool raise(Thread& t, RunError error, int32_t detail);
-  void reset_thread(Thread& t);
+  void reset_thread(Thread& t);  // the only way a thread becomes idle: an idle one is reset
   void set_status(Thread& t, ThreadStatus s);  // the status and threads_in() together
   bool is_instruction_start(uint32_t pc) const;
   void unfuse_around(uint32_t pc);
@@ -279,6 +284,19 @@ class Machine {
   uint32_t breakpoint_count_ = 0;
 };
 
+inline RunError Machine::restart(uint32_t thread, uint32_t routine) {
+  // An idle thread is reset: no frame, its stack and locals free, so of start()'s checks only
+  // the locals' is left (load() refuses no frames, the verifier a depth beyond the stack).
+  if (!loaded_ || thread >= thread_count_ || routine >= routine_count_ ||
+      threads_[thread].status != ThreadStatus::Idle || routines_[routine].inputs != 0 ||
+      routines_[routine].locals > config_.locals)
+    return start(thread, routine);
+  Thread& t = threads_[thread];
+  set_status(t, ThreadStatus::Running);
+  push_frame(t, routine, t.stack, 0, 0, FrameKind::Call);
+  t.last_error = RunError::None;
+  return RunError::None;
+}
 inline bool Machine::starts_plainly(uint32_t thread) const {
   return loaded_ && thread < thread_count_ && starts_plainly(threads_[thread]);
 }
@@ -300,6 +318,28 @@ inline SliceResult Machine::run_round(Round& round, const Budget& budget) {
     return {SliceEnd::NotRunning, 0};
   return execute(threads_[round.at], budget, &round);
 }
+// The frame of `routine` on t: its inputs, which end at `base` on the stack, become its first
+// locals and the others start at zero. The checks are the caller's (enter(), start(), restart()).
+inline void Machine::push_frame(Thread& t, uint32_t routine, Value* base, uint32_t return_pc,
+                                uint8_t nargout, FrameKind kind) {
+  const RoutineInfo& r = routines_[routine];
+  Frame& f = t.frames[t.frame_count++];
+  f.return_pc = return_pc;
+  f.routine = routine;
+  f.locals = t.locals_top;
+  f.stack_base = base;
+  f.saved_wake_us = t.wake_us;
+  f.nargout = nargout;
+  f.kind = kind;
+  f.saved_status = t.status;
+  Value* locals = t.locals_top;
+  for (uint32_t i = 0; i < r.inputs; ++i) locals[i] = base[i];
+  for (uint32_t i = r.inputs; i < r.locals; ++i) locals[i] = Value::of_bits(0);
+  t.locals_top = locals + r.locals;
+  t.sp = base;
+  t.pc = r.entry;
+}
+
 inline bool Machine::at_bare_end(const Thread& t) const {
   return t.pc < code_size_ && is_bare_end(bytecode::word_op(code_[t.pc]), t.frame_count);
 }
@@ -322,13 +362,21 @@ inline Machine::Thread* Machine::next_in_round(Round& round, bytecode::Op next_o
   return &t;
 }
 inline void Machine::set_status(Thread& t, ThreadStatus s) {
-  const auto index = static_cast<size_t>(&t - threads_);
-  if (index < 32) {
-    const uint32_t bit = 1u << index;
-    in_status_[static_cast<uint8_t>(t.status)] &= ~bit;
-    in_status_[static_cast<uint8_t>(s)] |= bit;
-  }
+  in_status_[static_cast<uint8_t>(t.status)] &= ~t.status_bit;
+  in_status_[static_cast<uint8_t>(s)] |= t.status_bit;
   t.status = s;
+}
+// Inline: a program's end resets its thread (a cyclic task's every run).
+inline void Machine::reset_thread(Thread& t) {
+  set_status(t, ThreadStatus::Idle);
+  t.pc = 0;
+  t.wake_us = 0;
+  t.sp = t.stack;
+  t.locals_top = t.locals;
+  t.frame_count = 0;
+  t.handler_count = 0;
+  t.step_over = false;
+  t.status_before_halt = ThreadStatus::Running;
 }
 inline ThreadStatus Machine::status(uint32_t thread) const {
   return thread < thread_count_ ? threads_[thread].status : ThreadStatus::Idle;

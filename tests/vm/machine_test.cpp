@@ -754,5 +754,84 @@ on_event:
   expect_masks_match(m);
 }
 
+// restart() is start() without inputs, for a cyclic task's next run: on an idle thread (its
+// routine finished, or it was killed) the routine begins afresh, its locals at 0; a thread that
+// is still running, or stopped by an error, is reset first; refusals are start()'s.
+TEST(Machine, RestartBeginsTheRoutineAfreshAsStartDoes) {
+  const char* text = R"(
+.global int "runs" 1
+.global int "seen" 1
+.routine function "main" in=0 out=0 entry=main
+.local int "x"
+.routine function "twice" in=1 out=0 entry=twice
+.local int "y"
+.routine function "fail" in=0 out=0 entry=fail
+main:
+  LDL 0
+  PUSHI 1
+  ADDI
+  STL 0
+  LDL 0
+  STG seen
+  LDG runs
+  PUSHI 1
+  ADDI
+  STG runs
+  EOL
+  RET
+twice:
+  RET
+fail:
+  PUSHI 1
+  PUSHI 0
+  DIVI
+  POP
+  RET
+)";
+  LoadedProgram p;
+  ASSERT_TRUE(p.load(text));
+  vm::Machine& m = p.machine;
+  for (int32_t run = 1; run <= 2; ++run) {  // its local starts at 0 each time: seen stays 1
+    ASSERT_EQ(m.restart(0, 0), vm::RunError::None);
+    EXPECT_EQ(m.status(0), ThreadStatus::Running);
+    expect_masks_match(m);
+    EXPECT_EQ(p.run_to_end().end, SliceEnd::Finished);
+    EXPECT_EQ(m.status(0), ThreadStatus::Idle);
+    EXPECT_EQ(p.global("runs").i, run);
+    EXPECT_EQ(p.global("seen").i, 1);
+  }
+  // Stopped in the middle (LDL, PUSHI run): the next restart begins at the top, its stack empty.
+  ASSERT_EQ(m.restart(0, 0), vm::RunError::None);
+  EXPECT_EQ(m.run_slice(0, Budget::of_instructions(2)).end, SliceEnd::BudgetSpent);
+  EXPECT_EQ(m.operand_stack(0).size(), 2u);
+  ASSERT_EQ(m.restart(0, 0), vm::RunError::None);
+  EXPECT_EQ(m.pc(0), 0u);
+  EXPECT_EQ(m.frame_count(0), 1u);
+  EXPECT_TRUE(m.operand_stack(0).empty());
+  EXPECT_EQ(p.run_to_end().end, SliceEnd::Finished);
+  EXPECT_EQ(p.global("runs").i, 3);
+  EXPECT_EQ(p.global("seen").i, 1);
+  // Stopped by an error: restarted with no error left.
+  ASSERT_EQ(m.restart(0, 2), vm::RunError::None);
+  EXPECT_EQ(p.run_to_end().end, SliceEnd::Error);
+  EXPECT_EQ(m.last_error(0), vm::RunError::DivisionByZero);
+  ASSERT_EQ(m.restart(0, 0), vm::RunError::None);
+  EXPECT_EQ(m.last_error(0), vm::RunError::None);
+  EXPECT_EQ(p.run_to_end().end, SliceEnd::Finished);
+  expect_masks_match(m);
+  // start()'s refusals, the idle thread left as it was.
+  EXPECT_EQ(m.restart(0, 1), vm::RunError::BadArguments);  // "twice" takes an input
+  EXPECT_EQ(m.restart(7, 0), vm::RunError::NoSuchThread);
+  EXPECT_EQ(m.restart(0, 9), vm::RunError::NoSuchRoutine);
+  EXPECT_EQ(m.status(0), ThreadStatus::Idle);
+  LoadedProgram small;
+  vm::MachineConfig no_locals;
+  no_locals.locals = 0;
+  ASSERT_TRUE(small.load(text, no_locals));
+  EXPECT_EQ(small.machine.restart(0, 0), vm::RunError::LocalsExhausted);  // "main" needs one
+  EXPECT_EQ(small.machine.status(0), ThreadStatus::Idle);
+  EXPECT_EQ(small.machine.restart(0, 2), vm::RunError::None);  // "fail" needs none
+}
+
 }  // namespace
 }  // namespace uprog::test

@@ -176,23 +176,62 @@ Report CyclicTasks::run(vm::Machine& machine, uint64_t now_ns) {
   if (s.ran) report.mark_ran(thread);
   if (s.end == vm::SliceEnd::Error) report.add(thread, ThreadEvent::Error);
   if (s.end == vm::SliceEnd::Breakpoint) report.add(thread, ThreadEvent::Breakpoint);
-  return {s.end, lines_of(s) + charged_, charged_ != 0};
+  return {lines_of(s) + charged_, s.end, charged_ != 0};
 }
 
 // Up to `lines` lines in one slice. A host call that charged lines and ended the slice (a costly
 // one) has its line finished in the same step, so that the budget is looked at only where a line
-// ends; the program's own yield pauses the run as a wait does.
-CyclicTasks::Step CyclicTasks::slice(vm::Machine& machine, uint32_t thread, uint64_t lines,
-                                     Report& report) {
-  Step s = step(machine, thread, lines, report);
+// ends; the program's own yield pauses the run as a wait does. Inline, the rare part apart: every
+// run of every task goes through it.
+inline CyclicTasks::Step CyclicTasks::slice(vm::Machine& machine, uint32_t thread, uint64_t lines,
+                                            Report& report) {
+  const Step s = step(machine, thread, lines, report);
+  if (s.end == vm::SliceEnd::Yielded && s.charged) [[unlikely]]
+    return finish_charged_line(machine, thread, s, report);
+  return s;
+}
+
+[[gnu::noinline]] CyclicTasks::Step CyclicTasks::finish_charged_line(vm::Machine& machine,
+                                                                     uint32_t thread, Step s,
+                                                                     Report& report) {
   while (s.end == vm::SliceEnd::Yielded && s.charged) {
     const Step rest = step(machine, thread, 1, report);
-    s = {rest.end, s.cost + rest.cost, rest.charged};
+    s = {s.cost + rest.cost, rest.end, rest.charged};
   }
   return s;
 }
 
-CyclicTasks::Flow CyclicTasks::run_tick(vm::Machine& machine, uint64_t tick, Report& report) {
+// Inline: every run begins and ends through them.
+inline bool CyclicTasks::begin_run(vm::Machine& machine, Task& task) {
+  // start() proved that it starts (false only when the machine changed under the schedule).
+  if (machine.restart(task.stats.thread, task.routine) != vm::RunError::None) return false;
+  task.state = RunState::InRun;
+  task.run_lines = 0;
+  return true;
+}
+
+// Whether a run under way may take its next slice: not when its thread was killed from outside
+// (the next period starts afresh), nor while it is halted or at a breakpoint (until resumed).
+inline bool CyclicTasks::goes_on(const vm::Machine& machine, Task& task) {
+  const vm::ThreadStatus status = machine.status(task.stats.thread);
+  if (status == vm::ThreadStatus::Idle || status == vm::ThreadStatus::Error) {
+    task.state = RunState::Ready;
+    return false;
+  }
+  return can_step(status);
+}
+
+inline void CyclicTasks::end_run(Task& task) {
+  task.state = RunState::Ready;
+  ++task.stats.runs;
+  task.stats.last_run_lines = task.run_lines;
+  if (task.run_lines > task.stats.largest_run_lines) task.stats.largest_run_lines = task.run_lines;
+}
+
+// Inline into run(), as run_task() into it: the whole schedule of a tick in one function.
+[[gnu::always_inline]] inline CyclicTasks::Flow CyclicTasks::run_tick(vm::Machine& machine,
+                                                                      uint64_t tick,
+                                                                      Report& report) {
   for (uint32_t i = 0; i < task_count_; ++i) {
     Task& task = tasks_[i];
     // A tick whose call ended early skipped the tasks after the one that ended it: they wait
@@ -205,20 +244,17 @@ CyclicTasks::Flow CyclicTasks::run_tick(vm::Machine& machine, uint64_t tick, Rep
   return Flow::Continue;
 }
 
-CyclicTasks::Flow CyclicTasks::run_task(vm::Machine& machine, Task& task, Report& report) {
+[[gnu::always_inline]] inline CyclicTasks::Flow CyclicTasks::run_task(vm::Machine& machine,
+                                                                      Task& task, Report& report) {
   const uint32_t thread = task.stats.thread;
   if (task.state == RunState::Stopped) return Flow::Continue;
   if (task.state == RunState::Ready) {
-    if (held_bit(thread)) return Flow::Continue;  // held between runs
-    begin_run(machine, task);
+    // Held between runs, else a run begins: its thread runs (no status to look at).
+    if (held_bit(thread) || !begin_run(machine, task)) return Flow::Continue;
+  } else if (!goes_on(machine, task)) {
+    return Flow::Continue;
   }
   for (;;) {
-    const vm::ThreadStatus status = machine.status(thread);
-    if (status == vm::ThreadStatus::Idle || status == vm::ThreadStatus::Error) {
-      task.state = RunState::Ready;  // killed from outside: the next period starts afresh
-      return Flow::Continue;
-    }
-    if (!can_step(status)) return Flow::Continue;  // halted, at a breakpoint: until resumed
     if (task.run_lines >= task.stats.budget_lines) return overrun(machine, task, report);
     const Step s = slice(machine, thread, task.stats.budget_lines - task.run_lines, report);
     task.run_lines += s.cost;
@@ -226,7 +262,9 @@ CyclicTasks::Flow CyclicTasks::run_task(vm::Machine& machine, Task& task, Report
     switch (s.end) {
       case vm::SliceEnd::LineEnd:
       case vm::SliceEnd::BudgetSpent:
-        continue;  // the run goes on; the next turn of the loop checks its budget
+        // The run goes on, unless a host call stopped its thread; then its budget is looked at.
+        if (!goes_on(machine, task)) return Flow::Continue;
+        continue;
       case vm::SliceEnd::Finished:
         if (task.run_lines > task.stats.budget_lines) return overrun(machine, task, report);
         end_run(task);
@@ -238,19 +276,6 @@ CyclicTasks::Flow CyclicTasks::run_task(vm::Machine& machine, Task& task, Report
         return Flow::Continue;  // a wait, a yield, a breakpoint: the run pauses
     }
   }
-}
-
-void CyclicTasks::begin_run(vm::Machine& machine, Task& task) {
-  machine.start(task.stats.thread, task.routine);  // start() proved that it starts
-  task.state = RunState::InRun;
-  task.run_lines = 0;
-}
-
-void CyclicTasks::end_run(Task& task) {
-  task.state = RunState::Ready;
-  ++task.stats.runs;
-  task.stats.last_run_lines = task.run_lines;
-  if (task.run_lines > task.stats.largest_run_lines) task.stats.largest_run_lines = task.run_lines;
 }
 
 CyclicTasks::Flow CyclicTasks::overrun(vm::Machine& machine, Task& task, Report& report) {

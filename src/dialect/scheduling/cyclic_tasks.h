@@ -124,17 +124,19 @@ class CyclicTasks {
   };
   // How a run of steps ended: the caller goes on, or the call ends (overrun, error).
   enum class Flow : uint8_t { Continue, EndCall };
+  // The count first: 16 bytes, returned in two registers.
   struct Step {
-    vm::SliceEnd end;
     uint64_t cost;  // lines: those it ended, plus the host's charges
-    bool charged;   // a host call charged lines (and may have ended the slice inside its line)
+    vm::SliceEnd end;
+    bool charged;  // a host call charged lines (and may have ended the slice inside its line)
   };
 
   bool held_bit(uint32_t thread) const {
     return thread < kMaxThreads && ((held_ >> thread) & 1u) != 0;
   }
   uint32_t task_index(uint32_t thread) const;  // task_count_ when no real-time task runs on it
-  void begin_run(vm::Machine& machine, Task& task);
+  bool begin_run(vm::Machine& machine, Task& task);  // false: its thread did not start
+  bool goes_on(const vm::Machine& machine, Task& task);
   void end_run(Task& task);
   void end_init(vm::Machine& machine, Report& report);
   void begin_real_time(uint64_t first_tick);
@@ -143,6 +145,7 @@ class CyclicTasks {
   bool routines_start(vm::Machine& machine) const;
   Step step(vm::Machine& machine, uint32_t thread, uint64_t lines, Report& report);
   Step slice(vm::Machine& machine, uint32_t thread, uint64_t lines, Report& report);
+  Step finish_charged_line(vm::Machine& machine, uint32_t thread, Step s, Report& report);
   uint32_t main_passes_done(const vm::Machine& machine) const;
   Flow run_tick(vm::Machine& machine, uint64_t tick, Report& report);
   Flow run_task(vm::Machine& machine, Task& task, Report& report);
