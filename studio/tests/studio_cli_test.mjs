@@ -44,14 +44,26 @@ test("loopback by default: no warning, the page served, SIGTERM ends it with 0",
   assert.deepEqual(await end, { code: 0, signal: null });
 });
 
+// What a child printed on stderr, once it holds `pattern` (stdout and stderr are two pipes: the
+// warning may come after the URL), or all of it after two seconds.
+async function stderrHolding(stderr, pattern) {
+  for (let waited = 0; waited < 2000 && !pattern.test(stderr()); waited += 20)
+    await new Promise((resolve) => setTimeout(resolve, 20));
+  return stderr();
+}
+
 test("another address prints the warning", async () => {
   const { child, url, stderr } = await studio(["--listen", "0.0.0.0:0"]);
-  assert.match(stderr(), /anyone who reaches it can drive the simulated axis/);
-  const port = new URL(url).port;
-  assert.equal((await fetch(`http://127.0.0.1:${port}/`)).status, 200);
   const end = stopped(child);
-  child.kill("SIGTERM");
-  await end;
+  try {
+    const warning = /anyone who reaches it can drive the simulated axis/;
+    assert.match(await stderrHolding(stderr, warning), warning);
+    const port = new URL(url).port;
+    assert.equal((await fetch(`http://127.0.0.1:${port}/`)).status, 200);
+  } finally {
+    child.kill("SIGTERM");
+    await end;
+  }
 });
 
 test("no page, a bad address, an unknown dialect: refused", () => {
