@@ -92,7 +92,12 @@ try:
         if time.time() > deadline:
             sys.exit("task 192 never in position")
         time.sleep(0.05)
-    expect("PFB", "10000")
+    # In position is within PEINPOS of the target: the axis may still settle by a count then.
+    deadline = time.time() + 2
+    while ask("PFB") != ["10000"]:
+        if time.time() > deadline:
+            sys.exit("task 192 never ends at PFB 10000")
+        time.sleep(0.05)
     expect("MOVE", "192")
     expect("DIS")
     expect("SAVE")
