@@ -682,6 +682,7 @@ op_RET : {
     tp->handler_count--;
   // A call's frame that wants no outputs (every procedure's): its two bytes side by side, one
   // test.
+  static_assert(static_cast<uint32_t>(FrameKind::Call) == 0, "a call's frame is kind 0");
   if ((f->nargout | (static_cast<uint32_t>(f->kind) << 8)) == 0 && depth != 0) {
     sp = f->stack_base;
     ip = code + f->return_pc;
