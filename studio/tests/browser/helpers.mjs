@@ -93,21 +93,40 @@ export async function wordBox(page, line, word) {
 }
 
 // A click in the breakpoint gutter of `line`; with `answers`, a right click that answers the
-// condition and hit count prompts.
+// condition and hit count prompts. It returns once the editor holds the change: the line's
+// breakpoint toggled (or, with answers, made conditional). The scroll that brings the line into
+// view lands at the editor's next measure, so a click at a box read before it may miss the
+// line: then the box is read again and the click repeated (three tries).
 export async function clickGutter(page, line, answers) {
-  await goToLineEnd(page, line);
-  const number = page.locator(".cm-lineNumbers .cm-gutterElement",
-    { hasText: new RegExp(`^${line}$`) });
-  const box = await number.boundingBox();
-  const gutter = await page.locator(".cm-breakpoint-gutter").boundingBox();
-  const x = gutter.x + gutter.width / 2, y = box.y + box.height / 2;
-  if (!answers) return page.mouse.click(x, y);
-  const replies = [...answers];
-  const reply = (dialog) => dialog.accept(replies.shift() ?? "");
-  page.on("dialog", reply);
-  await page.mouse.click(x, y, { button: "right" });
-  await page.waitForFunction(() => document.querySelector(".cm-breakpoint-gutter .bp-conditional"));
-  page.off("dialog", reply);
+  const lines = () => page.evaluate(() => window.studio.debug.breakpoints().map((b) => b.line));
+  const before = await lines();
+  for (let attempt = 1; ; ++attempt) {
+    await goToLineEnd(page, line);
+    await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => done())));
+    const number = page.locator(".cm-lineNumbers .cm-gutterElement",
+      { hasText: new RegExp(`^${line}$`) });
+    const box = await number.boundingBox();
+    const gutter = await page.locator(".cm-breakpoint-gutter").boundingBox();
+    const x = gutter.x + gutter.width / 2, y = box.y + box.height / 2;
+    if (!answers) {
+      await page.mouse.click(x, y);
+    } else {
+      const replies = [...answers];
+      const reply = (dialog) => dialog.accept(replies.shift() ?? "");
+      page.on("dialog", reply);
+      await page.mouse.click(x, y, { button: "right" });
+      await page.waitForFunction(() => document.querySelector(".cm-breakpoint-gutter .bp-conditional"),
+        null, { timeout: 2000 }).catch(() => {});
+      page.off("dialog", reply);
+    }
+    if (answers && await page.locator(".cm-breakpoint-gutter .bp-conditional").count()) return;
+    const after = await lines();
+    const toggled = after.filter((n) => !before.includes(n))
+      .concat(before.filter((n) => !after.includes(n)));
+    if (!answers && toggled.length === 1 && toggled[0] === line) return;
+    if (toggled.length) throw new Error(`the gutter click for line ${line} toggled ${toggled}`);
+    if (attempt === 3) throw new Error(`the gutter click on line ${line} did not take (3 tries)`);
+  }
 }
 
 export function variableText(page, name) {

@@ -27,12 +27,16 @@ export async function stepCase(browser, c) {
   const { page, errors, close } = await openStudio(browser, c.file);
   const call = lineOf(c.file, c.call), callee = lineOf(c.file, c.callee);
   c.lines = { [call]: c.call.trim(), [callee]: c.callee.trim() };
+  let where = "the breakpoint on the call";  // what the case waits for, named in its error
   try {
     await clickGutter(page, call);
     await page.selectOption("[data-testid=speed]", "5");
     await page.click("[data-testid=run]");  // Run builds the editor's text first
+    where = "the stop at the call's breakpoint";
     await pausedOn(page, c, call);
+    where = "the breakpoint's removal";
     await clickGutter(page, call);  // off: the steps are the toolbar's
+    where = "the stop after step in";
     await step(page, "debug-step-in");
     const inside = await pausedOn(page, c, callee);
     if (inside.depth < 2) throw new Error(`${c.dialect}: step in left ${inside.depth} frame`);
@@ -41,6 +45,7 @@ export async function stepCase(browser, c) {
     // Without `out` (PUP: see docs/studio.md), step over stays in the callee.
     let back = inside;
     if (c.out) {
+      where = "the stop after step out";
       await step(page, "debug-step-out");
       back = await stoppedFrame(page, 20000);
       const out = lineOf(c.file, ...c.out);
@@ -48,12 +53,14 @@ export async function stepCase(browser, c) {
         throw new Error(`${c.dialect}: step out stopped at ${back.line} (${back.depth} frames)`);
       }
     }
+    where = "the stop after step over";
     await step(page, "debug-step-over");
     const on = await stoppedFrame(page);
     const after = lineOf(c.file, ...c.after);
     if (on.depth !== back.depth || on.line !== after) {
       throw new Error(`${c.dialect}: step over stopped at ${on.line} (${on.depth} frames)`);
     }
+    where = "the run after continue";
     await page.click("[data-testid=debug-continue]");
     await page.waitForFunction(() => !document.querySelector(".cm-paused-line"), null,
       { timeout: 10000 });
@@ -61,7 +68,7 @@ export async function stepCase(browser, c) {
   } catch (e) {
     await page.screenshot({ path: join(shots, `${c.dialect}_steps_failed.png`) });
     const output = await page.locator("[data-testid=output]").textContent();
-    throw new Error(`${e.message}\noutput panel:\n${output}`);
+    throw new Error(`waiting for ${where}: ${e.message}\noutput panel:\n${output}`);
   } finally {
     await close();
   }
