@@ -14,17 +14,6 @@ const char* run_error_text(RunError e) {
   return "unknown run-time error";
 }
 
-const char* run_error_name(RunError e) {
-  switch (e) {
-#define RUN_ERROR(name, code, text) \
-  case RunError::name:              \
-    return #name;
-#include "vm/run_errors.def"
-#undef RUN_ERROR
-  }
-  return "Unknown";
-}
-
 bool run_error_from_code(uint32_t code, RunError& out) {
   switch (code) {
 #define RUN_ERROR(name, code, text) \
