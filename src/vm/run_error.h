@@ -24,6 +24,7 @@ inline const char* run_error_name(RunError e) {
   }
   return "Unknown";
 }
+
 // False when `code` is not a registered error.
 bool run_error_from_code(uint32_t code, RunError& out);
 
