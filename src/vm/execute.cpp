@@ -849,6 +849,13 @@ op_RETEOL:
       ip += kShape.length;      \
     DISPATCH();                 \
   } while (0)
+// The rest runs as written from the pattern's k-th instruction, by that instruction's handler.
+#define GO_ON_AT(k, handler)       \
+  do {                             \
+    ip += fused_offset(kShape, k); \
+    word = *ip;                    \
+    goto handler;                  \
+  } while (0)
 #define FUSED(name, pattern, when, meaning, ...)                        \
   fused_##name : {                                                      \
     [[maybe_unused]] static constexpr FusedShape kShape =               \
@@ -875,6 +882,7 @@ op_RETEOL:
 #undef FUSED_MEMBER
 #undef FUSED
 #undef BRANCH_IF
+#undef GO_ON_AT
 #undef NEXT
 #undef A_AT
 #undef WORD_AT

@@ -35,9 +35,9 @@ constexpr bool fused_op_matches(const FusedShape& s, uint32_t k, bytecode::Op op
 // its jump is one a handler (each inlines its own), which predicts well where a program's
 // sites of it share a relation; on ST's loop it measured 8% faster than a branch-free table of
 // the four states (<, ==, >, unordered), 0.489 s against 0.532 s (medians of 5, alternated).
-// For floats where the relation is not a constant, that table: the six-way switch took twice
-// its room in the embeddable core (each switching handler carries its own), for about 3 % of
-// Gold's profile (docs/architecture.md).
+// For floats the table was tried again for room in the embeddable core (half the switch's
+// bytes in each switching handler): 3 % slower on Gold's profile, so the switch stays
+// (docs/architecture.md).
 template <typename T>
 constexpr bool relation_holds(uint32_t relation, T a, T b) {
   switch (relation) {

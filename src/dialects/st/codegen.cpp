@@ -397,11 +397,11 @@ class Generator {
   // bound is passed already runs no pass, its line ending before the jump past the loop) and
   // again at the bottom after the step, with no place between them that control arrives at,
   // so that a pass counting up pays one fused step-and-test, INCGJLEGL (docs/architecture.md,
-  // "Fusion at load"). The FOR line ends once on every path: the top
-  // test goes into the body through the EOL at `again`, or (no pass) past the loop by a jump
-  // that ends the line; the bottom one ends it on both paths itself (the peephole's JNZ.eol,
-  // which jumps past that EOL). The bound, literal or not, goes once into the loop's hidden
-  // local, so that every FOR has the one shape.
+  // "Fusion at load"). The FOR line ends once on every path: the top test goes into the body
+  // through the EOL at `again`, or (no pass) past the loop by a jump that ends the line; the
+  // bottom one ends it on both paths itself (the peephole's JNZ.eol, which jumps past that
+  // EOL). The bound, literal or not, goes once into the loop's hidden local, so that every FOR
+  // has the one shape.
   void for_loop(const Stmt& s) {
     const uint32_t bound = kFirstForLocal + static_cast<uint32_t>(s.scratch);
     const L again = b_.new_label(), done = b_.new_label();
