@@ -193,6 +193,12 @@ SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) 
     DISPATCH_NEXT();                                                           \
   } while (0)
 #define DISPATCH() DISPATCH_COUNTING_MARK()
+// A call, a return, RESET and EOL carry no mark (the verifier refuses one): the next at once.
+static_assert(!bytecode::may_end_line(bytecode::Op::CALL) &&
+              !bytecode::may_end_line(bytecode::Op::RET) &&
+              !bytecode::may_end_line(bytecode::Op::RETEOL) &&
+              !bytecode::may_end_line(bytecode::Op::RESET) &&
+              !bytecode::may_end_line(bytecode::Op::EOL));
 #define DISPATCH_NEXT()           \
   do {                            \
     word = *ip;                   \
@@ -606,14 +612,14 @@ op_CALL : {
     locals = callee;
     ip = code + r.entry;
     COUNT_JUMP_BACK();
-    DISPATCH();
+    DISPATCH_NEXT();
   }
   SAVE();
   if (!enter(*tp, A(), tp->pc + 2, static_cast<uint8_t>(B()), FrameKind::Call, error))
     goto raise_error;
   LOAD();
   COUNT_JUMP_BACK();
-  DISPATCH();
+  DISPATCH_NEXT();
 }
 op_CALLFEOL : {
   // A frame in the data memory at the memory stack's pointer (local 0), below its limit (local
@@ -720,7 +726,7 @@ op_RET : {
     locals = f[-1].locals;
   }
   if (lines.now == 0) goto out_of_lines;
-  DISPATCH();
+  DISPATCH_NEXT();
 }
 op_NARGOUT:
   (sp++)->i = tp->frames[tp->frame_count - 1].nargout;
@@ -739,11 +745,11 @@ op_RESET:
   }
   LOAD();
   COUNT_JUMP_BACK();  // a restart is a loop's iteration too
-  DISPATCH();
+  DISPATCH_NEXT();
 op_EOL:
   ++ip;
   if (--lines.now == 0) goto out_of_lines;
-  DISPATCH();
+  DISPATCH_NEXT();
 op_RAISE:
   if (!run_error_from_code(A(), error) || error == RunError::None) error = RunError::Raised;
   goto raise_error;
