@@ -193,12 +193,11 @@ SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) 
     DISPATCH_NEXT();                                                           \
   } while (0)
 #define DISPATCH() DISPATCH_COUNTING_MARK()
-// A call, a return, RESET and EOL carry no mark (the verifier refuses one): the next at once.
-static_assert(!bytecode::may_end_line(bytecode::Op::CALL) &&
-              !bytecode::may_end_line(bytecode::Op::RET) &&
-              !bytecode::may_end_line(bytecode::Op::RETEOL) &&
-              !bytecode::may_end_line(bytecode::Op::RESET) &&
-              !bytecode::may_end_line(bytecode::Op::EOL));
+  // A call, a return, RESET and EOL carry no mark (the verifier refuses one): the next at once.
+  static_assert(
+      !bytecode::may_end_line(bytecode::Op::CALL) && !bytecode::may_end_line(bytecode::Op::RET) &&
+      !bytecode::may_end_line(bytecode::Op::RETEOL) &&
+      !bytecode::may_end_line(bytecode::Op::RESET) && !bytecode::may_end_line(bytecode::Op::EOL));
 #define DISPATCH_NEXT()           \
   do {                            \
     word = *ip;                   \

@@ -110,8 +110,8 @@ enum class Fused : uint8_t {
 #undef FUSED
 };
 
-// The patterns in full: what the quickener matches (and tools show). The execute loop copies
-// each handler's into a constexpr of its own, so that firmware carries the table once.
+// The patterns in full, for what runs at compile time (the execute loop's handlers, the
+// quickener's WHEN) and for tools; the quickener matches kPackedPatterns (below).
 inline constexpr const FusedShape* kFusedShapes = fused_detail::kShapes;
 inline constexpr uint32_t kFusedCount = sizeof(fused_detail::kShapes) / sizeof(FusedShape);
 inline constexpr uint32_t kFirstFused = bytecode::kOpCount;
@@ -155,6 +155,34 @@ constexpr FusedBases make_fused_bases() {
   return b;
 }
 inline constexpr FusedBases kFusedBases = make_fused_bases();
+
+// The patterns as the quickener reads them when an image loads: each pattern's base opcodes one
+// after another, where each pattern's start, and its folded relation's place. kShapes keeps 14
+// opcodes for every pattern, most of them unused; only compile-time code reads it, so firmware
+// carries this table alone (half the bytes, scripts/footprint).
+constexpr uint32_t count_pattern_ops() {
+  uint32_t n = 0;
+  for (const FusedShape& s : fused_detail::kShapes) n += s.count;
+  return n;
+}
+struct PackedPatterns {
+  uint8_t ops[count_pattern_ops()];
+  uint16_t start[kFusedCount + 1];   // pattern f's opcodes: ops[start[f]] to ops[start[f + 1]]
+  uint8_t relation_at[kFusedCount];  // FusedShape's
+};
+constexpr PackedPatterns make_packed_patterns() {
+  PackedPatterns p{};
+  uint32_t at = 0;
+  for (uint32_t f = 0; f < kFusedCount; ++f) {
+    const FusedShape& s = fused_detail::kShapes[f];
+    p.start[f] = static_cast<uint16_t>(at);
+    p.relation_at[f] = s.relation_at;
+    for (uint32_t k = 0; k < s.count; ++k) p.ops[at++] = static_cast<uint8_t>(s.ops[k]);
+  }
+  p.start[kFusedCount] = static_cast<uint16_t>(at);
+  return p;
+}
+inline constexpr PackedPatterns kPackedPatterns = make_packed_patterns();
 
 // The opcode of fused instruction f, a folded family's for `relation` (0..5).
 constexpr uint32_t fused_number(Fused f, uint32_t relation = 0) {

@@ -8,6 +8,31 @@ namespace {
 
 using bytecode::Op;
 
+// Pattern f as kPackedPatterns holds it: what the quickener reads at load.
+struct Pattern {
+  const uint8_t* ops;
+  uint32_t count;
+  uint32_t length;
+  uint32_t relation_at;
+  bool per_relation;
+  bytecode::Op op(uint32_t k) const { return static_cast<bytecode::Op>(ops[k]); }
+  uint32_t offset(uint32_t k) const {  // of the k-th instruction, in words from the first
+    uint32_t at = 0;
+    for (uint32_t i = 0; i < k; ++i) at += bytecode::op_length(op(i));
+    return at;
+  }
+};
+Pattern pattern(uint32_t f) {
+  const uint32_t start = kPackedPatterns.start[f];
+  const uint32_t first = kFusedBases.first_opcode[f];
+  const uint32_t next = f + 1 < kFusedCount ? kFusedBases.first_opcode[f + 1] : kFusedOpcodeCount;
+  return {kPackedPatterns.ops + start, kPackedPatterns.start[f + 1] - start,
+          kFusedBases.length[first], kPackedPatterns.relation_at[f], next - first > 1};
+}
+// A pattern's offsets where its WHEN reads them: constants, so that no table of kShapes is kept.
+template <uint32_t f, uint32_t k>
+constexpr uint32_t kOffset = fused_offset(fused_detail::kShapes[f], k);
+
 class Quickener {
  public:
   Quickener(uint32_t* code, uint32_t size, uint32_t* entered)
@@ -23,10 +48,10 @@ class Quickener {
   uint32_t match(uint32_t pc) const {
     uint32_t best = kFusedCount;
     for (uint32_t f = 0; f < kFusedCount; ++f) {
-      const FusedShape& s = kFusedShapes[f];
-      if (s.ops[0] != bytecode::word_op(code_[pc])) continue;
-      if (best != kFusedCount && kFusedShapes[best].count >= s.count) continue;
-      if (fits(pc, s) && holds(static_cast<Fused>(f), code_ + pc, pc)) best = f;
+      const Pattern p = pattern(f);
+      if (p.ops[0] != static_cast<uint8_t>(bytecode::word_op(code_[pc]))) continue;
+      if (best != kFusedCount && pattern(best).count >= p.count) continue;
+      if (fits(pc, p) && holds(static_cast<Fused>(f), code_ + pc, pc)) best = f;
     }
     return best;
   }
@@ -34,35 +59,37 @@ class Quickener {
   // Forms the fused instruction f at pc: its opcode (of a FUSED_PER_RELATION family, the one for
   // the relation of its compare-and-jump), and the mark of its last word.
   void form(uint32_t pc, uint32_t f) {
-    const FusedShape& s = kFusedShapes[f];
-    const uint32_t last = code_[pc + fused_offset(s, s.count - 1u)];
+    const Pattern p = pattern(f);
+    const uint32_t last = code_[pc + p.offset(p.count - 1u)];
     uint32_t relation = 0;
-    if (s.per_relation) {
-      const bytecode::Op jump = bytecode::word_op(code_[pc + fused_offset(s, s.relation_at)]);
-      relation = static_cast<uint32_t>(jump) - static_cast<uint32_t>(s.ops[s.relation_at]);
+    if (p.per_relation) {
+      const auto jump =
+          static_cast<uint32_t>(bytecode::word_op(code_[pc + p.offset(p.relation_at)]));
+      relation = jump - p.ops[p.relation_at];
     }
     code_[pc] = (code_[pc] & ~0x1FFu) | fused_number(static_cast<Fused>(f), relation) |
                 (last & bytecode::kLineEndBit);
   }
 
  private:
-  bool fits(uint32_t pc, const FusedShape& s) const {
-    if (s.length > size_ - pc) return false;
+  bool fits(uint32_t pc, const Pattern& p) const {
+    if (p.length > size_ - pc) return false;
     uint32_t at = pc;
-    for (uint32_t k = 0; k < s.count; at += bytecode::op_length(s.ops[k++])) {
-      if (!fused_op_matches(s, k, bytecode::word_op(code_[at]))) return false;
+    for (uint32_t k = 0; k < p.count; at += bytecode::op_length(p.op(k++))) {
+      const auto op = static_cast<uint32_t>(bytecode::word_op(code_[at]));
+      if (k == p.relation_at ? op - p.ops[k] >= 6u : op != p.ops[k]) return false;
       if (k > 0 && entered(at)) return false;
-      if (k + 1 < s.count && bytecode::word_ends_line(code_[at])) return false;
+      if (k + 1 < p.count && bytecode::word_ends_line(code_[at])) return false;
     }
     return true;
   }
 
   // The pattern's condition on its operands (fused.def's WHEN).
   static bool holds(Fused f, const uint32_t* at, [[maybe_unused]] uint32_t pc) {
-#define PC_AT(k) (pc + fused_offset(fused_detail::kShapes[index], k))
-#define A_AT(k) bytecode::word_a(at[fused_offset(fused_detail::kShapes[index], k)])
-#define IMM_AT(k) bytecode::word_imm(at[fused_offset(fused_detail::kShapes[index], k)])
-#define B_AT(k) (at[fused_offset(fused_detail::kShapes[index], k) + 1])
+#define PC_AT(k) (pc + kOffset<index, k>)
+#define A_AT(k) bytecode::word_a(at[kOffset<index, k>])
+#define IMM_AT(k) bytecode::word_imm(at[kOffset<index, k>])
+#define B_AT(k) (at[kOffset<index, k> + 1])
     switch (f) {
 #define FUSED(name, pattern, when, meaning, ...)                                \
   case Fused::name: {                                                           \
@@ -121,9 +148,9 @@ uint32_t form_all(Quickener& q, uint32_t* code, uint32_t size) {
     uint32_t f = q.match(pc);
     // A pair gives way to a longer pattern that starts at its second instruction (LDL x; LDL a;
     // PUSHI k; JLTI: x stays, JLTLK follows).
-    if (f != kFusedCount && kFusedShapes[f].count == 2 && pc + length < size) {
+    if (f != kFusedCount && pattern(f).count == 2 && pc + length < size) {
       const uint32_t next = q.match(pc + length);
-      if (next != kFusedCount && kFusedShapes[next].count > 2) f = kFusedCount;
+      if (next != kFusedCount && pattern(next).count > 2) f = kFusedCount;
     }
     if (f == kFusedCount) {
       pc += length;
@@ -131,7 +158,7 @@ uint32_t form_all(Quickener& q, uint32_t* code, uint32_t size) {
     }
     q.form(pc, f);
     ++formed;
-    pc += kFusedShapes[f].length;
+    pc += pattern(f).length;
   }
   return formed;
 }
