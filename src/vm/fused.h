@@ -111,7 +111,7 @@ enum class Fused : uint8_t {
 };
 
 // The patterns in full, for what runs at compile time (the execute loop's handlers, the
-// quickener's WHEN) and for tools; the quickener matches kPackedPatterns (below).
+// quickener's WHEN) and for tools; the quickener matches kFusedBases' copy (below).
 inline constexpr const FusedShape* kFusedShapes = fused_detail::kShapes;
 inline constexpr uint32_t kFusedCount = sizeof(fused_detail::kShapes) / sizeof(FusedShape);
 inline constexpr uint32_t kFirstFused = bytecode::kOpCount;
@@ -119,9 +119,10 @@ inline constexpr uint32_t kFirstFused = bytecode::kOpCount;
 // The opcodes, from kFirstFused: one for each fused instruction, and for a folded family
 // declared FUSED_PER_RELATION one for each relation, which the quickener picks from the
 // pattern's compare-and-jump. One declaration, six handlers: a run-time switch on the relation,
-// shared by every site of the family, measured 8-16% slower on bench/peers' loops
-// (docs/architecture.md); the families that no such loop runs keep the switch, as the six
-// handlers take room in the embeddable core (scripts/footprint).
+// shared by every site of the family, measured 8-16% slower on bench/peers' loops and a quarter
+// of a Gold float condition (docs/architecture.md); the families that loops and conditions
+// rarely run keep the switch, as the six handlers take room in the embeddable core
+// (scripts/footprint).
 constexpr uint32_t kFamilyMembers = 6;
 constexpr uint32_t opcodes_of(const FusedShape& s) { return s.per_relation ? kFamilyMembers : 1u; }
 constexpr uint32_t count_fused_opcodes() {
@@ -132,17 +133,30 @@ constexpr uint32_t count_fused_opcodes() {
 inline constexpr uint32_t kFusedOpcodeCount = count_fused_opcodes();
 static_assert(kFirstFused + kFusedOpcodeCount <= 256, "an opcode is one byte");
 
-// Of each fused opcode, its instruction, its pattern's first opcode and its words; of each
-// instruction, its first opcode: what the machine needs to see base code.
+constexpr uint32_t count_pattern_ops() {
+  uint32_t n = 0;
+  for (const FusedShape& s : fused_detail::kShapes) n += s.count;
+  return n;
+}
+
+// What runs after compile time needs of the fused instructions: of each fused opcode, its
+// instruction, its pattern's first opcode and its words; of each instruction, its first opcode
+// (the machine, to see base code); and the patterns as the quickener matches them when an image
+// loads: each pattern's base opcodes one after another, where each starts, and its folded
+// relation's place. kShapes keeps 14 opcodes for every pattern, most of them unused, and only
+// compile-time code reads it: firmware carries this table alone (scripts/footprint).
 struct FusedBases {
   uint8_t instruction[kFusedOpcodeCount];
   uint8_t first[kFusedOpcodeCount];
   uint8_t length[kFusedOpcodeCount];
   uint8_t first_opcode[kFusedCount];
+  uint8_t pattern_ops[count_pattern_ops()];
+  uint16_t pattern_start[kFusedCount + 1];  // f's: pattern_ops[pattern_start[f]] and on
+  uint8_t relation_at[kFusedCount];         // FusedShape's
 };
 constexpr FusedBases make_fused_bases() {
   FusedBases b{};
-  uint32_t op = 0;
+  uint32_t op = 0, at = 0;
   for (uint32_t f = 0; f < kFusedCount; ++f) {
     const FusedShape& s = fused_detail::kShapes[f];
     b.first_opcode[f] = static_cast<uint8_t>(op);
@@ -151,38 +165,14 @@ constexpr FusedBases make_fused_bases() {
       b.first[op] = static_cast<uint8_t>(s.ops[0]);
       b.length[op] = s.length;
     }
+    b.pattern_start[f] = static_cast<uint16_t>(at);
+    b.relation_at[f] = s.relation_at;
+    for (uint32_t k = 0; k < s.count; ++k) b.pattern_ops[at++] = static_cast<uint8_t>(s.ops[k]);
   }
+  b.pattern_start[kFusedCount] = static_cast<uint16_t>(at);
   return b;
 }
 inline constexpr FusedBases kFusedBases = make_fused_bases();
-
-// The patterns as the quickener reads them when an image loads: each pattern's base opcodes one
-// after another, where each pattern's start, and its folded relation's place. kShapes keeps 14
-// opcodes for every pattern, most of them unused; only compile-time code reads it, so firmware
-// carries this table alone (half the bytes, scripts/footprint).
-constexpr uint32_t count_pattern_ops() {
-  uint32_t n = 0;
-  for (const FusedShape& s : fused_detail::kShapes) n += s.count;
-  return n;
-}
-struct PackedPatterns {
-  uint8_t ops[count_pattern_ops()];
-  uint16_t start[kFusedCount + 1];   // pattern f's opcodes: ops[start[f]] to ops[start[f + 1]]
-  uint8_t relation_at[kFusedCount];  // FusedShape's
-};
-constexpr PackedPatterns make_packed_patterns() {
-  PackedPatterns p{};
-  uint32_t at = 0;
-  for (uint32_t f = 0; f < kFusedCount; ++f) {
-    const FusedShape& s = fused_detail::kShapes[f];
-    p.start[f] = static_cast<uint16_t>(at);
-    p.relation_at[f] = s.relation_at;
-    for (uint32_t k = 0; k < s.count; ++k) p.ops[at++] = static_cast<uint8_t>(s.ops[k]);
-  }
-  p.start[kFusedCount] = static_cast<uint16_t>(at);
-  return p;
-}
-inline constexpr PackedPatterns kPackedPatterns = make_packed_patterns();
 
 // The opcode of fused instruction f, a folded family's for `relation` (0..5).
 constexpr uint32_t fused_number(Fused f, uint32_t relation = 0) {

@@ -8,7 +8,7 @@ namespace {
 
 using bytecode::Op;
 
-// Pattern f as kPackedPatterns holds it: what the quickener reads at load.
+// Pattern f as kFusedBases holds it: what the quickener reads at load.
 struct Pattern {
   const uint8_t* ops;
   uint32_t count;
@@ -23,11 +23,11 @@ struct Pattern {
   }
 };
 Pattern pattern(uint32_t f) {
-  const uint32_t start = kPackedPatterns.start[f];
+  const uint32_t start = kFusedBases.pattern_start[f];
   const uint32_t first = kFusedBases.first_opcode[f];
   const uint32_t next = f + 1 < kFusedCount ? kFusedBases.first_opcode[f + 1] : kFusedOpcodeCount;
-  return {kPackedPatterns.ops + start, kPackedPatterns.start[f + 1] - start,
-          kFusedBases.length[first], kPackedPatterns.relation_at[f], next - first > 1};
+  return {kFusedBases.pattern_ops + start, kFusedBases.pattern_start[f + 1] - start,
+          kFusedBases.length[first], kFusedBases.relation_at[f], next - first > 1};
 }
 // A pattern's offsets where its WHEN reads them: constants, so that no table of kShapes is kept.
 template <uint32_t f, uint32_t k>
