@@ -129,6 +129,10 @@ class Verifier {
         const RoutineRecord callee = image_.routines[a];
         if (image_.code[pc + 1] > callee.outputs) return fail(VerifyError::BadOperand, pc);
       }
+      // A restart drops every frame and starts its routine with nothing on the stack: a routine
+      // with inputs would take them from below the stack.
+      if (word_op(word) == Op::RESET && image_.routines[a].inputs != 0)
+        return fail(VerifyError::BadOperand, pc);
       if (word_op(word) == Op::CALLFEOL) {
         const uint32_t b = image_.code[pc + 1];
         if (image_.routines[a].inputs < 2 || b > pack_memory_frame(kMemoryFrameMax, 0xFF, 0xFF) ||
