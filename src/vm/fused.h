@@ -22,13 +22,6 @@ struct FusedShape {
   uint8_t relation_at = kNoRelation;
   bool per_relation = false;  // a handler for each relation (FUSED_PER_RELATION), else a switch
 };
-// Whether base opcode `op` is the pattern's k-th instruction (any of the six relations where
-// the pattern takes one).
-constexpr bool fused_op_matches(const FusedShape& s, uint32_t k, bytecode::Op op) {
-  if (k != s.relation_at) return op == s.ops[k];
-  const uint32_t rel = static_cast<uint32_t>(op) - static_cast<uint32_t>(s.ops[k]);
-  return rel < 6u;
-}
 // A folded compare-and-jump's relation, 0..5 for == != < <= > >=, holds of a and b. In a family
 // declared FUSED_PER_RELATION each relation has a handler of its own (kFamilyMembers, below),
 // in which the relation is a constant: the switch is the compiler's. Elsewhere the switch runs:

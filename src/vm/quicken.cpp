@@ -76,8 +76,9 @@ class Quickener {
     if (p.length > size_ - pc) return false;
     uint32_t at = pc;
     for (uint32_t k = 0; k < p.count; at += bytecode::op_length(p.op(k++))) {
+      // The k-th instruction: its opcode, or any of the six relations where the pattern takes one.
       const auto op = static_cast<uint32_t>(bytecode::word_op(code_[at]));
-      if (k == p.relation_at ? op - p.ops[k] >= 6u : op != p.ops[k]) return false;
+      if (k == p.relation_at ? op - p.ops[k] >= kFamilyMembers : op != p.ops[k]) return false;
       if (k > 0 && entered(at)) return false;
       if (k + 1 < p.count && bytecode::word_ends_line(code_[at])) return false;
     }
