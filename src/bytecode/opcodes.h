@@ -146,23 +146,27 @@ constexpr bool ends_line_itself(Op op) {
 // the same slice. Not a call or a return (the line would end in another frame), nor one that
 // ends its line itself or stops the slice (YIELD, WAIT), nor the copies' JLINES and JMPLN (the
 // way out counts its lines itself). A table made at compile time, so that firmware carries no
-// names.
+// names: a bit for each opcode.
 struct LineEndTable {
-  bool may[256];
+  uint32_t may[8];
 };
 constexpr LineEndTable make_line_end_table() {
   LineEndTable t{};
   for (uint32_t i = 0; i < kOpCount; ++i) {
     const Op op = static_cast<Op>(i);
     const Flow flow = op_info(op).flow;
-    t.may[i] = (flow == Flow::Next || flow == Flow::Jump || flow == Flow::Branch) &&
-               !ends_line_itself(op) && op != Op::YIELD && op != Op::WAIT && op != Op::BREAK &&
-               op != Op::JLINES && op != Op::JMPLN;
+    const bool may = (flow == Flow::Next || flow == Flow::Jump || flow == Flow::Branch) &&
+                     !ends_line_itself(op) && op != Op::YIELD && op != Op::WAIT &&
+                     op != Op::BREAK && op != Op::JLINES && op != Op::JMPLN;
+    if (may) t.may[i / 32] |= 1u << (i % 32);
   }
   return t;
 }
 inline constexpr LineEndTable kLineEndTable = make_line_end_table();
-constexpr bool may_end_line(Op op) { return kLineEndTable.may[static_cast<uint8_t>(op)]; }
+constexpr bool may_end_line(Op op) {
+  const auto i = static_cast<uint8_t>(op);
+  return (kLineEndTable.may[i / 32] >> (i % 32)) & 1u;
+}
 static_assert(ends_line_itself(Op::EOL) && !ends_line_itself(Op::JMP) && may_end_line(Op::JZ) &&
               may_end_line(Op::JMP) && !may_end_line(Op::RETEOL) && may_end_line(Op::JGTI) &&
               may_end_line(Op::LDGE) && !may_end_line(Op::CALL) && !may_end_line(Op::YIELD));
