@@ -52,12 +52,16 @@ static_assert(relation_holds(0, 2, 2) && relation_holds(1, 2, 3) && relation_hol
               relation_holds(3, 3, 3) && relation_holds(4, 4, 3) && relation_holds(5, 3, 3) &&
               !relation_holds(5, 2, 3) && !relation_holds(2, 3, 3));
 
-// Where the pattern's k-th instruction starts: a word offset from the first.
-constexpr uint32_t fused_offset(const FusedShape& s, uint32_t k) {
+// Of a pattern's opcodes (bytecode::Op, or their bytes as kFusedBases packs them): the words
+// before the k-th.
+template <typename OpOrByte>
+constexpr uint32_t words_before(const OpOrByte* ops, uint32_t k) {
   uint32_t at = 0;
-  for (uint32_t i = 0; i < k; ++i) at += bytecode::op_length(s.ops[i]);
+  for (uint32_t i = 0; i < k; ++i) at += bytecode::op_length(static_cast<bytecode::Op>(ops[i]));
   return at;
 }
+// Where the pattern's k-th instruction starts: a word offset from the first.
+constexpr uint32_t fused_offset(const FusedShape& s, uint32_t k) { return words_before(s.ops, k); }
 
 namespace fused_detail {
 using enum bytecode::Op;

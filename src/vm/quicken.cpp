@@ -16,11 +16,7 @@ struct Pattern {
   uint32_t relation_at;
   bool per_relation;
   bytecode::Op op(uint32_t k) const { return static_cast<bytecode::Op>(ops[k]); }
-  uint32_t offset(uint32_t k) const {  // of the k-th instruction, in words from the first
-    uint32_t at = 0;
-    for (uint32_t i = 0; i < k; ++i) at += bytecode::op_length(op(i));
-    return at;
-  }
+  uint32_t offset(uint32_t k) const { return words_before(ops, k); }  // of the k-th, in words
 };
 Pattern pattern(uint32_t f) {
   const uint32_t start = kFusedBases.pattern_start[f];
