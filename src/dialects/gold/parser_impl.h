@@ -75,7 +75,14 @@ class Parser {
 
  public:
   // Tokens, by value: the lookahead buffer refills as the parser moves on.
+  // Most peeks look again at a token already read: that one at once, inline; the lexer's call
+  // out of line (uprog check of 100 000 lines: 564 M -> 537 M host instructions).
   Token peek(size_t k = 0) {
+    if (ahead_.size() - head_ > k) [[likely]]
+      return ahead_[head_ + k].token;
+    return read_ahead(k);
+  }
+  [[gnu::noinline]] Token read_ahead(size_t k) {
     while (ahead_.size() - head_ <= k) ahead_.push_back({lex_.state(), lex_.next()});
     return ahead_[head_ + k].token;
   }
