@@ -37,14 +37,15 @@ void write_pair(Value* at, TypedValue v) {
   at[1] = Value::of_int(v.is_float() ? 1 : 0);
 }
 // A call's words copied or set to 0: frames mostly have a few, which a call of memcpy or memset
-// (what a plain loop compiles to) or a jump table would cost more than. 2 words are one 8-byte
-// move, 3 or 4 two that may overlap. 2 is the likely count, kept on the call's straight path:
-// every CALLFEOL copies two stack registers (limit and base) and most clear two (ret and goto);
-// laid out as GCC chose, each went out of the way and back, four taken jumps a call. Those two
-// are copied a word at a time, not as one 8-byte load: a call's arguments were pushed a word at a
-// time just before, and a load that spans two stores still in flight waits until both reach the
-// cache (store-to-load forwarding fails): PDL's fib(29), 31 runs alternated, 0.0422 -> 0.0405 s
-// least CPU time. Clearing may store 8 bytes at once: a narrower load inside a store is forwarded.
+// (what a plain loop compiles to) or a jump table would cost more than. 3 or 4 words are two
+// 8-byte moves that may overlap; 2 cleared are one. 2 is the likely count, kept on the call's
+// straight path: every CALLFEOL copies two stack registers (limit and base) and most clear two
+// (ret and goto); laid out as GCC chose, each went out of the way and back, four taken jumps a
+// call. Those two are copied a word at a time, not as one 8-byte load: a call's arguments were
+// pushed a word at a time just before, and a load that spans two stores still in flight waits
+// until both reach the cache (store-to-load forwarding fails): PDL's fib(29), 31 runs
+// alternated, 0.0422 -> 0.0405 s least CPU time. Clearing may store 8 bytes at once: a
+// narrower load inside one store is forwarded.
 void copy_words(Value* to, const Value* from, uint32_t n) {
   if (n == 2) [[likely]] {  // PDL's limit and base; a call's two arguments or locals
     const Value first = from[0], second = from[1];

@@ -176,7 +176,7 @@ namespace uprog::gold {
 
 // A node made again from a recycled one: its lists emptied but their storage kept, so that a
 // function's nodes reuse the allocations of the function before (uprog check of 100 000 lines:
-// 255 000 allocations and frees fewer).
+// 255 530 allocations and as many frees -> 188 886; 537 M -> 524 M host instructions).
 template <typename Vector>
 void empty_keeping_storage(Vector& v, Vector& kept) {
   kept = std::move(v);
