@@ -72,6 +72,11 @@ class Parser {
   void statement_end();
   void alone_on_line(Error e);
   void finish(Stmt& s);
+  // peek() past the buffered tokens: the lexer reads up to the k-th.
+  [[gnu::noinline]] Token read_ahead(size_t k) {
+    while (ahead_.size() - head_ <= k) ahead_.push_back({lex_.state(), lex_.next()});
+    return ahead_[head_ + k].token;
+  }
 
  public:
   // Tokens, by value: the lookahead buffer refills as the parser moves on.
@@ -81,10 +86,6 @@ class Parser {
     if (ahead_.size() - head_ > k) [[likely]]
       return ahead_[head_ + k].token;
     return read_ahead(k);
-  }
-  [[gnu::noinline]] Token read_ahead(size_t k) {
-    while (ahead_.size() - head_ <= k) ahead_.push_back({lex_.state(), lex_.next()});
-    return ahead_[head_ + k].token;
   }
   Token next() {
     const Token t = peek();
