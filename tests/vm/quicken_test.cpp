@@ -258,6 +258,7 @@ fused:
 TEST(Quicken, AFamilysSiteGetsTheOpcodeOfItsRelationWhereEachHasAHandler) {
   const Quickened q = quickened(R"(
 .global int "g" 1
+.global int "h" 1
 .global float "x" 1
 .global float "y" 1
 .const int 30000000
@@ -266,10 +267,10 @@ TEST(Quicken, AFamilysSiteGetsTheOpcodeOfItsRelationWhereEachHasAHandler) {
 .local float "f"
 main:
   LDG g
-  PUSHK 0
+  LDG h
   JLTI done
   LDG g
-  PUSHK 0
+  LDG h
   JGEI done
   LDL 0
   PUSHK 1
@@ -283,19 +284,27 @@ main:
   LDG x
   LDG y
   JNGEF done
+  LDG g
+  PUSHK 0
+  JLTI done
+  LDG g
+  PUSHK 0
+  JGEI done
 done:
   RET
 )");
-  EXPECT_EQ(dispatched(q),
-            (std::vector<std::string>{"0 JRELGC", "3 JRELGC", "6 JNRELFLK", "9 JNRELFLK",
-                                      "12 JNRELFGG", "15 JNRELFGG", "18 RET"}));
-  EXPECT_EQ(q.code[0] & 0xFFu, vm::fused_number(vm::Fused::JRELGC, 2));    // <
-  EXPECT_EQ(q.code[3] & 0xFFu, vm::fused_number(vm::Fused::JRELGC, 5));    // >=
+  EXPECT_EQ(dispatched(q), (std::vector<std::string>{"0 JRELGG", "3 JRELGG", "6 JNRELFLK",
+                                                     "9 JNRELFLK", "12 JNRELFGG", "15 JNRELFGG",
+                                                     "18 JRELGC", "21 JRELGC", "24 RET"}));
+  EXPECT_EQ(q.code[0] & 0xFFu, vm::fused_number(vm::Fused::JRELGG, 2));    // <
+  EXPECT_EQ(q.code[3] & 0xFFu, vm::fused_number(vm::Fused::JRELGG, 5));    // >=
   EXPECT_EQ(q.code[6] & 0xFFu, vm::fused_number(vm::Fused::JNRELFLK, 2));  // unless <
   EXPECT_EQ(q.code[9] & 0xFFu, vm::fused_number(vm::Fused::JNRELFLK, 5));  // unless >=
   // A family that switches on its relation: one opcode for every site.
   EXPECT_EQ(q.code[12] & 0xFFu, vm::fused_number(vm::Fused::JNRELFGG));
   EXPECT_EQ(q.code[15] & 0xFFu, vm::fused_number(vm::Fused::JNRELFGG));
+  EXPECT_EQ(q.code[18] & 0xFFu, vm::fused_number(vm::Fused::JRELGC));
+  EXPECT_EQ(q.code[21] & 0xFFu, vm::fused_number(vm::Fused::JRELGC));
   EXPECT_EQ(vm::base_word(q.code[3]), q.base[3]);
   EXPECT_EQ(vm::instruction_length(q.code[3]), 3u);
   EXPECT_EQ(vm::base_word(q.code[9]), q.base[9]);
