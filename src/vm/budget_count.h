@@ -6,37 +6,50 @@
 
 namespace uprog::vm {
 
-struct BudgetCount {
-  uint32_t now;   // what the loop decrements
-  uint64_t rest;  // what remains once `now` is spent
+// `now` holds the chunk in units of kUnit: the line count's unit is a word's line-end bit, so
+// that every dispatch takes its line as `now -= word & kLineEndBit`, without a shift or a
+// branch on the mark (docs/architecture.md, "One line end a dispatch").
+template <uint32_t kUnit>
+struct CountIn {
+  uint32_t now;   // what the loop decrements, kUnit for each count
+  uint64_t rest;  // the counts that remain once `now` is spent
+
+  static constexpr uint32_t kChunk = UINT32_MAX / kUnit;  // the counts `now` can hold
 
   // A budget count of 0 means no limit: 2^64 - 1 is never spent.
-  static BudgetCount of(uint64_t budget) {
+  static CountIn of(uint64_t budget) {
     const uint64_t total = budget != 0 ? budget : UINT64_MAX;
-    const uint32_t first = total > UINT32_MAX ? UINT32_MAX : static_cast<uint32_t>(total);
-    return {first, total - first};
+    const uint32_t first = total > kChunk ? kChunk : static_cast<uint32_t>(total);
+    return {first * kUnit, total - first};
   }
   // `now` is spent: takes the next chunk. False when the whole budget is spent.
   bool refill() {
     if (rest == 0) return false;
-    now = rest > UINT32_MAX ? UINT32_MAX : static_cast<uint32_t>(rest);
-    rest -= now;
+    const uint32_t next = rest > kChunk ? kChunk : static_cast<uint32_t>(rest);
+    now = next * kUnit;
+    rest -= next;
     return true;
   }
-  // Takes n from the budget: false when that spends it (then nothing is left).
+  // Takes n counts from the budget: false when that spends it (then nothing is left).
   bool spend(uint32_t n) {
-    while (n >= now) {
-      n -= now;
+    while (n >= now / kUnit) {
+      n -= now / kUnit;
       if (!refill()) {
         now = 0;
         return false;
       }
     }
-    now -= n;
+    now -= n * kUnit;
     return true;
   }
+  // Takes one count: true when it was the last of `now` (the loop then refills or stops).
+  bool take_one() { return (now -= kUnit) == 0; }
+  // More than n counts are left in `now`.
+  bool more_than(uint32_t n) const { return now > uint64_t{n} * kUnit; }
   // What is left of the whole budget.
-  uint64_t left() const { return rest + now; }
+  uint64_t left() const { return rest + now / kUnit; }
 };
+
+using BudgetCount = CountIn<1>;
 
 }  // namespace uprog::vm

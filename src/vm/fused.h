@@ -62,6 +62,12 @@ constexpr uint32_t words_before(const OpOrByte* ops, uint32_t k) {
 }
 // Where the pattern's k-th instruction starts: a word offset from the first.
 constexpr uint32_t fused_offset(const FusedShape& s, uint32_t k) { return words_before(s.ops, k); }
+// The pattern leaves a value for the rest of an expression (its last instruction pushes and goes
+// on): like such a base instruction it seldom ends a line (the execute loop's DISPATCH_VALUE).
+constexpr bool leaves_value(const FusedShape& s) {
+  const bytecode::OpInfo& last = bytecode::op_info(s.ops[s.count - 1]);
+  return last.push > 0 && last.flow == bytecode::Flow::Next;
+}
 
 namespace fused_detail {
 using enum bytecode::Op;
