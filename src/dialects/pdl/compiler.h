@@ -101,6 +101,7 @@ struct Place {
   enum class Form : uint8_t {
     Global,   // LDG/STG of an image global, nothing on the stack
     Memory,   // a flat address is on the stack: LDM/STM
+    Frame,    // a procedure's own word, fp + index: its address made where it is read or stored
     System,   // CMDGET/CMDSET at an immediate index
     SystemX,  // the index is on the stack
     State,    // a state by number (immediate)
@@ -232,7 +233,6 @@ class Compiler {
   // --- places and memory (compiler_memory.cpp)
   std::optional<Place> parse_place(bool for_store);
   void emit_load(const Place& p, bool keep_prefix);
-  void load_for_update(const Place& p, bool bare_name);
   void emit_store(const Place& p);
   void emit_post_increments(const Place& p);
   void emit_increment(const Var& v, int32_t by);
@@ -242,6 +242,7 @@ class Compiler {
   void emit_user_check();                // flat address in user memory (checked)
   bool logical_address(bool for_store);  // pushes a memory place's logical address
   void read_var(const Var& v);
+  void emit_frame_address(int32_t index);
   const Var* find_var(const std::string& name) const;
   void memory_block_assignment(size_t lhs_start);
   void emit_copy_loop(bool set, bool is_float, uint32_t dst, uint32_t src, uint32_t n);

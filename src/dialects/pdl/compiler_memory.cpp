@@ -42,10 +42,16 @@ void Compiler::read_var(const Var& v) {
     code_.emit(Op::LDG, static_cast<uint32_t>(v.global));
     return;
   }
-  code_.emit(Op::LDL, kFp);
-  push_int(v.address);
-  code_.emit(Op::ADDI);
+  emit_frame_address(v.address);
   code_.emit(Op::LDM);
+}
+
+// The address of the current procedure's frame word `index` (a word of its parameters and
+// variables): the frame pointer plus the index, which the VM's frame-word instructions fuse.
+void Compiler::emit_frame_address(int32_t index) {
+  code_.emit(Op::LDL, kFp);
+  push_int(index);
+  code_.emit(Op::ADDI);
 }
 
 void Compiler::emit_increment(const Var& v, int32_t by) {
@@ -57,9 +63,7 @@ void Compiler::emit_increment(const Var& v, int32_t by) {
     code_.emit(Op::STG, static_cast<uint32_t>(v.global));
     return;
   }
-  code_.emit(Op::LDL, kFp);
-  push_int(v.address);
-  code_.emit(Op::ADDI);
+  emit_frame_address(v.address);
   code_.emit(Op::DUP);
   code_.emit(Op::LDM);
   push_int(by);
@@ -269,11 +273,16 @@ std::optional<Place> Compiler::parse_place(bool for_store) {
         emit_user_check();
       return p;
     }
+    if (v->local && index >= 0 && index < static_cast<int32_t>(v->length)) {
+      p.form = Place::Form::Frame;
+      p.index = v->address + index;
+      return p;
+    }
     if (v->local) {
       code_.emit(Op::LDL, kFp);
       push_int(v->address + index);
       code_.emit(Op::ADDI);
-      if (index < 0 || index >= static_cast<int32_t>(v->length)) emit_word_check(false);
+      emit_word_check(false);
       return p;
     }
     const int32_t flat = v->address + index;
@@ -329,6 +338,10 @@ void Compiler::emit_load(const Place& p, bool keep_prefix) {
     case Place::Form::Memory:
       code_.emit(Op::LDM);
       break;
+    case Place::Form::Frame:
+      emit_frame_address(p.index);
+      code_.emit(Op::LDM);
+      break;
     case Place::Form::System:
       code_.emit(Op::CMDGET, p.command, static_cast<uint32_t>(p.index));
       break;
@@ -348,23 +361,18 @@ void Compiler::emit_load(const Place& p, bool keep_prefix) {
   }
 }
 
-// The value an update (`n--`, `n += v`) starts from, its place's address kept below it. A
-// procedure's own variable by its bare name is read as any read of it is, from the frame word,
-// so that the peephole pass makes the command what `n = n - 1;` is (ADDMLK, STMLK).
-void Compiler::load_for_update(const Place& p, bool bare_name) {
-  if (bare_name && p.var != nullptr && p.var->local && p.form == Place::Form::Memory) {
-    read_var(*p.var);
-    return;
-  }
-  emit_load(p, true);
-}
-
 void Compiler::emit_store(const Place& p) {
   switch (p.form) {
     case Place::Form::Global:
       code_.emit(Op::STG, static_cast<uint32_t>(p.global));
       break;
     case Place::Form::Memory:
+      code_.emit(Op::STM);
+      break;
+    case Place::Form::Frame:
+      // The value first, then its word's address: the VM makes the five one store (STMLK).
+      emit_frame_address(p.index);
+      code_.emit(Op::SWAP);
       code_.emit(Op::STM);
       break;
     case Place::Form::System:
@@ -426,7 +434,7 @@ void Compiler::assignment() {
     if (is_float(p->type) || p->form == Place::Form::State || p->form == Place::Form::StateX) {
       error(Error::IntegerNeeded, op.offset, "++ and -- of long and short variables");
     }
-    load_for_update(*p, op_at == 1);
+    emit_load(*p, true);  // a Memory place's address stays below
     push_int(1);
     code_.emit(op.text == "++" ? Op::ADDI : Op::SUBI);
     convert(Ty::Int, p->type, p->is_short);
@@ -477,7 +485,7 @@ void Compiler::assignment() {
     return;
   }
   if (is_state) error(Error::NotAssignable, op.offset, "an operation assignment to a state");
-  load_for_update(*p, op_at == 1);
+  emit_load(*p, true);  // a Memory place's address stays below
   check_assignment_form(pos_, command_end(pos_), true);
   const Ty t = expr();
   if (slave_reads_ > 0) error(Error::SlaveOnRight, at);

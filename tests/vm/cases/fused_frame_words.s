@@ -1,9 +1,10 @@
 ; A frame's words in the data memory (PDL's parameters, at a local's address plus an offset):
-; base code that the machine fuses at load into DECMLK (`n--;`; `n++;` is ADDLK and LDMLK, as
-; no program needs more), JRELMK for its six relations (`if (n < 5)` of a parameter) and an
-; address's range tests, JULTK and the second alone as base code (a pointer into the user
-; memory, or into a task's stack; both together are JULTKLK, fused_pointer_ranges.s). The
-; data memory is the globals' words: `mem` is words 0..7, fp = 2, so fp + 1 is mem[3].
+; base code that the machine fuses at load into STMLK (`n=5;`: the value, then the word's
+; address and SWAP, STM), DECMLK (`n--;`; `n++;` is LDMLK, ADDIK and STMLK, as no program needs
+; more), JRELMK for its six relations (`if (n < 5)` of a parameter) and an address's range
+; tests, JULTK and the second alone as base code (a pointer into the user memory, or into a
+; task's stack; both together are JULTKLK, fused_pointer_ranges.s). The data memory is the
+; globals' words: `mem` is words 0..7, fp = 2, so fp + 1 is mem[3] and fp + 2 is mem[4].
 ; taken[k] is 1 when test k jumps.
 .global int "mem" 8
 .global int "taken" 6
@@ -16,30 +17,39 @@ main:
   STL 0
   PUSHI 5
   STL 1
-  LDL 0
-  PUSHI 1
-  ADDI
   PUSHI 5
-  STM              ; mem[3] = 5
   LDL 0
   PUSHI 1
   ADDI
+  SWAP
+  STM              ; mem[3] = 5 (STMLK)
+  PUSHI -9
+  LDL 0
+  PUSHI 2
+  ADDI
+  SWAP
+  STM              ; mem[4] = -9 (STMLK), and mem[3] stays
   LDL 0
   PUSHI 1
   ADDI
   LDM
   PUSHI 2
   ADDI
-  STM              ; mem[3] = 5 + 2 = 7
   LDL 0
   PUSHI 1
   ADDI
+  SWAP
+  STM              ; mem[3] = 5 + 2 = 7
   LDL 0
   PUSHI 1
   ADDI
   LDM
   PUSHI 3
   SUBI
+  LDL 0
+  PUSHI 1
+  ADDI
+  SWAP
   STM              ; mem[3] = 7 - 3 = 4 (DECMLK)
   LDL 0
   PUSHI 1
@@ -144,6 +154,7 @@ n7:
   RET
 ; expect end: finished
 ; expect mem[3] = 4
+; expect mem[4] = -9
 ; expect taken[0] = 1
 ; expect taken[1] = 0
 ; expect taken[2] = 1
