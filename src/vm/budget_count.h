@@ -8,7 +8,7 @@ namespace uprog::vm {
 
 // `now` holds the chunk in units of kUnit: the line count's unit is a word's line-end bit, so
 // that every dispatch takes its line as `now -= word & kLineEndBit`, without a shift or a
-// branch on the mark (docs/architecture.md, "One line end a dispatch").
+// branch on the mark (docs/architecture.md, "Scheduling": the line-end mark).
 template <uint32_t kUnit>
 struct CountIn {
   uint32_t now;   // what the loop decrements, kUnit for each count
