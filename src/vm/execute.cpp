@@ -248,12 +248,16 @@ SliceResult Machine::execute(Thread& start, const Budget& budget, Round* round) 
     error = (e);      \
     goto raise_error; \
   } while (0)
-// `word`, the word of a frame in the data memory at a local's address plus an offset, wrapping
-// as ADDLK does; outside the memory it is BadAddress.
-#define FRAME_WORD(word, local, offset)                                              \
-  const uint32_t word##_address = static_cast<uint32_t>(locals[local].i) + (offset); \
-  if (word##_address >= memory_words_) FAIL(RunError::BadAddress);                   \
+// `word`, the data memory's word at an address (an int, taken unsigned); outside the memory it
+// is BadAddress.
+#define MEMORY_WORD(word, address)                                 \
+  const auto word##_address = static_cast<uint32_t>(address);      \
+  if (word##_address >= memory_words_) FAIL(RunError::BadAddress); \
   Value& word = memory_[word##_address]
+// `word`, the word of a frame in the data memory at a local's address plus an offset, wrapping
+// as ADDLK does.
+#define FRAME_WORD(word, local, offset) \
+  MEMORY_WORD(word, static_cast<uint32_t>(locals[local].i) + (offset))
 #define INT_BINARY(expr)        \
   {                             \
     const int32_t a = sp[-2].i; \
@@ -950,16 +954,14 @@ op_MSG : {
 }
 
 op_LDM : {
-  const auto address = static_cast<uint32_t>(sp[-1].i);
-  if (address >= memory_words_) FAIL(RunError::BadAddress);
-  sp[-1] = memory_[address];
+  MEMORY_WORD(w, sp[-1].i);
+  sp[-1] = w;
   ++ip;
   DISPATCH();
 }
 op_STM : {
-  const auto address = static_cast<uint32_t>(sp[-2].i);
-  if (address >= memory_words_) FAIL(RunError::BadAddress);
-  memory_[address] = sp[-1];
+  MEMORY_WORD(w, sp[-2].i);
+  w = sp[-1];
   sp -= 2;
   ++ip;
   DISPATCH();
@@ -1104,6 +1106,7 @@ stop:
 #undef B
 #undef FAIL
 #undef FRAME_WORD
+#undef MEMORY_WORD
 #undef INT_BINARY
 #undef FLOAT_BINARY
 #undef COMPARE

@@ -273,16 +273,14 @@ std::optional<Place> Compiler::parse_place(bool for_store) {
         emit_user_check();
       return p;
     }
-    if (v->local && index >= 0 && index < static_cast<int32_t>(v->length)) {
-      p.form = Place::Form::Frame;
-      p.index = v->address + index;
-      return p;
-    }
     if (v->local) {
-      code_.emit(Op::LDL, kFp);
-      push_int(v->address + index);
-      code_.emit(Op::ADDI);
-      emit_word_check(false);
+      if (index >= 0 && index < static_cast<int32_t>(v->length)) {
+        p.form = Place::Form::Frame;
+        p.index = v->address + index;
+        return p;
+      }
+      emit_frame_address(v->address + index);
+      emit_word_check(false);  // an index outside the array
       return p;
     }
     const int32_t flat = v->address + index;
