@@ -15,10 +15,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A fresh folder for one test, removed after it.
+// A fresh folder for one test, removed after it. Named after the test too: tests that share a
+// fixture run side by side under `ctest -j`, and one's removal must not empty the other's folder.
 struct TempDir {
   fs::path path;
-  explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / name) {
+  explicit TempDir(const std::string& name)
+      : path(fs::temp_directory_path() /
+             (name + "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name())) {
     fs::remove_all(path);
     fs::create_directories(path);
   }
