@@ -106,6 +106,62 @@ return
   for (uint32_t k = 0; k < 8; ++k) EXPECT_EQ(p.i("r", k), want[k]) << "r[" << k << "]";
 }
 
+// A condition's && and || jump on each side when the right side shows nothing (variables,
+// literals, comparisons): no truth is computed, no AND or OR. A right side that calls a
+// function is still evaluated, whatever the left (decision 4: both sides always are).
+TEST(gold_run, ConditionsJumpOnEachSideThatShowsNothing) {
+  GoldRun p;
+  ASSERT_TRUE(p.compile(R"(
+int a, b, r[4]
+function main()
+global int a, b, r[4]
+a = 5
+b = 2
+if (a > 0 && b < 3)
+  r[0] = 1
+end
+if (a < 0 || b == 2)
+  r[1] = 1
+end
+if (a < 0 && b == 2)
+  r[2] = 1
+end
+while (a > 0 && b < 3.5)
+  a = a - 1
+  r[3] = r[3] + 1
+end
+return
+)"));
+  const std::string code = bytecode::disassemble(p.image);
+  for (const char* op : {"ANDI", "ORI", "CMPI", "CMPF"})
+    EXPECT_EQ(code.find(op), std::string::npos) << op << " in\n" << code;
+  EXPECT_EQ(p.run("main"), vm::SliceEnd::Finished);
+  const int32_t want[4] = {1, 1, 0, 5};
+  for (uint32_t k = 0; k < 4; ++k) EXPECT_EQ(p.i("r", k), want[k]) << "r[" << k << "]";
+  GoldRun calls;
+  ASSERT_TRUE(calls.compile(R"(
+int calls, r[2]
+function [int v] = bump(int x)
+global int calls
+calls = calls + 1
+v = x
+return
+function main()
+global int calls, r[2]
+if (0 && bump(1))     // bump runs: calls 1
+  r[0] = 1
+end
+if (1 || bump(0))     // bump runs: calls 2
+  r[1] = 1
+end
+return
+)"));
+  EXPECT_EQ(calls.run("main"), vm::SliceEnd::Finished);
+  EXPECT_EQ(calls.i("r", 0), 0);
+  EXPECT_EQ(calls.i("r", 1), 1);
+  EXPECT_EQ(calls.i("calls"), 2);
+}
+
 TEST(gold_run, BuiltinFunctions) {
   GoldRun p;
   ASSERT_TRUE(p.compile(R"(

@@ -126,9 +126,50 @@ class Gen {
     convert(e.type, want, round);
   }
 
+  // A comparison, `!`, && or ||: an int 0 or 1 already.
+  static bool yields_truth(const Expr& e) {
+    if (e.kind == ExprKind::Unary) return e.op == Tok::Bang;
+    if (e.kind != ExprKind::Binary) return false;
+    switch (e.op) {
+      case Tok::Lt:
+      case Tok::Le:
+      case Tok::Gt:
+      case Tok::Ge:
+      case Tok::EqEq:
+      case Tok::Ne:
+      case Tok::AndAnd:
+      case Tok::OrOr:
+        return true;
+      default:
+        return false;
+    }
+  }
+
+  // Whether evaluating `e` shows nothing but its value: literals and variables, compared and
+  // combined with `!`, && and || (none of them raises an error: conversions saturate). A call,
+  // a command or an index (its range error) shows. Both sides of && and || are evaluated
+  // (docs/dialects/gold.md, decision 4); a condition may skip a side that shows nothing.
+  static bool shows_nothing(const Expr& e) {
+    switch (e.kind) {
+      case ExprKind::IntLit:
+      case ExprKind::FloatLit:
+        return true;
+      case ExprKind::Ref:
+        return (e.ref == RefKind::Local || e.ref == RefKind::Global) && !e.has_index &&
+               !e.has_parens;
+      case ExprKind::Unary:
+        return e.op == Tok::Bang && shows_nothing(*e.lhs);
+      case ExprKind::Binary:
+        return yields_truth(e) && shows_nothing(*e.lhs) && shows_nothing(*e.rhs);
+      default:
+        return false;
+    }
+  }
+
   // Leaves int 0 or 1: whether the value is not zero.
   void truth(const Expr& e) {
     value(e);
+    if (yields_truth(e)) return;
     switch (operand_kind(e.type)) {
       case Kind::Int:
         push_int(0);
@@ -145,7 +186,22 @@ class Gen {
   }
 
   // Jumps to `target` when the condition is false (JZ) or true (JNZ): an int is its own truth.
+  // && and || whose right side shows nothing jump on each side: as Lua's conditions do, one
+  // compare-and-jump a side instead of both truths, their AND or OR, and a jump.
   void branch(const Expr& e, Op jump, CodeBuilder::Label target) {
+    if (e.kind == ExprKind::Binary && (e.op == Tok::AndAnd || e.op == Tok::OrOr) &&
+        shows_nothing(*e.rhs)) {
+      if ((e.op == Tok::AndAnd) == (jump == Op::JZ)) {  // either side false (&&), true (||)
+        branch(*e.lhs, jump, target);
+        branch(*e.rhs, jump, target);
+      } else {  // the right side decides once the left is true (&&) or false (||)
+        const CodeBuilder::Label past = cb_.new_label();
+        branch(*e.lhs, jump == Op::JZ ? Op::JNZ : Op::JZ, past);
+        branch(*e.rhs, jump, target);
+        cb_.bind(past);
+      }
+      return;
+    }
     value(e);
     switch (operand_kind(e.type)) {
       case Kind::Int:
