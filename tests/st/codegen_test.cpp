@@ -221,5 +221,54 @@ TEST(st_codegen, EveryPathEndsEachLineOnce) {
   EXPECT_EQ(run.global("K"), 2);
 }
 
+// AND, OR and NOT in a condition: a compare-and-jump on each side when the right side shows
+// nothing (no DIV or MOD, which may raise Overflow), no truths, no AND, no -1; every path ends
+// the condition's line once. Each IF runs three times (K = 0, 1, 2: A = -1, 0, 1 and B = 2, 1,
+// 0), so that each side decides: line 6 is true at K = 1 only, line 9 at K = 0 and 2, line 12
+// at K = 1 and 2. G's right side divides: it is evaluated as before, and its quotient beyond
+// 16 bits stops G with Overflow though the left side is 0.
+const char* kLogic = R"(LONG K, A, B, R1, R2, R3, Q;
+FUNCTION F
+  FOR K := 0 TO 2 DO
+    A := K - 1;
+    B := 2 - K;
+    IF A = 0 AND B = 1 THEN
+      R1 := R1 + 1;
+    END_IF;
+    IF A < 0 OR B < 1 THEN
+      R2 := R2 + 1;
+    END_IF;
+    IF NOT (A < 0) THEN
+      R3 := R3 + 1;
+    END_IF;
+  END_FOR;
+END_FUNCTION
+FUNCTION G
+  IF 0 AND 100000 / (K - 2) THEN
+    Q := 1;
+  END_IF;
+END_FUNCTION
+)";
+
+TEST(st_codegen, AndOrAndNotJumpOnEachSide) {
+  const bytecode::Image image = compiled(kLogic);
+  for (uint32_t line : {6u, 9u, 12u})
+    for (const std::string& op : ops_on_line(image, line))
+      EXPECT_TRUE(op != "ANDI" && op != "ORI" && op != "NEGI" && op != "LNOT" && op != "CMPI")
+          << "line " << line << ": " << op;
+  const LineRun run = run_line_by_line(image, "F");
+  // Each IF line one slice on every path, its body's line when true; the FOR's step and test
+  // in (13), the body's last line, and the RET after the loop there too.
+  EXPECT_EQ(run.slices, "3 4 5 6 9 10 12 (13) 4 5 6 7 9 12 13 (13) 4 5 6 9 10 12 13 (13) (13)");
+  EXPECT_EQ(run.global("R1"), 1);
+  EXPECT_EQ(run.global("R2"), 2);
+  EXPECT_EQ(run.global("R3"), 2);
+  vm::Machine& m = run.program->machine();  // K is 3 now: 100000 / 1
+  ASSERT_EQ(m.start(0, static_cast<uint32_t>(image.find_routine("G"))), vm::RunError::None);
+  EXPECT_EQ(m.run_slice(0, vm::Budget::unlimited()).end, vm::SliceEnd::Error);
+  EXPECT_EQ(m.last_error(0), vm::RunError::Overflow);
+  EXPECT_EQ(run.global("Q"), 0);
+}
+
 }  // namespace
 }  // namespace uprog

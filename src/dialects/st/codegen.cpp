@@ -167,6 +167,46 @@ class Generator {
     expression(i);
   }
 
+  // Whether evaluating expression i shows nothing but its value: only DIV and MOD raise
+  // (Overflow, a quotient beyond 16 bits), and nothing else has an effect.
+  bool shows_nothing(int i) const {
+    const Expr& e = ex(i);
+    switch (e.kind) {
+      case Expr::Kind::Const:
+      case Expr::Kind::Var:
+        return true;
+      case Expr::Kind::Unary:
+        return shows_nothing(e.a);
+      case Expr::Kind::Binary:
+        return e.op != Op::Div && e.op != Op::Mod && shows_nothing(e.a) && shows_nothing(e.b);
+    }
+    return false;
+  }
+
+  // Jumps to `target` when condition i is false (JZ) or true (JNZ). NOT is the other jump;
+  // AND and OR whose right side shows nothing jump on each side, as a compiled C condition does,
+  // instead of both truths, their AND or OR, its -1 and the jump: both sides are evaluated
+  // otherwise, and with such a right side no program can tell.
+  void branch(int i, bytecode::Op jump, L target) {
+    const Expr& e = ex(i);
+    const bytecode::Op other = jump == bytecode::Op::JZ ? bytecode::Op::JNZ : bytecode::Op::JZ;
+    if (e.kind == Expr::Kind::Unary && e.op == Op::Not) return branch(e.a, other, target);
+    if (e.kind == Expr::Kind::Binary && (e.op == Op::And || e.op == Op::Or) && shows_nothing(e.b)) {
+      if ((e.op == Op::And) == (jump == bytecode::Op::JZ)) {  // either side false (AND), true (OR)
+        branch(e.a, jump, target);
+        branch(e.b, jump, target);
+      } else {  // the right side decides once the left is true (AND) or false (OR)
+        const L past = b_.new_label();
+        branch(e.a, other, past);
+        branch(e.b, jump, target);
+        b_.bind(past);
+      }
+      return;
+    }
+    condition(i);
+    b_.emit_to(jump, target);
+  }
+
   void truth(int i) {
     expression(i);
     b_.emit(bytecode::Op::PUSHI, 0);
@@ -346,6 +386,10 @@ class Generator {
     b_.emit_to(branch, target);
     eol();
   }
+  void branch_ending_line(int condition, bytecode::Op jump, L target) {
+    branch(condition, jump, target);
+    eol();
+  }
   // The taken branch's end of the condition's line: bound before the EOL, which starts no
   // source line, so the fused branch jumps past it.
   void taken_path_ends_line(L target) {
@@ -357,8 +401,7 @@ class Generator {
   void if_statement(const Stmt& s) {
     const L other = b_.new_label(), end = b_.new_label();
     line(s.offset);
-    condition(s.expr);
-    branch_ending_line(bytecode::Op::JZ, other);
+    branch_ending_line(s.expr, bytecode::Op::JZ, other);
     body(s.body);
     b_.emit_to(bytecode::Op::JMP, end);
     taken_path_ends_line(other);
@@ -370,8 +413,7 @@ class Generator {
     const L top = b_.new_label(), done = b_.new_label();
     b_.bind(top);
     line(s.offset);
-    condition(s.expr);
-    branch_ending_line(bytecode::Op::JZ, done);
+    branch_ending_line(s.expr, bytecode::Op::JZ, done);
     body(s.body);
     b_.emit_to(bytecode::Op::JMP, top);
     taken_path_ends_line(done);
@@ -387,8 +429,7 @@ class Generator {
     body(s.body);
     line(s.offset);
     image_.lines.back().line = static_cast<uint32_t>(s.cond_line);
-    condition(s.expr);
-    branch_ending_line(bytecode::Op::JNZ, done);
+    branch_ending_line(s.expr, bytecode::Op::JNZ, done);
     b_.emit_to(bytecode::Op::JMP, top);
     taken_path_ends_line(done);
   }
