@@ -112,9 +112,9 @@ return
 TEST(gold_run, ConditionsJumpOnEachSideThatShowsNothing) {
   GoldRun p;
   ASSERT_TRUE(p.compile(R"(
-int a, b, r[4]
+int a, b, r[5]
 function main()
-global int a, b, r[4]
+global int a, b, r[5]
 a = 5
 b = 2
 if (a > 0 && b < 3)
@@ -130,35 +130,42 @@ while (a > 0 && b < 3.5)
   a = a - 1
   r[3] = r[3] + 1
 end
+if (!(a > 0 || b > 2))    // a = 0, b = 2
+  r[4] = 1
+end
 return
 )"));
   const std::string code = bytecode::disassemble(p.image);
-  for (const char* op : {"ANDI", "ORI", "CMPI", "CMPF"})
+  for (const char* op : {"ANDI", "ORI", "CMPI", "CMPF", "LNOT"})
     EXPECT_EQ(code.find(op), std::string::npos) << op << " in\n" << code;
   EXPECT_EQ(p.run("main"), vm::SliceEnd::Finished);
-  const int32_t want[4] = {1, 1, 0, 5};
-  for (uint32_t k = 0; k < 4; ++k) EXPECT_EQ(p.i("r", k), want[k]) << "r[" << k << "]";
+  const int32_t want[5] = {1, 1, 0, 5, 1};
+  for (uint32_t k = 0; k < 5; ++k) EXPECT_EQ(p.i("r", k), want[k]) << "r[" << k << "]";
   GoldRun calls;
   ASSERT_TRUE(calls.compile(R"(
-int calls, r[2]
+int calls, r[3]
 function [int v] = bump(int x)
 global int calls
 calls = calls + 1
 v = x
 return
 function main()
-global int calls, r[2]
+global int calls, r[3]
 if (0 && bump(1))     // bump runs: calls 1
   r[0] = 1
 end
 if (1 || bump(0))     // bump runs: calls 2
   r[1] = 1
 end
+if (!0.0004)          // true: a float's ! truncates first (1.6)
+  r[2] = 1
+end
 return
 )"));
   EXPECT_EQ(calls.run("main"), vm::SliceEnd::Finished);
   EXPECT_EQ(calls.i("r", 0), 0);
   EXPECT_EQ(calls.i("r", 1), 1);
+  EXPECT_EQ(calls.i("r", 2), 1);
   EXPECT_EQ(calls.i("calls"), 2);
 }
 

@@ -189,6 +189,9 @@ class Gen {
   // && and || whose right side shows nothing jump on each side: as Lua's conditions do, one
   // compare-and-jump a side instead of both truths, their AND or OR, and a jump.
   void branch(const Expr& e, Op jump, CodeBuilder::Label target) {
+    // `!` of an int is the opposite jump (of a float it is not: `!0.0004` is 1, 1.6).
+    if (e.kind == ExprKind::Unary && e.op == Tok::Bang && operand_kind(e.lhs->type) == Kind::Int)
+      return branch(*e.lhs, jump == Op::JZ ? Op::JNZ : Op::JZ, target);
     if (e.kind == ExprKind::Binary && (e.op == Tok::AndAnd || e.op == Tok::OrOr) &&
         shows_nothing(*e.rhs)) {
       if ((e.op == Tok::AndAnd) == (jump == Op::JZ)) {  // either side false (&&), true (||)
