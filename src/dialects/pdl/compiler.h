@@ -210,6 +210,15 @@ class Compiler {
   void cond_and();
   void cond_not();
   void cond_atom();
+  // A command's condition as jumps to `target` when its truth is `when` (compiler_jumps.cpp);
+  // the token after its `(` is next.
+  void jump_on_condition(bool when, CodeBuilder::Label target);
+  bool quiet_condition(size_t first, size_t end) const;
+  size_t next_outside_parentheses(size_t first, size_t end, std::string_view op) const;
+  void jump_on_either(size_t first, size_t end, bool when, CodeBuilder::Label target);
+  void jump_on_chain(size_t first, size_t end, std::string_view op, bool decides, bool when,
+                     CodeBuilder::Label target);
+  void jump_on_factor(size_t first, size_t end, bool when, CodeBuilder::Label target);
   void push_int(int32_t v);
   void push_float(float v);
   void convert(Ty from, Ty to, bool to_short);

@@ -164,11 +164,10 @@ void Compiler::if_command(int depth, bool in_proc) {
   if (depth >= 200) error(Error::NestingTooDeep, at);
   begin_command(1);
   expect_op("(");
-  condition();
-  expect_op(")");
   CodeBuilder::Label f = code_.new_label(), end = code_.new_label();
+  jump_on_condition(false, f);
+  expect_op(")");
   if (accept_word("do")) {
-    code_.emit_to(Op::JZ, f);
     end_line();
     statement_list(depth + 1, in_proc);
     if (at_word("else") && at_word("do", 1)) {
@@ -192,7 +191,6 @@ void Compiler::if_command(int depth, bool in_proc) {
   }
   // 2.2.8 a: the test and a one-slot command share a phase.
   const uint32_t slots = short_command_slots();
-  code_.emit_to(Op::JZ, f);
   if (slots > 1) end_line();
   in_short_if_ = true;
   simple_command(in_proc);
@@ -212,10 +210,9 @@ void Compiler::while_command(int depth, bool in_proc) {
   CodeBuilder::Label top = code_.new_label(), f = code_.new_label();
   code_.bind(top);
   expect_op("(");
-  condition();
+  jump_on_condition(false, f);
   expect_op(")");
   if (!accept_word("do")) error(Error::Expected, peek().offset, "do after while's condition");
-  code_.emit_to(Op::JZ, f);
   end_line();
   statement_list(depth + 1, in_proc);
   if (!accept_word("end")) error(Error::UnclosedBlock, at, "while");
@@ -287,9 +284,8 @@ void Compiler::till_command() {
   CodeBuilder::Label top = code_.new_label(), done = code_.new_label();
   code_.bind(top);
   expect_op("(");
-  condition();
+  jump_on_condition(true, done);
   expect_op(")");
-  code_.emit_to(Op::JNZ, done);
   code_.emit(Op::YIELD);  // the test spent this turn
   code_.emit_to(Op::JMP, top);
   code_.bind(done);
