@@ -213,16 +213,28 @@ class Generator {
     b_.emit(bytecode::Op::CMPI, bytecode::kRelNe);
   }
 
-  // The quotient on top must fit 16 bits, or the run stops with Overflow.
-  void check_quotient() {
+  // The quotient on top must fit 16 bits, or the run stops with Overflow; it stays when kept.
+  void check_quotient(bool keep) {
     const L ok = b_.new_label();
-    b_.emit(bytecode::Op::DUP);
+    if (keep) b_.emit(bytecode::Op::DUP);
     b_.emit(bytecode::Op::DUP);
     b_.emit(bytecode::Op::SEXT, 16);
     b_.emit(bytecode::Op::CMPI, bytecode::kRelEq);
     b_.emit_to(bytecode::Op::JNZ, ok);
     b_.emit(bytecode::Op::RAISE, static_cast<uint32_t>(vm::RunError::Overflow));
     b_.bind(ok);
+  }
+
+  // Expression i cut to its low 16 bits, sign-extended (`*`'s operands, `/`'s and MOD's
+  // divisor): a constant's cut at compile time.
+  void low16(int i) {
+    const Expr& e = ex(i);
+    if (e.kind == Expr::Kind::Const) return push(static_cast<int16_t>(e.value));
+    expression(i);
+    b_.emit(bytecode::Op::SEXT, 16);
+  }
+  bool is_leaf(int i) const {
+    return ex(i).kind == Expr::Kind::Const || ex(i).kind == Expr::Kind::Var;
   }
 
   void expression(int i) {
@@ -271,30 +283,35 @@ class Generator {
     }
     switch (e.op) {
       case Op::Mul:
-        expression(e.a);
-        b_.emit(bytecode::Op::SEXT, 16);
-        expression(e.b);
-        b_.emit(bytecode::Op::SEXT, 16);
+        low16(e.a);
+        low16(e.b);
         b_.emit(bytecode::Op::MULI);
         return;
       case Op::Div:
         expression(e.a);
-        expression(e.b);
-        b_.emit(bytecode::Op::SEXT, 16);
+        low16(e.b);
         b_.emit(bytecode::Op::DIVI);
-        check_quotient();
+        check_quotient(true);
         return;
       case Op::Mod:
+        if (is_leaf(e.a) && is_leaf(e.b)) {  // read twice rather than kept in the scratch locals
+          expression(e.a);
+          low16(e.b);
+          b_.emit(bytecode::Op::DIVI);
+          check_quotient(false);
+          expression(e.a);
+          low16(e.b);
+          b_.emit(bytecode::Op::REMI);
+          return;
+        }
         expression(e.a);
-        expression(e.b);
-        b_.emit(bytecode::Op::SEXT, 16);
+        low16(e.b);
         scratch(bytecode::Op::STL, kScratchB);
         scratch(bytecode::Op::STL, kScratchA);
         scratch(bytecode::Op::LDL, kScratchA);
         scratch(bytecode::Op::LDL, kScratchB);
         b_.emit(bytecode::Op::DIVI);
-        check_quotient();
-        b_.emit(bytecode::Op::POP);
+        check_quotient(false);
         scratch(bytecode::Op::LDL, kScratchA);
         scratch(bytecode::Op::LDL, kScratchB);
         b_.emit(bytecode::Op::REMI);
