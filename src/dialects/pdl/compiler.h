@@ -224,6 +224,7 @@ class Compiler {
   void convert(Ty from, Ty to, bool to_short);
   Ty arith(std::string_view op, Ty a, Ty b, size_t at);
   void emit_rounded_division();
+  void emit_rounded_division_by(int32_t k);
   Ty int_operand(Ty t, size_t at);
 
   // --- the drive compiler's forms (compiler_forms.cpp), checked on the tokens

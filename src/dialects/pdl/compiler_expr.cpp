@@ -108,6 +108,30 @@ Ty Compiler::arith(std::string_view op, Ty a, Ty b, size_t at) {
   return Ty::Int;
 }
 
+// a -> a / k rounded as emit_rounded_division() rounds, k > 0 a literal: the truncated quotient,
+// one more when the remainder reaches (k + 1) / 2, one less when it reaches -(k + 1) / 2 (a
+// remainder has the dividend's sign). 13 instructions where the general form takes 39.
+void Compiler::emit_rounded_division_by(int32_t k) {
+  const int32_t half = k / 2 + k % 2;
+  const uint32_t a = scratch();
+  code_.emit(Op::STL, a);
+  code_.emit(Op::LDL, a);
+  push_int(k);
+  code_.emit(Op::REMI);
+  code_.emit(Op::DUP);
+  push_int(half);
+  code_.emit(Op::CMPI, bytecode::kRelGe);
+  code_.emit(Op::SWAP);
+  push_int(-half);
+  code_.emit(Op::CMPI, bytecode::kRelLe);
+  code_.emit(Op::SUBI);
+  code_.emit(Op::LDL, a);
+  push_int(k);
+  code_.emit(Op::DIVI);
+  code_.emit(Op::ADDI);
+  release(1);
+}
+
 // a b -> a / b rounded to nearest, halves away from zero, as F2IR rounds the float quotient
 // (2.3.6: r=p/4 is 3), but exact for every 32-bit a (100000001/1 stays 100000001): the
 // truncated quotient, one more away from zero when twice the remainder reaches b (both
@@ -159,6 +183,15 @@ Ty Compiler::expr(bool in_condition, int level) {
   Ty a = expr(in_condition, level + 1);
   while (peek().kind == Tok::Op && op_at_level(peek().text, level, in_condition)) {
     const Token& op = next();
+    const Token& divisor = peek();
+    if (op.text == "/" && integer_quotient_ && !is_float(a) && divisor.kind == Tok::Int &&
+        divisor.int_value > 0 && bytecode::fits_imm(divisor.int_value)) {
+      next();  // a literal divisor: known, so never pushed (it is each instruction's immediate)
+      ++operations_;
+      emit_rounded_division_by(divisor.int_value);
+      a = Ty::Int;
+      continue;
+    }
     const Ty b = expr(in_condition, level + 1);
     a = arith(op.text, a, b, op.offset);
   }
