@@ -2,6 +2,7 @@
 #include "vm/quicken.h"
 
 #include "vm/fused.h"
+#include "vm/run_error.h"  // a pattern's RAISE code in fused.def
 
 namespace uprog::vm {
 namespace {
