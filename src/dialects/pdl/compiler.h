@@ -177,6 +177,7 @@ class Compiler {
   void while_command(int depth, bool in_proc);
   void loop_command(int depth, bool in_proc);
   void till_command();
+  void loop_end(CodeBuilder::Label body, CodeBuilder::Label exit);
   void wait_command();
   void sleep_command();
   void goto_command();

@@ -254,28 +254,48 @@ void Compiler::loop_command(int depth, bool in_proc) {
   --loop_depth_;
   if (!accept_word("end")) error(Error::UnclosedBlock, at, "loop");
   begin_command(1);
-  const uint32_t c = scratch();
-  code_.emit(Op::LDL, kSp);
-  push_int(-1);
-  code_.emit(Op::ADDI);
-  code_.emit(Op::DUP);
-  code_.emit(Op::LDM);
-  push_int(1);
-  code_.emit(Op::SUBI);
-  code_.emit(Op::ZEXT, 16);
-  code_.emit(Op::DUP);
-  code_.emit(Op::STL, c);
-  code_.emit(Op::STM);
-  code_.emit(Op::LDL, c);
-  release(1);
-  code_.emit_to(Op::JZ, exit);
-  end_line();
-  code_.emit_to(Op::JMP, body);
+  loop_end(body, exit);
   code_.bind(exit);
   loop_marks_.push_back({body, exit});
   code_.emit(Op::INCL, kSp, static_cast<uint32_t>(-1));
   end_line();
   accept_op(";");
+}
+
+// The count, the word below sp, less one: while it stays above 0, back to the body; at 0, out;
+// below 0 (a count of 0 is 65536, 2.2.7) it becomes 65535 and the body runs again. Its word
+// stays within 0..65535 as the 16-bit count. The usual turn is two instructions once fused at
+// load (DECMLK, JRELMK) and the jump back that ends the line.
+void Compiler::loop_end(CodeBuilder::Label body, CodeBuilder::Label exit) {
+  const auto count_word = [&] {
+    code_.emit(Op::LDL, kSp);
+    push_int(-1);
+    code_.emit(Op::ADDI);
+  };
+  count_word();
+  code_.emit(Op::LDM);
+  push_int(1);
+  code_.emit(Op::SUBI);
+  count_word();
+  code_.emit(Op::SWAP);
+  code_.emit(Op::STM);
+  CodeBuilder::Label spent = code_.new_label();
+  count_word();
+  code_.emit(Op::LDM);
+  push_int(0);
+  code_.emit_to(Op::JLEI, spent);
+  end_line();
+  code_.emit_to(Op::JMP, body);
+  code_.bind(spent);
+  count_word();
+  code_.emit(Op::LDM);
+  push_int(0);
+  code_.emit_to(Op::JEQI, exit);
+  count_word();
+  push_int(65535);
+  code_.emit(Op::STM);
+  end_line();
+  code_.emit_to(Op::JMP, body);
 }
 
 void Compiler::till_command() {
