@@ -1,4 +1,4 @@
--- s_and.st in Lua 5.4, the same computation; prints the checksum (3135008).
+-- s_and.st (and p_and.pdl) in Lua 5.4, the same computation; prints the checksum (3135008).
 local cnt = 0
 for nn = 1, 20000 do
   local xx = nn
