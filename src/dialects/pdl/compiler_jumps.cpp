@@ -64,8 +64,8 @@ void Compiler::jump_on_either(size_t first, size_t end, bool when, CodeBuilder::
 void Compiler::jump_on_chain(size_t first, size_t end, std::string_view op, bool decides, bool when,
                              CodeBuilder::Label target) {
   const CodeBuilder::Label past = code_.new_label();
-  bool past_used = false;           // bound only then: a label here would keep the line's end apart
-  for (size_t at = first;; at++) {  // an empty part (`a &)`) is read, and refused, as the rest
+  bool past_used = false;      // bound only then: a label here would keep the line's end apart
+  for (size_t at = first;;) {  // an empty part (`a &)`) is read, and refused, as the rest
     const size_t part_end = next_outside_parentheses(at, end, op);
     const bool last = part_end == end;
     // A part equal to `decides` settles the chain: to the target when that is the jump's
@@ -78,7 +78,7 @@ void Compiler::jump_on_chain(size_t first, size_t end, std::string_view op, bool
     else
       jump_on_factor(at, part_end, on, to_target ? target : past);
     if (last) break;
-    at = part_end;
+    at = part_end + 1;
   }
   if (past_used) code_.bind(past);
 }
