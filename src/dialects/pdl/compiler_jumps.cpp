@@ -1,9 +1,10 @@
 // A command's condition as jumps (`if`, `while`, `till`): `a & b` jumps past on a false `a`
 // without computing b, `|` on a true one, `~` is the other jump, as a compiled C condition does;
 // the value form computes every relation's 0 or 1, their AND or OR, and one jump. Taken only
-// when every token of the condition is quiet (numbers, the program's own variables and states
-// by name, the relations, + and -, & | ~ and parentheses): no part of it can raise an error or
-// act, so that skipping a part once the outcome is known cannot be told from computing it.
+// when every token after the first relation is quiet (numbers, the program's own variables and
+// states by name, the relations, + and -, & | ~ and parentheses): no part that may be skipped
+// can raise an error or act, so that skipping it once the outcome is known cannot be told from
+// computing it.
 #include "dialects/pdl/compiler.h"
 #include "dialects/pdl/system_names.h"
 
@@ -46,7 +47,11 @@ size_t Compiler::next_outside_parentheses(size_t first, size_t end, std::string_
 
 void Compiler::jump_on_condition(bool when, CodeBuilder::Label target) {
   const size_t first = pos_, end = closing(first - 1) - 1;  // the `)` of the command's `(`
-  if (first >= end || !is_op(toks_[end], ")") || !quiet_condition(first, end)) {
+  // The first relation runs first and whole either way (`v[i] <> 0 & i < n`): only what may be
+  // skipped after it must be quiet.
+  size_t rest = first;
+  while (rest < end && !is_op(toks_[rest], "&") && !is_op(toks_[rest], "|")) ++rest;
+  if (first >= end || !is_op(toks_[end], ")") || !quiet_condition(rest, end)) {
     condition();
     code_.emit_to(when ? Op::JNZ : Op::JZ, target);
     return;
