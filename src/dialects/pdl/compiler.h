@@ -254,6 +254,7 @@ class Compiler {
   bool logical_address(bool for_store);  // pushes a memory place's logical address
   void read_var(const Var& v);
   void emit_frame_address(int32_t index);
+  void emit_stack_address(uint32_t reg, int32_t offset);
   const Var* find_var(const std::string& name) const;
   void memory_block_assignment(size_t lhs_start);
   void emit_copy_loop(bool set, bool is_float, uint32_t dst, uint32_t src, uint32_t n);

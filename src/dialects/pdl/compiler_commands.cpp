@@ -267,11 +267,7 @@ void Compiler::loop_command(int depth, bool in_proc) {
 // stays within 0..65535 as the 16-bit count. The usual turn is two instructions once fused at
 // load (DECMLK, JRELMK) and the jump back that ends the line.
 void Compiler::loop_end(CodeBuilder::Label body, CodeBuilder::Label exit) {
-  const auto count_word = [&] {
-    code_.emit(Op::LDL, kSp);
-    push_int(-1);
-    code_.emit(Op::ADDI);
-  };
+  const auto count_word = [&] { emit_stack_address(kSp, -1); };
   count_word();
   code_.emit(Op::LDM);
   push_int(1);

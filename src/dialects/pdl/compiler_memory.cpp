@@ -48,9 +48,12 @@ void Compiler::read_var(const Var& v) {
 
 // The address of the current procedure's frame word `index` (a word of its parameters and
 // variables): the frame pointer plus the index, which the VM's frame-word instructions fuse.
-void Compiler::emit_frame_address(int32_t index) {
-  code_.emit(Op::LDL, kFp);
-  push_int(index);
+void Compiler::emit_frame_address(int32_t index) { emit_stack_address(kFp, index); }
+
+// A stack register (sp, fp) plus an offset: the address of a word of the task's stack.
+void Compiler::emit_stack_address(uint32_t reg, int32_t offset) {
+  code_.emit(Op::LDL, reg);
+  push_int(offset);
   code_.emit(Op::ADDI);
 }
 
@@ -80,9 +83,7 @@ void Compiler::emit_post_increments(const Place& p) {
 // the user memory's word 0.
 void Compiler::add_base_address(const Var& v) {
   if (v.local) {
-    code_.emit(Op::LDL, kFp);
-    push_int(v.address);
-    code_.emit(Op::ADDI);
+    emit_frame_address(v.address);
     code_.emit(Op::ADDI);
   } else if (v.address != 0) {
     push_int(v.address);
@@ -192,9 +193,7 @@ bool Compiler::logical_address(bool) {
     return false;
   }
   if (v->local) {
-    code_.emit(Op::LDL, kFp);
-    push_int(v->address);
-    code_.emit(Op::ADDI);
+    emit_frame_address(v->address);
   } else {
     push_int(v->address);
   }
