@@ -192,6 +192,13 @@ bool Compiler::logical_address(bool) {
     }
     return false;
   }
+  address_float_ = v->kind == Kind::Float && !v->pointer;
+  address_short_ = v->kind == Kind::Short && !v->pointer;
+  // A global's own address is a constant, its float bit included (`lerp(x, &tot);`: one push).
+  if (!v->local && !at_op("[")) {
+    push_int(v->address | (address_float_ ? kFloatAddressBit : 0));
+    return true;
+  }
   if (v->local) {
     emit_frame_address(v->address);
   } else {
@@ -202,8 +209,6 @@ bool Compiler::logical_address(bool) {
     expect_op("]");
     code_.emit(Op::ADDI);
   }
-  address_float_ = v->kind == Kind::Float && !v->pointer;
-  address_short_ = v->kind == Kind::Short && !v->pointer;
   if (address_float_) {
     push_int(kFloatAddressBit);
     code_.emit(Op::ORI);
