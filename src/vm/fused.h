@@ -71,12 +71,15 @@ constexpr bool leaves_value(const FusedShape& s) {
 
 namespace fused_detail {
 using enum bytecode::Op;
-// A pattern's place for any of the six int (JREL) or float (JNREL) compare-and-jumps.
+// A pattern's place for any of six opcodes from `first`: the int (JREL) or float (JNRELF)
+// compare-and-jumps, or the int (IARITH) or float (FARITH) operators, whose WHEN takes three.
 struct AnyRelation {
   bytecode::Op first;
 };
 inline constexpr AnyRelation JREL{JEQI};
 inline constexpr AnyRelation JNRELF{JNEQF};
+inline constexpr AnyRelation FARITH{ADDF};
+inline constexpr AnyRelation IARITH{ADDI};
 constexpr void add(FusedShape& s, bytecode::Op op) { s.ops[s.count++] = op; }
 constexpr void add(FusedShape& s, AnyRelation r) {
   s.relation_at = s.count;

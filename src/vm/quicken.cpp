@@ -88,6 +88,7 @@ class Quickener {
 #define A_AT(k) bytecode::word_a(at[kOffset<index, k>])
 #define IMM_AT(k) bytecode::word_imm(at[kOffset<index, k>])
 #define B_AT(k) (at[kOffset<index, k> + 1])
+#define OP_AT(k) static_cast<uint32_t>(bytecode::word_op(at[kOffset<index, k>]))
     switch (f) {
 #define FUSED(name, pattern, when, meaning, ...)                                \
   case Fused::name: {                                                           \
@@ -101,6 +102,7 @@ class Quickener {
 #undef A_AT
 #undef IMM_AT
 #undef B_AT
+#undef OP_AT
     return false;
   }
 
