@@ -265,13 +265,13 @@ void Compiler::loop_command(int depth, bool in_proc) {
 // The count, the word below sp, less one: while it stays above 0, back to the body; at 0, out;
 // below 0 (a count of 0 is 65536, 2.2.7) it becomes 65535 and the body runs again. Its word
 // stays within 0..65535 as the 16-bit count. The usual turn is two instructions once fused at
-// load (DECMLK, JRELMK) and the jump back that ends the line.
+// load (STEPMLK, JRELMK) and the jump back that ends the line.
 void Compiler::loop_end(CodeBuilder::Label body, CodeBuilder::Label exit) {
   const auto count_word = [&] { emit_stack_address(kSp, -1); };
   count_word();
   code_.emit(Op::LDM);
-  push_int(1);
-  code_.emit(Op::SUBI);
+  push_int(-1);
+  code_.emit(Op::ADDI);
   count_word();
   code_.emit(Op::SWAP);
   code_.emit(Op::STM);

@@ -1,10 +1,11 @@
 ; A frame's words in the data memory (PDL's parameters, at a local's address plus an offset):
 ; base code that the machine fuses at load into STMLK (`n=5;`: the value, then the word's
-; address and SWAP, STM), DECMLK (`n--;`; `n++;` is LDMLK, ADDIK and STMLK, as no program needs
-; more), JRELMK for its six relations (`if (n < 5)` of a parameter) and an address's range
-; tests, JULTK and the second alone as base code (a pointer into the user memory, or into a
-; task's stack; both together are JULTKLK, fused_pointer_ranges.s). The data memory is the
-; globals' words: `mem` is words 0..7, fp = 2, so fp + 1 is mem[3] and fp + 2 is mem[4].
+; address and SWAP, STM), STEPMLK (`n++;`, `n--;`: the word plus 1 or -1, as PDL compiles both,
+; or any immediate; times one stays base code), JRELMK for its six relations (`if (n < 5)` of a
+; parameter) and an address's range tests, JULTK and the second alone as base code (a pointer
+; into the user memory, or into a task's stack; both together are JULTKLK,
+; fused_pointer_ranges.s). The data memory is the globals' words: `mem` is words 0..7, fp = 2,
+; so fp + 1 is mem[3] and fp + 2 is mem[4].
 ; taken[k] is 1 when test k jumps.
 .global int "mem" 8
 .global int "taken" 6
@@ -39,18 +40,35 @@ main:
   PUSHI 1
   ADDI
   SWAP
-  STM              ; mem[3] = 5 + 2 = 7
+  STM              ; mem[3] = 5 + 2 = 7 (STEPMLK)
   LDL 0
   PUSHI 1
   ADDI
   LDM
-  PUSHI 3
-  SUBI
+  PUSHI -3
+  ADDI
   LDL 0
   PUSHI 1
   ADDI
   SWAP
-  STM              ; mem[3] = 7 - 3 = 4 (DECMLK)
+  STM              ; mem[3] = 7 + -3 = 4 (STEPMLK)
+  PUSHI 6
+  LDL 0
+  PUSHI 3
+  ADDI
+  SWAP
+  STM              ; mem[5] = 6
+  LDL 0
+  PUSHI 3
+  ADDI
+  LDM
+  PUSHI 3
+  MULI
+  LDL 0
+  PUSHI 3
+  ADDI
+  SWAP
+  STM              ; mem[5] = 6 * 3 = 18 (base code: a step adds)
   LDL 0
   PUSHI 1
   ADDI
@@ -155,6 +173,7 @@ n7:
 ; expect end: finished
 ; expect mem[3] = 4
 ; expect mem[4] = -9
+; expect mem[5] = 18
 ; expect taken[0] = 1
 ; expect taken[1] = 0
 ; expect taken[2] = 1
