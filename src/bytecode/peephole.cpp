@@ -177,6 +177,22 @@ class Merger {
   const std::vector<bool>& entered_;
 };
 
+// `PUSHI k; SUBI` is `PUSHI -k; ADDI` (both wrap), one form for the VM to fuse: its fused
+// instructions of an immediate (ADDLK, ADDGK, ADDIK, ADDGKS, INCG, STEPMLK) take any immediate,
+// so a subtraction of one needs none of its own. Only within a line and where nothing enters
+// the SUBI: the pair stays where it was, its value the same.
+void subtract_as_add(std::vector<Instr>& code, const std::vector<bool>& entered) {
+  for (size_t i = 0; i + 1 < code.size(); ++i) {
+    Instr& push = code[i];
+    Instr& sub = code[i + 1];
+    if (push.op != Op::PUSHI || sub.op != Op::SUBI || push.ends_line || entered[sub.pc]) continue;
+    const int64_t negated = -static_cast<int64_t>(imm_of(push));
+    if (!fits_imm(negated)) continue;
+    push.a = static_cast<uint32_t>(negated) & kOperandMax;
+    sub.op = Op::ADDI;
+  }
+}
+
 // Code that follows an unconditional jump or a stop and that nothing enters (no target, routine
 // entry or line start) is dropped; a jump to what then follows it falls through: a JMP goes, a
 // JMP that ends its line is an EOL (but before a RET, which thread_jumps makes RETEOL of).
@@ -261,6 +277,7 @@ PeepholeStats optimize(Image& image) {
   for (size_t k = 0; k < in.size(); ++k)
     if (const size_t past = past_target_eol(in, k, entered, line_start); past < in.size())
       entered[in[past].pc] = true;
+  subtract_as_add(in, entered);
   std::vector<Instr> out;
   const Merger merger(in, entered);
   for (size_t i = 0; i < in.size();) {

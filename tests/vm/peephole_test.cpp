@@ -297,6 +297,65 @@ main:
   EXPECT_EQ(loaded.global("r", 2).i, INT32_MIN);
 }
 
+TEST(Peephole, SubtractsAnImmediateAsTheAdditionOfItsNegation) {
+  // `g = g - 3` of a global is `PUSHI -3; ADDI` (both wrap: the VM's fused forms of an immediate
+  // take it), and of a local then INCL by -2; -(-4194304) is no immediate, so that SUBI stays,
+  // and so does one whose PUSHI ends a line. g: 10 - 3 = 7; n: 5 - 2 = 3; 7 - -4194304 =
+  // 4194311; 7 - 1 = 6.
+  const char* text = R"(
+.global int "g" 1
+.global int "r" 3
+.routine function "main" in=0 out=0 entry=main
+.local int "n"
+main:
+  PUSHI 10
+  STG g
+  LDG g
+  PUSHI 3
+  SUBI
+  STG g
+  PUSHI 5
+  STL 0
+  LDL 0
+  PUSHI 2
+  SUBI
+  STL 0
+  PUSHI 0
+  LDL 0
+  STGX r
+  PUSHI 1
+  LDG g
+  PUSHI -4194304
+  SUBI
+  STGX r
+  PUSHI 2
+  LDG g
+  PUSHI.eol 1
+  SUBI
+  STGX r
+  RET
+)";
+  const std::vector<std::string> first = {"L0:", "PUSHI 10", "STG 0", "LDG 0"};
+  const std::vector<std::string> middle = {"STG 0", "PUSHI 5", "STL 0"};
+  const std::vector<std::string> last = {"PUSHI 0",        "LDL 0", "STGX 1", "PUSHI 1", "LDG 0",
+                                         "PUSHI -4194304", "SUBI",  "STGX 1", "PUSHI 2", "LDG 0",
+                                         "PUSHI.eol 1",    "SUBI",  "STGX 1", "RET"};
+  const bytecode::Image image =
+      expect_listing(text, {{first, first},
+                            {{"PUSHI -3", "ADDI"}, {"PUSHI 3", "SUBI"}},
+                            {middle, middle},
+                            {{"INCL 0 -2"}, {"LDL 0", "PUSHI 2", "SUBI", "STL 0"}},
+                            {last, last}});
+  EXPECT_EQ(run_and_read(image, "g"), 7);
+  LoadedProgram loaded;
+  ASSERT_TRUE(loaded.load(bytecode::disassemble(image)));
+  loaded.machine.start(0, 0);
+  loaded.run_to_end();
+  EXPECT_EQ(loaded.global("r", 0).i, 3);
+  EXPECT_EQ(loaded.global("r", 1).i, 4194311);
+  EXPECT_EQ(loaded.global("r", 2).i, 6);
+}
+
 TEST(Peephole, DropsWhatNothingReachesAndThreadsJumps) {
   // `if (r) s = 1`: the condition's branch ends its line on both paths and jumps past the EOL at
   // its target, which then nothing reaches; the jump over it and the one after `end` end their

@@ -175,18 +175,19 @@ main:
   REMI
   STL 0
   LDG i
-  PUSHI 2
-  SUBI
+  PUSHI -2
+  ADDI
   STL 0
   RET
 )");
   // r = i % 3 is REMGKS; i = i + 1 stays INCG (the earlier of two patterns as long); i / 0
   // is no DIVGKS (the base DIVI raises the error), nor a % 0 anything; b = a / 7 is DIVLKS;
-  // a global's difference stored to a local is SUBGK, pushed, and a base STL.
+  // a global's difference stored to a local (`i - 2`, which the compile-time pass writes as
+  // `+ -2`) is ADDGK, pushed, and a base STL.
   EXPECT_EQ(dispatched(q),
             (std::vector<std::string>{"0 REMGKS", "4 INCG", "8 LDG", "9 PUSHI", "10 DIVI", "11 STG",
                                       "12 DIVLKS", "16 LDL", "17 PUSHI", "18 REMI", "19 STL",
-                                      "20 SUBGK", "23 STL", "24 RET"}));
+                                      "20 ADDGK", "23 STL", "24 RET"}));
   EXPECT_EQ(q.formed, 4u);
 }
 
@@ -197,17 +198,18 @@ TEST(Quicken, AGlobalLessAnImmediateIsPushedAsOne) {
 .routine function "main" in=0 out=0 entry=main
 main:
   LDG i
-  PUSHI 1
-  SUBI
+  PUSHI -1
+  ADDI
   PUSHI 7919
   MULI
   PUSHI 7
   STGX a
   RET
 )");
-  // PUP's 1-based index made 0-based (`(I - 1) * 7919`): SUBGK, then MULIK.
+  // PUP's 1-based index made 0-based (`(I - 1) * 7919`, which the compile-time pass writes as
+  // `+ -1`): ADDGK, then MULIK.
   EXPECT_EQ(dispatched(q),
-            (std::vector<std::string>{"0 SUBGK", "3 MULIK", "5 PUSHI", "6 STGX", "7 RET"}));
+            (std::vector<std::string>{"0 ADDGK", "3 MULIK", "5 PUSHI", "6 STGX", "7 RET"}));
 }
 
 // A CUP loop's copy whose path ends in the loop's step, the step's line counted by the JMPLN

@@ -1,6 +1,7 @@
 ; The int an expression left on top with an immediate: a mask (`(x + y) & 65535`, ST's and
 ; PDL's 16-bit counters and status words), a sum and a difference (`x * y + 1`, `x * y - 7`), a
-; shift (`(x + y) >> 4`), fused at load into ANDIK, ADDIK, SUBIK and SHRIK; and a local set to an
+; shift (`(x + y) >> 4`), fused at load into ANDIK, ADDIK (a difference too: the compile-time
+; pass writes `- 7` as `+ -7`) and SHRIK; and a local set to an
 ; immediate (STLI). x = 70000, y = 3: 70003 & 65535 = 70003 - 65536 = 4467; 210000 + 1;
 ; 210000 - 7; 2^31 - 1 plus 0 plus 1 wraps to -2^31, -2^31 plus 0 minus 1 to 2^31 - 1; 0x1234 &
 ; -256 (0x...FF00) = 0x1200 = 4608; 70003 >> 4 = 4375 (70003 = 16 * 4375 + 3); -70003 >> 4 =
@@ -53,15 +54,15 @@ main:
   LDG x
   LDG y
   MULI
-  PUSHI 7
-  SUBI
-  STG minus        ; x * y - 7 (SUBIK)
+  PUSHI -7
+  ADDI
+  STG minus        ; x * y - 7, as the compile-time pass writes it (ADDIK)
   LDG wrapped
   LDG zero
   ADDI
-  PUSHI 1
-  SUBI
-  STG unwrapped    ; (-2^31 + 0) - 1 wraps (SUBIK)
+  PUSHI -1
+  ADDI
+  STG unwrapped    ; (-2^31 + 0) - 1 wraps (ADDIK of -1)
   LDG x
   LDG y
   ADDI

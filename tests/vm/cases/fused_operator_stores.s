@@ -1,8 +1,10 @@
 ; Assignments of one int operator with an immediate, of a global and of a local (`r3=i%3;`,
-; `v=i*7919;`, `n%=7;`): base code the machine fuses at load into ADDGKS, SUBGKS, DIVGKS,
-; REMGKS, ADDLKS and DIVLKS (vm/fused.def; the other operators stay base code); and REMGK and
-; SUBGK, a remainder and a difference pushed. Each operator as opcodes.def defines its base instruction: + - * wrap, /
-; truncates toward zero (INT32_MIN / -1 saturates: support/arith.h), % takes the dividend's sign.
+; `v=i*7919;`, `n%=7;`): base code the machine fuses at load into ADDGKS, DIVGKS, REMGKS and
+; DIVLKS (vm/fused.def; the other operators stay base code, as does a difference written with
+; SUBI: the compile-time pass writes `- 20` as `+ -20`, ADDGKS and ADDGK); and REMGK and ADDGK,
+; a remainder and a difference pushed. Each operator as opcodes.def defines its base
+; instruction: + - * wrap, / truncates toward zero (INT32_MIN / -1 saturates: support/arith.h),
+; % takes the dividend's sign.
 ; x = 17, y = -17, big = 2147483647 (k0), least = -2147483648 (k1).
 .global int "x" 1
 .global int "y" 1
@@ -45,9 +47,9 @@ main:
   ADDI
   STG gadd       ; 17 + 5 = 22
   LDG x
-  PUSHI 20
-  SUBI
-  STG gsub       ; 17 - 20 = -3
+  PUSHI -20
+  ADDI
+  STG gsub       ; 17 - 20 = -3, as the compile-time pass writes it (ADDGKS)
   LDG x
   PUSHI -3
   MULI
@@ -93,11 +95,11 @@ main:
   ADDI
   STG pushed     ; 17 % 5 + 1 = 3: a remainder pushed (REMGK), no assignment of one operator
   LDG x
-  PUSHI 20
-  SUBI
+  PUSHI -20
+  ADDI
   PUSHI 2
   MULI
-  STG pushedsub  ; (17 - 20) * 2 = -6: a difference pushed (SUBGK, PUP's `Arr[(I - 1) * 2]`)
+  STG pushedsub  ; (17 - 20) * 2 = -6: a difference pushed (ADDGK, PUP's `Arr[(I - 1) * 2]`)
   PUSHI 17
   STL 0
   LDL 0
@@ -111,7 +113,7 @@ main:
   SUBI
   STL 1
   LDL 1
-  STG lsub       ; -3
+  STG lsub       ; -3 (SUBI as written: base code)
   LDL 0
   PUSHI -3
   MULI
