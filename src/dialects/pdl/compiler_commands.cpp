@@ -270,8 +270,8 @@ void Compiler::loop_end(CodeBuilder::Label body, CodeBuilder::Label exit) {
   const auto count_word = [&] { emit_stack_address(kSp, -1); };
   count_word();
   code_.emit(Op::LDM);
-  push_int(-1);
-  code_.emit(Op::ADDI);
+  push_int(1);
+  code_.emit(Op::SUBI);
   count_word();
   code_.emit(Op::SWAP);
   code_.emit(Op::STM);

@@ -436,9 +436,9 @@ void Compiler::assignment() {
     if (is_float(p->type) || p->form == Place::Form::State || p->form == Place::Form::StateX) {
       error(Error::IntegerNeeded, op.offset, "++ and -- of long and short variables");
     }
-    emit_load(*p, true);                 // a Memory place's address stays below
-    push_int(op.text == "++" ? 1 : -1);  // `n--;` adds -1: one form, STEPMLK, for both steps
-    code_.emit(Op::ADDI);
+    emit_load(*p, true);  // a Memory place's address stays below
+    push_int(1);
+    code_.emit(op.text == "++" ? Op::ADDI : Op::SUBI);
     convert(Ty::Int, p->type, p->is_short);
     emit_store(*p);
     emit_post_increments(*p);

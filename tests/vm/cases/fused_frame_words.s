@@ -1,6 +1,6 @@
 ; A frame's words in the data memory (PDL's parameters, at a local's address plus an offset):
 ; base code that the machine fuses at load into STMLK (`n=5;`: the value, then the word's
-; address and SWAP, STM), STEPMLK (`n++;`, `n--;`: the word plus 1 or -1, as PDL compiles both,
+; address and SWAP, STM), STEPMLK (`n++;`, `n--;`: the word plus 1 or -1, the compilers' form,
 ; or any immediate; times one stays base code), JRELMK for its six relations (`if (n < 5)` of a
 ; parameter) and an address's range tests, JULTK and the second alone as base code (a pointer
 ; into the user memory, or into a task's stack; both together are JULTKLK,
